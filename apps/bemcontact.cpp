@@ -1,0 +1,2 @@
+// Placeholder while the command line is being written.
+int main() { return 0; }

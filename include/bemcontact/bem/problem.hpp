@@ -1,0 +1,66 @@
+#pragma once
+// The definition of a one-body elasticity problem as the numerics see it: geometry,
+// material, boundary conditions per piece, point constraints and interior points.
+// Built by io/ from a problem file (or by code, e.g. the reference cases).
+#include <array>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "bemcontact/geometry/mesh.hpp"
+
+namespace bemcontact::bem {
+
+// A prescribed value as a function of the position (x, y), or (r, z) in axisymmetry.
+using ScalarField = std::function<double(const Vec2& position)>;
+
+enum class ConditionKind { displacement, traction };
+// global: components along x and y (r and z); local: along the outward normal n and the
+// tangent s = (-n_y, n_x), which points along the direction of travel.
+enum class ConditionFrame { global, local };
+
+struct BoundaryCondition {
+  ConditionFrame frame = ConditionFrame::global;
+  std::array<ConditionKind, 2> kind{ConditionKind::traction, ConditionKind::traction};
+  std::array<ScalarField, 2> value;  // empty function = 0
+  // Canonical text of the condition; pieces with equal signatures carry the same
+  // condition, so the mesher need not split the node where they meet.
+  std::string signature = "free";
+
+  double value_at(int component, const Vec2& position) const {
+    return value[component] ? value[component](position) : 0.0;
+  }
+};
+
+// Displacement prescribed at one point (e.g. u = 0 at a corner to remove rigid motion).
+struct PointConstraint {
+  Vec2 position = Vec2::Zero();
+  std::array<std::optional<double>, 2> displacement;  // global components
+  std::string label;   // vertex name or coordinates, for messages
+  SourceLocation where;
+};
+
+struct BodyDefinition {
+  std::string name = "body";
+  Material material;
+  std::vector<geometry::BoundaryPiece> pieces;
+  std::vector<BoundaryCondition> conditions;  // one per piece
+  std::vector<PointConstraint> constraints;
+};
+
+struct InteriorPoint {
+  Vec2 position;
+  bool from_grid = false;  // grid points outside the body are dropped, listed ones are errors
+};
+
+struct ProblemDefinition {
+  std::string title;
+  std::string source_file;
+  AnalysisType analysis = AnalysisType::plane_strain;
+  geometry::MeshOptions mesh;  // interpolation, corner shift
+  BodyDefinition body;
+  std::vector<InteriorPoint> interior_points;
+};
+
+}  // namespace bemcontact::bem

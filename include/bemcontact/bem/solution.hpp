@@ -1,0 +1,49 @@
+#pragma once
+// Results of a one-body solve: what the writers in io/ take.
+#include <string>
+#include <vector>
+
+#include "bemcontact/core/types.hpp"
+
+namespace bemcontact::bem {
+
+// In-plane components (x1, x2) = (x, y) or (r, z), plus the out-of-plane normal stress
+// s33 (sigma_zz in plane strain, 0 in plane stress, sigma_theta_theta in axisymmetry).
+struct StressTensor {
+  double s11 = 0.0, s22 = 0.0, s12 = 0.0, s33 = 0.0;
+  // Hencky-von Mises equivalent stress (section II.6).
+  double von_mises() const;
+};
+
+struct BoundarySolution {
+  std::vector<Vec2> displacement;  // per node, global components
+  std::vector<Vec2> traction;      // per node, global components (p = sigma n)
+  std::vector<StressTensor> stress;
+};
+
+struct InteriorSolution {
+  std::vector<Vec2> points;
+  std::vector<Vec2> displacement;
+  std::vector<StressTensor> stress;
+  std::vector<Vec2> dropped_points;  // grid points outside the body
+};
+
+// Wall-clock time of each phase, in seconds, in the order run.
+struct PhaseTimings {
+  std::vector<std::pair<std::string, double>> phases;
+  void add(const std::string& name, double seconds) { phases.emplace_back(name, seconds); }
+  double total() const {
+    double sum = 0.0;
+    for (const auto& phase : phases) sum += phase.second;
+    return sum;
+  }
+};
+
+struct SolveReport {
+  Index unknowns = 0;
+  double reciprocal_condition = 0.0;  // LAPACK estimate of 1/cond_1(A)
+  double relative_residual = 0.0;     // ||A y - b|| / ||b||
+  int threads = 1;
+};
+
+}  // namespace bemcontact::bem

@@ -1,0 +1,60 @@
+#pragma once
+// Geometry of a 2D body (section II.5.1.1): boundary pieces (straight segments and
+// circular arcs) chained into closed contours. The domain lies to the left of every
+// piece: the outer contour runs counterclockwise, holes run clockwise.
+#include <string>
+#include <vector>
+
+#include "bemcontact/core/error.hpp"
+#include "bemcontact/core/types.hpp"
+
+namespace bemcontact::geometry {
+
+enum class PieceShape { line, arc };
+enum class RefineToward { start, end };
+
+struct BoundaryPiece {
+  std::string name;
+  PieceShape shape = PieceShape::line;
+  Vec2 start = Vec2::Zero();
+  Vec2 end = Vec2::Zero();
+  Vec2 center = Vec2::Zero();    // arcs only
+  bool counterclockwise = true;  // arcs only: sense of travel from start to end
+  int elements = 1;
+  // Geometric grading: ratio of the longest to the shortest element (1 = uniform),
+  // the short elements toward `refine_toward`.
+  double grading = 1.0;
+  RefineToward refine_toward = RefineToward::start;
+  // Pieces whose conditions differ may carry different tractions at a shared vertex,
+  // so the mesher splits the node there (section II.4.4.2).
+  std::string condition_signature;
+  SourceLocation where;
+};
+
+// Arc-length parameter, position and outward normal of a point on a piece.
+struct PiecePoint {
+  Vec2 position;
+  Vec2 outward_normal;  // right of the direction of travel
+};
+
+double piece_length(const BoundaryPiece& piece);
+// Point at fraction s in [0, 1] of the piece's length.
+PiecePoint point_on_piece(const BoundaryPiece& piece, double s);
+// Fractions 0 = s_0 < s_1 < ... < s_n = 1 of the element end points, graded as asked.
+std::vector<double> element_breakpoints(const BoundaryPiece& piece);
+
+// Closed contours found by chaining pieces end to start: indices into the piece list, in
+// order of travel. Throws GeometryError (naming pieces and vertices) for an open contour,
+// a zero-length piece, an arc whose end is off its circle, crossing pieces, or a contour
+// with the wrong orientation.
+struct Contour {
+  std::vector<int> pieces;
+  double signed_area = 0.0;  // > 0 counterclockwise
+  bool is_hole = false;
+};
+std::vector<Contour> build_contours(const std::vector<BoundaryPiece>& pieces);
+
+// A length scale of the geometry (bounding-box diagonal) for relative tolerances.
+double geometry_scale(const std::vector<BoundaryPiece>& pieces);
+
+}  // namespace bemcontact::geometry

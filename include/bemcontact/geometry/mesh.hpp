@@ -1,0 +1,78 @@
+#pragma once
+// Boundary mesh (section II.5.1.2): straight elements carrying constant or linear
+// interpolation of u and p. Where the traction may jump (a corner, or a change of
+// boundary condition) the node is split: each side gets its own node, moved a fraction
+// `corner_shift` of the element length into its element (semi-discontinuous element).
+// Every node then has its own collocation point at a smooth point of the boundary, so
+// any pair of conditions on the two sides gives a regular system.
+#include <array>
+#include <vector>
+
+#include "bemcontact/geometry/boundary.hpp"
+
+namespace bemcontact::geometry {
+
+struct MeshOptions {
+  Interpolation interpolation = Interpolation::linear;
+  double corner_shift = 0.2;          // fraction of the element length
+  double split_angle_radians = 1e-6;  // smaller turns count as smooth
+  // Axisymmetry: straight pieces lying on the axis r = 0 close the meridian section but
+  // are not part of the boundary; they carry no elements.
+  bool skip_axis_pieces = false;
+};
+
+// True for a straight piece lying on the axis r = 0 (within tolerance).
+bool lies_on_axis(const BoundaryPiece& piece, double tolerance);
+
+struct BoundaryNode {
+  Vec2 position;
+  Vec2 normal;      // outward unit normal of the true geometry at the node
+  int piece = -1;   // piece that owns the node (the first one at a shared vertex)
+  bool shifted = false;  // a split-corner node moved into its element
+};
+
+struct BoundaryElement {
+  Vec2 start, end;   // straight element from start to end
+  double length = 0.0;
+  Vec2 tangent;      // (end - start) / length
+  Vec2 normal;       // outward: tangent rotated clockwise
+  int piece = -1;
+  int node_count = 2;                 // 1 (constant) or 2 (linear)
+  std::array<Index, 2> nodes{-1, -1};
+  std::array<double, 2> node_fraction{0.0, 1.0};  // node positions along the element in [0, 1]
+
+  // Shape function a at fraction f in [0, 1] (linear through the element's nodes,
+  // extrapolated beyond shifted nodes; 1 for constant elements).
+  double shape(int a, double f) const;
+};
+
+// A geometric vertex where two pieces meet.
+struct MeshVertex {
+  Vec2 position;
+  int piece_in = -1, piece_out = -1;   // piece ending here, piece starting here
+  Index element_in = -1, element_out = -1;
+  bool split = false;
+};
+
+struct BoundaryMesh {
+  std::vector<BoundaryNode> nodes;
+  std::vector<BoundaryElement> elements;
+  std::vector<MeshVertex> vertices;
+  std::vector<Contour> contours;
+  std::vector<std::vector<Index>> piece_elements;  // elements of each piece, in order
+  std::vector<std::vector<Index>> piece_nodes;     // nodes of each piece, in order
+  std::vector<bool> piece_skipped;                 // axis pieces without elements
+  double scale = 1.0;                              // geometry length scale
+
+  Index node_count() const { return static_cast<Index>(nodes.size()); }
+  Index element_count() const { return static_cast<Index>(elements.size()); }
+};
+
+BoundaryMesh mesh_boundary(const std::vector<BoundaryPiece>& pieces, const MeshOptions& options);
+
+// Node at `point` within `tolerance`, or -1.
+Index find_node_at(const BoundaryMesh& mesh, const Vec2& point, double tolerance);
+// Vertex at `point` within `tolerance`, or -1.
+Index find_vertex_at(const BoundaryMesh& mesh, const Vec2& point, double tolerance);
+
+}  // namespace bemcontact::geometry

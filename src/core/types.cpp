@@ -1,0 +1,23 @@
+#include "bemcontact/core/types.hpp"
+
+namespace bemcontact {
+
+const char* to_string(AnalysisType type) {
+  switch (type) {
+    case AnalysisType::plane_strain: return "plane_strain";
+    case AnalysisType::plane_stress: return "plane_stress";
+    case AnalysisType::axisymmetric: return "axisymmetric";
+  }
+  return "?";
+}
+
+const char* to_string(Interpolation interpolation) {
+  return interpolation == Interpolation::constant ? "constant" : "linear";
+}
+
+double kernel_poisson_ratio(AnalysisType type, const Material& material) {
+  const double nu = material.poisson_ratio;
+  return type == AnalysisType::plane_stress ? nu / (1.0 + nu) : nu;
+}
+
+}  // namespace bemcontact

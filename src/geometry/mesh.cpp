@@ -1,0 +1,183 @@
+#include "bemcontact/geometry/mesh.hpp"
+
+#include <cmath>
+#include <limits>
+
+namespace bemcontact::geometry {
+
+double BoundaryElement::shape(int a, double f) const {
+  if (node_count == 1) return 1.0;
+  const double f0 = node_fraction[0], f1 = node_fraction[1];
+  return a == 0 ? (f1 - f) / (f1 - f0) : (f - f0) / (f1 - f0);
+}
+
+bool lies_on_axis(const BoundaryPiece& piece, double tolerance) {
+  return piece.shape == PieceShape::line && std::abs(piece.start.x()) <= tolerance &&
+         std::abs(piece.end.x()) <= tolerance;
+}
+
+namespace {
+
+Vec2 tangent_of(const Vec2& outward_normal) { return Vec2(-outward_normal.y(), outward_normal.x()); }
+
+struct VertexPlan {
+  int piece_in = -1, piece_out = -1;
+  bool in_meshed = false, out_meshed = false;
+  bool split = false;
+  Index shared_node = -1;
+};
+
+}  // namespace
+
+BoundaryMesh mesh_boundary(const std::vector<BoundaryPiece>& pieces, const MeshOptions& options) {
+  if (!(options.corner_shift > 0.0 && options.corner_shift < 0.5))
+    throw GeometryError("corner_shift must lie in (0, 0.5), got " +
+                        std::to_string(options.corner_shift));
+  BoundaryMesh mesh;
+  mesh.contours = build_contours(pieces);
+  mesh.scale = geometry_scale(pieces);
+  const double tol = 1e-9 * mesh.scale;
+  const int piece_count = static_cast<int>(pieces.size());
+  mesh.piece_elements.assign(piece_count, {});
+  mesh.piece_nodes.assign(piece_count, {});
+  mesh.piece_skipped.assign(piece_count, false);
+  for (int p = 0; p < piece_count; ++p)
+    mesh.piece_skipped[p] = options.skip_axis_pieces && lies_on_axis(pieces[p], tol);
+  const bool linear = options.interpolation == Interpolation::linear;
+
+  // Plan each vertex: the start of every piece, joined to the end of the previous one.
+  std::vector<VertexPlan> start_vertex(piece_count);
+  for (const auto& contour : mesh.contours) {
+    const std::size_t m = contour.pieces.size();
+    for (std::size_t k = 0; k < m; ++k) {
+      const int in = contour.pieces[(k + m - 1) % m], out = contour.pieces[k];
+      VertexPlan& plan = start_vertex[out];
+      plan.piece_in = in;
+      plan.piece_out = out;
+      plan.in_meshed = !mesh.piece_skipped[in];
+      plan.out_meshed = !mesh.piece_skipped[out];
+      if (plan.in_meshed && plan.out_meshed && linear) {
+        const Vec2 t_in = tangent_of(point_on_piece(pieces[in], 1.0).outward_normal);
+        const Vec2 t_out = tangent_of(point_on_piece(pieces[out], 0.0).outward_normal);
+        const double turn = std::atan2(t_in.x() * t_out.y() - t_in.y() * t_out.x(), t_in.dot(t_out));
+        plan.split = std::abs(turn) > options.split_angle_radians ||
+                     pieces[in].condition_signature != pieces[out].condition_signature;
+      }
+    }
+  }
+
+  auto add_node = [&](const Vec2& position, const Vec2& normal, int piece, bool shifted) {
+    mesh.nodes.push_back({position, normal, piece, shifted});
+    return static_cast<Index>(mesh.nodes.size() - 1);
+  };
+
+  for (const auto& contour : mesh.contours) {
+    for (int p : contour.pieces) {
+      if (mesh.piece_skipped[p]) continue;
+      const BoundaryPiece& piece = pieces[p];
+      const auto s = element_breakpoints(piece);
+      const int n = piece.elements;
+      std::vector<PiecePoint> points(n + 1);
+      for (int k = 0; k <= n; ++k) points[k] = point_on_piece(piece, s[k]);
+      points[0].position = piece.start;
+      points[n].position = piece.end;
+
+      VertexPlan& first = start_vertex[p];
+      // The vertex at the end of this piece is the start vertex of the next piece.
+      int next_piece = -1;
+      for (std::size_t k = 0; k < contour.pieces.size(); ++k)
+        if (contour.pieces[k] == p) next_piece = contour.pieces[(k + 1) % contour.pieces.size()];
+      VertexPlan& last = start_vertex[next_piece];
+
+      Index previous_end = -1;
+      for (int k = 0; k < n; ++k) {
+        BoundaryElement element;
+        element.start = points[k].position;
+        element.end = points[k + 1].position;
+        const Vec2 d = element.end - element.start;
+        element.length = d.norm();
+        element.tangent = d / element.length;
+        element.normal = Vec2(element.tangent.y(), -element.tangent.x());
+        element.piece = p;
+        const Index e = static_cast<Index>(mesh.elements.size());
+        if (!linear) {
+          element.node_count = 1;
+          element.node_fraction = {0.5, 0.5};
+          element.nodes[0] = add_node(0.5 * (element.start + element.end), element.normal, p, false);
+          mesh.piece_nodes[p].push_back(element.nodes[0]);
+        } else {
+          element.node_count = 2;
+          // Start node.
+          if (k > 0) {
+            element.nodes[0] = previous_end;
+          } else if (first.split) {
+            element.node_fraction[0] = options.corner_shift;
+            element.nodes[0] = add_node(element.start + options.corner_shift * d, element.normal, p, true);
+            mesh.piece_nodes[p].push_back(element.nodes[0]);
+          } else if (first.in_meshed && first.shared_node >= 0) {
+            element.nodes[0] = first.shared_node;
+            mesh.piece_nodes[p].push_back(element.nodes[0]);
+          } else {
+            element.nodes[0] = add_node(element.start, points[0].outward_normal, p, false);
+            if (first.in_meshed) first.shared_node = element.nodes[0];
+            mesh.piece_nodes[p].push_back(element.nodes[0]);
+          }
+          // End node.
+          if (k + 1 < n) {
+            element.nodes[1] = add_node(element.end, points[k + 1].outward_normal, p, false);
+          } else if (last.split) {
+            element.node_fraction[1] = 1.0 - options.corner_shift;
+            element.nodes[1] =
+                add_node(element.start + (1.0 - options.corner_shift) * d, element.normal, p, true);
+          } else if (last.out_meshed && last.shared_node >= 0) {
+            element.nodes[1] = last.shared_node;
+          } else {
+            element.nodes[1] = add_node(element.end, points[n].outward_normal, p, false);
+            if (last.out_meshed) last.shared_node = element.nodes[1];
+          }
+          previous_end = element.nodes[1];
+          mesh.piece_nodes[p].push_back(element.nodes[1]);
+        }
+        mesh.elements.push_back(element);
+        mesh.piece_elements[p].push_back(e);
+      }
+    }
+  }
+
+  // Vertices, for point constraints and output.
+  for (int p = 0; p < piece_count; ++p) {
+    const VertexPlan& plan = start_vertex[p];
+    MeshVertex vertex;
+    vertex.position = pieces[p].start;
+    vertex.piece_in = plan.piece_in;
+    vertex.piece_out = plan.piece_out;
+    vertex.split = plan.split;
+    if (plan.in_meshed && !mesh.piece_elements[plan.piece_in].empty())
+      vertex.element_in = mesh.piece_elements[plan.piece_in].back();
+    if (plan.out_meshed && !mesh.piece_elements[p].empty())
+      vertex.element_out = mesh.piece_elements[p].front();
+    mesh.vertices.push_back(vertex);
+  }
+  return mesh;
+}
+
+Index find_node_at(const BoundaryMesh& mesh, const Vec2& point, double tolerance) {
+  Index best = -1;
+  double best_distance = std::numeric_limits<double>::infinity();
+  for (Index i = 0; i < mesh.node_count(); ++i) {
+    const double distance = (mesh.nodes[i].position - point).norm();
+    if (distance <= tolerance && distance < best_distance) {
+      best = i;
+      best_distance = distance;
+    }
+  }
+  return best;
+}
+
+Index find_vertex_at(const BoundaryMesh& mesh, const Vec2& point, double tolerance) {
+  for (Index v = 0; v < static_cast<Index>(mesh.vertices.size()); ++v)
+    if ((mesh.vertices[v].position - point).norm() <= tolerance) return v;
+  return -1;
+}
+
+}  // namespace bemcontact::geometry
