@@ -89,6 +89,12 @@ BoundaryMesh mesh_boundary(const std::vector<BoundaryPiece>& pieces, const MeshO
         if (contour.pieces[k] == p) next_piece = contour.pieces[(k + 1) % contour.pieces.size()];
       VertexPlan& last = start_vertex[next_piece];
 
+      // A shifted node on an arc's chord stands for the arc point at the same parameter:
+      // it takes that point's normal, so tractions and stresses are resolved on the true
+      // surface (on a line both normals agree).
+      auto shifted_normal = [&](int k, double fraction) {
+        return point_on_piece(piece, s[k] + fraction * (s[k + 1] - s[k])).outward_normal;
+      };
       Index previous_end = -1;
       for (int k = 0; k < n; ++k) {
         BoundaryElement element;
@@ -112,7 +118,8 @@ BoundaryMesh mesh_boundary(const std::vector<BoundaryPiece>& pieces, const MeshO
             element.nodes[0] = previous_end;
           } else if (first.split) {
             element.node_fraction[0] = options.corner_shift;
-            element.nodes[0] = add_node(element.start + options.corner_shift * d, element.normal, p, true);
+            element.nodes[0] = add_node(element.start + options.corner_shift * d,
+                                        shifted_normal(k, options.corner_shift), p, true);
             mesh.piece_nodes[p].push_back(element.nodes[0]);
           } else if (first.in_meshed && first.shared_node >= 0) {
             element.nodes[0] = first.shared_node;
@@ -127,8 +134,8 @@ BoundaryMesh mesh_boundary(const std::vector<BoundaryPiece>& pieces, const MeshO
             element.nodes[1] = add_node(element.end, points[k + 1].outward_normal, p, false);
           } else if (last.split) {
             element.node_fraction[1] = 1.0 - options.corner_shift;
-            element.nodes[1] =
-                add_node(element.start + (1.0 - options.corner_shift) * d, element.normal, p, true);
+            element.nodes[1] = add_node(element.start + (1.0 - options.corner_shift) * d,
+                                        shifted_normal(k, 1.0 - options.corner_shift), p, true);
           } else if (last.out_meshed && last.shared_node >= 0) {
             element.nodes[1] = last.shared_node;
           } else {

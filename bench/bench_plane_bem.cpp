@@ -1,0 +1,92 @@
+// Plane BEM: assembly of H and G and the dense LU, for 250 ... 4000 linear elements,
+// with the LU's GFLOP/s next to the machine's dgemm GFLOP/s measured in the same run.
+#include <benchmark/benchmark.h>
+#include <cblas.h>
+
+#include "bemcontact/bem/analysis.hpp"
+#include "bemcontact/bem/boundary_system.hpp"
+#include "bemcontact/operators/dense_lu.hpp"
+
+namespace {
+
+using namespace bemcontact;
+
+// A square plate clamped at the bottom and pulled at the top, `elements` linear elements.
+bem::ProblemDefinition square_plate(int elements) {
+  bem::ProblemDefinition problem;
+  problem.analysis = AnalysisType::plane_strain;
+  problem.body.material = {1000.0, 0.3};
+  const Vec2 corners[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  const char* names[4] = {"bottom", "right", "top", "left"};
+  for (int k = 0; k < 4; ++k) {
+    geometry::BoundaryPiece piece;
+    piece.name = names[k];
+    piece.start = corners[k];
+    piece.end = corners[(k + 1) % 4];
+    piece.elements = elements / 4;
+    bem::BoundaryCondition bc;
+    if (k == 0) {
+      bc.kind = {bem::ConditionKind::displacement, bem::ConditionKind::displacement};
+      bc.signature = "clamped";
+    } else if (k == 2) {
+      bc.value[1] = [](const Vec2&) { return 1.0; };
+      bc.signature = "pulled";
+    }
+    piece.condition_signature = bc.signature;
+    problem.body.pieces.push_back(piece);
+    problem.body.conditions.push_back(bc);
+  }
+  return problem;
+}
+
+void BM_PlaneAssembly(benchmark::State& state) {
+  const auto problem = square_plate(static_cast<int>(state.range(0)));
+  const auto mesh = bem::mesh_body(problem);
+  const bem::ElementIntegrator integrator(problem.analysis, problem.body.material);
+  for (auto _ : state) {
+    auto m = bem::assemble_influence_matrices(mesh, integrator);
+    benchmark::DoNotOptimize(m.H.data());
+  }
+  const double pairs = static_cast<double>(mesh.node_count()) * mesh.element_count();
+  state.counters["elements"] = static_cast<double>(mesh.element_count());
+  state.counters["ns_per_pair"] =
+      benchmark::Counter(pairs * 1e-9, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+BENCHMARK(BM_PlaneAssembly)->Arg(250)->Arg(500)->Arg(1000)->Arg(2000)->Arg(4000)->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
+void BM_DenseLU(benchmark::State& state) {
+  const auto problem = square_plate(static_cast<int>(state.range(0)));
+  const auto mesh = bem::mesh_body(problem);
+  const bem::ElementIntegrator integrator(problem.analysis, problem.body.material);
+  auto m = bem::assemble_influence_matrices(mesh, integrator);
+  const auto conditions = bem::resolve_node_conditions(mesh, problem.body, problem.analysis);
+  auto system = bem::build_boundary_system(m, conditions, {});
+  const double n = static_cast<double>(system.A.rows());
+  for (auto _ : state) {
+    operators::DenseLU lu(system.A);
+    benchmark::DoNotOptimize(lu.reciprocal_condition());
+  }
+  state.counters["unknowns"] = n;
+  state.counters["GFLOPs"] = benchmark::Counter(2.0 / 3.0 * n * n * n * 1e-9,
+                                                benchmark::Counter::kIsIterationInvariantRate);
+}
+BENCHMARK(BM_DenseLU)->Arg(250)->Arg(500)->Arg(1000)->Arg(2000)->Arg(4000)->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
+// The machine's dgemm speed, the ceiling a blocked LU approaches.
+void BM_Dgemm(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  Matrix a = Matrix::Random(n, n), b = Matrix::Random(n, n), c = Matrix::Zero(n, n);
+  for (auto _ : state) {
+    cblas_dgemm(CblasColMajor, CblasNoTrans, CblasNoTrans, n, n, n, 1.0, a.data(), n, b.data(), n, 0.0, c.data(), n);
+    benchmark::DoNotOptimize(c.data());
+  }
+  state.counters["GFLOPs"] =
+      benchmark::Counter(2.0 * n * n * n * 1e-9, benchmark::Counter::kIsIterationInvariantRate);
+}
+BENCHMARK(BM_Dgemm)->Arg(1000)->Arg(2000)->Arg(4000)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+}  // namespace
+
+BENCHMARK_MAIN();

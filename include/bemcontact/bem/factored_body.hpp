@@ -1,0 +1,59 @@
+#pragma once
+// A body whose boundary element system is assembled and factored once, then solved for
+// many right-hand sides in which the data of chosen "variable" nodes change: the
+// interface nodes of a domain decomposition (Poincare-Steklov operators S and S^-1,
+// section IV.3.1) or the contact nodes of chapter V (B' = S1^-1 + S2^-1).
+//
+// Variable nodes carry, in global components, either prescribed displacements (the
+// solve returns their tractions: Dirichlet-to-Neumann) or prescribed tractions (the
+// solve returns their displacements: Neumann-to-Dirichlet). All other nodes keep the
+// body's own conditions, whose data can be switched off to get the response to the
+// variable data alone.
+#include <vector>
+
+#include "bemcontact/bem/boundary_system.hpp"
+#include "bemcontact/operators/dense_lu.hpp"
+
+namespace bemcontact::bem {
+
+struct VariableNode {
+  Index node = -1;
+  ConditionKind kind = ConditionKind::traction;  // what is prescribed at the node
+};
+
+class FactoredBody {
+ public:
+  FactoredBody(const geometry::BoundaryMesh& mesh, const BodyDefinition& body, AnalysisType type,
+               std::vector<VariableNode> variable_nodes, const ProgressCallback& progress = {});
+
+  const geometry::BoundaryMesh& mesh() const { return mesh_; }
+  const std::vector<VariableNode>& variable_nodes() const { return variable_; }
+  Index variable_dofs() const { return 2 * static_cast<Index>(variable_.size()); }
+  double reciprocal_condition() const { return lu_.reciprocal_condition(); }
+
+  // Full boundary solution for the given data at the variable nodes (2 per node, global
+  // components, in the order of variable_nodes()). with_fixed_data = false switches off
+  // the body's own prescribed values (loads, imposed displacements, constraint values).
+  BoundarySolution solve(const Vector& variable_data, bool with_fixed_data = true) const;
+
+  // Only the complementary field at the variable nodes: tractions where displacements are
+  // prescribed and displacements where tractions are (2 per node).
+  Vector complementary(const Vector& variable_data, bool with_fixed_data = true) const;
+
+  // The same for several data vectors at once (columns), e.g. unit data to form S or S^-1.
+  Matrix complementary_columns(const Matrix& variable_data, bool with_fixed_data) const;
+
+ private:
+  Matrix solve_unknowns(const Matrix& variable_data, bool with_fixed_data) const;
+  BoundarySolution recover(const Vector& y, const Vector& variable_data, bool with_fixed_data) const;
+
+  geometry::BoundaryMesh mesh_;
+  std::vector<VariableNode> variable_;
+  std::vector<NodeCondition> conditions_;
+  std::vector<ConstraintEquation> constraints_;
+  Vector fixed_rhs_;
+  Matrix variable_rhs_;  // columns: right-hand side per unit variable datum
+  operators::DenseLU lu_;
+};
+
+}  // namespace bemcontact::bem

@@ -1,0 +1,59 @@
+#pragma once
+// Post-processing of a solved body: stress tensor at boundary nodes (section I.6),
+// displacements and stresses at interior points (I.11, I.14), von Mises (section II.6).
+#include <vector>
+
+#include "bemcontact/bem/assembly.hpp"
+#include "bemcontact/bem/progress.hpp"
+#include "bemcontact/bem/solution.hpp"
+
+namespace bemcontact::bem {
+
+// Stress at each boundary node from its traction (sigma n = p) and the tangential strain
+// of the interpolated displacement, with Hooke's law written in the local frame (n, s):
+//   sigma_ss = (nu' sigma_nn + 2 mu eps_ss) / (1 - nu')   (plane; nu' = kernel Poisson ratio)
+// and in axisymmetry with the hoop strain u_r / r as well.
+std::vector<StressTensor> boundary_stresses(const geometry::BoundaryMesh& mesh, AnalysisType type,
+                                            const Material& material,
+                                            const BoundarySolution& solution);
+
+// Winding-number test against the element polygon. Points closer to the boundary than
+// `tolerance` count as outside (they are boundary points).
+bool point_inside(const geometry::BoundaryMesh& mesh, const Vec2& point, double tolerance);
+
+// Distance from a point to the element polygon, the closest element and the fraction
+// along it.
+struct BoundaryProjection {
+  double distance = 0.0;
+  Index element = -1;
+  double fraction = 0.0;
+};
+BoundaryProjection project_on_boundary(const geometry::BoundaryMesh& mesh, const Vec2& point);
+
+// Interpolated boundary values at a fraction along an element (linear through its nodes).
+Vec2 interpolate_on_element(const geometry::BoundaryElement& element, const std::vector<Vec2>& nodal,
+                            double fraction);
+
+// Value at a geometric vertex: at a split corner there is no node, so each adjacent
+// element's interpolation is extrapolated to the vertex and the two are averaged.
+Vec2 vector_at_vertex(const geometry::BoundaryMesh& mesh, Index vertex, const std::vector<Vec2>& nodal);
+StressTensor stress_at_vertex(const geometry::BoundaryMesh& mesh, Index vertex,
+                              const std::vector<StressTensor>& nodal);
+
+// Somigliana displacement and stress at interior points. Points closer to the boundary
+// than half the local element length take the stress interpolated along the normal
+// between the boundary stress and the value half an element inside, which keeps the
+// error at the level of the boundary stress where the near-hypersingular integral of the
+// piecewise-linear density would lose accuracy.
+InteriorSolution interior_values(const geometry::BoundaryMesh& mesh, const ElementIntegrator& integrator,
+                                 const BoundarySolution& solution, const std::vector<Vec2>& points,
+                                 const ProgressCallback& progress = {});
+
+// Plane or axisymmetric Somigliana stress at one interior point, without the
+// near-boundary treatment (exposed for tests).
+StressTensor somigliana_stress(const geometry::BoundaryMesh& mesh, const ElementIntegrator& integrator,
+                               const BoundarySolution& solution, const Vec2& point);
+Vec2 somigliana_displacement(const geometry::BoundaryMesh& mesh, const ElementIntegrator& integrator,
+                             const BoundarySolution& solution, const Vec2& point);
+
+}  // namespace bemcontact::bem

@@ -1,0 +1,36 @@
+#pragma once
+// The body-level part of a problem file: [material], [vertices], [[boundary]] and
+// [[constraint]]. Kept apart from the file-level keys so that a file may later hold
+// several bodies ([[body]] tables, each read by parse_body); for now the root table is
+// the one body.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <toml++/toml.h>
+
+#include "bemcontact/bem/problem.hpp"
+#include "bemcontact/io/toml_reader.hpp"
+
+namespace bemcontact::io {
+
+struct BodyContext {
+  const FileContext* file = nullptr;
+  std::string path;                         // "" for the root table, later e.g. "body[2]"
+  std::vector<std::string> enclosing_keys;  // other keys allowed in the same table
+  int fallback_line = 1;                    // line for messages about the table itself
+};
+
+bem::BodyDefinition parse_body(const toml::table& table, const BodyContext& context);
+
+// A boundary value read from a number, an expression string or a table of values.
+struct PrescribedValue {
+  bem::ScalarField field;  // empty when identically zero
+  std::string canonical;   // e.g. "0", "((0.001*x)+1)", "table(x;0:1,2:3)"
+  bool zero = true;
+  std::optional<double> constant;  // set when the value does not depend on the position
+};
+PrescribedValue read_prescribed_value(const toml::node& node, const SourceLocation& where,
+                                      const FileContext& context);
+
+}  // namespace bemcontact::io

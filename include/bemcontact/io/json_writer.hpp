@@ -1,0 +1,24 @@
+#pragma once
+// JSON pieces of summary.json (nlohmann::json); the command assembles the summary.
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "bemcontact/bem/solution.hpp"
+#include "bemcontact/io/problem_file.hpp"
+
+namespace bemcontact::io {
+
+// Indented text with a final newline; NaN and infinities become null.
+std::string write_json_string(const nlohmann::json& value, int indent = 2);
+
+// {"phases": {"assembly": 0.12, ...}, "total": 0.3} (phases in the order run).
+nlohmann::json timings_json(const bem::PhaseTimings& timings);
+// {"unknowns", "reciprocal_condition", "relative_residual", "threads"}.
+nlohmann::json solve_report_json(const bem::SolveReport& report);
+// The options actually used, defaults included: analysis, interpolation, mesh,
+// material, parameters, every boundary (elements, grading, condition), constraints,
+// interior point count, outputs.
+nlohmann::json problem_echo_json(const ProblemFile& file);
+
+}  // namespace bemcontact::io

@@ -1,0 +1,46 @@
+#pragma once
+// Writers of the results: each returns the content of one file as a string, so that
+// they are tested without touching the disk and OutputDirectory can write all files or
+// none. Numbers are written with the shortest text that reads back as the same double.
+//
+// CSV files (header line, comma separated, one row per node, element or point):
+//   boundary.csv  node,x,y,nx,ny,u1,u2,t1,t2,s11,s22,s12,s33,von_mises
+//   interior.csv  point,x,y,u1,u2,s11,s22,s12,s33,von_mises
+//   mesh.csv      node,x,y,nx,ny,piece,shifted
+//   elements.csv  element,node0,node1,x_start,y_start,x_end,y_end,nx,ny,piece
+// (node1 = -1 for constant elements; indices start at 0; components 1, 2 are x, y or r, z.)
+//
+// VTK files (legacy ASCII, version 3.0, POLYDATA; z = 0):
+//   boundary.vtk  the boundary nodes as points, joined by lines in element order along
+//                 each contour, with point data u, t, normal (vectors), von_mises, s11,
+//                 s22, s12, s33 (scalars), stress (tensor) and piece. Nodes are not always
+//                 at element ends (split corner nodes sit inside their elements, constant
+//                 elements have their node at the middle), so the drawn line joins the
+//                 nodes and cuts corners slightly; a contour is broken where the mesh is
+//                 (e.g. at the axis of an axisymmetric body, which carries no elements).
+//   mesh.vtk      the same lines with normal and piece only (`bemcontact mesh`).
+//   interior.vtk  the interior points as vertices with u, von_mises, s11..s33, stress.
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "bemcontact/bem/solution.hpp"
+#include "bemcontact/geometry/mesh.hpp"
+
+namespace bemcontact::io {
+
+std::string boundary_csv(const geometry::BoundaryMesh& mesh, const bem::BoundarySolution& solution);
+std::string interior_csv(const bem::InteriorSolution& solution);
+std::string mesh_nodes_csv(const geometry::BoundaryMesh& mesh);
+std::string mesh_elements_csv(const geometry::BoundaryMesh& mesh);
+
+std::string boundary_vtk(const geometry::BoundaryMesh& mesh, const bem::BoundarySolution& solution,
+                         std::string_view title);
+std::string mesh_vtk(const geometry::BoundaryMesh& mesh, std::string_view title);
+std::string interior_vtk(const bem::InteriorSolution& solution, std::string_view title);
+
+// The node sequences the VTK lines follow: per contour, the nodes of its elements in
+// order, shared nodes once; a contour without gaps ends with its first node again.
+std::vector<std::vector<Index>> boundary_polylines(const geometry::BoundaryMesh& mesh);
+
+}  // namespace bemcontact::io

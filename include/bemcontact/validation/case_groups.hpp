@@ -1,0 +1,10 @@
+#pragma once
+// Each group of reference cases lives in its own file and registers here.
+#include "bemcontact/validation/validation.hpp"
+
+namespace bemcontact::validation {
+std::vector<Case> plane_cases();          // src/validation/plane_cases.cpp
+std::vector<Case> axisymmetric_cases();   // src/validation/axisymmetric_cases.cpp
+std::vector<Case> decomposition_cases();  // src/validation/decomposition_cases.cpp
+std::vector<Case> contact_cases();        // src/validation/contact_cases.cpp
+}  // namespace bemcontact::validation

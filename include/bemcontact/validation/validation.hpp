@@ -1,0 +1,54 @@
+#pragma once
+// Built-in reference cases (`bemcontact validate`): each solves a bundled example problem
+// and compares quantities with a closed-form solution (reference/), producing records.
+#include <functional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "bemcontact/bem/progress.hpp"
+
+namespace bemcontact::validation {
+
+enum class Comparison {
+  relative,  // error = |computed - reference| / |reference|
+  scaled,    // error = |computed - reference| / scale (reference may be 0)
+  at_least,  // passes when computed >= reference - tolerance (e.g. a convergence order)
+};
+
+struct Record {
+  std::string case_name;
+  std::vector<std::pair<std::string, std::string>> params;
+  std::string quantity;
+  double computed = 0.0;
+  double reference = 0.0;
+  double error = 0.0;
+  double tolerance = 0.0;
+  Comparison comparison = Comparison::relative;
+  bool passed = false;
+};
+
+struct Context {
+  std::string examples_dir;
+  bem::ProgressCallback progress;
+};
+
+struct Case {
+  std::string name;
+  std::string section;      // thesis section
+  std::string description;
+  std::function<std::vector<Record>(const Context&)> run;
+};
+
+const std::vector<Case>& cases();
+
+// Record constructors that fill error and passed.
+Record compare_relative(std::string quantity, double computed, double reference, double tolerance);
+Record compare_scaled(std::string quantity, double computed, double reference, double scale,
+                      double tolerance);
+Record require_at_least(std::string quantity, double computed, double minimum);
+
+// Observed order of convergence between two meshes whose sizes differ by `ratio`.
+double observed_order(double coarse_error, double fine_error, double ratio);
+
+}  // namespace bemcontact::validation

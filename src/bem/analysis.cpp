@@ -1,0 +1,101 @@
+#include "bemcontact/bem/analysis.hpp"
+
+#include <omp.h>
+
+#include <chrono>
+
+#include "bemcontact/bem/boundary_system.hpp"
+#include "bemcontact/core/error.hpp"
+#include "bemcontact/operators/dense_lu.hpp"
+
+namespace bemcontact::bem {
+namespace {
+
+class PhaseClock {
+ public:
+  explicit PhaseClock(PhaseTimings& timings) : timings_(timings) {}
+  void lap(const std::string& phase) {
+    const auto now = std::chrono::steady_clock::now();
+    timings_.add(phase, std::chrono::duration<double>(now - start_).count());
+    start_ = now;
+  }
+
+ private:
+  PhaseTimings& timings_;
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+};
+
+}  // namespace
+
+geometry::MeshOptions effective_mesh_options(const ProblemDefinition& problem) {
+  geometry::MeshOptions options = problem.mesh;
+  options.skip_axis_pieces = problem.analysis == AnalysisType::axisymmetric;
+  return options;
+}
+
+geometry::BoundaryMesh mesh_body(const ProblemDefinition& problem) {
+  const auto& body = problem.body;
+  if (body.conditions.size() != body.pieces.size())
+    throw Error("internal: one boundary condition per piece expected");
+  if (problem.analysis == AnalysisType::axisymmetric) {
+    for (const auto& piece : body.pieces)
+      for (int k = 0; k <= 4; ++k)
+        if (geometry::point_on_piece(piece, k / 4.0).position.x() < -1e-9 * geometry::geometry_scale(body.pieces))
+          throw InputError(piece.where, "boundary '" + piece.name +
+                                            "' reaches r < 0; axisymmetric sections lie in r >= 0");
+  }
+  return geometry::mesh_boundary(body.pieces, effective_mesh_options(problem));
+}
+
+BodyResult solve_body(const ProblemDefinition& problem, const ProgressCallback& progress) {
+  BodyResult result;
+  PhaseClock clock(result.timings);
+  const auto& body = problem.body;
+  result.mesh = mesh_body(problem);
+  const auto conditions = resolve_node_conditions(result.mesh, body, problem.analysis);
+  const auto constraints = resolve_point_constraints(result.mesh, body, conditions);
+  clock.lap("mesh");
+
+  const ElementIntegrator integrator(problem.analysis, body.material);
+  auto matrices = assemble_influence_matrices(result.mesh, integrator, progress);
+  clock.lap("assembly");
+
+  auto system = build_boundary_system(matrices, conditions, constraints);
+  result.report.unknowns = system.A.rows();
+  result.report.threads = omp_get_max_threads();
+  if (progress) progress("factorisation", 0.0);
+  const operators::DenseLU lu(std::move(system.A), "the boundary element system of body '" + body.name + "'");
+  result.report.reciprocal_condition = lu.reciprocal_condition();
+  const Vector y = lu.solve(system.b);
+  if (!y.allFinite()) throw SolverError("the solution of body '" + body.name + "' is not finite");
+  if (progress) progress("factorisation", 1.0);
+  clock.lap("solve");
+
+  result.boundary = recover_boundary_values(y, conditions, constraints);
+  result.report.relative_residual = boundary_equation_residual(matrices, conditions, result.boundary);
+  result.boundary.stress = boundary_stresses(result.mesh, problem.analysis, body.material, result.boundary);
+  clock.lap("boundary stress");
+
+  if (!problem.interior_points.empty()) {
+    std::vector<Vec2> inside;
+    const double tol = 1e-9 * result.mesh.scale;
+    for (const auto& p : problem.interior_points) {
+      if (point_inside(result.mesh, p.position, tol)) {
+        inside.push_back(p.position);
+      } else if (p.from_grid) {
+        result.interior.dropped_points.push_back(p.position);
+      } else {
+        throw InputError({problem.source_file, 0, "interior.points"},
+                         "point (" + std::to_string(p.position.x()) + ", " + std::to_string(p.position.y()) +
+                             ") is not inside the body");
+      }
+    }
+    auto dropped = std::move(result.interior.dropped_points);
+    result.interior = interior_values(result.mesh, integrator, result.boundary, inside, progress);
+    result.interior.dropped_points = std::move(dropped);
+    clock.lap("interior points");
+  }
+  return result;
+}
+
+}  // namespace bemcontact::bem

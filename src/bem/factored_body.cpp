@@ -1,0 +1,99 @@
+#include "bemcontact/bem/factored_body.hpp"
+
+#include "bemcontact/core/error.hpp"
+
+namespace bemcontact::bem {
+
+FactoredBody::FactoredBody(const geometry::BoundaryMesh& mesh, const BodyDefinition& body, AnalysisType type,
+                           std::vector<VariableNode> variable_nodes, const ProgressCallback& progress)
+    : mesh_(mesh), variable_(std::move(variable_nodes)) {
+  conditions_ = resolve_node_conditions(mesh_, body, type);
+  for (const auto& v : variable_) {
+    if (v.node < 0 || v.node >= mesh_.node_count()) throw Error("FactoredBody: variable node out of range");
+    NodeCondition& c = conditions_[v.node];
+    const bool on_axis = c.on_axis;
+    c = NodeCondition{};
+    c.kind = {v.kind, v.kind};
+    if (on_axis) {  // symmetry keeps u_r = 0 and p_r = 0 on the axis
+      c.on_axis = true;
+      c.kind[0] = ConditionKind::displacement;
+    }
+  }
+  constraints_ = resolve_point_constraints(mesh_, body, conditions_);
+  const ElementIntegrator integrator(type, body.material);
+  auto matrices = assemble_influence_matrices(mesh_, integrator, progress);
+  auto system = build_boundary_system(matrices, conditions_, constraints_);
+  fixed_rhs_ = std::move(system.b);
+  // Right-hand side of a unit datum at variable dof d: b = G p_known - H u_known.
+  const Index rows = fixed_rhs_.size();
+  variable_rhs_ = Matrix::Zero(rows, variable_dofs());
+  const Index dofs = 2 * mesh_.node_count();
+  for (std::size_t k = 0; k < variable_.size(); ++k) {
+    for (int c = 0; c < 2; ++c) {
+      const Index d = 2 * variable_[k].node + c;
+      const Index col = 2 * static_cast<Index>(k) + c;
+      if (conditions_[variable_[k].node].on_axis && c == 0) continue;  // radial datum fixed at 0
+      if (variable_[k].kind == ConditionKind::displacement)
+        variable_rhs_.block(0, col, dofs, 1) = -matrices.H.col(d);
+      else
+        variable_rhs_.block(0, col, dofs, 1) = matrices.G.col(d);
+    }
+  }
+  for (Index i = 0; i < mesh_.node_count(); ++i)
+    if (conditions_[i].on_axis) variable_rhs_.row(2 * i).setZero();
+  lu_ = operators::DenseLU(std::move(system.A), "the boundary element system of body '" + body.name + "'");
+}
+
+Matrix FactoredBody::solve_unknowns(const Matrix& variable_data, bool with_fixed_data) const {
+  if (variable_data.rows() != variable_dofs())
+    throw Error("FactoredBody: expected " + std::to_string(variable_dofs()) + " variable data");
+  Matrix rhs = variable_rhs_ * variable_data;
+  if (with_fixed_data) rhs.colwise() += fixed_rhs_;
+  lu_.solve_in_place(rhs);
+  return rhs;
+}
+
+BoundarySolution FactoredBody::recover(const Vector& y, const Vector& variable_data, bool with_fixed_data) const {
+  std::vector<NodeCondition> conditions = conditions_;
+  if (!with_fixed_data)
+    for (auto& c : conditions) c.value = {0.0, 0.0};
+  for (std::size_t k = 0; k < variable_.size(); ++k) {
+    auto& c = conditions[variable_[k].node];
+    for (int comp = 0; comp < 2; ++comp)
+      if (!(c.on_axis && comp == 0)) c.value[comp] = variable_data[2 * static_cast<Index>(k) + comp];
+  }
+  return recover_boundary_values(y, conditions, constraints_);
+}
+
+BoundarySolution FactoredBody::solve(const Vector& variable_data, bool with_fixed_data) const {
+  const Matrix y = solve_unknowns(variable_data, with_fixed_data);
+  return recover(y.col(0), variable_data, with_fixed_data);
+}
+
+Matrix FactoredBody::complementary_columns(const Matrix& variable_data, bool with_fixed_data) const {
+  const Matrix y = solve_unknowns(variable_data, with_fixed_data);
+  // At a variable node every component is of the node's kind, so the unknowns of its two
+  // dofs are exactly the complementary field (global frame). On the axis the radial
+  // unknown is the traction p_r = 0 and the radial displacement is 0.
+  Matrix out(variable_dofs(), variable_data.cols());
+  for (std::size_t k = 0; k < variable_.size(); ++k)
+    for (int c = 0; c < 2; ++c) {
+      const Index node = variable_[k].node;
+      out.row(2 * static_cast<Index>(k) + c) =
+          conditions_[node].on_axis && c == 0 ? Eigen::RowVectorXd::Zero(variable_data.cols())
+                                              : Eigen::RowVectorXd(y.row(2 * node + c));
+    }
+  // Reactions of point constraints at variable nodes add to their tractions.
+  for (std::size_t q = 0; q < constraints_.size(); ++q)
+    for (std::size_t k = 0; k < variable_.size(); ++k)
+      if (variable_[k].node == constraints_[q].reaction_node && variable_[k].kind == ConditionKind::displacement)
+        out.row(2 * static_cast<Index>(k) + constraints_[q].reaction_component) +=
+            y.row(2 * mesh_.node_count() + static_cast<Index>(q));
+  return out;
+}
+
+Vector FactoredBody::complementary(const Vector& variable_data, bool with_fixed_data) const {
+  return complementary_columns(Matrix(variable_data), with_fixed_data).col(0);
+}
+
+}  // namespace bemcontact::bem

@@ -1,0 +1,289 @@
+#include "bemcontact/bem/postprocess.hpp"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "bemcontact/integration/plane_element.hpp"
+
+namespace bemcontact::bem {
+namespace {
+
+Mat2 local_frame(const Vec2& normal) {
+  Mat2 q;
+  q << normal, Vec2(-normal.y(), normal.x());
+  return q;
+}
+
+// Out-of-plane stress of a plane state.
+double out_of_plane_stress(AnalysisType type, const Material& material, double s11, double s22) {
+  return type == AnalysisType::plane_strain ? material.poisson_ratio * (s11 + s22) : 0.0;
+}
+
+}  // namespace
+
+double StressTensor::von_mises() const {
+  const double d12 = s11 - s22, d13 = s11 - s33, d23 = s22 - s33;
+  return std::sqrt(0.5 * (d12 * d12 + d13 * d13 + d23 * d23) + 3.0 * s12 * s12);
+}
+
+std::vector<StressTensor> boundary_stresses(const geometry::BoundaryMesh& mesh, AnalysisType type,
+                                            const Material& material,
+                                            const BoundarySolution& solution) {
+  const Index n = mesh.node_count();
+  // Tangential strain e_ss = s . du/ds at each node, from the quadratic through the node
+  // and its neighbours on the same piece (one-sided at the ends of a piece): second order
+  // on smooth boundaries, also at the shifted nodes next to a corner.
+  std::vector<double> strain(n, 0.0);
+  for (const auto& nodes : mesh.piece_nodes) {
+    const Index m = static_cast<Index>(nodes.size());
+    if (m < 2) continue;
+    std::vector<double> arc(m, 0.0);
+    for (Index k = 1; k < m; ++k)
+      arc[k] = arc[k - 1] + (mesh.nodes[nodes[k]].position - mesh.nodes[nodes[k - 1]].position).norm();
+    for (Index k = 0; k < m; ++k) {
+      const Index i = nodes[k];
+      Vec2 du_ds;
+      if (m == 2) {
+        du_ds = (solution.displacement[nodes[1]] - solution.displacement[nodes[0]]) / (arc[1] - arc[0]);
+      } else {
+        const Index first = std::clamp<Index>(k - 1, 0, m - 3);
+        // Derivative at arc[k] of the Lagrange quadratic through first, first+1, first+2.
+        du_ds = Vec2::Zero();
+        for (Index a = first; a < first + 3; ++a) {
+          double weight = 0.0;
+          for (Index b = first; b < first + 3; ++b) {
+            if (b == a) continue;
+            double term = 1.0 / (arc[a] - arc[b]);
+            for (Index c = first; c < first + 3; ++c)
+              if (c != a && c != b) term *= (arc[k] - arc[c]) / (arc[a] - arc[c]);
+            weight += term;
+          }
+          du_ds += weight * solution.displacement[nodes[a]];
+        }
+      }
+      const Vec2& normal = mesh.nodes[i].normal;
+      strain[i] = Vec2(-normal.y(), normal.x()).dot(du_ds);
+    }
+  }
+  const double mu = material.shear_modulus();
+  const double E = material.young_modulus, nu = material.poisson_ratio;
+  const double nu_kernel = kernel_poisson_ratio(type, material);
+  std::vector<StressTensor> stresses(n);
+  for (Index i = 0; i < n; ++i) {
+    const auto& node = mesh.nodes[i];
+    const Mat2 q = local_frame(node.normal);
+    const Vec2 p_local = q.transpose() * solution.traction[i];
+    const double s_nn = p_local[0], s_ns = p_local[1];
+    const double e_ss = strain[i];
+    double s_ss = 0.0, s33 = 0.0;
+    if (type == AnalysisType::axisymmetric) {
+      const double r = node.position.x();
+      const Vec2 s_dir = q.col(1);
+      double e_tt;
+      if (std::abs(r) > 1e-9 * mesh.scale)
+        e_tt = solution.displacement[i].x() / r;
+      else  // on the axis u_r / r -> du_r/dr, which is e_ss where the surface is radial
+        e_tt = e_ss * (std::abs(s_dir.x()) > 0.5 ? 1.0 : 0.0);
+      const double a = E * e_ss + nu * s_nn, b = E * e_tt + nu * s_nn;
+      s_ss = (a + nu * b) / (1.0 - nu * nu);
+      s33 = (b + nu * a) / (1.0 - nu * nu);
+    } else {
+      s_ss = (nu_kernel * s_nn + 2.0 * mu * e_ss) / (1.0 - nu_kernel);  // section I.6
+    }
+    Mat2 local;
+    local << s_nn, s_ns, s_ns, s_ss;
+    const Mat2 global = q * local * q.transpose();
+    StressTensor& s = stresses[i];
+    s.s11 = global(0, 0);
+    s.s22 = global(1, 1);
+    s.s12 = global(0, 1);
+    s.s33 = type == AnalysisType::axisymmetric ? s33 : out_of_plane_stress(type, material, s.s11, s.s22);
+  }
+  return stresses;
+}
+
+bool point_inside(const geometry::BoundaryMesh& mesh, const Vec2& point, double tolerance) {
+  double winding = 0.0;
+  for (const auto& e : mesh.elements) {
+    const Vec2 a = e.start - point, b = e.end - point;
+    winding += std::atan2(a.x() * b.y() - a.y() * b.x(), a.dot(b));
+  }
+  // Axis pieces carry no elements: close the meridian polygon along the axis. Vertex p is
+  // the start of piece p; its end is the vertex whose incoming piece is p.
+  for (std::size_t p = 0; p < mesh.piece_skipped.size(); ++p) {
+    if (!mesh.piece_skipped[p]) continue;
+    for (const auto& w : mesh.vertices) {
+      if (w.piece_in != static_cast<int>(p)) continue;
+      const Vec2 a = mesh.vertices[p].position - point, b = w.position - point;
+      winding += std::atan2(a.x() * b.y() - a.y() * b.x(), a.dot(b));
+    }
+  }
+  if (std::abs(winding) < std::numbers::pi) return false;
+  return project_on_boundary(mesh, point).distance > tolerance;
+}
+
+BoundaryProjection project_on_boundary(const geometry::BoundaryMesh& mesh, const Vec2& point) {
+  BoundaryProjection best;
+  best.distance = std::numeric_limits<double>::infinity();
+  for (Index k = 0; k < mesh.element_count(); ++k) {
+    const auto& e = mesh.elements[k];
+    const double f = std::clamp((point - e.start).dot(e.tangent) / e.length, 0.0, 1.0);
+    const double d = (e.start + f * (e.end - e.start) - point).norm();
+    if (d < best.distance) best = {d, k, f};
+  }
+  return best;
+}
+
+Vec2 interpolate_on_element(const geometry::BoundaryElement& element, const std::vector<Vec2>& nodal,
+                            double fraction) {
+  Vec2 value = Vec2::Zero();
+  for (int a = 0; a < element.node_count; ++a)
+    value += element.shape(a, fraction) * nodal[element.nodes[a]];
+  return value;
+}
+
+namespace {
+
+template <class Value, class Accumulate>
+void for_vertex_sides(const geometry::BoundaryMesh& mesh, Index vertex, Accumulate&& accumulate) {
+  const auto& v = mesh.vertices[vertex];
+  for (Index e : {v.element_in, v.element_out}) {
+    if (e < 0) continue;
+    const auto& element = mesh.elements[e];
+    const double f = e == v.element_in ? 1.0 : 0.0;
+    for (int a = 0; a < element.node_count; ++a) accumulate(element.nodes[a], element.shape(a, f));
+  }
+}
+
+int vertex_sides(const geometry::BoundaryMesh& mesh, Index vertex) {
+  const auto& v = mesh.vertices[vertex];
+  return (v.element_in >= 0) + (v.element_out >= 0);
+}
+
+}  // namespace
+
+Vec2 vector_at_vertex(const geometry::BoundaryMesh& mesh, Index vertex, const std::vector<Vec2>& nodal) {
+  Vec2 sum = Vec2::Zero();
+  for_vertex_sides<Vec2>(mesh, vertex, [&](Index node, double w) { sum += w * nodal[node]; });
+  return sum / std::max(1, vertex_sides(mesh, vertex));
+}
+
+StressTensor stress_at_vertex(const geometry::BoundaryMesh& mesh, Index vertex,
+                              const std::vector<StressTensor>& nodal) {
+  StressTensor sum;
+  for_vertex_sides<StressTensor>(mesh, vertex, [&](Index node, double w) {
+    sum.s11 += w * nodal[node].s11;
+    sum.s22 += w * nodal[node].s22;
+    sum.s12 += w * nodal[node].s12;
+    sum.s33 += w * nodal[node].s33;
+  });
+  const double k = 1.0 / std::max(1, vertex_sides(mesh, vertex));
+  return {sum.s11 * k, sum.s22 * k, sum.s12 * k, sum.s33 * k};
+}
+
+Vec2 somigliana_displacement(const geometry::BoundaryMesh& mesh, const ElementIntegrator& integrator,
+                             const BoundarySolution& solution, const Vec2& point) {
+  Vec2 u = Vec2::Zero();
+  for (const auto& e : mesh.elements) {
+    const auto influence = integrator.influence(point, e, -1);
+    for (int a = 0; a < e.node_count; ++a) {
+      const Index j = e.nodes[a];
+      // u_k(x) = int U_ki p_i - T_ki u_i  (I.11)
+      u += influence.G[a] * solution.traction[j] - influence.H[a] * solution.displacement[j];
+    }
+  }
+  return u;
+}
+
+StressTensor somigliana_stress(const geometry::BoundaryMesh& mesh, const ElementIntegrator& integrator,
+                               const BoundarySolution& solution, const Vec2& point) {
+  Mat2 sigma = Mat2::Zero();
+  double hoop = 0.0;
+  const bool axisymmetric = integrator.type() == AnalysisType::axisymmetric;
+  const auto kelvin = kernels::KelvinPlane::from(integrator.type(), integrator.material());
+  const auto axi = integration::AxisymmetricKelvin::from(integrator.material());
+  for (const auto& e : mesh.elements) {
+    if (axisymmetric) {
+#ifdef BEMCONTACT_HAS_AXISYMMETRIC
+      const auto s = integration::integrate_axisymmetric_element_stress(axi, point, e);
+#else
+      integration::AxisymmetricStressInfluence s;
+      (void)axi;
+#endif
+      for (int a = 0; a < e.node_count; ++a) {
+        const Index j = e.nodes[a];
+        for (int k = 0; k < 2; ++k) {
+          sigma += s.in_plane.D[a][k] * solution.traction[j][k] -
+                   s.in_plane.S[a][k] * solution.displacement[j][k];
+          hoop += s.hoop_D[a][k] * solution.traction[j][k] - s.hoop_S[a][k] * solution.displacement[j][k];
+        }
+      }
+    } else {
+      const auto s = integration::integrate_plane_element_stress(kelvin, point, e);
+      for (int a = 0; a < e.node_count; ++a) {
+        const Index j = e.nodes[a];
+        // sigma_ij(x) = int D_kij p_k - S_kij u_k  (I.14)
+        for (int k = 0; k < 2; ++k)
+          sigma += s.D[a][k] * solution.traction[j][k] - s.S[a][k] * solution.displacement[j][k];
+      }
+    }
+  }
+  StressTensor result{sigma(0, 0), sigma(1, 1), 0.5 * (sigma(0, 1) + sigma(1, 0)), 0.0};
+  result.s33 = axisymmetric ? hoop
+                            : out_of_plane_stress(integrator.type(), integrator.material(), result.s11,
+                                                  result.s22);
+  return result;
+}
+
+InteriorSolution interior_values(const geometry::BoundaryMesh& mesh, const ElementIntegrator& integrator,
+                                 const BoundarySolution& solution, const std::vector<Vec2>& points,
+                                 const ProgressCallback& progress) {
+  InteriorSolution result;
+  result.points = points;
+  const Index m = static_cast<Index>(points.size());
+  result.displacement.resize(m);
+  result.stress.resize(m);
+  std::atomic<Index> done{0};
+#pragma omp parallel for schedule(dynamic, 4)
+  for (Index k = 0; k < m; ++k) {
+    const Vec2& x = points[k];
+    result.displacement[k] = somigliana_displacement(mesh, integrator, solution, x);
+    const auto projection = project_on_boundary(mesh, x);
+    const auto& element = mesh.elements[projection.element];
+    const double safe_distance = 0.5 * element.length;
+    if (projection.distance >= safe_distance || solution.stress.empty()) {
+      result.stress[k] = somigliana_stress(mesh, integrator, solution, x);
+    } else {
+      // Between the boundary stress at the projection and the Somigliana stress at the
+      // safe distance along the inward normal.
+      const Vec2 foot = element.start + projection.fraction * (element.end - element.start);
+      const Vec2 inside = foot - safe_distance * element.normal;
+      const StressTensor far = somigliana_stress(mesh, integrator, solution, inside);
+      StressTensor near;
+      for (int a = 0; a < element.node_count; ++a) {
+        const double w = element.shape(a, projection.fraction);
+        const StressTensor& s = solution.stress[element.nodes[a]];
+        near.s11 += w * s.s11;
+        near.s22 += w * s.s22;
+        near.s12 += w * s.s12;
+        near.s33 += w * s.s33;
+      }
+      const double t = projection.distance / safe_distance;
+      StressTensor& s = result.stress[k];
+      s.s11 = (1 - t) * near.s11 + t * far.s11;
+      s.s22 = (1 - t) * near.s22 + t * far.s22;
+      s.s12 = (1 - t) * near.s12 + t * far.s12;
+      s.s33 = (1 - t) * near.s33 + t * far.s33;
+    }
+    const Index count = ++done;
+    if (progress && omp_get_thread_num() == 0) progress("interior points", static_cast<double>(count) / m);
+  }
+  return result;
+}
+
+}  // namespace bemcontact::bem

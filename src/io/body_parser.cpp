@@ -1,0 +1,446 @@
+#include "bemcontact/io/body_parser.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <optional>
+
+#include "bemcontact/io/problem_schema.hpp"
+#include "bemcontact/io/suggestions.hpp"
+
+namespace bemcontact::io {
+
+namespace {
+
+using geometry::BoundaryPiece;
+using geometry::PieceShape;
+
+struct Vertices {
+  std::map<std::string, Vec2> points;
+  std::vector<std::string> names;  // in file order, for messages
+};
+
+std::string point_text(const Vec2& p) {
+  return "(" + format_number(p.x()) + ", " + format_number(p.y()) + ")";
+}
+
+// In axisymmetry the body lies in r >= 0; a tiny negative r from rounding is accepted.
+void check_half_plane(const Vec2& point, const SourceLocation& where, const FileContext& context) {
+  if (context.axisymmetric() && point.x() < -1e-12 * std::max(1.0, point.norm()))
+    throw InputError(where, "the point " + point_text(point) +
+                                " has r < 0; in an axisymmetric problem the body lies in r >= 0 "
+                                "(the axis of revolution is r = 0)");
+}
+
+// A vertex name in quotes or a point [x, y]; `label` receives the name or the coordinates.
+Vec2 resolve_point(const toml::node& node, const SourceLocation& where, const Vertices& vertices,
+                   const FileContext& context, std::string* label = nullptr) {
+  if (const auto name = node.value_exact<std::string>()) {
+    const auto found = vertices.points.find(*name);
+    if (found == vertices.points.end()) {
+      std::string message = "unknown vertex '" + *name + "'.";
+      if (vertices.names.empty()) {
+        message += " The file has no [vertices] table; define the vertex there or write the point as " +
+                   context.point_form();
+      } else {
+        message += did_you_mean(*name, vertices.names) + " Vertices: " + quoted_list(vertices.names) +
+                   " (or write the point as " + context.point_form() + ")";
+      }
+      throw InputError(where, message);
+    }
+    if (label) *label = *name;
+    return found->second;
+  }
+  if (node.is_array()) {
+    const Vec2 point = read_point(node, where, context);
+    check_half_plane(point, where, context);
+    if (label) *label = point_text(point);
+    return point;
+  }
+  throw InputError(where, "must be a vertex name in quotes or a point " + context.point_form() +
+                              ", found " + describe_node(node));
+}
+
+bem::ScalarField constant_field(double value) {
+  if (value == 0.0) return {};
+  return [value](const Vec2&) { return value; };
+}
+
+PrescribedValue constant_value(double value) {
+  return PrescribedValue{constant_field(value), format_number(value), value == 0.0, value};
+}
+
+PrescribedValue negated(const PrescribedValue& value) {
+  if (value.zero) return value;
+  if (value.constant) return constant_value(-*value.constant);  // a constant stays a constant
+  PrescribedValue result;
+  result.zero = false;
+  result.canonical = "(-" + value.canonical + ")";
+  result.field = [field = value.field](const Vec2& p) { return -field(p); };
+  return result;
+}
+
+// Piecewise linear in one coordinate, constant beyond the first and last abscissae.
+PrescribedValue read_tabulated(const toml::table& table, const SourceLocation& where,
+                               const FileContext& context) {
+  const TableReader reader(table, where.key, context, where.line);
+  reader.check_keys(schema::tabulated_keys(), "a table of values");
+  std::vector<std::string> axes{"x", "y"};
+  if (context.axisymmetric()) axes = {"r", "z", "x", "y"};
+  const std::string along = reader.choice("along", axes, std::nullopt);
+  const int axis = (along == "x" || along == "r") ? 0 : 1;
+
+  const toml::node& rows_node =
+      reader.require("table", "the rows [[" + along + "0, value0], [" + along + "1, value1], ...]");
+  const toml::array* rows = rows_node.as_array();
+  const std::string row_form = "[" + along + ", value]";
+  if (!rows)
+    reader.fail("table", "must be an array of rows " + row_form + ", found " + describe_node(rows_node));
+  if (rows->size() < 2)
+    reader.fail("table", "needs at least two rows " + row_form + " (for a constant value write the number)");
+  std::vector<double> abscissae, values;
+  for (const toml::node& row_node : *rows) {
+    SourceLocation row_where = reader.where("table");
+    if (line_of(row_node) > 0) row_where.line = line_of(row_node);
+    const toml::array* row = row_node.as_array();
+    if (!row || row->size() != 2)
+      throw InputError(row_where, "each row must be " + row_form + " (two numbers), found " +
+                                      (row ? "an array of " + std::to_string(row->size()) + " values"
+                                           : describe_node(row_node)));
+    const double abscissa = read_number(*row->get(0), row_where, context);
+    const double value = read_number(*row->get(1), row_where, context);
+    if (!abscissae.empty() && !(abscissa > abscissae.back()))
+      throw InputError(row_where, "the " + along + " values of the rows must increase strictly; " +
+                                      format_number(abscissa) + " follows " +
+                                      format_number(abscissae.back()));
+    abscissae.push_back(abscissa);
+    values.push_back(value);
+  }
+
+  PrescribedValue result;
+  result.zero = std::all_of(values.begin(), values.end(), [](double v) { return v == 0.0; });
+  result.canonical = "table(" + std::string(axis == 0 ? "x" : "y") + ";";
+  for (std::size_t i = 0; i < values.size(); ++i)
+    result.canonical += (i ? "," : "") + format_number(abscissae[i]) + ":" + format_number(values[i]);
+  result.canonical += ")";
+  if (result.zero) return constant_value(0.0);
+  result.field = [abscissae, values, axis](const Vec2& p) {
+    const double s = p[axis];
+    if (s <= abscissae.front()) return values.front();
+    if (s >= abscissae.back()) return values.back();
+    const std::size_t k = static_cast<std::size_t>(
+        std::upper_bound(abscissae.begin(), abscissae.end(), s) - abscissae.begin());
+    const double w = (s - abscissae[k - 1]) / (abscissae[k] - abscissae[k - 1]);
+    return values[k - 1] + w * (values[k] - values[k - 1]);
+  };
+  return result;
+}
+
+bool before(const toml::node& a, const toml::node& b) {
+  return a.source().begin < b.source().begin;
+}
+
+// Of two keys present in `reader`, the one written later (the error points there).
+std::string later_key(const TableReader& reader, const std::string& a, const std::string& b) {
+  return before(*reader.find(a), *reader.find(b)) ? b : a;
+}
+
+std::string join(const std::vector<std::string>& names) {
+  std::string text;
+  for (const auto& name : names) text += (text.empty() ? "" : ", ") + name;
+  return text;
+}
+
+bem::BoundaryCondition read_condition(const TableReader& reader, const std::string& piece_name,
+                                      bool on_axis) {
+  static const std::vector<std::string> global_keys{"u1", "u2", "t1", "t2"};
+  static const std::vector<std::string> local_keys{"un", "ut", "tn", "tt", "pressure"};
+  const auto present = [&reader](const std::vector<std::string>& keys) {
+    std::vector<std::string> found;
+    for (const auto& key : keys)
+      if (reader.has(key)) found.push_back(key);
+    std::sort(found.begin(), found.end(), [&reader](const std::string& a, const std::string& b) {
+      return before(*reader.find(a), *reader.find(b));
+    });
+    return found;
+  };
+  const std::vector<std::string> global = present(global_keys);
+  const std::vector<std::string> local = present(local_keys);
+  const std::string label = "boundary '" + piece_name + "'";
+
+  bem::BoundaryCondition condition;
+  if (on_axis) {
+    if (!global.empty() || !local.empty()) {
+      std::vector<std::string> given = global;
+      given.insert(given.end(), local.begin(), local.end());
+      reader.fail(given.front(), label + " lies on the axis r = 0, which is not a boundary of an axisymmetric "
+                               "body (the symmetry there is built into the formulation): remove its "
+                               "conditions (" + join(given) + ")");
+    }
+    condition.signature = "axis";
+    return condition;
+  }
+  if (!global.empty() && !local.empty())
+    reader.fail(later_key(reader, global.back(), local.back()),
+                label + " mixes global components (" + join(global) + ") with local ones (" +
+                    join(local) + "). Give all conditions of a boundary in one frame: u1 u2 t1 t2 "
+                    "along x and y, or un ut tn tt pressure along the outward normal and the "
+                    "tangent; split the boundary in two if the conditions really differ");
+
+  const bool is_local = !local.empty();
+  condition.frame = is_local ? bem::ConditionFrame::local : bem::ConditionFrame::global;
+  // Key names per component c and kind (0 displacement, 1 traction).
+  static const char* const global_names[2][2] = {{"u1", "t1"}, {"u2", "t2"}};
+  static const char* const local_names[2][2] = {{"un", "tn"}, {"ut", "tt"}};
+  const auto& names = is_local ? local_names : global_names;
+  std::array<PrescribedValue, 2> values;
+  for (int c = 0; c < 2; ++c) {
+    const std::string u = names[c][0];
+    const std::string t = names[c][1];
+    const bool has_u = reader.has(u), has_t = reader.has(t);
+    const bool has_pressure = is_local && c == 0 && reader.has("pressure");
+    const std::string traction_key = has_t ? t : "pressure";
+    if (has_u && (has_t || has_pressure))
+      reader.fail(later_key(reader, u, traction_key),
+                  label + " prescribes both a displacement (" + u + ") and a traction (" +
+                      traction_key + ") on the same component. Each component takes one of them; "
+                      "the other is what the solver computes. Remove one of '" + u + "' and '" +
+                      traction_key + "'");
+    if (has_t && has_pressure)
+      reader.fail(later_key(reader, t, "pressure"),
+                  label + " gives both 'tn' and 'pressure'; pressure = p is shorthand for tn = -p. "
+                          "Remove one of them");
+    condition.kind[c] = has_u ? bem::ConditionKind::displacement : bem::ConditionKind::traction;
+    if (has_u || has_t) {
+      const std::string& key = has_u ? u : t;
+      values[c] = read_prescribed_value(*reader.find(key), reader.where(key), reader.context());
+    } else if (has_pressure) {
+      values[c] = negated(
+          read_prescribed_value(*reader.find("pressure"), reader.where("pressure"), reader.context()));
+    } else {
+      values[c] = constant_value(0.0);  // a missing component is free (zero traction)
+    }
+    condition.value[c] = values[c].field;
+  }
+
+  // Canonical text: equal conditions give equal text. Zero tractions (or zero
+  // displacements) on both components are the same in any frame.
+  const bool both_zero = values[0].zero && values[1].zero;
+  using bem::ConditionKind;
+  if (both_zero && condition.kind[0] == ConditionKind::traction &&
+      condition.kind[1] == ConditionKind::traction) {
+    condition.signature = "free";
+    return condition;
+  }
+  const bool frame_free = both_zero && condition.kind[0] == condition.kind[1];
+  const bool write_local = is_local && !frame_free;
+  condition.signature = write_local ? "local:" : "global:";
+  for (int c = 0; c < 2; ++c) {
+    const int k = condition.kind[c] == ConditionKind::displacement ? 0 : 1;
+    condition.signature += std::string(c ? ";" : "") + (write_local ? local_names : global_names)[c][k] +
+                           "=" + values[c].canonical;
+  }
+  return condition;
+}
+
+BoundaryPiece read_piece(const TableReader& reader, int index, const Vertices& vertices,
+                         const FileContext& context) {
+  reader.check_keys(schema::boundary_keys(), "each [[boundary]] table");
+  BoundaryPiece piece;
+  piece.where = SourceLocation{context.file, reader.line(), reader.path()};
+  piece.name = reader.optional_string("name").value_or("boundary" + std::to_string(index));
+  if (piece.name.empty()) reader.fail("name", "the name must not be empty");
+  const std::string label = "boundary '" + piece.name + "'";
+  const std::string shape = reader.choice("shape", {"line", "arc"}, "line");
+  piece.shape = shape == "arc" ? PieceShape::arc : PieceShape::line;
+  const std::string point_help = "a vertex name in quotes or a point " + context.point_form();
+  piece.start = resolve_point(reader.require("from", "the start point, " + point_help),
+                              reader.where("from"), vertices, context);
+  piece.end = resolve_point(reader.require("to", "the end point, " + point_help), reader.where("to"),
+                            vertices, context);
+
+  if (piece.shape == PieceShape::arc) {
+    piece.center = resolve_point(reader.require("center", "an arc needs its center, " + point_help),
+                                 reader.where("center"), vertices, context);
+    piece.counterclockwise = reader.choice("direction", {"ccw", "cw"}, "ccw") == "ccw";
+  } else {
+    for (const char* key : {"center", "direction"})
+      if (reader.has(key))
+        reader.fail(key, "'" + std::string(key) + "' applies only to arcs: add shape = \"arc\" to " +
+                             label + " or remove '" + key + "'");
+  }
+
+  piece.elements = reader.integer_or("elements", 1);
+  if (piece.elements < 1)
+    reader.fail("elements", "the number of elements must be >= 1, found " + std::to_string(piece.elements));
+  piece.grading = reader.optional_number("grading").value_or(1.0);
+  if (!(piece.grading >= 1.0))
+    reader.fail("grading", "the grading (ratio of the longest to the shortest element) must be >= 1 "
+                           "(1 = uniform), found " + format_number(piece.grading) +
+                           "; to put the short elements at the other end use refine = \"end\"");
+  piece.refine_toward = reader.choice("refine", {"start", "end"}, "start") == "end"
+                            ? geometry::RefineToward::end
+                            : geometry::RefineToward::start;
+
+  // Geometry that can be checked on the piece alone, with the file position at hand;
+  // the contour checks (closure, crossings, orientation) come later in geometry/.
+  const double chord = (piece.end - piece.start).norm();
+  const double size = std::max({piece.start.norm(), piece.end.norm(), chord});
+  if (!(chord > 1e-12 * size) || size == 0.0) {
+    if (piece.shape == PieceShape::arc)
+      reader.fail("to", label + ": 'from' and 'to' are the same point " + point_text(piece.start) +
+                            "; split a full circle into two or more arcs");
+    reader.fail("to", label + " has zero length: 'from' and 'to' are the same point " +
+                          point_text(piece.start));
+  }
+  if (piece.shape == PieceShape::arc) {
+    const double r0 = (piece.start - piece.center).norm();
+    const double r1 = (piece.end - piece.center).norm();
+    if (!(r0 > 1e-12 * size))
+      reader.fail("center", label + ": the center coincides with the start point");
+    // 1e-6 lets hand-typed decimals through; exact points come from expressions
+    // such as ["R*cos(pi/4)", "R*sin(pi/4)"].
+    if (std::fabs(r0 - r1) > 1e-6 * std::max(r0, r1))
+      reader.fail("center", label + ": 'from' and 'to' are not on one circle around the center " +
+                                point_text(piece.center) + ": their distances to it are " +
+                                format_number(r0) + " and " + format_number(r1) +
+                                " (write exact coordinates, e.g. [\"R*cos(pi/4)\", \"R*sin(pi/4)\"])");
+  }
+
+  return piece;
+}
+
+// Axisymmetry: a straight piece along r = 0 is the axis, not a boundary of the body.
+bool lies_on_axis(const BoundaryPiece& piece, const FileContext& context) {
+  const double chord = (piece.end - piece.start).norm();
+  return context.axisymmetric() && piece.shape == PieceShape::line &&
+         std::fabs(piece.start.x()) <= 1e-10 * chord && std::fabs(piece.end.x()) <= 1e-10 * chord;
+}
+
+const toml::array* array_of_tables(const TableReader& reader, std::string_view key,
+                                   const std::string& header) {
+  const toml::node* node = reader.find(key);
+  if (!node) return nullptr;
+  if (node->is_table())
+    reader.fail(key, "write " + header + " with double brackets: each entry is one table of an "
+                     "array of tables, found a single table [" + std::string(key) + "]");
+  const toml::array* array = node->as_array();
+  if (!array || array->empty() || !array->is_array_of_tables())
+    reader.fail(key, "must be one or more " + header + " tables, found " +
+                         (array && array->empty() ? std::string("an empty array") : describe_node(*node)));
+  return array;
+}
+
+}  // namespace
+
+PrescribedValue read_prescribed_value(const toml::node& node, const SourceLocation& where,
+                                      const FileContext& context) {
+  if (node.is_integer() || node.is_floating_point())
+    return constant_value(read_number(node, where, context));
+  if (const auto text = node.value_exact<std::string>()) {
+    const Expression expression = Expression::parse(*text, context.field_scope(), where);
+    if (expression.is_constant()) {
+      const double value = expression.value();
+      if (!std::isfinite(value))
+        throw InputError(where, "the value is " + format_number(value) + "; a finite number is needed");
+      return constant_value(value);
+    }
+    return PrescribedValue{expression.field(), expression.canonical(), false, std::nullopt};
+  }
+  if (const toml::table* table = node.as_table()) return read_tabulated(*table, where, context);
+  throw InputError(where, "must be a number, an expression in quotes (e.g. \"1 - (2*y/H)^2\") or a "
+                          "table of values { table = [[x0, v0], [x1, v1], ...], along = \"x\" }, "
+                          "found " + describe_node(node));
+}
+
+bem::BodyDefinition parse_body(const toml::table& table, const BodyContext& body_context) {
+  const FileContext& context = *body_context.file;
+  const TableReader body(table, body_context.path, context, body_context.fallback_line);
+  std::vector<std::string> valid = body_context.enclosing_keys;
+  valid.insert(valid.end(), schema::body_keys().begin(), schema::body_keys().end());
+  body.check_keys(valid, body_context.path.empty() ? "the top level of the file" : "a [[body]] table");
+
+  bem::BodyDefinition definition;
+  if (!body_context.path.empty()) definition.name = body_context.path;
+
+  // [material]
+  const toml::table* material_table = body.optional_table("material", "[material]");
+  if (!material_table)
+    body.fail("material", "missing required table [material] with E (Young's modulus) and nu "
+                          "(Poisson's ratio)");
+  const TableReader material(*material_table, body.key_path("material"), context, body.line());
+  material.check_keys(schema::material_keys(), "the [material] table");
+  definition.material.young_modulus = material.number("E");
+  if (!(definition.material.young_modulus > 0.0))
+    material.fail("E", "Young's modulus E must be > 0, found " +
+                           format_number(definition.material.young_modulus));
+  definition.material.poisson_ratio = material.number("nu");
+  const double nu = definition.material.poisson_ratio;
+  if (!(nu > -1.0 && nu < 0.5))
+    material.fail("nu", "Poisson's ratio nu must satisfy -1 < nu < 0.5, found " + format_number(nu));
+
+  // [vertices]
+  Vertices vertices;
+  if (const toml::table* vertex_table = body.optional_table("vertices", "[vertices]")) {
+    std::vector<std::pair<const toml::key*, const toml::node*>> entries;
+    for (const auto& [key, node] : *vertex_table) entries.emplace_back(&key, &node);
+    std::sort(entries.begin(), entries.end(),
+              [](const auto& a, const auto& b) { return before(*a.second, *b.second); });
+    for (const auto& [key, node] : entries) {
+      const std::string name(key->str());
+      SourceLocation where{context.file, line_of(*node), body.key_path("vertices." + name)};
+      const Vec2 point = read_point(*node, where, context);
+      check_half_plane(point, where, context);
+      vertices.points[name] = point;
+      vertices.names.push_back(name);
+    }
+  }
+
+  // [[boundary]]
+  const toml::array* boundaries = array_of_tables(body, "boundary", "[[boundary]]");
+  if (!boundaries)
+    body.fail("boundary", "missing [[boundary]] tables: the body needs boundary pieces (lines and "
+                          "arcs) forming closed contours");
+  std::map<std::string, int> name_lines;
+  int index = 0;
+  for (const toml::node& node : *boundaries) {
+    ++index;
+    const std::string path = body.key_path("boundary[" + std::to_string(index) + "]");
+    const TableReader reader(*node.as_table(), path, context, body.where("boundary").line);
+    BoundaryPiece piece = read_piece(reader, index, vertices, context);
+    const auto [existing, inserted] = name_lines.emplace(piece.name, reader.line());
+    if (!inserted)
+      reader.fail(reader.has("name") ? "name" : "",
+                  "the boundary name '" + piece.name + "' is already used by the boundary at line " +
+                      std::to_string(existing->second) + "; boundary names must be unique");
+    bem::BoundaryCondition condition = read_condition(reader, piece.name, lies_on_axis(piece, context));
+    piece.condition_signature = condition.signature;
+    definition.pieces.push_back(std::move(piece));
+    definition.conditions.push_back(std::move(condition));
+  }
+
+  // [[constraint]]
+  if (const toml::array* constraints = array_of_tables(body, "constraint", "[[constraint]]")) {
+    index = 0;
+    for (const toml::node& node : *constraints) {
+      ++index;
+      const std::string path = body.key_path("constraint[" + std::to_string(index) + "]");
+      const TableReader reader(*node.as_table(), path, context, body.where("constraint").line);
+      reader.check_keys(schema::constraint_keys(), "each [[constraint]] table");
+      bem::PointConstraint constraint;
+      constraint.where = SourceLocation{context.file, reader.line(), path};
+      constraint.position =
+          resolve_point(reader.require("at", "the point, a vertex name or " + context.point_form()),
+                        reader.where("at"), vertices, context, &constraint.label);
+      constraint.displacement[0] = reader.optional_number("u1");
+      constraint.displacement[1] = reader.optional_number("u2");
+      if (!constraint.displacement[0] && !constraint.displacement[1])
+        reader.fail("", "a point constraint needs u1 and/or u2 (the prescribed displacement "
+                        "components at '" + constraint.label + "')");
+      definition.constraints.push_back(std::move(constraint));
+    }
+  }
+  return definition;
+}
+
+}  // namespace bemcontact::io

@@ -1,0 +1,69 @@
+#include "bemcontact/io/json_writer.hpp"
+
+namespace bemcontact::io {
+
+std::string write_json_string(const nlohmann::json& value, int indent) {
+  // Invalid UTF-8 in a title must not abort the summary: replace it.
+  return value.dump(indent, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
+}
+
+nlohmann::json timings_json(const bem::PhaseTimings& timings) {
+  nlohmann::json phases = nlohmann::json::array();
+  for (const auto& [name, seconds] : timings.phases)
+    phases.push_back({{"name", name}, {"seconds", seconds}});
+  return {{"phases", phases}, {"total", timings.total()}};
+}
+
+nlohmann::json solve_report_json(const bem::SolveReport& report) {
+  return {{"unknowns", report.unknowns},
+          {"reciprocal_condition", report.reciprocal_condition},
+          {"relative_residual", report.relative_residual},
+          {"threads", report.threads}};
+}
+
+nlohmann::json problem_echo_json(const ProblemFile& file) {
+  const bem::ProblemDefinition& problem = file.problem;
+  nlohmann::json boundaries = nlohmann::json::array();
+  for (std::size_t i = 0; i < problem.body.pieces.size(); ++i) {
+    const auto& piece = problem.body.pieces[i];
+    nlohmann::json entry{
+        {"name", piece.name},
+        {"shape", piece.shape == geometry::PieceShape::arc ? "arc" : "line"},
+        {"from", {piece.start.x(), piece.start.y()}},
+        {"to", {piece.end.x(), piece.end.y()}},
+        {"elements", piece.elements},
+        {"grading", piece.grading},
+        {"refine", piece.refine_toward == geometry::RefineToward::end ? "end" : "start"},
+        {"condition", i < problem.body.conditions.size() ? problem.body.conditions[i].signature
+                                                         : piece.condition_signature}};
+    if (piece.shape == geometry::PieceShape::arc) {
+      entry["center"] = {piece.center.x(), piece.center.y()};
+      entry["direction"] = piece.counterclockwise ? "ccw" : "cw";
+    }
+    boundaries.push_back(entry);
+  }
+  nlohmann::json constraints = nlohmann::json::array();
+  for (const auto& constraint : problem.body.constraints) {
+    nlohmann::json entry{{"at", constraint.label},
+                         {"position", {constraint.position.x(), constraint.position.y()}}};
+    for (int c = 0; c < 2; ++c)
+      if (constraint.displacement[c]) entry[c == 0 ? "u1" : "u2"] = *constraint.displacement[c];
+    constraints.push_back(entry);
+  }
+  nlohmann::json parameters = nlohmann::json::object();
+  for (const auto& [name, value] : file.parameters) parameters[name] = value;
+  return {{"title", problem.title},
+          {"source_file", problem.source_file},
+          {"analysis", to_string(problem.analysis)},
+          {"interpolation", to_string(problem.mesh.interpolation)},
+          {"mesh", {{"corner_shift", problem.mesh.corner_shift}}},
+          {"material",
+           {{"E", problem.body.material.young_modulus}, {"nu", problem.body.material.poisson_ratio}}},
+          {"parameters", parameters},
+          {"boundaries", boundaries},
+          {"constraints", constraints},
+          {"interior_points", problem.interior_points.size()},
+          {"output", {{"vtk", file.output.vtk}}}};
+}
+
+}  // namespace bemcontact::io

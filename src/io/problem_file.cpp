@@ -1,0 +1,230 @@
+#include "bemcontact/io/problem_file.hpp"
+
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+#include "bemcontact/io/body_parser.hpp"
+#include "bemcontact/io/problem_schema.hpp"
+#include "bemcontact/io/suggestions.hpp"
+#include "bemcontact/io/toml_reader.hpp"
+
+namespace bemcontact::io {
+
+namespace {
+
+// Names used in `text` as identifiers (not the exponent of a number like 1e3).
+std::vector<std::string> identifiers_in(std::string_view text) {
+  std::vector<std::string> names;
+  const auto name_char = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+  for (std::size_t i = 0; i < text.size();) {
+    const bool starts = (std::isalpha(static_cast<unsigned char>(text[i])) || text[i] == '_') &&
+                        (i == 0 || (!name_char(text[i - 1]) && text[i - 1] != '.'));
+    if (!starts) {
+      ++i;
+      continue;
+    }
+    std::size_t end = i;
+    while (end < text.size() && name_char(text[end])) ++end;
+    names.emplace_back(text.substr(i, end - i));
+    i = end;
+  }
+  return names;
+}
+
+// [parameters]: numbers, or expressions of the parameters written before them.
+void read_parameters(const TableReader& root, FileContext& context) {
+  const toml::table* table = root.optional_table("parameters", "[parameters]");
+  if (!table) return;
+  const TableReader parameters(*table, "parameters", context, root.line());
+  std::vector<std::pair<std::string, const toml::node*>> entries;
+  for (const auto& [key, node] : *table) entries.emplace_back(std::string(key.str()), &node);
+  std::sort(entries.begin(), entries.end(), [](const auto& a, const auto& b) {
+    return a.second->source().begin < b.second->source().begin;
+  });
+  for (std::size_t i = 0; i < entries.size(); ++i) {
+    const auto& [name, node] = entries[i];
+    const SourceLocation where = parameters.where(name);
+    if (!is_identifier(name))
+      throw InputError(where, "invalid parameter name '" + name + "': a name starts with a letter or "
+                              "'_' and holds only letters, digits and '_'");
+    if (is_reserved_name(name))
+      throw InputError(where, "'" + name + "' cannot be a parameter name: x, y, r, z, pi and the "
+                              "function names are reserved");
+    if (node->is_string()) {
+      // Say plainly when an expression uses a parameter defined further down.
+      const std::string text = *node->value_exact<std::string>();
+      for (const std::string& used : identifiers_in(text))
+        for (std::size_t j = i + 1; j < entries.size(); ++j)
+          if (entries[j].first == used && !context.parameters.count(used))
+            throw InputError(where, "parameter '" + name + "' uses '" + used +
+                                        "', which is defined later (line " +
+                                        std::to_string(line_of(*entries[j].second)) +
+                                        "); a parameter may only use the parameters written before it");
+    } else if (!node->is_integer() && !node->is_floating_point()) {
+      throw InputError(where, "a parameter must be a number or an expression in quotes, found " +
+                                  describe_node(*node));
+    }
+    context.parameters[name] = read_number(*node, where, context);
+  }
+}
+
+std::vector<bem::InteriorPoint> read_grid(const TableReader& grid, const FileContext& context) {
+  std::vector<std::string> valid{"x", "y"};
+  if (context.axisymmetric()) valid = {"r", "z", "x", "y"};
+  grid.check_keys(valid, "a grid table");
+  std::array<std::vector<double>, 2> coordinates;
+  for (int axis = 0; axis < 2; ++axis) {
+    const std::string plane_name = axis == 0 ? "x" : "y";
+    const std::string axisymmetric_name = axis == 0 ? "r" : "z";
+    std::string key = plane_name;
+    if (context.axisymmetric()) {
+      if (grid.has(plane_name) && grid.has(axisymmetric_name))
+        grid.fail(axisymmetric_name, "give '" + axisymmetric_name + "' or its alias '" + plane_name +
+                                         "', not both");
+      key = grid.has(plane_name) ? plane_name : axisymmetric_name;
+    }
+    const toml::node& node =
+        grid.require(key, "[min, max, count] of the grid along " + key);
+    const toml::array* range = node.as_array();
+    if (!range || range->size() != 3)
+      grid.fail(key, "must be [min, max, count], found " +
+                         (range ? "an array of " + std::to_string(range->size()) + " values"
+                                : describe_node(node)));
+    const SourceLocation where = grid.where(key);
+    const double low = read_number(*range->get(0), where, context);
+    const double high = read_number(*range->get(1), where, context);
+    const int count = read_integer(*range->get(2), where, context);
+    if (count < 1) grid.fail(key, "the count must be >= 1, found " + std::to_string(count));
+    if (high < low)
+      grid.fail(key, "max (" + format_number(high) + ") is below min (" + format_number(low) + ")");
+    if (count == 1 && high != low)
+      grid.fail(key, "a count of 1 needs min = max (one line of points); use a count >= 2 to "
+                     "span [" + format_number(low) + ", " + format_number(high) + "]");
+    for (int i = 0; i < count; ++i)
+      coordinates[axis].push_back(count == 1 ? low : low + (high - low) * i / (count - 1));
+  }
+  // Row by row: x (r) varies fastest.
+  std::vector<bem::InteriorPoint> points;
+  for (const double y : coordinates[1])
+    for (const double x : coordinates[0]) points.push_back(bem::InteriorPoint{Vec2(x, y), true});
+  return points;
+}
+
+std::vector<bem::InteriorPoint> read_interior(const TableReader& root, const FileContext& context) {
+  std::vector<bem::InteriorPoint> points;
+  const toml::table* table = root.optional_table("interior", "[interior]");
+  if (!table) return points;
+  const TableReader interior(*table, "interior", context, root.line());
+  interior.check_keys(schema::interior_keys(), "the [interior] table");
+  if (const toml::node* node = interior.find("points")) {
+    const toml::array* list = node->as_array();
+    if (!list)
+      interior.fail("points", "must be a list of points [" + context.point_form() + ", ...], found " +
+                                  describe_node(*node));
+    for (const toml::node& point : *list) {
+      SourceLocation where = interior.where("points");
+      if (line_of(point) > 0) where.line = line_of(point);
+      points.push_back(bem::InteriorPoint{read_point(point, where, context), false});
+    }
+  }
+  if (const toml::node* node = interior.find("grid")) {
+    if (const toml::table* grid = node->as_table()) {
+      const auto grid_points = read_grid(TableReader(*grid, "interior.grid", context, interior.line()), context);
+      points.insert(points.end(), grid_points.begin(), grid_points.end());
+    } else if (const toml::array* grids = node->as_array(); grids && grids->is_array_of_tables()) {
+      int index = 0;
+      for (const toml::node& grid : *grids) {
+        ++index;
+        const auto grid_points =
+            read_grid(TableReader(*grid.as_table(), "interior.grid[" + std::to_string(index) + "]",
+                                  context, interior.where("grid").line),
+                      context);
+        points.insert(points.end(), grid_points.begin(), grid_points.end());
+      }
+    } else {
+      interior.fail("grid", "must be a table { x = [min, max, count], y = [min, max, count] } (or a "
+                            "list of such tables), found " + describe_node(*node));
+    }
+  }
+  return points;
+}
+
+}  // namespace
+
+ProblemFile parse_problem(std::string_view text, const std::string& file_name) {
+  toml::table root_table;
+  try {
+    root_table = toml::parse(text, std::string_view(file_name));
+  } catch (const toml::parse_error& error) {
+    const auto& begin = error.source().begin;
+    throw InputError(SourceLocation{file_name, static_cast<int>(begin.line), ""},
+                     "TOML syntax error at column " + std::to_string(begin.column) + ": " +
+                         std::string(error.description()));
+  }
+
+  ProblemFile result;
+  FileContext context;
+  context.file = file_name;
+  const TableReader root(root_table, "", context, 1);
+  std::vector<std::string> root_keys = schema::file_keys();
+  root_keys.insert(root_keys.end(), schema::body_keys().begin(), schema::body_keys().end());
+  root.check_keys(root_keys, "the top level of the file");
+
+  bem::ProblemDefinition& problem = result.problem;
+  problem.source_file = file_name;
+  const std::string analysis =
+      root.choice("analysis", {"plane_strain", "plane_stress", "axisymmetric"}, std::nullopt);
+  problem.analysis = analysis == "plane_stress"   ? AnalysisType::plane_stress
+                     : analysis == "axisymmetric" ? AnalysisType::axisymmetric
+                                                  : AnalysisType::plane_strain;
+  context.analysis = problem.analysis;
+  problem.title = root.optional_string("title").value_or(std::filesystem::path(file_name).stem().string());
+  problem.mesh.interpolation = root.choice("interpolation", {"linear", "constant"}, "linear") == "constant"
+                                   ? Interpolation::constant
+                                   : Interpolation::linear;
+  read_parameters(root, context);
+  result.parameters = context.parameters;
+
+  problem.body = parse_body(root_table, BodyContext{&context, "", schema::file_keys(), 1});
+  problem.interior_points = read_interior(root, context);
+
+  if (const toml::table* table = root.optional_table("mesh", "[mesh]")) {
+    const TableReader mesh(*table, "mesh", context, root.line());
+    mesh.check_keys(schema::mesh_keys(), "the [mesh] table");
+    if (const auto shift = mesh.optional_number("corner_shift")) {
+      if (!(*shift > 0.0 && *shift < 0.5))
+        mesh.fail("corner_shift", "the corner shift (position of a split corner node, as a fraction "
+                                  "of its element's length) must satisfy 0 < corner_shift < 0.5, "
+                                  "found " + format_number(*shift));
+      problem.mesh.corner_shift = *shift;
+    }
+  }
+  if (const toml::table* table = root.optional_table("output", "[output]")) {
+    const TableReader output(*table, "output", context, root.line());
+    output.check_keys(schema::output_keys(), "the [output] table");
+    result.output.vtk = output.boolean_or("vtk", true);
+  }
+  return result;
+}
+
+ProblemFile read_problem_file(const std::filesystem::path& path) {
+  const SourceLocation where{path.string(), 0, ""};
+  std::error_code error;
+  const auto status = std::filesystem::status(path, error);
+  if (!std::filesystem::exists(status))
+    throw InputError(where, "cannot read the problem file: no such file");
+  if (std::filesystem::is_directory(status))
+    throw InputError(where, "cannot read the problem file: it is a directory");
+  std::ifstream in(path, std::ios::binary);
+  if (!in)
+    throw InputError(where, std::string("cannot open the problem file: ") + std::strerror(errno));
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) throw InputError(where, "error while reading the problem file");
+  return parse_problem(text.str(), path.string());
+}
+
+}  // namespace bemcontact::io

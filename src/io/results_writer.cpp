@@ -1,0 +1,287 @@
+#include "bemcontact/io/results_writer.hpp"
+
+#include <algorithm>
+
+#include "bemcontact/core/error.hpp"
+#include "bemcontact/io/expression.hpp"
+
+namespace bemcontact::io {
+
+namespace {
+
+// A growing text with the shortest round-trip formatting of doubles.
+class Text {
+ public:
+  Text& operator<<(double value) {
+    text_ += format_number(value);
+    return *this;
+  }
+  Text& operator<<(Index value) {
+    text_ += std::to_string(value);
+    return *this;
+  }
+  Text& operator<<(int value) {
+    text_ += std::to_string(value);
+    return *this;
+  }
+  Text& operator<<(std::string_view value) {
+    text_.append(value);
+    return *this;
+  }
+  Text& operator<<(const char* value) {
+    text_.append(value);
+    return *this;
+  }
+  Text& operator<<(char value) {
+    text_.push_back(value);
+    return *this;
+  }
+  std::string str() && { return std::move(text_); }
+
+ private:
+  std::string text_;
+};
+
+void require_size(std::size_t found, std::size_t expected, const char* what) {
+  if (found != expected)
+    throw Error(std::string("results writer: ") + what + " has " + std::to_string(found) +
+                " entries, expected " + std::to_string(expected));
+}
+
+void check_boundary(const geometry::BoundaryMesh& mesh, const bem::BoundarySolution& solution) {
+  const std::size_t nodes = mesh.nodes.size();
+  require_size(solution.displacement.size(), nodes, "the boundary displacement");
+  require_size(solution.traction.size(), nodes, "the boundary traction");
+  require_size(solution.stress.size(), nodes, "the boundary stress");
+}
+
+void check_interior(const bem::InteriorSolution& solution) {
+  require_size(solution.displacement.size(), solution.points.size(), "the interior displacement");
+  require_size(solution.stress.size(), solution.points.size(), "the interior stress");
+}
+
+void stress_columns(Text& out, const bem::StressTensor& s) {
+  out << s.s11 << ',' << s.s22 << ',' << s.s12 << ',' << s.s33 << ',' << s.von_mises();
+}
+
+// VTK legacy header: the title line must be one line of at most 255 characters.
+void vtk_header(Text& out, std::string_view title) {
+  std::string line(title.substr(0, 255));
+  std::replace(line.begin(), line.end(), '\n', ' ');
+  std::replace(line.begin(), line.end(), '\r', ' ');
+  if (line.empty()) line = "bemcontact";
+  out << "# vtk DataFile Version 3.0\n" << line << "\nASCII\nDATASET POLYDATA\n";
+}
+
+void vtk_points(Text& out, const std::vector<Vec2>& points) {
+  out << "POINTS " << static_cast<Index>(points.size()) << " double\n";
+  for (const Vec2& p : points) out << p.x() << ' ' << p.y() << " 0\n";
+}
+
+void vtk_vectors(Text& out, const char* name, const std::vector<Vec2>& values) {
+  out << "VECTORS " << name << " double\n";
+  for (const Vec2& v : values) out << v.x() << ' ' << v.y() << " 0\n";
+}
+
+template <class Value>
+void vtk_scalars(Text& out, const char* name, const char* type, const std::vector<Value>& values) {
+  out << "SCALARS " << name << ' ' << type << " 1\nLOOKUP_TABLE default\n";
+  for (const Value& v : values) out << v << '\n';
+}
+
+// von_mises, s11, s22, s12, s33 as scalars and the full tensor (s33 out of plane).
+void vtk_stress(Text& out, const std::vector<bem::StressTensor>& stress) {
+  std::vector<double> column(stress.size());
+  const auto scalars = [&](const char* name, auto get) {
+    std::transform(stress.begin(), stress.end(), column.begin(), get);
+    vtk_scalars(out, name, "double", column);
+  };
+  scalars("von_mises", [](const bem::StressTensor& s) { return s.von_mises(); });
+  scalars("s11", [](const bem::StressTensor& s) { return s.s11; });
+  scalars("s22", [](const bem::StressTensor& s) { return s.s22; });
+  scalars("s12", [](const bem::StressTensor& s) { return s.s12; });
+  scalars("s33", [](const bem::StressTensor& s) { return s.s33; });
+  out << "TENSORS stress double\n";
+  for (const auto& s : stress)
+    out << s.s11 << ' ' << s.s12 << " 0\n" << s.s12 << ' ' << s.s22 << " 0\n0 0 " << s.s33 << "\n\n";
+}
+
+// Geometry of the boundary lines and the point data every boundary file carries.
+void vtk_boundary_geometry(Text& out, const geometry::BoundaryMesh& mesh) {
+  std::vector<Vec2> positions, normals;
+  std::vector<int> pieces;
+  for (const auto& node : mesh.nodes) {
+    positions.push_back(node.position);
+    normals.push_back(node.normal);
+    pieces.push_back(node.piece);
+  }
+  vtk_points(out, positions);
+  const auto lines = boundary_polylines(mesh);
+  Index size = 0;
+  for (const auto& line : lines) size += 1 + static_cast<Index>(line.size());
+  out << "LINES " << static_cast<Index>(lines.size()) << ' ' << size << '\n';
+  for (const auto& line : lines) {
+    out << static_cast<Index>(line.size());
+    for (const Index node : line) out << ' ' << node;
+    out << '\n';
+  }
+  out << "POINT_DATA " << static_cast<Index>(mesh.nodes.size()) << '\n';
+  vtk_vectors(out, "normal", normals);
+  vtk_scalars(out, "piece", "int", pieces);
+}
+
+// Appends the nodes of `elements` (indices into the mesh) to `line`, shared nodes once.
+void append_nodes(const geometry::BoundaryMesh& mesh, const std::vector<Index>& elements,
+                  std::vector<Index>& line) {
+  for (const Index e : elements) {
+    const auto& element = mesh.elements[e];
+    for (int a = 0; a < element.node_count; ++a) {
+      const Index node = element.nodes[a];
+      if (node < 0) continue;
+      if (line.empty() || line.back() != node) line.push_back(node);
+    }
+  }
+}
+
+}  // namespace
+
+std::vector<std::vector<Index>> boundary_polylines(const geometry::BoundaryMesh& mesh) {
+  // Element order along each contour; without contours, the element order of the mesh.
+  std::vector<std::vector<Index>> sequences;
+  for (const auto& contour : mesh.contours) {
+    std::vector<Index> sequence;
+    for (const int piece : contour.pieces)
+      if (piece >= 0 && piece < static_cast<int>(mesh.piece_elements.size()))
+        sequence.insert(sequence.end(), mesh.piece_elements[piece].begin(),
+                        mesh.piece_elements[piece].end());
+    if (!sequence.empty()) sequences.push_back(std::move(sequence));
+  }
+  if (sequences.empty() && !mesh.elements.empty()) {
+    sequences.emplace_back(mesh.elements.size());
+    for (std::size_t e = 0; e < mesh.elements.size(); ++e) sequences.back()[e] = static_cast<Index>(e);
+  }
+
+  const double tolerance = 1e-9 * (mesh.scale > 0.0 ? mesh.scale : 1.0);
+  std::vector<std::vector<Index>> lines;
+  for (const auto& sequence : sequences) {
+    const std::size_t m = sequence.size();
+    // joined[i]: element i starts where element i-1 (cyclically) ends.
+    std::vector<std::size_t> gaps;
+    for (std::size_t i = 0; i < m; ++i) {
+      const auto& previous = mesh.elements[sequence[(i + m - 1) % m]];
+      const auto& current = mesh.elements[sequence[i]];
+      if ((current.start - previous.end).norm() > tolerance) gaps.push_back(i);
+    }
+    if (gaps.empty()) {
+      std::vector<Index> line;
+      append_nodes(mesh, sequence, line);
+      if (line.size() > 1 && line.front() == line.back()) line.pop_back();
+      if (line.size() > 1) line.push_back(line.front());  // closed
+      lines.push_back(std::move(line));
+      continue;
+    }
+    // Open runs between gaps, starting at the first gap so no run wraps around.
+    for (std::size_t g = 0; g < gaps.size(); ++g) {
+      const std::size_t begin = gaps[g];
+      const std::size_t end = g + 1 < gaps.size() ? gaps[g + 1] : gaps[0] + m;
+      std::vector<Index> run;
+      for (std::size_t i = begin; i < end; ++i) run.push_back(sequence[i % m]);
+      std::vector<Index> line;
+      append_nodes(mesh, run, line);
+      lines.push_back(std::move(line));
+    }
+  }
+  return lines;
+}
+
+std::string boundary_csv(const geometry::BoundaryMesh& mesh, const bem::BoundarySolution& solution) {
+  check_boundary(mesh, solution);
+  Text out;
+  out << "node,x,y,nx,ny,u1,u2,t1,t2,s11,s22,s12,s33,von_mises\n";
+  for (std::size_t i = 0; i < mesh.nodes.size(); ++i) {
+    const auto& node = mesh.nodes[i];
+    const Vec2& u = solution.displacement[i];
+    const Vec2& t = solution.traction[i];
+    out << static_cast<Index>(i) << ',' << node.position.x() << ',' << node.position.y() << ','
+        << node.normal.x() << ',' << node.normal.y() << ',' << u.x() << ',' << u.y() << ',' << t.x()
+        << ',' << t.y() << ',';
+    stress_columns(out, solution.stress[i]);
+    out << '\n';
+  }
+  return std::move(out).str();
+}
+
+std::string interior_csv(const bem::InteriorSolution& solution) {
+  check_interior(solution);
+  Text out;
+  out << "point,x,y,u1,u2,s11,s22,s12,s33,von_mises\n";
+  for (std::size_t i = 0; i < solution.points.size(); ++i) {
+    const Vec2& p = solution.points[i];
+    const Vec2& u = solution.displacement[i];
+    out << static_cast<Index>(i) << ',' << p.x() << ',' << p.y() << ',' << u.x() << ',' << u.y() << ',';
+    stress_columns(out, solution.stress[i]);
+    out << '\n';
+  }
+  return std::move(out).str();
+}
+
+std::string mesh_nodes_csv(const geometry::BoundaryMesh& mesh) {
+  Text out;
+  out << "node,x,y,nx,ny,piece,shifted\n";
+  for (std::size_t i = 0; i < mesh.nodes.size(); ++i) {
+    const auto& node = mesh.nodes[i];
+    out << static_cast<Index>(i) << ',' << node.position.x() << ',' << node.position.y() << ','
+        << node.normal.x() << ',' << node.normal.y() << ',' << node.piece << ','
+        << (node.shifted ? 1 : 0) << '\n';
+  }
+  return std::move(out).str();
+}
+
+std::string mesh_elements_csv(const geometry::BoundaryMesh& mesh) {
+  Text out;
+  out << "element,node0,node1,x_start,y_start,x_end,y_end,nx,ny,piece\n";
+  for (std::size_t e = 0; e < mesh.elements.size(); ++e) {
+    const auto& element = mesh.elements[e];
+    const Index node1 = element.node_count > 1 ? element.nodes[1] : Index{-1};
+    out << static_cast<Index>(e) << ',' << element.nodes[0] << ',' << node1 << ','
+        << element.start.x() << ',' << element.start.y() << ',' << element.end.x() << ','
+        << element.end.y() << ',' << element.normal.x() << ',' << element.normal.y() << ','
+        << element.piece << '\n';
+  }
+  return std::move(out).str();
+}
+
+std::string boundary_vtk(const geometry::BoundaryMesh& mesh, const bem::BoundarySolution& solution,
+                         std::string_view title) {
+  check_boundary(mesh, solution);
+  Text out;
+  vtk_header(out, title);
+  vtk_boundary_geometry(out, mesh);
+  vtk_vectors(out, "u", solution.displacement);
+  vtk_vectors(out, "t", solution.traction);
+  vtk_stress(out, solution.stress);
+  return std::move(out).str();
+}
+
+std::string mesh_vtk(const geometry::BoundaryMesh& mesh, std::string_view title) {
+  Text out;
+  vtk_header(out, title);
+  vtk_boundary_geometry(out, mesh);
+  return std::move(out).str();
+}
+
+std::string interior_vtk(const bem::InteriorSolution& solution, std::string_view title) {
+  check_interior(solution);
+  Text out;
+  vtk_header(out, title);
+  vtk_points(out, solution.points);
+  const Index n = static_cast<Index>(solution.points.size());
+  out << "VERTICES " << n << ' ' << 2 * n << '\n';
+  for (Index i = 0; i < n; ++i) out << "1 " << i << '\n';
+  out << "POINT_DATA " << n << '\n';
+  vtk_vectors(out, "u", solution.displacement);
+  vtk_stress(out, solution.stress);
+  return std::move(out).str();
+}
+
+}  // namespace bemcontact::io

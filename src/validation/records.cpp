@@ -1,0 +1,44 @@
+#include <cmath>
+
+#include "bemcontact/validation/validation.hpp"
+
+namespace bemcontact::validation {
+
+Record compare_relative(std::string quantity, double computed, double reference, double tolerance) {
+  Record r;
+  r.quantity = std::move(quantity);
+  r.computed = computed;
+  r.reference = reference;
+  r.tolerance = tolerance;
+  r.comparison = Comparison::relative;
+  r.error = std::abs(computed - reference) / std::abs(reference);
+  r.passed = std::isfinite(r.error) && r.error <= tolerance;
+  return r;
+}
+
+Record compare_scaled(std::string quantity, double computed, double reference, double scale,
+                      double tolerance) {
+  Record r = compare_relative(std::move(quantity), computed, reference, tolerance);
+  r.comparison = Comparison::scaled;
+  r.error = std::abs(computed - reference) / scale;
+  r.passed = std::isfinite(r.error) && r.error <= tolerance;
+  return r;
+}
+
+Record require_at_least(std::string quantity, double computed, double minimum) {
+  Record r;
+  r.quantity = std::move(quantity);
+  r.computed = computed;
+  r.reference = minimum;
+  r.tolerance = 0.0;
+  r.comparison = Comparison::at_least;
+  r.error = std::max(0.0, minimum - computed);
+  r.passed = std::isfinite(computed) && computed >= minimum;
+  return r;
+}
+
+double observed_order(double coarse_error, double fine_error, double ratio) {
+  return std::log(coarse_error / fine_error) / std::log(ratio);
+}
+
+}  // namespace bemcontact::validation

@@ -1,0 +1,48 @@
+#pragma once
+// Small problems built in code for the tests (no problem file involved).
+#include <functional>
+
+#include "bemcontact/bem/problem.hpp"
+
+namespace bemcontact::test_support {
+
+using VectorField = std::function<Vec2(const Vec2&)>;
+
+// A piece with a global-frame condition: kinds per component and values from fields.
+inline void add_piece(bem::ProblemDefinition& problem, const std::string& name, Vec2 a, Vec2 b, int elements,
+                      std::array<bem::ConditionKind, 2> kind, VectorField displacement, VectorField traction) {
+  geometry::BoundaryPiece piece;
+  piece.name = name;
+  piece.start = a;
+  piece.end = b;
+  piece.elements = elements;
+  bem::BoundaryCondition bc;
+  bc.kind = kind;
+  for (int c = 0; c < 2; ++c) {
+    if (kind[c] == bem::ConditionKind::displacement)
+      bc.value[c] = [displacement, c](const Vec2& x) { return displacement(x)[c]; };
+    else
+      bc.value[c] = [traction, c](const Vec2& x) { return traction(x)[c]; };
+  }
+  bc.signature = name;  // every piece distinct: nodes split at every vertex
+  piece.condition_signature = bc.signature;
+  problem.body.pieces.push_back(piece);
+  problem.body.conditions.push_back(bc);
+}
+
+// Homogeneous linear elastic field: u = E0 x with constant strain, its stress and tractions.
+struct LinearField {
+  Mat2 gradient;  // du_i/dx_j
+  Material material;
+  AnalysisType type = AnalysisType::plane_strain;
+  Vec2 displacement(const Vec2& x) const { return gradient * x; }
+  Mat2 stress() const {
+    const double mu = material.shear_modulus();
+    const double nu = kernel_poisson_ratio(type, material);
+    const double lambda = 2.0 * mu * nu / (1.0 - 2.0 * nu);
+    const Mat2 strain = 0.5 * (gradient + gradient.transpose());
+    return lambda * strain.trace() * Mat2::Identity() + 2.0 * mu * strain;
+  }
+};
+
+}  // namespace bemcontact::test_support
