@@ -5,6 +5,7 @@
 #include <chrono>
 
 #include "bemcontact/bem/boundary_system.hpp"
+#include "bemcontact/bem/rigid_modes.hpp"
 #include "bemcontact/core/error.hpp"
 #include "bemcontact/operators/dense_lu.hpp"
 
@@ -63,15 +64,22 @@ BodyResult solve_body(const ProblemDefinition& problem, const ProgressCallback& 
   auto system = build_boundary_system(matrices, conditions, constraints);
   result.report.unknowns = system.A.rows();
   result.report.threads = omp_get_max_threads();
+  const Index dofs = 2 * result.mesh.node_count();
+  const bool rigid_only =
+      constraints_fix_only_rigid_modes(free_rigid_modes(result.mesh, conditions, problem.analysis), conditions, constraints);
+  const Matrix reaction_columns = system.A.block(0, dofs, dofs, static_cast<Index>(constraints.size()));
   if (progress) progress("factorisation", 0.0);
   const operators::DenseLU lu(std::move(system.A), "the boundary element system of body '" + body.name + "'");
   result.report.reciprocal_condition = lu.reciprocal_condition();
-  const Vector y = lu.solve(system.b);
+  Vector y = lu.solve(system.b);
+  if (rigid_only) y = rigid_mode_consistent_solution(lu, reaction_columns, y);
   if (!y.allFinite()) throw SolverError("the solution of body '" + body.name + "' is not finite");
   if (progress) progress("factorisation", 1.0);
   clock.lap("solve");
 
-  result.boundary = recover_boundary_values(y, conditions, constraints);
+  // Constraints that only fix rigid modes carry no reaction (see rigid_modes.hpp).
+  result.report.constraints_fix_rigid_modes_only = rigid_only;
+  result.boundary = recover_boundary_values(y, conditions, rigid_only ? std::vector<ConstraintEquation>{} : constraints);
   result.report.relative_residual = boundary_equation_residual(matrices, conditions, result.boundary);
   result.boundary.stress = boundary_stresses(result.mesh, problem.analysis, body.material, result.boundary);
   clock.lap("boundary stress");

@@ -186,6 +186,43 @@ StressTensor stress_at_vertex(const geometry::BoundaryMesh& mesh, Index vertex,
   return {sum.s11 * k, sum.s22 * k, sum.s12 * k, sum.s33 * k};
 }
 
+StressTensor stress_at_vertex(const geometry::BoundaryMesh& mesh, const BodyDefinition& body, AnalysisType type,
+                              Index vertex, const std::vector<StressTensor>& nodal) {
+  StressTensor mean = stress_at_vertex(mesh, vertex, nodal);
+  const auto& v = mesh.vertices[vertex];
+  // Rows on (s11, s22, s12): a . sigma n = prescribed value.
+  std::vector<Eigen::RowVector3d> rows;
+  std::vector<double> values;
+  for (const auto& [piece, normal] : {std::pair{v.piece_in, v.normal_in}, std::pair{v.piece_out, v.normal_out}}) {
+    if (piece < 0 || (!mesh.piece_skipped.empty() && mesh.piece_skipped[piece])) continue;
+    const auto& bc = body.conditions.at(piece);
+    for (int c = 0; c < 2; ++c) {
+      if (bc.kind[c] != ConditionKind::traction) continue;
+      Vec2 a = Vec2::Unit(c);
+      if (bc.frame == ConditionFrame::local) a = c == 0 ? normal : Vec2(-normal.y(), normal.x());
+      rows.emplace_back(a.x() * normal.x(), a.y() * normal.y(), a.x() * normal.y() + a.y() * normal.x());
+      values.push_back(bc.value_at(c, v.position));
+    }
+  }
+  if (rows.empty()) return mean;
+  Eigen::MatrixXd b(static_cast<Index>(rows.size()), 3);
+  Eigen::VectorXd d(static_cast<Index>(rows.size()));
+  const Eigen::Vector3d sigma_mean(mean.s11, mean.s22, mean.s12);
+  for (std::size_t k = 0; k < rows.size(); ++k) {
+    b.row(static_cast<Index>(k)) = rows[k];
+    d[static_cast<Index>(k)] = values[k] - rows[k].dot(sigma_mean);
+  }
+  // Smallest correction that meets the data (least squares if they conflict).
+  const Eigen::Vector3d correction = b.completeOrthogonalDecomposition().solve(d);
+  const Eigen::Vector3d sigma = sigma_mean + correction;
+  mean.s11 = sigma[0];
+  mean.s22 = sigma[1];
+  mean.s12 = sigma[2];
+  if (type == AnalysisType::plane_strain) mean.s33 = body.material.poisson_ratio * (sigma[0] + sigma[1]);
+  if (type == AnalysisType::plane_stress) mean.s33 = 0.0;
+  return mean;
+}
+
 Vec2 somigliana_displacement(const geometry::BoundaryMesh& mesh, const ElementIntegrator& integrator,
                              const BoundarySolution& solution, const Vec2& point) {
   Vec2 u = Vec2::Zero();

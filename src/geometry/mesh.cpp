@@ -159,6 +159,8 @@ BoundaryMesh mesh_boundary(const std::vector<BoundaryPiece>& pieces, const MeshO
     vertex.piece_in = plan.piece_in;
     vertex.piece_out = plan.piece_out;
     vertex.split = plan.split;
+    if (plan.piece_in >= 0) vertex.normal_in = point_on_piece(pieces[plan.piece_in], 1.0).outward_normal;
+    vertex.normal_out = point_on_piece(pieces[p], 0.0).outward_normal;
     if (plan.in_meshed && !mesh.piece_elements[plan.piece_in].empty())
       vertex.element_in = mesh.piece_elements[plan.piece_in].back();
     if (plan.out_meshed && !mesh.piece_elements[p].empty())

@@ -27,17 +27,27 @@ inline Local combine(double alpha, const Local& m0, double beta, const Local& m1
           alpha * m0.nt + beta * m1.nt, alpha * m0.nn + beta * m1.nn};
 }
 
-// Q M Q^T with Q = [t n]: the block in global axes, times `scale`.
-inline Mat2 to_global(const Vec2& t, const Vec2& n, const Local& m, double scale) {
-  // A = Q M
-  const double a00 = t.x() * m.tt + n.x() * m.nt, a01 = t.x() * m.tn + n.x() * m.nn;
-  const double a10 = t.y() * m.tt + n.y() * m.nt, a11 = t.y() * m.tn + n.y() * m.nn;
-  Mat2 g;
-  g(0, 0) = scale * (a00 * t.x() + a01 * n.x());
-  g(0, 1) = scale * (a00 * t.y() + a01 * n.y());
-  g(1, 0) = scale * (a10 * t.x() + a11 * n.x());
-  g(1, 1) = scale * (a10 * t.y() + a11 * n.y());
-  return g;
+// Local to global axes, M -> Q M Q^T with Q = [t n]. The mesh convention n = (t_y, -t_x)
+// (mesh.hpp) makes Q a symmetric reflection, so with c = t_x, s = t_y each entry is a
+// three-term sum (this runs N^2 times in an assembly).
+struct Rotation {
+  double cc, ss, cs;
+  explicit Rotation(const Vec2& t) : cc(t.x() * t.x()), ss(t.y() * t.y()), cs(t.x() * t.y()) {}
+  Mat2 operator()(const Local& m) const {
+    const double sum = m.tn + m.nt, diff = m.tt - m.nn;
+    Mat2 g;
+    g(0, 0) = cc * m.tt + ss * m.nn + cs * sum;
+    g(1, 1) = ss * m.tt + cc * m.nn - cs * sum;
+    g(0, 1) = cs * diff - cc * m.tn + ss * m.nt;
+    g(1, 0) = cs * diff + ss * m.tn - cc * m.nt;
+    return g;
+  }
+};
+
+inline Vec2 normal_of(const geometry::BoundaryElement& element) {
+  const Vec2 n(element.tangent.y(), -element.tangent.x());
+  BEMCONTACT_ASSERT((n - element.normal).norm() < 1e-12);
+  return n;
 }
 
 // Shape functions as N_a(xi) = alpha[a] + beta[a] xi in the local coordinate xi, the element
@@ -74,13 +84,13 @@ struct LocalPosition {
   double length() const { return xi2 - xi1; }
 };
 
-inline LocalPosition local_position(const Vec2& x, const geometry::BoundaryElement& element) {
+inline LocalPosition local_position(const Vec2& x, const geometry::BoundaryElement& element,
+                                    const Vec2& n) {
   const Vec2 from_start = x - element.start, from_end = x - element.end;
   LocalPosition p;
   p.xi1 = -from_start.dot(element.tangent);
   p.xi2 = -from_end.dot(element.tangent);
-  p.h = -(from_start.squaredNorm() <= from_end.squaredNorm() ? from_start : from_end)
-             .dot(element.normal);
+  p.h = -(from_start.squaredNorm() <= from_end.squaredNorm() ? from_start : from_end).dot(n);
   return p;
 }
 
@@ -103,8 +113,7 @@ ElementInfluence integrate_plane_element(const kernels::KelvinPlane& kelvin, con
   const double scale_u = 1.0 / (8.0 * pi * kelvin.shear_modulus * (1.0 - nu));
   const double scale_t = 1.0 / (4.0 * pi * (1.0 - nu));
   const double length = element.length;
-  const Vec2& t = element.tangent;
-  const Vec2& n = element.normal;
+  const Rotation rotate(element.tangent);
   const int nodes = element.node_count;
 
   ElementInfluence out;
@@ -124,16 +133,16 @@ ElementInfluence integrate_plane_element(const kernels::KelvinPlane& kelvin, con
     u0 = {-kappa * log0 + length, 0.0, 0.0, -kappa * log0};
     u1 = {-kappa * log1 + 0.5 * length * (xi1 + xi2), 0.0, 0.0, -kappa * log1};
     for (int node = 0; node < nodes; ++node) {
-      out.G[node] = to_global(t, n, combine(shape.alpha[node], u0, shape.beta[node], u1), scale_u);
+      out.G[node] = rotate(combine(scale_u * shape.alpha[node], u0, scale_u * shape.beta[node], u1));
       if (node != source_node) {
-        const double m = shape.beta[node] * a * length;
-        out.H[node] = to_global(t, n, Local{0.0, m, -m, 0.0}, scale_t);
+        const double m = scale_t * shape.beta[node] * a * length;
+        out.H[node] = rotate(Local{0.0, m, -m, 0.0});
       }
     }
     return out;
   }
 
-  const LocalPosition local = local_position(source, element);
+  const LocalPosition local = local_position(source, element, normal_of(element));
   const double h = local.h;
   const detail::LineIntegrals b = detail::line_integrals(local.xi1, local.xi2, h, local.length());
   const ShapeCoefficients shape = shape_coefficients(element, local.xi1, local.length());
@@ -147,8 +156,9 @@ ElementInfluence integrate_plane_element(const kernels::KelvinPlane& kelvin, con
   const Local t1{a * h * b.lambda + 2.0 * b.x3h1_r4, 2.0 * b.x2h2_r4 - a * b.x2_r2,
                  2.0 * b.x2h2_r4 + a * b.x2_r2, a * h * b.lambda + 2.0 * b.x1h3_r4};
   for (int node = 0; node < nodes; ++node) {
-    out.G[node] = to_global(t, n, combine(shape.alpha[node], u0, shape.beta[node], u1), scale_u);
-    out.H[node] = to_global(t, n, combine(shape.alpha[node], t0, shape.beta[node], t1), -scale_t);
+    const double alpha = shape.alpha[node], beta = shape.beta[node];
+    out.G[node] = rotate(combine(scale_u * alpha, u0, scale_u * beta, u1));
+    out.H[node] = rotate(combine(-scale_t * alpha, t0, -scale_t * beta, t1));
   }
   return out;
 }
@@ -161,9 +171,10 @@ ElementStressInfluence integrate_plane_element_stress(const kernels::KelvinPlane
   const double scale_d = 1.0 / (4.0 * pi * (1.0 - nu));
   const double scale_s = kelvin.shear_modulus / (2.0 * pi * (1.0 - nu));
   const Vec2& t = element.tangent;
-  const Vec2& n = element.normal;
+  const Vec2 n = normal_of(element);
+  const Rotation rotate(t);
 
-  const LocalPosition local = local_position(point, element);
+  const LocalPosition local = local_position(point, element, n);
   const double h = local.h;
   const detail::LineIntegrals b = detail::line_integrals(local.xi1, local.xi2, h, local.length());
   const detail::StressLineIntegrals s = detail::stress_line_integrals(b);
@@ -184,23 +195,21 @@ ElementStressInfluence integrate_plane_element_stress(const kernels::KelvinPlane
   const Local d_n1{-a * h_lambda + 2.0 * b.x3h1_r4, a * b.x2_r2 + 2.0 * b.x2h2_r4,
                    a * b.x2_r2 + 2.0 * b.x2h2_r4, a * h_lambda + 2.0 * b.x1h3_r4};
 
-  const double cross0 = s.x0_r2 - 8.0 * s.x2h2_r6;            // 1 - 8 a^2 b^2
-  const double cross1 = b.lambda - 8.0 * s.x3h2_r6;
-  const double odd0 = 2.0 * s.x1h1_r4 - 8.0 * s.x1h3_r6;      // 2ab - 8ab^3
-  const double odd1 = 2.0 * b.x2h1_r4 - 8.0 * s.x2h3_r6;
-  const Local s_t0{2.0 * s.x1h1_r4 - 8.0 * s.x3h1_r6, cross0, cross0, odd0};
-  const Local s_t1{2.0 * b.x2h1_r4 - 8.0 * s.x4h1_r6, cross1, cross1, odd1};
-  const Local s_n0{cross0, odd0, odd0, s.x0_r2 + 4.0 * s.x0h2_r4 - 8.0 * s.x0h4_r6};
-  const Local s_n1{cross1, odd1, odd1, b.lambda + 4.0 * b.x1h2_r4 - 8.0 * s.x1h4_r6};
+  const Local s_t0{s.tt0, s.cross0, s.cross0, s.odd0};
+  const Local s_t1{s.tt1, s.cross1, s.cross1, s.odd1};
+  const Local s_n0{s.cross0, s.odd0, s.odd0, s.nn0};
+  const Local s_n1{s.cross1, s.odd1, s.odd1, s.nn1};
 
   ElementStressInfluence out;
   for (int node = 0; node < element.node_count; ++node) {
     const double alpha = shape.alpha[node], beta = shape.beta[node];
     // Rotate the (i, j) pair, then the force index k: X[k] = t_k X_t + n_k X_n.
-    const Mat2 dt = to_global(t, n, combine(alpha, d_t0, beta, d_t1), scale_d);
-    const Mat2 dn = to_global(t, n, combine(alpha, d_n0, beta, d_n1), scale_d);
-    const Mat2 st = to_global(t, n, combine(alpha, s_t0, beta, s_t1), scale_s);
-    const Mat2 sn = to_global(t, n, combine(alpha, s_n0, beta, s_n1), scale_s);
+    const double ad = scale_d * alpha, bd = scale_d * beta;
+    const double as = scale_s * alpha, bs = scale_s * beta;
+    const Mat2 dt = rotate(combine(ad, d_t0, bd, d_t1));
+    const Mat2 dn = rotate(combine(ad, d_n0, bd, d_n1));
+    const Mat2 st = rotate(combine(as, s_t0, bs, s_t1));
+    const Mat2 sn = rotate(combine(as, s_n0, bs, s_n1));
     for (int k = 0; k < 2; ++k) {
       out.D[node][k] = t[k] * dt + n[k] * dn;
       out.S[node][k] = t[k] * st + n[k] * sn;

@@ -64,3 +64,15 @@ void DenseLU::solve_in_place(Matrix& rhs) const {
 }
 
 }  // namespace bemcontact::operators
+
+namespace bemcontact::operators {
+
+// A = A_s D^{-1} with D = diag(column_scale), so A^T x = b is A_s^T x = D b.
+void DenseLU::solve_transposed_in_place(Matrix& rhs) const {
+  const Index n = factors_.rows();
+  if (rhs.rows() != n) throw SolverError("DenseLU::solve_transposed: right-hand side of wrong size");
+  for (Index j = 0; j < rhs.cols(); ++j) rhs.col(j).array() *= column_scale_.array();
+  LAPACKE_dgetrs(LAPACK_COL_MAJOR, 'T', n, rhs.cols(), factors_.data(), n, pivots_.data(), rhs.data(), n);
+}
+
+}  // namespace bemcontact::operators

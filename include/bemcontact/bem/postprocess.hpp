@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "bemcontact/bem/assembly.hpp"
+#include "bemcontact/bem/problem.hpp"
 #include "bemcontact/bem/progress.hpp"
 #include "bemcontact/bem/solution.hpp"
 
@@ -39,6 +40,14 @@ Vec2 interpolate_on_element(const geometry::BoundaryElement& element, const std:
 Vec2 vector_at_vertex(const geometry::BoundaryMesh& mesh, Index vertex, const std::vector<Vec2>& nodal);
 StressTensor stress_at_vertex(const geometry::BoundaryMesh& mesh, Index vertex,
                               const std::vector<StressTensor>& nodal);
+
+// Stress at a vertex that also honours the tractions prescribed there: the in-plane
+// stress is the one closest to the mean of the two sides' extrapolations that satisfies
+// sigma n = p for every traction component the conditions of either side prescribe at the
+// vertex. At a corner where the two sides prescribe three independent components (a
+// loaded end meeting a free face), the stress follows from the data alone.
+StressTensor stress_at_vertex(const geometry::BoundaryMesh& mesh, const BodyDefinition& body, AnalysisType type,
+                              Index vertex, const std::vector<StressTensor>& nodal);
 
 // Somigliana displacement and stress at interior points. Points closer to the boundary
 // than half the local element length take the stress interpolated along the normal

@@ -42,7 +42,10 @@ struct PhaseTimings {
 struct SolveReport {
   Index unknowns = 0;
   double reciprocal_condition = 0.0;  // LAPACK estimate of 1/cond_1(A)
-  double relative_residual = 0.0;     // ||A y - b|| / ||b||
+  double relative_residual = 0.0;     // ||H u - G p|| / ||G p||
+  // Point constraints only fixed rigid modes: no reactions, and the residual is the
+  // imbalance of the discretised loads.
+  bool constraints_fix_rigid_modes_only = false;
   int threads = 1;
 };
 

@@ -51,6 +51,7 @@ struct MeshVertex {
   Vec2 position;
   int piece_in = -1, piece_out = -1;   // piece ending here, piece starting here
   Index element_in = -1, element_out = -1;
+  Vec2 normal_in = Vec2::Zero(), normal_out = Vec2::Zero();  // outward normals of the two pieces here
   bool split = false;
 };
 

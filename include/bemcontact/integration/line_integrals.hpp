@@ -37,12 +37,29 @@ struct LineIntegrals {
   double q_product = 0.0;      // q1 q2
 };
 
+// Odd series for |x| <= 0.1: atanh(x) = x + x^3/3 + ..., atan(x) = x - x^3/3 + ...; nine
+// terms leave a truncation below x^19/19 < 1e-19 |x|. For a source more than ~10 element
+// lengths away both arguments below are that small, and two short polynomials replace
+// log1p and atan (~45 ns of the ~100 ns budget of one element integral). Estrin's scheme
+// keeps the dependency chain short (the build has no FMA).
+inline double odd_series(double x, double s) {  // s = +1: atanh, s = -1: atan
+  const double y = s * x * x, y2 = y * y, y4 = y2 * y2;
+  const double p01 = 1.0 + y * (1.0 / 3), p23 = 1.0 / 5 + y * (1.0 / 7);
+  const double p45 = 1.0 / 9 + y * (1.0 / 11), p67 = 1.0 / 13 + y * (1.0 / 15);
+  const double p = (p01 + y2 * p23) + y4 * ((p45 + y2 * p67) + y4 * (1.0 / 17));
+  return x * p;
+}
+inline double atanh_small(double x) { return odd_series(x, 1.0); }
+inline double atan_small(double x) { return odd_series(x, -1.0); }
+constexpr double kSeriesLimit = 0.1;
+
 // Off the element (rho > 0 on [xi1, xi2]). `length` must be xi2 - xi1 as computed by the
 // caller (not a separately stored element length: the formulas mix both, and a mismatch of
 // one rounding acts like a gap at the end near the source). A source on an end point is a
 // misuse (the T integrals diverge); rho^2 is then floored at (1e-30 L)^2 so that every
 // result, down to the (q1 q2)^-2 of the stress integrals, stays finite.
-inline LineIntegrals line_integrals(double xi1, double xi2, double h, double length) {
+[[gnu::always_inline]] inline LineIntegrals line_integrals(double xi1, double xi2, double h,
+                                                           double length) {
   LineIntegrals r;
   r.length = length;
   r.h = h;
@@ -60,11 +77,18 @@ inline LineIntegrals line_integrals(double xi1, double xi2, double h, double len
   r.xi_product = product;
   r.q_product = q1 * q2;
 
-  r.theta = std::atan2(h * length, product + h2);
-  // lambda = ln(rho2 / rho1): log1p of the exact difference when the ratio is near 1 (far
-  // sources), the log of the ratio otherwise (a source close to one end).
-  const double ratio = q2 / q1;
-  r.lambda = 0.5 * ((ratio > 0.5 && ratio < 2.0) ? std::log1p(dq / q1) : std::log(ratio));
+  // theta = atan2(h L, xi1 xi2 + h^2): tan(theta2 - theta1) with theta_i = atan(xi_i / h).
+  const double h_length = h * length, denominator = product + h2;
+  if (denominator > 0.0) {
+    const double z = h_length / denominator;
+    r.theta = std::abs(z) <= kSeriesLimit ? atan_small(z) : std::atan(z);
+  } else {
+    r.theta = std::atan2(h_length, denominator);  // projection on the element, |theta| > pi/2
+  }
+  // lambda = ln(rho2 / rho1) = 2 atanh((q2 - q1) / (q2 + q1)), by the series when the ratio
+  // is near 1 (far sources); otherwise |lambda| > 0.1 and the log of the ratio is accurate.
+  const double y = dq / (q1 + q2);
+  r.lambda = std::abs(y) <= kSeriesLimit ? atanh_small(y) : 0.5 * std::log(q2 / q1);
   // The log integrals are written around the log of the larger rho^2 so that no two terms of
   // size R ln R cancel for a far source (R >> L) and q ln q -> 0 at a near end:
   //   [xi ln q] = L ln q2 + 2 xi1 lambda = L ln q1 + 2 xi2 lambda,
@@ -96,66 +120,51 @@ inline LineIntegrals line_integrals(double xi1, double xi2, double h, double len
   return r;
 }
 
-// Additional integrals for the interior-stress kernels D and S (m <= 3, p + 1 <= 5).
+// Additional integrals for the interior-stress kernels D and S. The S kernel components are
+// O(1/rho^2); integrated one by one they are O(1/h) while their sums are O(1/L) (the
+// leading parts cancel, as a uniform displacement on an infinite line gives no stress), so
+// S is integrated per component combination, whose primitives are rational (plus theta or
+// lambda) with no 1/h: with xi = h tan(phi), dxi / rho^2 = dphi / h and e.g.
+// int (1/rho^2 - 8 h^2 xi^2/rho^6) dxi = int cos(4 phi) dphi / h = [xi (h^2 - xi^2) / rho^4].
 struct StressLineIntegrals {
-  double x0_r2 = 0.0;    // int 1 / rho^2 = theta / h (finite as h -> 0 off the element)
-  double x1h1_r4 = 0.0;  // int h xi / rho^4
-  double x0h2_r4 = 0.0;  // int h^2 / rho^4
-  double x4_r4 = 0.0;    // int xi^4 / rho^4
-  double x3_r4 = 0.0;    // int xi^3 / rho^4
-  double x3h1_r6 = 0.0;  // int h xi^3 / rho^6
-  double x4h1_r6 = 0.0;  // int h xi^4 / rho^6
-  double x2h2_r6 = 0.0;  // int h^2 xi^2 / rho^6
-  double x3h2_r6 = 0.0;  // int h^2 xi^3 / rho^6
-  double x1h3_r6 = 0.0;  // int h^3 xi / rho^6
-  double x2h3_r6 = 0.0;  // int h^3 xi^2 / rho^6
-  double x0h4_r6 = 0.0;  // int h^4 / rho^6
-  double x1h4_r6 = 0.0;  // int h^4 xi / rho^6
+  double x3_r4 = 0.0;  // int xi^3 / rho^4
+  double x4_r4 = 0.0;  // int xi^4 / rho^4
+  // S combinations and their first moments (the same integrand times xi):
+  double tt0 = 0.0, tt1 = 0.0;        // 2 xi h / rho^4 - 8 xi^3 h / rho^6
+  double cross0 = 0.0, cross1 = 0.0;  // 1 / rho^2 - 8 xi^2 h^2 / rho^6
+  double odd0 = 0.0, odd1 = 0.0;      // 2 xi h / rho^4 - 8 xi h^3 / rho^6
+  double nn0 = 0.0, nn1 = 0.0;        // 1 / rho^2 + 4 h^2 / rho^4 - 8 h^4 / rho^6
 };
-
-// atan(z) / z, smooth at z = 0.
-inline double atan_ratio(double z) { return z == 0.0 ? 1.0 : std::atan(z) / z; }
 
 inline StressLineIntegrals stress_line_integrals(const LineIntegrals& b) {
   StressLineIntegrals s;
-  const double h = b.h, h2 = h * h, length = b.length;
-  const double product = b.xi_product, q1 = b.q1, q2 = b.q2;
-  const double inv_qq = 1.0 / b.q_product;
-
-  // int 1/rho^2 = theta / h. When the projection falls outside the element (xi1 xi2 + h^2 > 0)
-  // theta = atan(z), z = h L / (xi1 xi2 + h^2), and theta / h = L / (xi1 xi2 + h^2) atan(z)/z
-  // has no 0/0 at h = 0; otherwise |h| is the distance to the element, which is > 0.
-  const double denominator = product + h2;
-  if (denominator > 0.0) {
-    s.x0_r2 = length / denominator * atan_ratio(h * length / denominator);
-  } else {
-    const double safe_h = std::max(std::abs(h), 1e-30 * length);
-    s.x0_r2 = b.theta / (h < 0.0 ? -safe_h : safe_h);
-  }
-
-  const double jump_xi_r2 = length * (h2 - product) * inv_qq;  // [xi / rho^2]
-  const double x1_r4 = 0.5 * length * b.xi_sum * inv_qq;       // int xi / rho^4 = [-1/(2 rho^2)]
-  s.x1h1_r4 = h * x1_r4;
-  s.x0h2_r4 = 0.5 * (jump_xi_r2 + s.x0_r2);                     // int h^2/rho^4
-  const double x2_r4 = s.x0_r2 - s.x0h2_r4;                     // int xi^2/rho^4
+  const double h = b.h, h2 = h * h;
   s.x3_r4 = b.lambda - b.x1h2_r4;
-  s.x4_r4 = b.x2_r2 - h2 * x2_r4;
+  s.x4_r4 = b.x2_r2 - h * b.x2h1_r4;  // int xi^2 (rho^2 - h^2) / rho^4
 
-  // rho^-6 family. [xi / rho^4] = L (h^4 - 2 h^2 P - P (xi1^2 + xi2^2 + P)) / (q1 q2)^2.
-  const double xi_sq_sum = b.xi1 * b.xi1 + b.xi2 * b.xi2;
-  const double jump_xi_r4 =
-      length * (h2 * h2 - 2.0 * h2 * product - product * (xi_sq_sum + product)) * inv_qq * inv_qq;
-  const double x1_r6 = 0.25 * length * b.xi_sum * (q1 + q2) * inv_qq * inv_qq;  // [-1/(4 rho^4)]
-  s.x0h4_r6 = 0.25 * h2 * jump_xi_r4 + 0.75 * s.x0h2_r4;  // reduction formula m = 2 -> 3
-  const double x2h2_r6 = s.x0h2_r4 - s.x0h4_r6;           // h^2 (int xi^2/rho^6)
-  s.x2h2_r6 = x2h2_r6;
-  const double x3_r6 = x1_r4 - h2 * x1_r6;                // int xi^3/rho^6
-  s.x3h1_r6 = h * x3_r6;
-  s.x4h1_r6 = b.x2h1_r4 - h * x2h2_r6;
-  s.x3h2_r6 = h2 * x3_r6;
-  s.x1h3_r6 = h * h2 * x1_r6;
-  s.x2h3_r6 = h * x2h2_r6;
-  s.x1h4_r6 = h2 * h2 * x1_r6;
+  // Primitives F (checked by differentiation; tests compare with quadrature):
+  //   tt: [h (h^2 + 3 xi^2) / rho^4],            xi tt: [2 h xi (h^2 + 2 xi^2) / rho^4] - 2 theta
+  //   cross: [xi (h^2 - xi^2) / rho^4],          xi cross: [2 h^2 (h^2 + 2 xi^2) / rho^4] + lambda
+  //   odd: [h (h^2 - xi^2) / rho^4],             xi odd: [-2 h xi^3 / rho^4]
+  //   nn: [-xi (3 h^2 + xi^2) / rho^4],          xi nn: [-2 h^2 xi^2 / rho^4] + lambda
+  // Each jump F(xi2) - F(xi1) is evaluated in factored form L poly / (q1 q2)^2, with
+  // P = xi1 xi2, S = xi1 + xi2, S2 = xi1^2 + xi2^2, so that a far point does not cancel
+  // two O(1/R) end values into an O(L/R^2) result.
+  const double L = b.length, P = b.xi_product, S = b.xi_sum;
+  const double S2 = b.xi1 * b.xi1 + b.xi2 * b.xi2;
+  const double h4 = h2 * h2, P2 = P * P;
+  const double w = 1.0 / (b.q_product * b.q_product);
+  const double lw = L * w;
+  s.tt0 = h * S * (h4 - h2 * S2 - 3.0 * P2) * lw;
+  s.tt1 = 2.0 * h * (h4 * h2 + 2.0 * h4 * S2 - h2 * P * S2 + 3.0 * h2 * P2 - 2.0 * P2 * P) * lw -
+          2.0 * b.theta;
+  const double pm = P - h2;
+  s.cross0 = (h2 + P) * (pm * pm - h2 * S * S) * lw;
+  s.cross1 = -2.0 * h2 * S * (h2 * S2 + 2.0 * P2) * lw + b.lambda;
+  s.odd0 = h * S * (P2 - h2 * S2 - 3.0 * h4) * lw;
+  s.odd1 = 2.0 * h * (P2 * P - 2.0 * h2 * P2 - h4 * (S2 + P)) * lw;
+  s.nn0 = (P2 * P + h2 * P2 + 3.0 * h2 * P * S2 + 5.0 * h4 * P - h4 * S2 - 3.0 * h4 * h2) * lw;
+  s.nn1 = 2.0 * h2 * S * (P2 - h4) * lw + b.lambda;
   return s;
 }
 

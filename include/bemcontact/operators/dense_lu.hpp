@@ -18,6 +18,7 @@ class DenseLU {
   Index size() const { return factors_.rows(); }
   Vector solve(const Vector& rhs) const;
   void solve_in_place(Matrix& rhs) const;  // several right-hand sides
+  void solve_transposed_in_place(Matrix& rhs) const;  // A^T x = rhs
   double reciprocal_condition() const { return rcond_; }
 
  private:

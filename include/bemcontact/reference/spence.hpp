@@ -8,14 +8,15 @@
 // K(sqrt(1 - c^2)) = pi / (2 AGM(1, c)), beta = gamma AGM(1, c) ln((1+c)/(1-c)) / (pi c),
 // which increases strictly from 0 (c -> 0) to infinity (c -> 1): one root for beta > 0.
 //
-// Scope: (E.1) is Spence's AXISYMMETRIC result (1975): it holds for a flat circular punch
-// and for the Hertzian sphere alike (the thesis: "valable pour un indenteur plat ou de forme
-// elliptique"), with the normal pressure taken as frictionless (the effect of the shear
-// traction on the normal displacement is neglected: the uncoupled approximation). It is not
-// the plane-strain (2D strip punch) result, which is a different relation (Spence 1973); the
-// thesis' plane punch (V.5.1) does not follow it. Thesis case (V.5.2.4): gamma = 0.18908
-// gives c = 0.530 for beta = 0.1 and 0.9999 for beta = 0.6; a computation that keeps the
-// coupling gives about 0.513 for beta = 0.1 (DESIGN.md).
+// Scope: (E.1) is Spence's AXISYMMETRIC result (Annex E: "un demi-espace et un indenteur
+// axisymetrique"); it holds for a flat circular punch and for the Hertzian sphere alike
+// (the same c for both: "valable pour un indenteur plat ou de forme elliptique"). The normal
+// pressure is the frictionless one: per DESIGN.md section 6, (E.1) neglects the coupling of
+// the shear traction into the normal displacement, and a computation that keeps it gives
+// c = 0.513 instead of 0.530 in the thesis case. It is not a plane (2D strip) result: with
+// the plane-stress gamma = 0.26 of the thesis' rigid punch (V.5.1) it would give c = 0.29 at
+// beta = 0.1, far from the stick zone found there (3.87 of a half-width near 5).
+// Thesis case (V.5.2.4): gamma = 0.18908 gives c = 0.530 for beta = 0.1 and 0.9999 for 0.6.
 #include "bemcontact/core/types.hpp"
 
 namespace bemcontact::reference {

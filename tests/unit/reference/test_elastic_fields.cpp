@@ -15,6 +15,7 @@
 #include <numbers>
 #include <vector>
 
+#include "bemcontact/core/error.hpp"
 #include "bemcontact/reference/cantilever.hpp"
 #include "bemcontact/reference/kirsch.hpp"
 #include "bemcontact/reference/lame.hpp"
@@ -372,6 +373,13 @@ TEST(ReferenceThickCylinder, PlaneStrainCrossSectionForAQuarterAnnulus) {
   // Inner wall pressure in Cartesian components at polar angle 0.5.
   const Vec2 n{std::cos(0.5), std::sin(0.5)};
   EXPECT_NEAR((tube.stress(n).traction(-n) - 5.0 * n).norm(), 0.0, 1e-13);
+}
+
+TEST(ReferenceThickCylinder, RejectsAnEmptyWall) {
+  const ref::ThickCylinder bad{2.0, 1.0, 1.0, 0.0, Material{1.0, 0.3}};
+  EXPECT_THROW(bad.radial_displacement(1.5), bemcontact::Error);
+  const ref::ThickSphere flat{1.0, 1.0, 1.0, 0.0, Material{1.0, 0.3}};
+  EXPECT_THROW(flat.spherical_stress(1.0), bemcontact::Error);
 }
 
 // ----------------------------------------------------------------- II.7.6 thick sphere

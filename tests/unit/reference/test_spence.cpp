@@ -41,8 +41,8 @@ TEST(ReferenceSpence, BimaterialConstantOfTheThesisCase) {
   const double gamma = ref::spence_gamma(carbide_ball, aluminium);
   EXPECT_NEAR(gamma, -0.18908, 5e-6);
   EXPECT_DOUBLE_EQ(ref::spence_gamma(aluminium, carbide_ball), -gamma);
-  // By hand with the same nu: gamma = (1 - 2nu)/(2(1 - nu)) (G1 - G2)/(G1 + G2)... written
-  // with compliances c_i = 1/G_i: (1 - 2nu)(c1 - c2) / (2 (1 - nu)(c1 + c2)).
+  // By hand, same nu in both bodies: gamma = (1 - 2nu)(c1 - c2) / (2 (1 - nu)(c1 + c2)),
+  // c_i = 1/G_i.
   const double c1 = 1.0 / carbide_ball.shear_modulus(), c2 = 1.0 / aluminium.shear_modulus();
   EXPECT_NEAR(gamma, 0.36 * (c1 - c2) / (2 * 0.68 * (c1 + c2)), 1e-15);
   // Identical bodies: no coupling.

@@ -1,0 +1,59 @@
+#pragma once
+// The condensed contact problem (Pb V.5) formed explicitly: each body is assembled and
+// factored once (bem::FactoredBody), and its flexibility on the contact nodes S^-1 is
+// obtained by unit traction solves, so that B' = 1S^-1 + 2S^-1 is a small dense matrix.
+//
+// Unknowns per pair i, in the pair's frame (common normal n out of body 1, tangent t):
+//   x_i = (lambda_n, tau): the traction on body 1 is p = -lambda_n n + tau t (lambda_n >= 0
+//   is the contact pressure, p_n = -lambda_n in the thesis' sign), body 2 carries -p.
+// Relative displacement [u] = 1u - 2u in the same frame (w_n = [u_n], w_t = [u_t]):
+//   w = load * a + M x + delta * b,
+// with M = Q^T B' R the condensed operator, a the jump due to the bodies' own data at full
+// load and b the jump per unit approach of a force-loaded platen. The platen's force is
+//   F = load * F0 + f . x + f_delta * delta.
+#include <array>
+#include <memory>
+
+#include "bemcontact/bem/factored_body.hpp"
+#include "bemcontact/contact/pairing.hpp"
+
+namespace bemcontact::contact {
+
+struct CondensedProblem {
+  Index pairs = 0;
+  Matrix M;        // 2N x 2N
+  Vector a;        // 2N
+  Vector gap;      // N, d of (V.3)
+  std::vector<bool> on_axis;  // N
+  bool has_force = false;
+  Vector b;        // 2N
+  Vector f;        // 2N
+  double f_delta = 0.0;
+  double F0 = 0.0;
+  double force = 0.0;  // the prescribed total force at full load
+};
+
+class ContactModel {
+ public:
+  ContactModel(const ContactProblem& problem, const bem::ProgressCallback& progress = {});
+
+  const ContactProblem& problem() const { return problem_; }
+  const PreparedContact& prepared() const { return prepared_; }
+  const CondensedProblem& condensed() const { return condensed_; }
+  const bem::FactoredBody& body(int b) const { return *factored_[b]; }
+
+  // The variable data of body b (tractions of its contact nodes, the platen displacement)
+  // for a contact solution x (local frame) and approach delta.
+  Vector variable_data(int b, const Vector& x, double delta) const;
+  // Traction on body 1 at each pair in global components.
+  Vec2 traction(Index pair, const Vector& x) const;
+
+ private:
+  ContactProblem problem_;
+  PreparedContact prepared_;
+  CondensedProblem condensed_;
+  std::array<std::unique_ptr<bem::FactoredBody>, 2> factored_;
+  std::array<Index, 2> contact_offset_{0, 0};  // variable dofs: contact nodes first, then platen nodes
+};
+
+}  // namespace bemcontact::contact

@@ -1,0 +1,71 @@
+#pragma once
+// The definition of a two-body contact problem (chapter V) as the numerics see it: two
+// bodies with their own conditions, one boundary of each declared as the potential contact
+// zone Gamma_c, the contact law (bilateral or unilateral, Coulomb coefficient beta), the
+// loading (prescribed data of the bodies, optionally a total force on one boundary) and the
+// load history. Built by io/contact_file from a problem file, or by code (tests, cases).
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "bemcontact/bem/problem.hpp"
+
+namespace bemcontact::contact {
+
+enum class ContactKind {
+  bilateral,   // (V.4): the pairs never separate, [u_n] = d
+  unilateral,  // (V.5): [u_n] - d <= 0, p_n <= 0, complementary
+};
+
+enum class Algorithm {
+  newton,  // robust default: semi-smooth Newton (primal-dual active set) on the condensed problem
+  thesis,  // chapter V: projected GMRES(m) (Alg V.1) inside successive approximation of
+           // g = beta |p_n| (Alg V.2), slip direction of the frictionless solution (V.3.4),
+           // Kalker-style active set for unilateral contact (Alg V.3)
+};
+
+// A total force on one boundary of one body (the ball pressed by P). The boundary moves
+// as a rigid platen: its displacement component `component` is the unknown approach
+// (reported as delta), the other component is held at 0. The force is the integral of
+// the traction component over the boundary (2 pi r dr in axisymmetry), e.g. -31.5 for a
+// downward push on the top of the ball.
+struct ForceLoad {
+  int body = 0;        // 0 or 1
+  int piece = -1;      // index into the body's pieces
+  int component = 1;   // 0: x (r), 1: y (z)
+  double force = 0.0;
+};
+
+struct SolverOptions {
+  Algorithm algorithm = Algorithm::newton;
+  double tolerance = 1e-10;  // Newton: relative residual of the complementarity functions
+  int max_iterations = 100;  // Newton iterations per load step; Kalker loops (Alg V.3)
+  // Thesis algorithm
+  int gmres_restart = 1;       // m of GMRES(m) (Alg V.1); the thesis used 1, or 2-3 when 1 diverged
+  double xi = 1e-8;            // relative change tests of Alg V.1 and (V.19) (thesis: 1e-4)
+  int max_gmres_cycles = 20000;
+  int max_threshold_iterations = 200;  // Alg V.2
+};
+
+struct ContactProblem {
+  std::string title;
+  std::string source_file;
+  AnalysisType analysis = AnalysisType::plane_strain;
+  geometry::MeshOptions mesh;
+  std::array<bem::BodyDefinition, 2> bodies;
+  std::array<int, 2> contact_piece{-1, -1};  // the boundary of each body that forms Gamma_c
+  ContactKind kind = ContactKind::unilateral;
+  double friction = 0.0;  // beta (Coulomb)
+  // false drops the coupling between tangential tractions and normal displacements (and
+  // back) in the condensed operator: the uncoupled (Goodman-type) approximation under
+  // which Spence's (E.1) holds (DESIGN.md section 6).
+  bool tangential_coupling = true;
+  int increments = 1;  // quasi-static load steps, equal load factors k / N
+  bool record_steps = false;
+  std::optional<ForceLoad> force;
+  std::array<std::vector<Vec2>, 2> interior_points;  // stress points per body
+  SolverOptions solver;
+};
+
+}  // namespace bemcontact::contact

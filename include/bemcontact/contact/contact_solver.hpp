@@ -1,0 +1,65 @@
+#pragma once
+// Solving a two-body contact problem over its load history, and the results the writers
+// take: per pair tractions, jumps and status; contact and stick radii; the full boundary
+// (and interior) solution of each body for stresses.
+#include <array>
+#include <string>
+#include <vector>
+
+#include "bemcontact/bem/progress.hpp"
+#include "bemcontact/bem/solution.hpp"
+#include "bemcontact/contact/contact_problem.hpp"
+#include "bemcontact/geometry/mesh.hpp"
+
+namespace bemcontact::contact {
+
+enum class PairStatus { open, stick, slip };
+const char* to_string(PairStatus status);
+const char* to_string(Algorithm algorithm);
+const char* to_string(ContactKind kind);
+
+struct PairResult {
+  Vec2 position;        // node of body 1
+  double coordinate = 0.0;  // x1 (x or r) of the node: the abscissa of profiles
+  Vec2 normal;
+  double gap = 0.0;     // initial d (V.3)
+  double p_n = 0.0;     // <p, n> on body 1: < 0 in compression (thesis sign)
+  double p_t = 0.0;     // <p, t> on body 1
+  double slip_ratio = 0.0;  // |p_t| / (beta |p_n|) (0 when beta p_n = 0)
+  double jump_n = 0.0;  // [u_n] = <1u - 2u, n>
+  double jump_t = 0.0;  // [u_t]
+  PairStatus status = PairStatus::open;
+};
+
+// Scalars of a solution (one load step or the final state).
+struct ContactSummary {
+  double load_factor = 1.0;
+  double contact_radius = 0.0;  // a: the edge of the zone in compression, along x1 (see docs/contact.md)
+  double stick_radius = 0.0;    // c: the edge of the stick zone around the centre
+  double peak_pressure = 0.0;   // max of -p_n
+  double centre_pressure = 0.0; // -p_n at the pair with the smallest |x1|
+  double normal_force = 0.0;    // integral of -p_n (2 pi r in axisymmetry)
+  double approach = 0.0;        // delta of the force-loaded platen (0 without a force load)
+  int pairs_in_contact = 0;
+  int newton_iterations = 0, kalker_iterations = 0, threshold_iterations = 0, gmres_cycles = 0;
+  double residual = 0.0;        // relative complementarity residual
+};
+
+struct ContactResult {
+  std::vector<PairResult> pairs;
+  ContactSummary summary;               // final state, iterations summed over the steps
+  std::vector<ContactSummary> steps;    // per load step
+  std::vector<std::vector<PairResult>> step_pairs;  // per load step when record_steps
+  std::array<geometry::BoundaryMesh, 2> meshes;
+  std::array<bem::BoundarySolution, 2> boundary;
+  std::array<bem::InteriorSolution, 2> interior;
+  std::array<std::string, 2> body_names;
+  bem::PhaseTimings timings;
+  Index unknowns = 0;  // condensed unknowns
+};
+
+// Throws SolverError (with the load step and the residual) when a step does not converge,
+// GeometryError for a zone that cannot be paired, InputError for inconsistent options.
+ContactResult solve_contact(const ContactProblem& problem, const bem::ProgressCallback& progress = {});
+
+}  // namespace bemcontact::contact

@@ -1,0 +1,53 @@
+#pragma once
+// One quasi-static load step of the condensed contact problem, with Coulomb's law in
+// incremental form: the slip increment s = w_t - w_t(previous step) vanishes where
+// |tau| < g (stick) and opposes tau where |tau| = g (slip), g = beta |p_n|.
+//
+// Two solvers:
+//  - solve_step_newton: semi-smooth Newton / primal-dual active set on the nonlinear
+//    complementarity functions (Alart-Curnier form, c = 1 / mean diag M)
+//      C_n = lambda_n - max(0, lambda_n - c (d - w_n))        (unilateral; c (d - w_n) bilateral)
+//      C_t = tau - proj_[-g, g](tau - c s)
+//    The slip direction is part of the solution. Each iteration solves one small dense
+//    linear system; the step ends when max |C| <= tolerance * pressure scale.
+//  - solve_step_thesis: the thesis' algorithms (Alg V.1, V.2, V.3, section V.3.4).
+// Both return the residual max |C| (relative) so that a failure is never silent.
+#include <string>
+
+#include "bemcontact/contact/condensed.hpp"
+
+namespace bemcontact::contact {
+
+struct StepInput {
+  const CondensedProblem* problem = nullptr;
+  double load = 1.0;  // load factor of the step
+  ContactKind kind = ContactKind::unilateral;
+  double friction = 0.0;
+  Vector previous_tangential_jump;  // N: w_t at the end of the previous step
+  Vector x_start;                   // 2N: initial guess (previous step)
+  double delta_start = 0.0;
+};
+
+struct StepOutput {
+  Vector x;       // 2N: (lambda_n, tau) per pair
+  double delta = 0.0;
+  Vector w;       // 2N: jump (w_n, w_t) per pair
+  double residual = 0.0;  // relative complementarity residual
+  bool converged = false;
+  std::string failure;    // why not, when not converged
+  int newton_iterations = 0;
+  int kalker_iterations = 0;     // Alg V.3 (and the frictionless pass of V.3.4)
+  int threshold_iterations = 0;  // Alg V.2
+  int gmres_cycles = 0;          // Alg V.1 restarts
+};
+
+// Jump w = load a + M x + delta b.
+Vector relative_displacement(const StepInput& input, const Vector& x, double delta);
+// max |C_n|, |C_t| over the pairs divided by the pressure scale, and the force mismatch
+// relative to the force.
+double complementarity_residual(const StepInput& input, const Vector& x, double delta);
+
+StepOutput solve_step_newton(const StepInput& input, const SolverOptions& options);
+StepOutput solve_step_thesis(const StepInput& input, const SolverOptions& options);
+
+}  // namespace bemcontact::contact

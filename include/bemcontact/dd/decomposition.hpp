@@ -1,0 +1,62 @@
+#pragma once
+// A body made of several subdomains (materials) glued along shared interfaces: the
+// problem the domain decomposition of chapters III-IV solves. Built by
+// io/decomposition_file (or by code: tests, reference cases, benchmarks).
+//
+// Each subdomain is a one-body definition whose boundary pieces are either outer pieces
+// with their own conditions or interface pieces, named: the two subdomains that share an
+// interface both list a piece (or a chain of pieces) with that interface name, each
+// traversed with its own domain on the left, so in opposite directions. Interface pieces
+// carry the condition signature "interface:<name>", so the mesher splits the node where
+// an interface meets anything else.
+#include <string>
+#include <vector>
+
+#include "bemcontact/bem/problem.hpp"
+
+namespace bemcontact::dd {
+
+// Which continuity the interface unknowns carry (section IV.3).
+enum class InterfaceMethod {
+  conforming,  // displacements on the interface, equilibrium iterated: (IV.4), B = sum S
+  hybrid,      // tractions on the interface, compatibility iterated: (IV.5), B' = sum S^-1
+  mixed,       // the thesis' Hennizel variant: displacements on gamma_d, tractions on gamma_c (IV.6)
+};
+const char* to_string(InterfaceMethod method);
+
+struct Subdomain {
+  bem::BodyDefinition body;                    // name, material, pieces, conditions, constraints
+  std::vector<std::string> piece_interface;    // per piece: interface name, "" for outer pieces
+  std::vector<bem::InteriorPoint> interior_points;
+};
+
+struct DecompositionOptions {
+  InterfaceMethod method = InterfaceMethod::conforming;
+  int restart = 20;                 // GMRES(m)
+  double tolerance = 1e-8;          // on ||r|| / ||r_00|| (Alg IV.4; thesis 1e-8)
+  int max_iterations = 500;         // operator applications over all restarts
+  // Facing nodes of an interface must coincide within this fraction of the geometry size.
+  double interface_tolerance = 1e-6;
+  // Mixed method: per interface, this many nodes nearest the middle of the interface carry
+  // displacement continuity (gamma_d, "au centre" in IV.5.1); the others carry traction
+  // continuity (gamma_c). Two nodes fix the rigid motion of a floating subdomain.
+  int displacement_nodes = 2;
+};
+
+struct DecompositionProblem {
+  std::string title;
+  std::string source_file;
+  AnalysisType analysis = AnalysisType::plane_strain;
+  geometry::MeshOptions mesh;
+  std::vector<Subdomain> subdomains;
+  DecompositionOptions options;
+};
+
+// Marks piece `piece` of `subdomain` as part of interface `name` (no condition of its own).
+void mark_interface(Subdomain& subdomain, std::size_t piece, const std::string& name);
+
+// The one-body problem of subdomain s (its pieces, material, constraints, interior points),
+// for meshing and for the writers.
+bem::ProblemDefinition subdomain_problem(const DecompositionProblem& problem, std::size_t s);
+
+}  // namespace bemcontact::dd

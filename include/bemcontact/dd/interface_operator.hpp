@@ -1,0 +1,59 @@
+#pragma once
+// The condensed interface problem K Y = F of (IV.6), applied matrix-free.
+//
+// Every subdomain is assembled and factored once (FactoredBody) with its interface nodes
+// as variable nodes: displacement data at the pairs of kind displacement (gamma_d),
+// traction data at the pairs of kind traction (gamma_c). One application of K (Alg IV.1)
+// is one solve per subdomain with its own data switched off:
+//   gamma_d pair (unknown u):  u_a = u_b = u           ->  residual p_a + p_b   (equilibrium)
+//   gamma_c pair (unknown p):  p_a = p, p_b = -p       ->  residual u_a - u_b   (compatibility)
+// The right-hand side (Alg IV.2) is F = -r(0), r(0) the residual of Y = 0 with the
+// subdomains' own data on (a sign convention: (IV.8) prints r(0) itself).
+//
+// Units: displacement unknowns and compatibility residuals are multiplied by
+// displacement_scale = mu / L (mean shear modulus over the geometry size), so that every
+// unknown is a traction and every residual a traction: without it the mixed operator mixes
+// blocks that differ by E / L (10^5 in the thesis' plate) and GMRES's Euclidean residual
+// would ignore one of them.
+#include <vector>
+
+#include "bemcontact/bem/factored_body.hpp"
+#include "bemcontact/dd/interface.hpp"
+#include "bemcontact/operators/linear_operator.hpp"
+
+namespace bemcontact::dd {
+
+class InterfaceOperator : public operators::LinearOperator {
+ public:
+  // Assembles and factors every subdomain (the expensive part); progress as "factorisation".
+  InterfaceOperator(const DecompositionProblem& problem, const std::vector<geometry::BoundaryMesh>& meshes,
+                    const Connectivity& connectivity, const bem::ProgressCallback& progress = {});
+
+  Index rows() const override { return connectivity_.unknowns; }
+  Index cols() const override { return connectivity_.unknowns; }
+  void apply(const Vector& y, Vector& ky) const override;  // Alg IV.1
+
+  Vector right_hand_side() const;  // Alg IV.2
+  // Interface residual r(Y) = K Y + r(0) (with_fixed_data) or K Y.
+  Vector residual(const Vector& y, bool with_fixed_data) const;
+  // The variable data of subdomain s for interface unknowns y (FactoredBody's order).
+  Vector subdomain_data(std::size_t s, const Vector& y) const;
+  // The full boundary solution of subdomain s for interface unknowns y.
+  bem::BoundarySolution subdomain_solution(std::size_t s, const Vector& y) const;
+
+  double displacement_scale() const { return scale_; }
+  const bem::FactoredBody& body(std::size_t s) const { return bodies_[s]; }
+  std::size_t subdomain_count() const { return bodies_.size(); }
+  // Number of subdomain solves done by apply/residual so far (for reports).
+  long solves() const { return solves_; }
+  // Bytes held by the factored subdomains (LU factors and right-hand-side columns).
+  std::size_t memory_bytes() const;
+
+ private:
+  const Connectivity& connectivity_;
+  std::vector<bem::FactoredBody> bodies_;
+  double scale_ = 1.0;
+  mutable long solves_ = 0;
+};
+
+}  // namespace bemcontact::dd

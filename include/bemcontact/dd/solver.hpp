@@ -1,0 +1,61 @@
+#pragma once
+// Solving a decomposed body (chapter IV): mesh the subdomains, build the connection table,
+// factor each subdomain once, solve the interface problem by GMRES(m) (Alg IV.4), then
+// recover every subdomain's boundary solution, boundary stresses and interior points.
+#include <string>
+#include <vector>
+
+#include "bemcontact/bem/progress.hpp"
+#include "bemcontact/bem/solution.hpp"
+#include "bemcontact/dd/interface.hpp"
+#include "bemcontact/operators/gmres.hpp"
+
+namespace bemcontact::dd {
+
+struct SubdomainResult {
+  std::string name;
+  geometry::BoundaryMesh mesh;
+  bem::BoundarySolution boundary;  // displacement, traction, stress per node
+  bem::InteriorSolution interior;
+  double reciprocal_condition = 0.0;  // of the subdomain's factored system
+};
+
+// Continuity measured on one interface, relative to the size of the field there:
+//   jump_u = ||u_a - u_b|| / max(||u_a||, ||u_b||),  jump_p = ||p_a + p_b|| / max(||p_a||, ||p_b||)
+// (Euclidean norms over all pairs and both components; cf. (IV.20)). A norm below 1e-300
+// counts as 1, so a vanishing field gives the absolute jump.
+struct InterfaceJump {
+  std::string name;
+  double jump_u = 0.0;
+  double jump_p = 0.0;
+  Index pairs = 0;
+  Index displacement_pairs = 0;  // pairs in gamma_d
+};
+
+struct DecompositionResult {
+  InterfaceMethod method = InterfaceMethod::conforming;
+  std::vector<SubdomainResult> subdomains;
+  Connectivity connectivity;
+  std::vector<InterfaceJump> jumps;
+  operators::GmresResult gmres;  // status, iterations, residual history
+  Index interface_unknowns = 0;
+  double displacement_scale = 1.0;
+  long subdomain_solves = 0;
+  std::size_t factor_memory_bytes = 0;
+  bem::PhaseTimings timings;
+  bool converged() const { return gmres.converged(); }
+};
+
+// Jumps of u and p on every interface of a solved decomposition.
+std::vector<InterfaceJump> interface_jumps(const Connectivity& connectivity,
+                                           const std::vector<SubdomainResult>& subdomains);
+
+// The whole solve. GMRES's failure to converge is not an exception: the result carries
+// gmres.status and gmres.message (the caller reports it and exits with a solver failure),
+// and the subdomain solutions of the last iterate. Input and geometry errors throw
+// InputError / GeometryError; a subdomain left free to move by its interface conditions
+// throws SolverError naming it and suggesting another method.
+DecompositionResult solve_decomposition(const DecompositionProblem& problem,
+                                        const bem::ProgressCallback& progress = {});
+
+}  // namespace bemcontact::dd

@@ -1,0 +1,93 @@
+#include "bemcontact/contact/condensed.hpp"
+
+#include "bemcontact/core/error.hpp"
+
+namespace bemcontact::contact {
+
+ContactModel::ContactModel(const ContactProblem& problem, const bem::ProgressCallback& progress)
+    : problem_(problem), prepared_(prepare_contact(problem)) {
+  const auto& pairs = prepared_.pairs;
+  const Index n = static_cast<Index>(pairs.size());
+  if (n == 0) throw GeometryError("contact: the contact zone holds no node pair");
+  const bool has_force = problem.force.has_value();
+  const int force_body = has_force ? problem.force->body : -1;
+  const int component = has_force ? problem.force->component : 0;
+
+  std::array<Matrix, 2> flexibility;
+  std::array<Vector, 2> fixed_response;
+  for (int b = 0; b < 2; ++b) {
+    std::vector<bem::VariableNode> variable;
+    for (const auto& pair : pairs) variable.push_back({b == 0 ? pair.node1 : pair.node2, bem::ConditionKind::traction});
+    if (b == force_body)
+      for (const Index node : prepared_.loaded_nodes) variable.push_back({node, bem::ConditionKind::displacement});
+    bem::ProgressCallback body_progress;
+    if (progress)
+      body_progress = [&, b](const std::string& phase, double fraction) {
+        progress("body " + prepared_.bodies[b].name + ": " + phase, fraction);
+      };
+    factored_[b] = std::make_unique<bem::FactoredBody>(prepared_.meshes[b], prepared_.bodies[b], problem.analysis,
+                                                       std::move(variable), body_progress);
+    const Index dofs = factored_[b]->variable_dofs();
+    flexibility[b] = factored_[b]->complementary_columns(Matrix::Identity(dofs, dofs), false);
+    fixed_response[b] = factored_[b]->complementary(Vector::Zero(dofs), true);
+  }
+
+  // Frames: w = Q [u] (rows n, t), p = R x (columns -n, t).
+  Matrix Q = Matrix::Zero(2 * n, 2 * n), R = Matrix::Zero(2 * n, 2 * n);
+  for (Index i = 0; i < n; ++i) {
+    Q.block<1, 2>(2 * i, 2 * i) = pairs[i].normal.transpose();
+    Q.block<1, 2>(2 * i + 1, 2 * i) = pairs[i].tangent.transpose();
+    R.block<2, 1>(2 * i, 2 * i) = -pairs[i].normal;
+    R.block<2, 1>(2 * i, 2 * i + 1) = pairs[i].tangent;
+  }
+  // B' = 1S^-1 + 2S^-1 (Pb V.5): body 2 carries -p, and [u] = 1u - 2u.
+  const Matrix Bprime = flexibility[0].topLeftCorner(2 * n, 2 * n) + flexibility[1].topLeftCorner(2 * n, 2 * n);
+  auto& c = condensed_;
+  c.pairs = n;
+  c.M = Q * Bprime * R;
+  if (!problem.tangential_coupling)
+    for (Index i = 0; i < n; ++i)
+      for (Index j = 0; j < n; ++j) c.M(2 * i, 2 * j + 1) = c.M(2 * i + 1, 2 * j) = 0.0;
+  c.a = Q * (fixed_response[0].head(2 * n) - fixed_response[1].head(2 * n));
+  c.gap.resize(n);
+  c.on_axis.resize(n);
+  for (Index i = 0; i < n; ++i) {
+    c.gap[i] = pairs[i].gap;
+    c.on_axis[i] = pairs[i].on_axis;
+  }
+  c.has_force = has_force;
+  c.b = Vector::Zero(2 * n);
+  c.f = Vector::Zero(2 * n);
+  if (has_force) {
+    const Matrix& C = flexibility[force_body];
+    const double sign = force_body == 0 ? 1.0 : -1.0;
+    const Index loaded = static_cast<Index>(prepared_.loaded_nodes.size());
+    Vector unit_delta = Vector::Zero(C.cols());
+    for (Index l = 0; l < loaded; ++l) unit_delta[2 * n + 2 * l + component] = 1.0;
+    const Vector response = C * unit_delta;
+    c.b = sign * (Q * response.head(2 * n));
+    Eigen::RowVectorXd force_row = Eigen::RowVectorXd::Zero(C.cols());
+    for (Index l = 0; l < loaded; ++l) force_row[2 * n + 2 * l + component] = prepared_.loaded_weights[l];
+    c.f = sign * (R.transpose() * (force_row * C.leftCols(2 * n)).transpose());
+    c.f_delta = force_row.dot(response);
+    c.F0 = force_row.dot(fixed_response[force_body]);
+    c.force = problem.force->force;
+    contact_offset_[force_body] = 2 * n;
+  }
+}
+
+Vec2 ContactModel::traction(Index pair, const Vector& x) const {
+  const auto& p = prepared_.pairs[pair];
+  return -x[2 * pair] * p.normal + x[2 * pair + 1] * p.tangent;
+}
+
+Vector ContactModel::variable_data(int b, const Vector& x, double delta) const {
+  const Index n = condensed_.pairs;
+  Vector data = Vector::Zero(factored_[b]->variable_dofs());
+  for (Index i = 0; i < n; ++i) data.segment<2>(2 * i) = (b == 0 ? 1.0 : -1.0) * traction(i, x);
+  if (problem_.force && problem_.force->body == b)
+    for (Index l = 2 * n; l < data.size(); l += 2) data[l + problem_.force->component] = delta;
+  return data;
+}
+
+}  // namespace bemcontact::contact

@@ -1,0 +1,207 @@
+#include "bemcontact/contact/contact_solver.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <sstream>
+
+#include "bemcontact/bem/postprocess.hpp"
+#include "bemcontact/contact/step_solvers.hpp"
+#include "bemcontact/core/error.hpp"
+
+namespace bemcontact::contact {
+
+const char* to_string(PairStatus status) {
+  switch (status) {
+    case PairStatus::open: return "open";
+    case PairStatus::stick: return "stick";
+    case PairStatus::slip: return "slip";
+  }
+  return "?";
+}
+const char* to_string(Algorithm algorithm) { return algorithm == Algorithm::newton ? "newton" : "thesis"; }
+const char* to_string(ContactKind kind) { return kind == ContactKind::bilateral ? "bilateral" : "unilateral"; }
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+std::vector<PairResult> pair_results(const ContactModel& model, const StepOutput& step, const ContactProblem& problem) {
+  const auto& pairs = model.prepared().pairs;
+  double scale = 0.0;
+  for (Index i = 0; i < static_cast<Index>(pairs.size()); ++i) scale = std::max(scale, std::abs(step.x[2 * i]));
+  std::vector<PairResult> out;
+  for (Index i = 0; i < static_cast<Index>(pairs.size()); ++i) {
+    PairResult r;
+    r.position = pairs[i].position1;
+    r.coordinate = pairs[i].position1.x();
+    r.normal = pairs[i].normal;
+    r.gap = pairs[i].gap;
+    const double lambda = step.x[2 * i];
+    r.p_n = -lambda;
+    r.p_t = step.x[2 * i + 1];
+    r.jump_n = step.w[2 * i];
+    r.jump_t = step.w[2 * i + 1];
+    const double g = problem.friction * std::abs(lambda);
+    r.slip_ratio = g > 0.0 ? std::abs(r.p_t) / g : 0.0;
+    const bool open = problem.kind == ContactKind::unilateral && lambda <= 1e-12 * scale;
+    if (open) r.status = PairStatus::open;
+    else if (problem.friction == 0.0 || pairs[i].on_axis) r.status = problem.friction == 0.0 ? PairStatus::slip : PairStatus::stick;
+    else r.status = r.slip_ratio >= 1.0 - 1e-6 ? PairStatus::slip : PairStatus::stick;
+    out.push_back(r);
+  }
+  return out;
+}
+
+ContactSummary summarise(const ContactModel& model, const std::vector<PairResult>& pairs, const StepOutput& step,
+                         double load) {
+  ContactSummary s;
+  s.load_factor = load;
+  s.approach = step.delta;
+  s.residual = step.residual;
+  s.newton_iterations = step.newton_iterations;
+  s.kalker_iterations = step.kalker_iterations;
+  s.threshold_iterations = step.threshold_iterations;
+  s.gmres_cycles = step.gmres_cycles;
+  const auto& prepared = model.prepared();
+  std::vector<std::size_t> order(pairs.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return std::abs(pairs[a].coordinate) < std::abs(pairs[b].coordinate);
+  });
+  if (!order.empty()) s.centre_pressure = -pairs[order.front()].p_n;
+  // Contact edge: outermost pair in contact; inside a smooth contact p ~ sqrt(a - r), so
+  // p^2 is extrapolated linearly from the two outermost contact pairs to its zero, kept
+  // between the last pair in contact and the first open one.
+  std::ptrdiff_t last = -1, previous = -1, first_open = -1;
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    const auto& pair = pairs[order[k]];
+    if (pair.status != PairStatus::open) {
+      s.pairs_in_contact += 1;
+      s.peak_pressure = std::max(s.peak_pressure, -pair.p_n);
+      s.normal_force += -pair.p_n * prepared.pairs[order[k]].weight;
+      if (first_open < 0) previous = last, last = static_cast<std::ptrdiff_t>(k);
+    } else if (last >= 0 && first_open < 0) {
+      first_open = static_cast<std::ptrdiff_t>(k);
+    }
+  }
+  if (last >= 0) {
+    const double r_last = std::abs(pairs[order[last]].coordinate);
+    s.contact_radius = r_last;
+    if (first_open >= 0) {
+      const double r_open = std::abs(pairs[order[first_open]].coordinate);
+      s.contact_radius = 0.5 * (r_last + r_open);
+      if (previous >= 0) {
+        const double r_prev = std::abs(pairs[order[previous]].coordinate);
+        const double q_last = pairs[order[last]].p_n * pairs[order[last]].p_n;
+        const double q_prev = pairs[order[previous]].p_n * pairs[order[previous]].p_n;
+        if (q_prev > q_last && r_last > r_prev)
+          s.contact_radius = std::clamp(r_last + q_last * (r_last - r_prev) / (q_prev - q_last), r_last, r_open);
+      }
+    }
+  }
+  // Stick edge: midway between the outermost stick pair and the next slipping pair.
+  std::ptrdiff_t last_stick = -1;
+  for (std::size_t k = 0; k < order.size(); ++k)
+    if (pairs[order[k]].status == PairStatus::stick) last_stick = static_cast<std::ptrdiff_t>(k);
+  if (last_stick >= 0) {
+    s.stick_radius = std::abs(pairs[order[last_stick]].coordinate);
+    for (std::size_t k = last_stick + 1; k < order.size(); ++k)
+      if (pairs[order[k]].status == PairStatus::slip) {
+        s.stick_radius = 0.5 * (s.stick_radius + std::abs(pairs[order[k]].coordinate));
+        break;
+      }
+  }
+  return s;
+}
+
+std::string format_residual(double value) {
+  std::ostringstream out;
+  out.precision(3);
+  out << value;
+  return out.str();
+}
+
+}  // namespace
+
+ContactResult solve_contact(const ContactProblem& problem, const bem::ProgressCallback& progress) {
+  if (problem.increments < 1) throw Error("contact: the number of load increments must be >= 1");
+  if (problem.friction < 0.0) throw Error("contact: the friction coefficient must be >= 0");
+  ContactResult result;
+  auto start = Clock::now();
+  const ContactModel model(problem, progress);
+  result.timings.add("assembly, factorisation and condensation", seconds_since(start));
+  const auto& condensed = model.condensed();
+  const Index n = condensed.pairs;
+  result.unknowns = 2 * n + (condensed.has_force ? 1 : 0);
+
+  start = Clock::now();
+  StepInput input;
+  input.problem = &condensed;
+  input.kind = problem.kind;
+  input.friction = problem.friction;
+  input.previous_tangential_jump = Vector::Zero(n);
+  input.x_start = Vector::Zero(2 * n);
+  StepOutput step;
+  ContactSummary totals;
+  for (int k = 1; k <= problem.increments; ++k) {
+    input.load = static_cast<double>(k) / problem.increments;
+    step = problem.solver.algorithm == Algorithm::newton ? solve_step_newton(input, problem.solver)
+                                                         : solve_step_thesis(input, problem.solver);
+    if (!step.converged)
+      throw SolverError("contact (" + std::string(to_string(problem.solver.algorithm)) + " algorithm): load step " +
+                        std::to_string(k) + " of " + std::to_string(problem.increments) + ": " + step.failure +
+                        "; complementarity residual " + format_residual(step.residual) + " (relative)");
+    const auto pairs = pair_results(model, step, problem);
+    result.steps.push_back(summarise(model, pairs, step, input.load));
+    if (problem.record_steps) result.step_pairs.push_back(pairs);
+    totals.newton_iterations += step.newton_iterations;
+    totals.kalker_iterations += step.kalker_iterations;
+    totals.threshold_iterations += step.threshold_iterations;
+    totals.gmres_cycles += step.gmres_cycles;
+    for (Index i = 0; i < n; ++i) input.previous_tangential_jump[i] = step.w[2 * i + 1];
+    input.x_start = step.x;
+    input.delta_start = step.delta;
+    if (progress) progress("contact load steps", static_cast<double>(k) / problem.increments);
+  }
+  result.timings.add("contact iterations", seconds_since(start));
+  result.pairs = pair_results(model, step, problem);
+  result.summary = result.steps.back();
+  result.summary.newton_iterations = totals.newton_iterations;
+  result.summary.kalker_iterations = totals.kalker_iterations;
+  result.summary.threshold_iterations = totals.threshold_iterations;
+  result.summary.gmres_cycles = totals.gmres_cycles;
+
+  start = Clock::now();
+  for (int b = 0; b < 2; ++b) {
+    const auto& body = model.prepared().bodies[b];
+    result.body_names[b] = body.name;
+    result.meshes[b] = model.prepared().meshes[b];
+    result.boundary[b] = model.body(b).solve(model.variable_data(b, step.x, step.delta), true);
+    if (result.boundary[b].stress.empty())
+      result.boundary[b].stress = bem::boundary_stresses(result.meshes[b], problem.analysis, body.material, result.boundary[b]);
+  }
+  result.timings.add("boundary stresses", seconds_since(start));
+  start = Clock::now();
+  bool any_interior = false;
+  for (int b = 0; b < 2; ++b) {
+    if (problem.interior_points[b].empty()) continue;
+    any_interior = true;
+    const auto& body = model.prepared().bodies[b];
+    const bem::ElementIntegrator integrator(problem.analysis, body.material);
+    std::vector<Vec2> inside;
+    for (const auto& point : problem.interior_points[b])
+      if (bem::point_inside(result.meshes[b], point, 1e-9 * result.meshes[b].scale)) inside.push_back(point);
+      else result.interior[b].dropped_points.push_back(point);
+    auto dropped = result.interior[b].dropped_points;
+    result.interior[b] = bem::interior_values(result.meshes[b], integrator, result.boundary[b], inside, progress);
+    result.interior[b].dropped_points = dropped;
+  }
+  if (any_interior) result.timings.add("interior points", seconds_since(start));
+  return result;
+}
+
+}  // namespace bemcontact::contact

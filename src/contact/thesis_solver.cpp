@@ -1,0 +1,215 @@
+// The thesis' contact algorithms for one load step (chapter V):
+//  Alg V.1  projected GMRES(m): restarted GMRES cycles on B' p = Delta over the pairs in
+//           contact, each cycle's result projected on K = {|p_t| <= g}; stop when the
+//           relative change of p over a cycle is below xi.
+//  Alg V.2  successive approximation of the threshold: g^0 = 0 (frictionless), then
+//           g^n = beta |p_n^n| until ||g^(n+1) - g^n|| / ||g^n|| < xi (V.19).
+//  V.3.4    the sign of p_t in the slip zone is taken from the frictionless solution: p_t
+//           opposes the relative slip found without friction (Man et al.).
+//  Alg V.3  Kalker-style active set for unilateral contact: start with every pair in
+//           contact, solve the bilateral problem, release pairs in tension (p_n > 0),
+//           re-admit pairs that penetrate ([u_n] - d > 0), until the set repeats.
+// In incremental form the tangential right-hand side is the previous step's jump, so the
+// residual of the tangential rows is minus the slip increment of the step.
+#include <algorithm>
+#include <cmath>
+
+#include "bemcontact/contact/step_solvers.hpp"
+
+namespace bemcontact::contact {
+namespace {
+
+struct Restricted {
+  std::vector<Index> dofs;  // condensed dofs of the pairs in contact (2 per pair), then delta
+  Matrix A;
+  Vector rhs;
+};
+
+Restricted restrict_to(const StepInput& in, const std::vector<bool>& in_contact) {
+  const auto& p = *in.problem;
+  Restricted r;
+  for (Index i = 0; i < p.pairs; ++i)
+    if (in_contact[i]) {
+      r.dofs.push_back(2 * i);
+      r.dofs.push_back(2 * i + 1);
+    }
+  const Index m = static_cast<Index>(r.dofs.size());
+  const Index size = m + (p.has_force ? 1 : 0);
+  r.A = Matrix::Zero(size, size);
+  r.rhs = Vector::Zero(size);
+  for (Index a = 0; a < m; ++a) {
+    const Index row = r.dofs[a];
+    for (Index b = 0; b < m; ++b) r.A(a, b) = p.M(row, r.dofs[b]);
+    if (p.has_force) r.A(a, m) = p.b[row];
+    const Index pair = row / 2;
+    r.rhs[a] = row % 2 == 0 ? p.gap[pair] - in.load * p.a[row]  // [u_n] = d
+                            : in.previous_tangential_jump[pair] - in.load * p.a[row];  // no slip increment
+  }
+  if (p.has_force) {
+    for (Index b = 0; b < m; ++b) r.A(m, b) = p.f[r.dofs[b]];
+    r.A(m, m) = p.f_delta;
+    r.rhs[m] = in.load * (p.force - p.F0);
+  }
+  return r;
+}
+
+// proj_K of Alg V.1: |p_t| <= g, with the sign of a clipped p_t from V.3.4 when known.
+void project(const StepInput& in, const Restricted& r, const Vector& g, const Vector& slip_sign, Vector& y) {
+  const auto& p = *in.problem;
+  for (std::size_t a = 1; a < r.dofs.size(); a += 2) {
+    const Index pair = r.dofs[a] / 2;
+    if (p.on_axis[pair]) {
+      y[a] = 0.0;
+      continue;
+    }
+    if (std::abs(y[a]) > g[pair]) {
+      const double sign = slip_sign[pair] != 0.0 ? slip_sign[pair] : (y[a] >= 0.0 ? 1.0 : -1.0);
+      y[a] = sign * g[pair];
+    }
+  }
+}
+
+// Alg V.1. Returns false when the cycles do not settle.
+bool projected_gmres(const StepInput& in, const Restricted& r, const Vector& g, const Vector& slip_sign,
+                     const SolverOptions& options, Vector& y, int& cycles) {
+  const Index size = r.A.rows();
+  const int m = std::max(1, std::min<int>(options.gmres_restart, static_cast<int>(size)));
+  project(in, r, g, slip_sign, y);
+  for (int cycle = 0; cycle < options.max_gmres_cycles; ++cycle) {
+    ++cycles;
+    const Vector r0 = r.rhs - r.A * y;
+    const double beta = r0.norm();
+    if (beta == 0.0) return true;
+    Matrix V = Matrix::Zero(size, m + 1);
+    Matrix H = Matrix::Zero(m + 1, m);
+    V.col(0) = r0 / beta;
+    int n = m;
+    for (int j = 0; j < m; ++j) {  // Arnoldi (modified Gram-Schmidt)
+      Vector v = r.A * V.col(j);
+      for (int i = 0; i <= j; ++i) {
+        H(i, j) = v.dot(V.col(i));
+        v -= H(i, j) * V.col(i);
+      }
+      H(j + 1, j) = v.norm();
+      if (H(j + 1, j) <= 1e-14 * beta) {
+        n = j + 1;
+        break;
+      }
+      V.col(j + 1) = v / H(j + 1, j);
+    }
+    Vector e1 = Vector::Zero(n + 1);
+    e1[0] = beta;
+    const Vector w = H.topLeftCorner(n + 1, n).colPivHouseholderQr().solve(e1);  // min ||beta e1 - H w||
+    Vector y_new = y + V.leftCols(n) * w;
+    project(in, r, g, slip_sign, y_new);
+    const double change = (y_new - y).norm() / std::max(y_new.norm(), 1e-300);
+    y = y_new;
+    if (change < options.xi) return true;
+  }
+  return false;
+}
+
+struct BilateralResult {
+  bool converged = true;
+  std::string failure;
+};
+
+// Alg V.2 on the pairs in contact; x and delta in/out.
+BilateralResult successive_thresholds(const StepInput& in, const std::vector<bool>& in_contact, double friction,
+                                      const Vector& slip_sign, const SolverOptions& options, Vector& x, double& delta,
+                                      StepOutput& out) {
+  const auto& p = *in.problem;
+  const Restricted r = restrict_to(in, in_contact);
+  const Index m = static_cast<Index>(r.dofs.size());
+  Vector y(r.A.rows());
+  for (Index a = 0; a < m; ++a) y[a] = x[r.dofs[a]];
+  if (p.has_force) y[m] = delta;
+  Vector g = Vector::Zero(p.pairs);  // g^0 = 0: frictionless
+  BilateralResult result;
+  for (int iteration = 0; iteration < std::max(1, options.max_threshold_iterations); ++iteration) {
+    ++out.threshold_iterations;
+    if (!projected_gmres(in, r, g, slip_sign, options, y, out.gmres_cycles)) {
+      result.converged = false;
+      result.failure = "projected GMRES(" + std::to_string(options.gmres_restart) + ") (Alg V.1) did not settle in " +
+                       std::to_string(options.max_gmres_cycles) + " cycles";
+      break;
+    }
+    if (friction == 0.0) break;
+    Vector g_new = Vector::Zero(p.pairs);
+    for (Index a = 0; a < m; a += 2) g_new[r.dofs[a] / 2] = friction * std::abs(y[a]);
+    const double change = (g_new - g).norm() / std::max(g_new.norm(), 1e-300);
+    g = g_new;
+    if (change < options.xi && iteration > 0) break;  // (V.19)
+    if (iteration + 1 == options.max_threshold_iterations) {
+      result.converged = false;
+      result.failure = "the successive approximation of g (Alg V.2) did not settle in " +
+                       std::to_string(options.max_threshold_iterations) + " iterations";
+    }
+  }
+  x.setZero();
+  for (Index a = 0; a < m; ++a) x[r.dofs[a]] = y[a];
+  if (p.has_force) delta = y[m];
+  return result;
+}
+
+// Alg V.3 (or one bilateral solve); returns the final contact set through in_contact.
+BilateralResult kalker(const StepInput& in, double friction, const Vector& slip_sign, const SolverOptions& options,
+                       std::vector<bool>& in_contact, Vector& x, double& delta, StepOutput& out) {
+  const auto& p = *in.problem;
+  StepInput step = in;
+  step.friction = friction;
+  for (int iteration = 1; iteration <= options.max_iterations; ++iteration) {
+    ++out.kalker_iterations;
+    const auto result = successive_thresholds(step, in_contact, friction, slip_sign, options, x, delta, out);
+    if (!result.converged || in.kind == ContactKind::bilateral) return result;
+    const Vector w = relative_displacement(step, x, delta);
+    std::vector<bool> next = in_contact;
+    double gap_scale = 0.0;
+    for (Index i = 0; i < p.pairs; ++i) gap_scale = std::max({gap_scale, std::abs(w[2 * i]), p.gap[i]});
+    for (Index i = 0; i < p.pairs; ++i) {
+      if (in_contact[i] && x[2 * i] < 0.0) next[i] = false;                            // tension: release
+      if (!in_contact[i] && w[2 * i] - p.gap[i] > 1e-12 * gap_scale) next[i] = true;  // penetration: admit
+    }
+    if (std::none_of(next.begin(), next.end(), [](bool b) { return b; }) && p.has_force) {
+      Index closest = 0;
+      for (Index i = 1; i < p.pairs; ++i)
+        if (p.gap[i] - w[2 * i] < p.gap[closest] - w[2 * closest]) closest = i;
+      next[closest] = true;
+    }
+    if (next == in_contact) return result;
+    in_contact = next;
+  }
+  return {false, "the active set (Alg V.3) did not settle in " + std::to_string(options.max_iterations) + " iterations"};
+}
+
+}  // namespace
+
+StepOutput solve_step_thesis(const StepInput& in, const SolverOptions& options) {
+  const auto& p = *in.problem;
+  StepOutput out;
+  Vector x = in.x_start.size() == 2 * p.pairs ? in.x_start : Vector::Zero(2 * p.pairs);
+  double delta = in.delta_start;
+  std::vector<bool> in_contact(p.pairs, true);  // Alg V.3, step 0: Gamma_rc^0 = Gamma_c
+  // V.3.4: frictionless solution first, for the slip direction.
+  const Vector no_sign = Vector::Zero(p.pairs);
+  auto result = kalker(in, 0.0, no_sign, options, in_contact, x, delta, out);
+  if (result.converged && in.friction > 0.0) {
+    const Vector w = relative_displacement(in, x, delta);
+    Vector slip_sign(p.pairs);
+    for (Index i = 0; i < p.pairs; ++i) {
+      const double slip = w[2 * i + 1] - in.previous_tangential_jump[i];
+      slip_sign[i] = slip > 0.0 ? -1.0 : (slip < 0.0 ? 1.0 : 0.0);  // p_t opposes [u_t]
+    }
+    std::fill(in_contact.begin(), in_contact.end(), true);
+    result = kalker(in, in.friction, slip_sign, options, in_contact, x, delta, out);
+  }
+  out.x = x;
+  out.delta = delta;
+  out.w = relative_displacement(in, x, delta);
+  out.residual = complementarity_residual(in, x, delta);
+  out.converged = result.converged;
+  out.failure = result.failure;
+  return out;
+}
+
+}  // namespace bemcontact::contact

@@ -1,0 +1,36 @@
+#include "bemcontact/dd/decomposition.hpp"
+
+namespace bemcontact::dd {
+
+const char* to_string(InterfaceMethod method) {
+  switch (method) {
+    case InterfaceMethod::conforming: return "conforming";
+    case InterfaceMethod::hybrid: return "hybrid";
+    case InterfaceMethod::mixed: return "mixed";
+  }
+  return "unknown";
+}
+
+void mark_interface(Subdomain& subdomain, std::size_t piece, const std::string& name) {
+  auto& body = subdomain.body;
+  if (subdomain.piece_interface.size() < body.pieces.size()) subdomain.piece_interface.resize(body.pieces.size());
+  if (body.conditions.size() < body.pieces.size()) body.conditions.resize(body.pieces.size());
+  bem::BoundaryCondition condition;  // tractions, set per solve by the interface data
+  condition.signature = "interface:" + name;
+  body.conditions[piece] = condition;
+  body.pieces[piece].condition_signature = condition.signature;
+  subdomain.piece_interface[piece] = name;
+}
+
+bem::ProblemDefinition subdomain_problem(const DecompositionProblem& problem, std::size_t s) {
+  bem::ProblemDefinition one;
+  one.title = problem.title + " / " + problem.subdomains[s].body.name;
+  one.source_file = problem.source_file;
+  one.analysis = problem.analysis;
+  one.mesh = problem.mesh;
+  one.body = problem.subdomains[s].body;
+  one.interior_points = problem.subdomains[s].interior_points;
+  return one;
+}
+
+}  // namespace bemcontact::dd

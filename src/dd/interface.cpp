@@ -1,0 +1,193 @@
+#include "bemcontact/dd/interface.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+
+#include "bemcontact/bem/analysis.hpp"
+#include "bemcontact/core/error.hpp"
+
+namespace bemcontact::dd {
+
+namespace {
+
+std::string point_text(const Vec2& p) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "(%.9g, %.9g)", p.x(), p.y());
+  return buffer;
+}
+
+struct Side {
+  std::size_t subdomain = 0;
+  std::vector<int> pieces;
+};
+
+// The nodes of a side's pieces in order of travel, each once.
+std::vector<Index> side_nodes(const geometry::BoundaryMesh& mesh, const Side& side) {
+  std::vector<Index> nodes;
+  std::set<Index> seen;
+  for (const int p : side.pieces)
+    for (const Index node : mesh.piece_nodes[p])
+      if (seen.insert(node).second) nodes.push_back(node);
+  return nodes;
+}
+
+}  // namespace
+
+std::vector<geometry::BoundaryMesh> mesh_subdomains(const DecompositionProblem& problem) {
+  std::vector<geometry::BoundaryMesh> meshes;
+  for (std::size_t s = 0; s < problem.subdomains.size(); ++s) {
+    try {
+      meshes.push_back(bem::mesh_body(subdomain_problem(problem, s)));
+    } catch (const GeometryError& error) {
+      throw GeometryError("subdomain '" + problem.subdomains[s].body.name + "': " + error.what());
+    }
+  }
+  return meshes;
+}
+
+Connectivity build_connectivity(const DecompositionProblem& problem,
+                                const std::vector<geometry::BoundaryMesh>& meshes) {
+  // Interfaces in order of first appearance.
+  std::vector<std::string> names;
+  std::map<std::string, std::vector<Side>> sides;
+  for (std::size_t s = 0; s < problem.subdomains.size(); ++s) {
+    const auto& sub = problem.subdomains[s];
+    for (std::size_t p = 0; p < sub.piece_interface.size(); ++p) {
+      const std::string& name = sub.piece_interface[p];
+      if (name.empty()) continue;
+      auto& list = sides[name];
+      if (list.empty()) names.push_back(name);
+      if (list.empty() || list.back().subdomain != s) list.push_back(Side{s, {}});
+      list.back().pieces.push_back(static_cast<int>(p));
+    }
+  }
+
+  const auto piece_where = [&](const Side& side) {
+    return problem.subdomains[side.subdomain].body.pieces[side.pieces.front()].where;
+  };
+  const auto sub_name = [&](std::size_t s) { return "'" + problem.subdomains[s].body.name + "'"; };
+
+  Connectivity result;
+  result.variable_nodes.resize(problem.subdomains.size());
+  result.slots.resize(problem.subdomains.size());
+  for (const std::string& name : names) {
+    const auto& list = sides[name];
+    // A subdomain listing the interface twice, apart, shows up as two sides of one subdomain.
+    std::set<std::size_t> distinct;
+    for (const Side& side : list) distinct.insert(side.subdomain);
+    if (distinct.size() != list.size())
+      throw InputError(piece_where(list.back()),
+                       "interface '" + name + "' is listed twice by subdomain " + sub_name(list.back().subdomain) +
+                           " with other boundaries between; list its pieces one after the other");
+    if (list.size() == 1)
+      throw InputError(piece_where(list.front()),
+                       "interface '" + name + "' is listed only by subdomain " + sub_name(list.front().subdomain) +
+                           "; the subdomain on the other side must list a boundary with interface = \"" + name +
+                           "\" (traversed the other way)");
+    if (list.size() > 2)
+      throw InputError(piece_where(list[2]), "interface '" + name + "' is listed by " + std::to_string(list.size()) +
+                                                 " subdomains (" + sub_name(list[0].subdomain) + ", " +
+                                                 sub_name(list[1].subdomain) + ", " + sub_name(list[2].subdomain) +
+                                                 "...); an interface joins exactly two subdomains");
+    const Side& a = list[0];
+    const Side& b = list[1];
+    const auto& mesh_a = meshes[a.subdomain];
+    const auto& mesh_b = meshes[b.subdomain];
+    const std::vector<Index> nodes_a = side_nodes(mesh_a, a);
+    const std::vector<Index> nodes_b = side_nodes(mesh_b, b);
+    const double tolerance = problem.options.interface_tolerance * std::max(mesh_a.scale, mesh_b.scale);
+
+    Interface interface;
+    interface.name = name;
+    interface.subdomain_a = a.subdomain;
+    interface.subdomain_b = b.subdomain;
+    std::vector<bool> used(nodes_b.size(), false);
+    const std::string advice = "; mesh both sides of an interface alike (same elements and grading) so that "
+                               "facing nodes coincide";
+    for (const Index na : nodes_a) {
+      const Vec2& x = mesh_a.nodes[na].position;
+      std::size_t best = nodes_b.size();
+      double best_distance = INFINITY;
+      for (std::size_t k = 0; k < nodes_b.size(); ++k) {
+        const double d = (mesh_b.nodes[nodes_b[k]].position - x).norm();
+        if (d < best_distance) {
+          best_distance = d;
+          best = k;
+        }
+      }
+      if (best == nodes_b.size() || best_distance > tolerance || used[best]) {
+        char distance[64];
+        std::snprintf(distance, sizeof distance, "%.3g", best_distance);
+        throw InputError(piece_where(a), "interface '" + name + "' does not match: node " + std::to_string(na) +
+                                             " of subdomain " + sub_name(a.subdomain) + " at " + point_text(x) +
+                                             " has no facing node in subdomain " + sub_name(b.subdomain) +
+                                             " (the nearest is " + distance + " away)" + advice);
+      }
+      used[best] = true;
+      NodePair pair;
+      pair.node_a = na;
+      pair.node_b = nodes_b[best];
+      pair.position = x;
+      pair.normal_a = mesh_a.nodes[na].normal;
+      if (pair.normal_a.dot(mesh_b.nodes[pair.node_b].normal) > -0.5)
+        throw InputError(piece_where(a), "interface '" + name + "': at " + point_text(x) + " the outward normals of " +
+                                             sub_name(a.subdomain) + " and " + sub_name(b.subdomain) +
+                                             " do not point against each other; the two subdomains overlap "
+                                             "instead of touching");
+      interface.pairs.push_back(pair);
+    }
+    for (std::size_t k = 0; k < nodes_b.size(); ++k)
+      if (!used[k])
+        throw InputError(piece_where(b), "interface '" + name + "' does not match: node " + std::to_string(nodes_b[k]) +
+                                             " of subdomain " + sub_name(b.subdomain) + " at " +
+                                             point_text(mesh_b.nodes[nodes_b[k]].position) +
+                                             " has no facing node in subdomain " + sub_name(a.subdomain) + advice);
+
+    // Kinds: the mixed method keeps displacement continuity on the nodes nearest the
+    // middle of the interface (by arc length along side a).
+    const std::size_t n = interface.pairs.size();
+    for (auto& pair : interface.pairs)
+      pair.kind = problem.options.method == InterfaceMethod::hybrid ? bem::ConditionKind::traction
+                                                                    : bem::ConditionKind::displacement;
+    if (problem.options.method == InterfaceMethod::mixed) {
+      std::vector<double> arc(n, 0.0);
+      for (std::size_t k = 1; k < n; ++k)
+        arc[k] = arc[k - 1] + (interface.pairs[k].position - interface.pairs[k - 1].position).norm();
+      const double middle = 0.5 * arc.back();
+      std::vector<std::size_t> order(n);
+      for (std::size_t k = 0; k < n; ++k) order[k] = k;
+      std::stable_sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) {
+        return std::abs(arc[i] - middle) < std::abs(arc[j] - middle);
+      });
+      const std::size_t keep = static_cast<std::size_t>(std::max(0, problem.options.displacement_nodes));
+      for (std::size_t k = 0; k < n; ++k)
+        interface.pairs[order[k]].kind = k < keep ? bem::ConditionKind::displacement : bem::ConditionKind::traction;
+    }
+
+    interface.offset = result.unknowns;
+    result.unknowns += 2 * static_cast<Index>(n);
+    const std::size_t index = result.interfaces.size();
+    for (std::size_t j = 0; j < n; ++j) {
+      const auto& pair = interface.pairs[j];
+      result.variable_nodes[a.subdomain].push_back({pair.node_a, pair.kind});
+      result.slots[a.subdomain].push_back({index, j, 0});
+      result.variable_nodes[b.subdomain].push_back({pair.node_b, pair.kind});
+      result.slots[b.subdomain].push_back({index, j, 1});
+    }
+    result.interfaces.push_back(std::move(interface));
+  }
+
+  // A node on two interfaces would receive two data (only possible without split ends).
+  for (std::size_t s = 0; s < result.variable_nodes.size(); ++s) {
+    std::set<Index> seen;
+    for (const auto& v : result.variable_nodes[s])
+      if (!seen.insert(v.node).second)
+        throw GeometryError("subdomain " + sub_name(s) + ": node " + std::to_string(v.node) + " at " +
+                            point_text(meshes[s].nodes[v.node].position) + " lies on two interfaces");
+  }
+  return result;
+}
+
+}  // namespace bemcontact::dd

@@ -1,0 +1,89 @@
+#include "bemcontact/dd/interface_operator.hpp"
+
+#include "bemcontact/core/error.hpp"
+
+namespace bemcontact::dd {
+
+InterfaceOperator::InterfaceOperator(const DecompositionProblem& problem,
+                                     const std::vector<geometry::BoundaryMesh>& meshes,
+                                     const Connectivity& connectivity, const bem::ProgressCallback& progress)
+    : connectivity_(connectivity) {
+  const std::size_t count = problem.subdomains.size();
+  bodies_.reserve(count);
+  double shear_sum = 0.0, length = 0.0;
+  for (std::size_t s = 0; s < count; ++s) {
+    const auto& body = problem.subdomains[s].body;
+    shear_sum += body.material.shear_modulus();
+    length = std::max(length, meshes[s].scale);
+    if (progress) progress("factorisation", static_cast<double>(s) / count);
+    try {
+      bodies_.emplace_back(meshes[s], body, problem.analysis, connectivity.variable_nodes[s]);
+    } catch (const SolverError& error) {
+      throw SolverError("subdomain '" + body.name + "' cannot be solved under the " +
+                        to_string(problem.options.method) +
+                        " interface conditions (a subdomain with tractions only on its interfaces and "
+                        "no displacement of its own is free to move; use method = \"conforming\" or "
+                        "\"mixed\", or prescribe displacements): " + error.what());
+    }
+  }
+  if (progress) progress("factorisation", 1.0);
+  scale_ = count > 0 && length > 0.0 ? (shear_sum / count) / length : 1.0;
+}
+
+Vector InterfaceOperator::subdomain_data(std::size_t s, const Vector& y) const {
+  const auto& slots = connectivity_.slots[s];
+  Vector data(2 * static_cast<Index>(slots.size()));
+  for (std::size_t k = 0; k < slots.size(); ++k) {
+    const auto& slot = slots[k];
+    const Index i = connectivity_.unknown_of(slot);
+    const auto kind = connectivity_.interfaces[slot.interface].pairs[slot.pair].kind;
+    Vec2 value = y.segment<2>(i);
+    if (kind == bem::ConditionKind::displacement)
+      value /= scale_;  // the same displacement on both sides
+    else if (slot.side == 1)
+      value = -value;  // p_b = -p_a
+    data.segment<2>(2 * static_cast<Index>(k)) = value;
+  }
+  return data;
+}
+
+Vector InterfaceOperator::residual(const Vector& y, bool with_fixed_data) const {
+  if (y.size() != rows()) throw Error("InterfaceOperator: wrong number of interface unknowns");
+  Vector r = Vector::Zero(rows());
+  for (std::size_t s = 0; s < bodies_.size(); ++s) {
+    const auto& slots = connectivity_.slots[s];
+    if (slots.empty()) continue;
+    const Vector complementary = bodies_[s].complementary(subdomain_data(s, y), with_fixed_data);
+    ++solves_;
+    for (std::size_t k = 0; k < slots.size(); ++k) {
+      const auto& slot = slots[k];
+      const Index i = connectivity_.unknown_of(slot);
+      const auto kind = connectivity_.interfaces[slot.interface].pairs[slot.pair].kind;
+      const Vec2 value = complementary.segment<2>(2 * static_cast<Index>(k));
+      if (kind == bem::ConditionKind::displacement)
+        r.segment<2>(i) += value;  // p_a + p_b (IV.7, gamma_d)
+      else
+        r.segment<2>(i) += (slot.side == 0 ? scale_ : -scale_) * value;  // u_a - u_b (IV.7, gamma_c)
+    }
+  }
+  return r;
+}
+
+void InterfaceOperator::apply(const Vector& y, Vector& ky) const { ky = residual(y, false); }
+
+Vector InterfaceOperator::right_hand_side() const { return -residual(Vector::Zero(rows()), true); }
+
+bem::BoundarySolution InterfaceOperator::subdomain_solution(std::size_t s, const Vector& y) const {
+  return bodies_[s].solve(subdomain_data(s, y), true);
+}
+
+std::size_t InterfaceOperator::memory_bytes() const {
+  std::size_t bytes = 0;
+  for (const auto& body : bodies_) {
+    const std::size_t n = 2 * static_cast<std::size_t>(body.mesh().node_count());
+    bytes += sizeof(double) * (n * n + n * static_cast<std::size_t>(body.variable_dofs()) + 2 * n);
+  }
+  return bytes;
+}
+
+}  // namespace bemcontact::dd

@@ -1,0 +1,139 @@
+#include "bemcontact/dd/solver.hpp"
+
+#include <chrono>
+
+#include "bemcontact/bem/assembly.hpp"
+#include "bemcontact/bem/postprocess.hpp"
+#include "bemcontact/core/error.hpp"
+#include "bemcontact/dd/interface_operator.hpp"
+
+namespace bemcontact::dd {
+
+namespace {
+
+class PhaseClock {
+ public:
+  explicit PhaseClock(bem::PhaseTimings& timings) : timings_(timings) {}
+  void lap(const std::string& phase) {
+    const auto now = std::chrono::steady_clock::now();
+    timings_.add(phase, std::chrono::duration<double>(now - start_).count());
+    start_ = now;
+  }
+
+ private:
+  bem::PhaseTimings& timings_;
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+};
+
+double relative(double difference, double a, double b) {
+  const double size = std::max(a, b);
+  return difference / (size > 1e-300 ? size : 1.0);
+}
+
+}  // namespace
+
+std::vector<InterfaceJump> interface_jumps(const Connectivity& connectivity,
+                                           const std::vector<SubdomainResult>& subdomains) {
+  std::vector<InterfaceJump> jumps;
+  for (const auto& interface : connectivity.interfaces) {
+    const auto& a = subdomains[interface.subdomain_a].boundary;
+    const auto& b = subdomains[interface.subdomain_b].boundary;
+    double du = 0, dp = 0, ua = 0, ub = 0, pa = 0, pb = 0;
+    InterfaceJump jump;
+    jump.name = interface.name;
+    for (const auto& pair : interface.pairs) {
+      du += (a.displacement[pair.node_a] - b.displacement[pair.node_b]).squaredNorm();
+      dp += (a.traction[pair.node_a] + b.traction[pair.node_b]).squaredNorm();
+      ua += a.displacement[pair.node_a].squaredNorm();
+      ub += b.displacement[pair.node_b].squaredNorm();
+      pa += a.traction[pair.node_a].squaredNorm();
+      pb += b.traction[pair.node_b].squaredNorm();
+      ++jump.pairs;
+      if (pair.kind == bem::ConditionKind::displacement) ++jump.displacement_pairs;
+    }
+    jump.jump_u = relative(std::sqrt(du), std::sqrt(ua), std::sqrt(ub));
+    jump.jump_p = relative(std::sqrt(dp), std::sqrt(pa), std::sqrt(pb));
+    jumps.push_back(jump);
+  }
+  return jumps;
+}
+
+DecompositionResult solve_decomposition(const DecompositionProblem& problem, const bem::ProgressCallback& progress) {
+  if (problem.subdomains.empty()) throw Error("solve_decomposition: no subdomains");
+  DecompositionResult result;
+  result.method = problem.options.method;
+  PhaseClock clock(result.timings);
+  const std::vector<geometry::BoundaryMesh> meshes = mesh_subdomains(problem);
+  result.connectivity = build_connectivity(problem, meshes);
+  result.interface_unknowns = result.connectivity.unknowns;
+  clock.lap("mesh and interfaces");
+
+  const InterfaceOperator K(problem, meshes, result.connectivity, progress);
+  result.displacement_scale = K.displacement_scale();
+  result.factor_memory_bytes = K.memory_bytes();
+  clock.lap("assembly and factorisation");
+
+  const Vector F = K.right_hand_side();  // Alg IV.2
+  clock.lap("right-hand side");
+
+  operators::GmresOptions options;
+  options.restart = problem.options.restart;
+  options.tolerance = problem.options.tolerance;
+  options.max_iterations = problem.options.max_iterations;
+  operators::GmresMonitor monitor;
+  if (progress)
+    monitor = [&](int iteration, double) {
+      progress("gmres", std::min(1.0, static_cast<double>(iteration) / std::max(1, options.max_iterations)));
+    };
+  if (K.rows() > 0) {
+    result.gmres = operators::gmres(K, F, options, Vector(), monitor);  // Alg IV.4
+  } else {
+    result.gmres.x = Vector();
+    result.gmres.status = operators::GmresStatus::converged;
+    result.gmres.message = "no interface";
+    result.gmres.residual_history = {0.0};
+  }
+  if (progress) progress("gmres", 1.0);
+  clock.lap("gmres");
+
+  for (std::size_t s = 0; s < problem.subdomains.size(); ++s) {
+    SubdomainResult sub;
+    sub.name = problem.subdomains[s].body.name;
+    sub.mesh = meshes[s];
+    sub.boundary = K.subdomain_solution(s, result.gmres.x);
+    sub.reciprocal_condition = K.body(s).reciprocal_condition();
+    sub.boundary.stress = bem::boundary_stresses(sub.mesh, problem.analysis, problem.subdomains[s].body.material,
+                                                 sub.boundary);
+    result.subdomains.push_back(std::move(sub));
+  }
+  result.jumps = interface_jumps(result.connectivity, result.subdomains);
+  result.subdomain_solves = K.solves() + static_cast<long>(problem.subdomains.size());
+  clock.lap("recovery and boundary stress");
+
+  bool any_interior = false;
+  for (std::size_t s = 0; s < problem.subdomains.size(); ++s) {
+    const auto& points = problem.subdomains[s].interior_points;
+    if (points.empty()) continue;
+    any_interior = true;
+    auto& sub = result.subdomains[s];
+    const bem::ElementIntegrator integrator(problem.analysis, problem.subdomains[s].body.material);
+    std::vector<Vec2> inside, dropped;
+    const double tol = 1e-9 * sub.mesh.scale;
+    for (const auto& p : points) {
+      if (bem::point_inside(sub.mesh, p.position, tol))
+        inside.push_back(p.position);
+      else if (p.from_grid)
+        dropped.push_back(p.position);
+      else
+        throw InputError({problem.source_file, 0, "subdomain '" + sub.name + "' interior.points"},
+                         "point (" + std::to_string(p.position.x()) + ", " + std::to_string(p.position.y()) +
+                             ") is not inside subdomain '" + sub.name + "'");
+    }
+    sub.interior = bem::interior_values(sub.mesh, integrator, sub.boundary, inside, progress);
+    sub.interior.dropped_points = std::move(dropped);
+  }
+  if (any_interior) clock.lap("interior points");
+  return result;
+}
+
+}  // namespace bemcontact::dd
