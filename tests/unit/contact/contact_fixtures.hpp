@@ -1,6 +1,8 @@
 #pragma once
 // Contact problems built in code for the contact tests (plane cases only, so they do not
 // depend on the axisymmetric integration).
+#include <cmath>
+
 #include "bemcontact/contact/contact_problem.hpp"
 
 namespace bemcontact::contact::testing {
@@ -58,6 +60,51 @@ inline ContactProblem flat_punch(double a, double W, int contact_elements, doubl
   add(support, line("left", {-W, 0.0}, {-W, -H}, 10), free_condition());
   problem.contact_piece = {0, 3};
   problem.kind = bilateral ? ContactKind::bilateral : ContactKind::unilateral;
+  ForceLoad load;
+  load.body = 0;
+  load.piece = 2;
+  load.component = 1;
+  load.force = -force;
+  problem.force = load;
+  return problem;
+}
+
+inline geometry::BoundaryPiece arc(const std::string& name, Vec2 a, Vec2 b, Vec2 center, int elements) {
+  geometry::BoundaryPiece piece = line(name, a, b, elements);
+  piece.shape = geometry::PieceShape::arc;
+  piece.center = center;
+  piece.counterclockwise = true;
+  return piece;
+}
+
+// Cylinder of radius R (lower half disk, centre (0, R)) on a support [-W, W] x [-W, 0],
+// plane strain. The contact arc spans +-theta about the bottom; the support's contact
+// segment ends where the common normals through the arc ends meet it: x = 2R tan(theta/2).
+inline ContactProblem cylinder_on_block(double R, double theta, int contact_elements, double force,
+                                        const Material& cylinder, const Material& block, double W = 10.0) {
+  ContactProblem problem;
+  problem.analysis = AnalysisType::plane_strain;
+  auto& ball = problem.bodies[0];
+  ball.name = "cylinder";
+  ball.material = cylinder;
+  const Vec2 c(0.0, R);
+  const Vec2 left(-R * std::sin(theta), R - R * std::cos(theta)), right(R * std::sin(theta), R - R * std::cos(theta));
+  add(ball, arc("contact", left, right, c, contact_elements), free_condition());
+  add(ball, arc("right arc", right, {R, R}, c, 12), free_condition());
+  add(ball, line("top", {R, R}, {-R, R}, 12), displacement(0.0, 0.0, "top"));
+  add(ball, arc("left arc", {-R, R}, left, c, 12), free_condition());
+  auto& support = problem.bodies[1];
+  support.name = "support";
+  support.material = block;
+  const double b = 2.0 * R * std::tan(0.5 * theta);
+  add(support, line("base", {-W, -W}, {W, -W}, 10), displacement(0.0, 0.0, "clamped"));
+  add(support, line("right", {W, -W}, {W, 0.0}, 10), free_condition());
+  add(support, line("top right", {W, 0.0}, {b, 0.0}, 16, W / b, geometry::RefineToward::end), free_condition());
+  add(support, line("contact", {b, 0.0}, {-b, 0.0}, contact_elements), free_condition());
+  add(support, line("top left", {-b, 0.0}, {-W, 0.0}, 16, W / b, geometry::RefineToward::start), free_condition());
+  add(support, line("left", {-W, 0.0}, {-W, -W}, 10), free_condition());
+  problem.contact_piece = {0, 3};
+  problem.kind = ContactKind::unilateral;
   ForceLoad load;
   load.body = 0;
   load.piece = 2;

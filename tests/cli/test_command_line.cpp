@@ -1,0 +1,159 @@
+// The bemcontact command as a user runs it: exit codes, messages, whole-or-nothing outputs.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Outcome {
+  int exit_code = -1;
+  std::string output;  // stdout and stderr
+};
+
+Outcome run(const std::string& arguments) {
+  const std::string command = std::string(BEMCONTACT_BINARY) + " " + arguments + " 2>&1";
+  Outcome outcome;
+  FILE* pipe = popen(command.c_str(), "r");
+  if (!pipe) return outcome;
+  std::array<char, 4096> buffer{};
+  while (std::fgets(buffer.data(), buffer.size(), pipe)) outcome.output += buffer.data();
+  const int status = pclose(pipe);
+  outcome.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return outcome;
+}
+
+fs::path scratch(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("bemcontact_cli_" + name + "_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+std::string example(const std::string& name) { return std::string(BEMCONTACT_SOURCE_DIR) + "/examples/" + name; }
+
+void write(const fs::path& path, const std::string& text) { std::ofstream(path) << text; }
+
+const char* free_body = R"(analysis = "plane_strain"
+[material]
+E = 1000.0
+nu = 0.3
+[vertices]
+A = [0.0, 0.0]
+B = [1.0, 0.0]
+C = [1.0, 1.0]
+D = [0.0, 1.0]
+[[boundary]]
+from = "A"
+to = "B"
+elements = 2
+[[boundary]]
+from = "B"
+to = "C"
+elements = 2
+t1 = 1.0
+[[boundary]]
+from = "C"
+to = "D"
+elements = 2
+[[boundary]]
+from = "D"
+to = "A"
+elements = 2
+t1 = -1.0
+)";
+
+}  // namespace
+
+TEST(CommandLine, RunWritesEveryOutputAndASummary) {
+  const auto dir = scratch("run");
+  const auto out = run("run " + example("plate_tension.toml") + " -o " + (dir / "out").string());
+  ASSERT_EQ(out.exit_code, 0) << out.output;
+  for (const char* name : {"boundary.csv", "interior.csv", "boundary.vtk", "interior.vtk", "summary.json"})
+    EXPECT_TRUE(fs::exists(dir / "out" / name)) << name;
+  std::ifstream in(dir / "out" / "summary.json");
+  const auto summary = nlohmann::json::parse(in);
+  EXPECT_EQ(summary["options"]["analysis"], "plane_stress");
+  EXPECT_EQ(summary["options"]["interpolation"], "linear");
+  EXPECT_EQ(summary["mesh"]["elements"], 16);
+  EXPECT_LT(summary["solve"]["relative_residual"].get<double>(), 1e-12);
+  EXPECT_TRUE(summary["timings_seconds"].contains("assembly"));
+  EXPECT_TRUE(summary["timings_seconds"].contains("solve"));
+  fs::remove_all(dir);
+}
+
+TEST(CommandLine, ProblemFileErrorsNameFileLineAndKeyWithExitCode2) {
+  const auto dir = scratch("bad");
+  std::string text = free_body;
+  text.replace(text.find("nu = 0.3"), 8, "nuu = 0.3");
+  write(dir / "typo.toml", text);
+  const auto out = run("run " + (dir / "typo.toml").string() + " -o " + (dir / "out").string());
+  EXPECT_EQ(out.exit_code, 2) << out.output;
+  EXPECT_NE(out.output.find("typo.toml:4"), std::string::npos) << out.output;
+  EXPECT_NE(out.output.find("nuu"), std::string::npos) << out.output;
+  EXPECT_NE(out.output.find("nu"), std::string::npos) << out.output;
+  EXPECT_FALSE(fs::exists(dir / "out"));
+  const auto missing = run("run " + (dir / "nothing.toml").string());
+  EXPECT_EQ(missing.exit_code, 2);
+  EXPECT_NE(missing.output.find("nothing.toml"), std::string::npos) << missing.output;
+  fs::remove_all(dir);
+}
+
+TEST(CommandLine, AFreeBodyIsASolverErrorAndWritesNothing) {
+  const auto dir = scratch("free");
+  write(dir / "free.toml", free_body);
+  const auto out = run("run " + (dir / "free.toml").string() + " -o " + (dir / "out").string());
+  EXPECT_EQ(out.exit_code, 3) << out.output;
+  EXPECT_NE(out.output.find("rigid body"), std::string::npos) << out.output;
+  EXPECT_FALSE(fs::exists(dir / "out"));
+  fs::remove_all(dir);
+}
+
+TEST(CommandLine, GeometryErrorsNameTheBoundary) {
+  const auto dir = scratch("geometry");
+  std::string text = free_body;
+  text.replace(text.find("D = [0.0, 1.0]"), 14, "D = [0.0, 1.0]\nE = [0.2, 1.0]");
+  text.replace(text.rfind("from = \"D\""), 10, "from = \"E\"");
+  write(dir / "open.toml", text);
+  const auto out = run("run " + (dir / "open.toml").string());
+  EXPECT_EQ(out.exit_code, 2) << out.output;
+  EXPECT_NE(out.output.find("open contour"), std::string::npos) << out.output;
+  fs::remove_all(dir);
+}
+
+TEST(CommandLine, MeshWritesNodesElementsAndVtk) {
+  const auto dir = scratch("mesh");
+  const auto out = run("mesh " + example("plate_hole.toml") + " -o " + dir.string() + " -q");
+  ASSERT_EQ(out.exit_code, 0) << out.output;
+  EXPECT_TRUE(fs::exists(dir / "mesh_nodes.csv"));
+  EXPECT_TRUE(fs::exists(dir / "mesh_elements.csv"));
+  EXPECT_TRUE(fs::exists(dir / "mesh.vtk"));
+  fs::remove_all(dir);
+}
+
+TEST(CommandLine, ValidateRejectsAnUnknownCaseListingTheValidOnes) {
+  const auto out = run("validate no-such-case");
+  EXPECT_EQ(out.exit_code, 2);
+  EXPECT_NE(out.output.find("plate-tension"), std::string::npos) << out.output;
+}
+
+TEST(CommandLine, ValidateWritesJsonRecordsWithTheDocumentedKeys) {
+  const auto dir = scratch("validate");
+  const auto out = run("validate plate-tension -q --json " + (dir / "records.json").string());
+  ASSERT_EQ(out.exit_code, 0) << out.output;
+  std::ifstream in(dir / "records.json");
+  const auto records = nlohmann::json::parse(in);
+  ASSERT_GT(records.size(), 5u);
+  for (const char* key : {"case", "params", "quantity", "computed", "reference", "tolerance", "passed"})
+    EXPECT_TRUE(records[0].contains(key)) << key;
+  EXPECT_EQ(records[0]["case"], "plate-tension");
+  EXPECT_EQ(records[0]["params"]["interpolation"], "linear");
+  fs::remove_all(dir);
+}
