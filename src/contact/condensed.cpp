@@ -25,8 +25,14 @@ ContactModel::ContactModel(const ContactProblem& problem, const bem::ProgressCal
       body_progress = [&, b](const std::string& phase, double fraction) {
         progress("body " + prepared_.bodies[b].name + ": " + phase, fraction);
       };
-    factored_[b] = std::make_unique<bem::FactoredBody>(prepared_.meshes[b], prepared_.bodies[b], problem.analysis,
-                                                       std::move(variable), body_progress);
+    try {
+      factored_[b] = std::make_unique<bem::FactoredBody>(prepared_.meshes[b], prepared_.bodies[b], problem.analysis,
+                                                         std::move(variable), body_progress);
+    } catch (const SolverError& error) {
+      throw SolverError(std::string(error.what()) + " In a contact problem each body must be held without the "
+                        "contact zone (which carries tractions only): prescribe displacements on body '" +
+                        prepared_.bodies[b].name + "', or press it with a [contact.load] force (a rigid platen).");
+    }
     const Index dofs = factored_[b]->variable_dofs();
     flexibility[b] = factored_[b]->complementary_columns(Matrix::Identity(dofs, dofs), false);
     fixed_response[b] = factored_[b]->complementary(Vector::Zero(dofs), true);

@@ -76,31 +76,30 @@ ContactSummary summarise(const ContactModel& model, const std::vector<PairResult
   // Contact edge: outermost pair in contact; inside a smooth contact p ~ sqrt(a - r), so
   // p^2 is extrapolated linearly from the two outermost contact pairs to its zero, kept
   // between the last pair in contact and the first open one.
-  std::ptrdiff_t last = -1, previous = -1, first_open = -1;
+  double r_last = -1.0, q_last = 0.0;
   for (std::size_t k = 0; k < order.size(); ++k) {
     const auto& pair = pairs[order[k]];
-    if (pair.status != PairStatus::open) {
-      s.pairs_in_contact += 1;
-      s.peak_pressure = std::max(s.peak_pressure, -pair.p_n);
-      s.normal_force += -pair.p_n * prepared.pairs[order[k]].weight;
-      if (first_open < 0) previous = last, last = static_cast<std::ptrdiff_t>(k);
-    } else if (last >= 0 && first_open < 0) {
-      first_open = static_cast<std::ptrdiff_t>(k);
-    }
+    if (pair.status == PairStatus::open) continue;
+    s.pairs_in_contact += 1;
+    s.peak_pressure = std::max(s.peak_pressure, -pair.p_n);
+    s.normal_force += -pair.p_n * prepared.pairs[order[k]].weight;
+    r_last = std::abs(pair.coordinate);
+    q_last = pair.p_n * pair.p_n;
   }
-  if (last >= 0) {
-    const double r_last = std::abs(pairs[order[last]].coordinate);
+  if (r_last >= 0.0) {
     s.contact_radius = r_last;
-    if (first_open >= 0) {
-      const double r_open = std::abs(pairs[order[first_open]].coordinate);
+    double r_open = -1.0, r_prev = -1.0, q_prev = 0.0;
+    for (std::size_t k = 0; k < order.size(); ++k) {
+      const auto& pair = pairs[order[k]];
+      const double r = std::abs(pair.coordinate);
+      if (pair.status == PairStatus::open && r > r_last && r_open < 0.0) r_open = r;
+      // The next pair inward (a symmetric model holds two pairs at each |x1|).
+      if (pair.status != PairStatus::open && r < r_last * (1.0 - 1e-9)) r_prev = r, q_prev = pair.p_n * pair.p_n;
+    }
+    if (r_open > 0.0) {
       s.contact_radius = 0.5 * (r_last + r_open);
-      if (previous >= 0) {
-        const double r_prev = std::abs(pairs[order[previous]].coordinate);
-        const double q_last = pairs[order[last]].p_n * pairs[order[last]].p_n;
-        const double q_prev = pairs[order[previous]].p_n * pairs[order[previous]].p_n;
-        if (q_prev > q_last && r_last > r_prev)
-          s.contact_radius = std::clamp(r_last + q_last * (r_last - r_prev) / (q_prev - q_last), r_last, r_open);
-      }
+      if (r_prev >= 0.0 && q_prev > q_last)
+        s.contact_radius = std::clamp(r_last + q_last * (r_last - r_prev) / (q_prev - q_last), r_last, r_open);
     }
   }
   // Stick edge: midway between the outermost stick pair and the next slipping pair.

@@ -23,6 +23,7 @@ struct Restricted {
   std::vector<Index> dofs;  // condensed dofs of the pairs in contact (2 per pair), then delta
   Matrix A;
   Vector rhs;
+  double delta_scale = 1.0;  // the unknown is delta / delta_scale (equilibrated force row and column)
 };
 
 Restricted restrict_to(const StepInput& in, const std::vector<bool>& in_contact) {
@@ -49,6 +50,15 @@ Restricted restrict_to(const StepInput& in, const std::vector<bool>& in_contact)
     for (Index b = 0; b < m; ++b) r.A(m, b) = p.f[r.dofs[b]];
     r.A(m, m) = p.f_delta;
     r.rhs[m] = in.load * (p.force - p.F0);
+    // Forces and displacements differ by orders of magnitude: scale the force row and the
+    // delta column to the mean row and column norms of B' so that GMRES sees a balanced system.
+    double row_norm = 0.0, col_norm = 0.0;
+    for (Index a = 0; a < m; ++a) row_norm += r.A.row(a).head(m).norm() / m, col_norm += r.A.col(a).head(m).norm() / m;
+    const double row_scale = row_norm / std::max(r.A.row(m).head(m).norm(), 1e-300);
+    r.A.row(m) *= row_scale;
+    r.rhs[m] *= row_scale;
+    r.delta_scale = col_norm / std::max(r.A.col(m).norm(), 1e-300);
+    r.A.col(m) *= r.delta_scale;
   }
   return r;
 }
@@ -69,42 +79,92 @@ void project(const StepInput& in, const Restricted& r, const Vector& g, const Ve
   }
 }
 
-// Alg V.1. Returns false when the cycles do not settle.
+// Alg V.1. Each cycle builds the Krylov space of GMRES(m) on the components that are free
+// to move: the tangential components held on the boundary of K (|p_t| = g, with a residual
+// that pushes them further out, or g = 0) are frozen for the cycle, rows and columns, so
+// that the fixed point of "GMRES cycle, then proj_K" is the Coulomb condition for every m
+// (with the whole residual in the minimisation, m >= 2 would converge to the minimiser of
+// ||B'p - Delta|| over K, which differs from Coulomb's law where B' is not a multiple of
+// the identity). For m = 1 the cycle is the thesis' projected minimal-residual step.
+// Returns false when the cycles do not settle.
 bool projected_gmres(const StepInput& in, const Restricted& r, const Vector& g, const Vector& slip_sign,
                      const SolverOptions& options, Vector& y, int& cycles) {
+  const auto& p = *in.problem;
   const Index size = r.A.rows();
-  const int m = std::max(1, std::min<int>(options.gmres_restart, static_cast<int>(size)));
   project(in, r, g, slip_sign, y);
+  std::vector<Index> free;
+  int restart = std::max(1, options.gmres_restart);
   for (int cycle = 0; cycle < options.max_gmres_cycles; ++cycle) {
     ++cycles;
-    const Vector r0 = r.rhs - r.A * y;
-    const double beta = r0.norm();
-    if (beta == 0.0) return true;
-    Matrix V = Matrix::Zero(size, m + 1);
-    Matrix H = Matrix::Zero(m + 1, m);
-    V.col(0) = r0 / beta;
-    int n = m;
-    for (int j = 0; j < m; ++j) {  // Arnoldi (modified Gram-Schmidt)
-      Vector v = r.A * V.col(j);
-      for (int i = 0; i <= j; ++i) {
-        H(i, j) = v.dot(V.col(i));
-        v -= H(i, j) * V.col(i);
+    const Vector residual = r.rhs - r.A * y;
+    free.clear();
+    for (Index a = 0; a < size; ++a) {
+      if (a < static_cast<Index>(r.dofs.size()) && a % 2 == 1) {
+        const Index pair = r.dofs[a] / 2;
+        if (p.on_axis[pair] || g[pair] == 0.0) continue;
+        if (std::abs(y[a]) >= g[pair] && residual[a] * y[a] >= 0.0) continue;  // held on the boundary of K
       }
-      H(j + 1, j) = v.norm();
-      if (H(j + 1, j) <= 1e-14 * beta) {
-        n = j + 1;
-        break;
-      }
-      V.col(j + 1) = v / H(j + 1, j);
+      free.push_back(a);
     }
-    Vector e1 = Vector::Zero(n + 1);
-    e1[0] = beta;
-    const Vector w = H.topLeftCorner(n + 1, n).colPivHouseholderQr().solve(e1);  // min ||beta e1 - H w||
-    Vector y_new = y + V.leftCols(n) * w;
+    // A component already on the boundary of K that the cycle would push further out is
+    // frozen and the cycle redone, so that the projection never undoes the whole correction.
+    double beta = 0.0;
+    Vector y_new = y;
+    for (;;) {
+      const Index nf = static_cast<Index>(free.size());
+      Matrix A(nf, nf);
+      Vector r0(nf);
+      for (Index i = 0; i < nf; ++i) {
+        r0[i] = residual[free[i]];
+        for (Index j = 0; j < nf; ++j) A(i, j) = r.A(free[i], free[j]);
+      }
+      beta = r0.norm();
+      if (beta == 0.0) return true;
+      const int m = std::max(1, std::min<int>(restart, static_cast<int>(nf)));
+      Matrix V = Matrix::Zero(nf, m + 1);
+      Matrix H = Matrix::Zero(m + 1, m);
+      V.col(0) = r0 / beta;
+      int n = m;
+      for (int j = 0; j < m; ++j) {  // Arnoldi (modified Gram-Schmidt)
+        Vector v = A * V.col(j);
+        for (int i = 0; i <= j; ++i) {
+          H(i, j) = v.dot(V.col(i));
+          v -= H(i, j) * V.col(i);
+        }
+        H(j + 1, j) = v.norm();
+        if (H(j + 1, j) <= 1e-14 * beta) {
+          n = j + 1;
+          break;
+        }
+        V.col(j + 1) = v / H(j + 1, j);
+      }
+      Vector e1 = Vector::Zero(n + 1);
+      e1[0] = beta;
+      const Vector w = H.topLeftCorner(n + 1, n).colPivHouseholderQr().solve(e1);  // min ||beta e1 - H w||
+      const Vector correction = V.leftCols(n) * w;
+      y_new = y;
+      for (Index i = 0; i < nf; ++i) y_new[free[i]] += correction[i];
+      std::vector<Index> kept;
+      for (Index i = 0; i < nf; ++i) {
+        const Index a = free[i];
+        const bool tangential = a < static_cast<Index>(r.dofs.size()) && a % 2 == 1;
+        const bool on_bound = tangential && std::abs(y[a]) >= g[r.dofs[a] / 2];
+        if (on_bound && correction[i] * y[a] > 0.0) continue;
+        kept.push_back(a);
+      }
+      if (kept.size() == free.size() || kept.empty()) break;
+      free = kept;
+    }
     project(in, r, g, slip_sign, y_new);
     const double change = (y_new - y).norm() / std::max(y_new.norm(), 1e-300);
     y = y_new;
-    if (change < options.xi) return true;
+    // The thesis' test on the change of p, plus the residual of the free rows: with m small
+    // GMRES(m) can stagnate, and a small change alone would stop it far from the solution.
+    const bool small_residual = beta <= options.xi * r.rhs.norm();
+    if (change < options.xi && small_residual) return true;
+    // GMRES(m) may stagnate on a non-symmetric system (the remark after Alg V.1): when a
+    // cycle no longer moves p but the residual is not small, the next cycle uses a larger m.
+    restart = change < options.xi ? 2 * restart : std::max(1, options.gmres_restart);
   }
   return false;
 }
@@ -123,7 +183,7 @@ BilateralResult successive_thresholds(const StepInput& in, const std::vector<boo
   const Index m = static_cast<Index>(r.dofs.size());
   Vector y(r.A.rows());
   for (Index a = 0; a < m; ++a) y[a] = x[r.dofs[a]];
-  if (p.has_force) y[m] = delta;
+  if (p.has_force) y[m] = delta / r.delta_scale;
   Vector g = Vector::Zero(p.pairs);  // g^0 = 0: frictionless
   BilateralResult result;
   for (int iteration = 0; iteration < std::max(1, options.max_threshold_iterations); ++iteration) {
@@ -148,7 +208,7 @@ BilateralResult successive_thresholds(const StepInput& in, const std::vector<boo
   }
   x.setZero();
   for (Index a = 0; a < m; ++a) x[r.dofs[a]] = y[a];
-  if (p.has_force) delta = y[m];
+  if (p.has_force) delta = y[m] * r.delta_scale;
   return result;
 }
 

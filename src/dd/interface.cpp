@@ -145,8 +145,7 @@ Connectivity build_connectivity(const DecompositionProblem& problem,
                                              point_text(mesh_b.nodes[nodes_b[k]].position) +
                                              " has no facing node in subdomain " + sub_name(a.subdomain) + advice);
 
-    // Kinds: the mixed method keeps displacement continuity on the nodes nearest the
-    // middle of the interface (by arc length along side a).
+    // Kinds of the pairs from the method.
     const std::size_t n = interface.pairs.size();
     for (auto& pair : interface.pairs)
       pair.kind = problem.options.method == InterfaceMethod::hybrid ? bem::ConditionKind::traction
@@ -155,15 +154,21 @@ Connectivity build_connectivity(const DecompositionProblem& problem,
       std::vector<double> arc(n, 0.0);
       for (std::size_t k = 1; k < n; ++k)
         arc[k] = arc[k - 1] + (interface.pairs[k].position - interface.pairs[k - 1].position).norm();
-      const double middle = 0.5 * arc.back();
-      std::vector<std::size_t> order(n);
-      for (std::size_t k = 0; k < n; ++k) order[k] = k;
-      std::stable_sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) {
-        return std::abs(arc[i] - middle) < std::abs(arc[j] - middle);
-      });
-      const std::size_t keep = static_cast<std::size_t>(std::max(0, problem.options.displacement_nodes));
-      for (std::size_t k = 0; k < n; ++k)
-        interface.pairs[order[k]].kind = k < keep ? bem::ConditionKind::displacement : bem::ConditionKind::traction;
+      // gamma_d: `displacement_nodes` pairs spread evenly along the interface, at arc
+      // lengths (q + 1/2) L / count. Spread points fix a floating subdomain's rotation with a
+      // long lever arm; bunched at the middle they fix it poorly and GMRES needs several
+      // times more iterations (measured on the strips of IV.5: 79 against 20 for 3 strips).
+      const int keep = std::min(static_cast<int>(n), std::max(0, problem.options.displacement_nodes));
+      for (auto& pair : interface.pairs) pair.kind = bem::ConditionKind::traction;
+      for (int q = 0; q < keep; ++q) {
+        const double target = (q + 0.5) / keep * arc.back();
+        std::size_t best = n;
+        for (std::size_t k = 0; k < n; ++k)
+          if (interface.pairs[k].kind == bem::ConditionKind::traction &&
+              (best == n || std::abs(arc[k] - target) < std::abs(arc[best] - target)))
+            best = k;
+        interface.pairs[best].kind = bem::ConditionKind::displacement;
+      }
     }
 
     interface.offset = result.unknowns;

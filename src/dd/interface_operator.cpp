@@ -10,24 +10,37 @@ InterfaceOperator::InterfaceOperator(const DecompositionProblem& problem,
     : connectivity_(connectivity) {
   const std::size_t count = problem.subdomains.size();
   bodies_.reserve(count);
-  double shear_sum = 0.0, length = 0.0;
+  double shear_sum = 0.0;
   for (std::size_t s = 0; s < count; ++s) {
     const auto& body = problem.subdomains[s].body;
     shear_sum += body.material.shear_modulus();
-    length = std::max(length, meshes[s].scale);
     if (progress) progress("factorisation", static_cast<double>(s) / count);
     try {
       bodies_.emplace_back(meshes[s], body, problem.analysis, connectivity.variable_nodes[s]);
     } catch (const SolverError& error) {
-      throw SolverError("subdomain '" + body.name + "' cannot be solved under the " +
+      const std::string advice =
+          problem.options.method == InterfaceMethod::mixed
+              ? "give each interface displacement_nodes >= 2 (in [decomposition]) or use method = \"conforming\""
+              : problem.options.method == InterfaceMethod::hybrid
+                    ? "use method = \"mixed\" or \"conforming\", whose interface displacements hold it"
+                    : "prescribe displacements on it";
+      throw SolverError("subdomain '" + body.name + "' is free to move under the " +
                         to_string(problem.options.method) +
-                        " interface conditions (a subdomain with tractions only on its interfaces and "
-                        "no displacement of its own is free to move; use method = \"conforming\" or "
-                        "\"mixed\", or prescribe displacements): " + error.what());
+                        " interface conditions (tractions alone on its interfaces and no displacement of its "
+                        "own): " + advice + ". (" + error.what() + ")");
     }
   }
   if (progress) progress("factorisation", 1.0);
-  scale_ = count > 0 && length > 0.0 ? (shear_sum / count) / length : 1.0;
+  // Mean spacing of facing nodes along the interfaces (see the header).
+  double spacing = 0.0;
+  Index gaps = 0;
+  for (const auto& interface : connectivity.interfaces)
+    for (std::size_t j = 1; j < interface.pairs.size(); ++j) {
+      spacing += (interface.pairs[j].position - interface.pairs[j - 1].position).norm();
+      ++gaps;
+    }
+  spacing = gaps > 0 ? spacing / gaps : 1.0;
+  scale_ = count > 0 && spacing > 0.0 ? (shear_sum / count) / spacing : 1.0;
 }
 
 Vector InterfaceOperator::subdomain_data(std::size_t s, const Vector& y) const {

@@ -34,8 +34,9 @@ MonolithicResult solve_monolithic(const DecompositionProblem& problem,
     offset[s + 1] = offset[s] + systems[s].A.rows();
   }
   const Index u_offset = offset[count];
-  const Index equilibrium_offset = u_offset + connectivity.unknowns;
-  const Index size = equilibrium_offset + connectivity.unknowns;
+  // Rows: the subdomains' rows, then equilibrium; columns: the subdomains' unknowns, then U.
+  const Index equilibrium_offset = u_offset;
+  const Index size = u_offset + connectivity.unknowns;
 
   Matrix M = Matrix::Zero(size, size);
   Vector rhs = Vector::Zero(size);

@@ -29,12 +29,18 @@ struct VertexPlan {
 
 }  // namespace
 
-BoundaryMesh mesh_boundary(const std::vector<BoundaryPiece>& pieces, const MeshOptions& options) {
+BoundaryMesh mesh_boundary(const std::vector<BoundaryPiece>& input_pieces, const MeshOptions& options) {
   if (!(options.corner_shift > 0.0 && options.corner_shift < 0.5))
     throw GeometryError("corner_shift must lie in (0, 0.5), got " +
                         std::to_string(options.corner_shift));
   BoundaryMesh mesh;
-  mesh.contours = build_contours(pieces);
+  mesh.contours = build_contours(input_pieces);
+  // Pieces chain within a tolerance; snap each start onto the previous end so that shared
+  // vertices are bit-identical (the near-singular integrals see any gap).
+  std::vector<BoundaryPiece> pieces = input_pieces;
+  for (const auto& contour : mesh.contours)
+    for (std::size_t k = 0; k < contour.pieces.size(); ++k)
+      pieces[contour.pieces[(k + 1) % contour.pieces.size()]].start = pieces[contour.pieces[k]].end;
   mesh.scale = geometry_scale(pieces);
   const double tol = 1e-9 * mesh.scale;
   const int piece_count = static_cast<int>(pieces.size());

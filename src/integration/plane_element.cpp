@@ -182,9 +182,9 @@ ElementStressInfluence integrate_plane_element_stress(const kernels::KelvinPlane
 
   // Local components, k' in {t, n}, from r_,t = xi/rho, r_,n = h/rho, dr/dn = h/rho:
   //  D_k'ij rho / scale_d = (1-2nu)(delta_ki r_,j + delta_kj r_,i - delta_ij r_,k) + 2 r_,i r_,j r_,k
-  //  S_k'ij rho^2 / scale_s:  S_t = [2ab - 8a^3 b, 1 - 8a^2 b^2; ., 2ab - 8ab^3],
-  //                           S_n = [1 - 8a^2 b^2, 2ab - 8ab^3; ., 1 + 4b^2 - 8b^4]
-  //  with a = xi/rho, b = h/rho (the nu terms cancel once a^2 + b^2 = 1).
+  //  S_k'ij rho^2 / scale_s:  S_t = [2sc - 8s^3 c, 1 - 8s^2 c^2; ., 2sc - 8sc^3],
+  //                           S_n = [1 - 8s^2 c^2, 2sc - 8sc^3; ., 1 + 4c^2 - 8c^4]
+  //  with s = xi/rho, c = h/rho (the nu terms cancel once s^2 + c^2 = 1); a = 1 - 2 nu.
   const double h_lambda = h * b.lambda;
   const Local d_t0{a * b.lambda + 2.0 * s.x3_r4, a * b.theta + 2.0 * b.x2h1_r4,
                    a * b.theta + 2.0 * b.x2h1_r4, -a * b.lambda + 2.0 * b.x1h2_r4};

@@ -31,16 +31,18 @@ struct Subdomain {
 };
 
 struct DecompositionOptions {
-  InterfaceMethod method = InterfaceMethod::conforming;
+  // The mixed variant converges in the fewest iterations on the thesis' strips up to 8
+  // strips (and keeps floating subdomains well posed), so it is the default.
+  InterfaceMethod method = InterfaceMethod::mixed;
   int restart = 20;                 // GMRES(m)
   double tolerance = 1e-8;          // on ||r|| / ||r_00|| (Alg IV.4; thesis 1e-8)
   int max_iterations = 500;         // operator applications over all restarts
   // Facing nodes of an interface must coincide within this fraction of the geometry size.
   double interface_tolerance = 1e-6;
-  // Mixed method: per interface, this many nodes nearest the middle of the interface carry
-  // displacement continuity (gamma_d, "au centre" in IV.5.1); the others carry traction
-  // continuity (gamma_c). Two nodes fix the rigid motion of a floating subdomain.
-  int displacement_nodes = 2;
+  // Mixed method: per interface, this many nodes spread evenly along it carry displacement
+  // continuity (gamma_d); the others carry traction continuity (gamma_c). Two fix the rigid
+  // motion of a floating subdomain; 3 converged fastest on the strips of IV.5.
+  int displacement_nodes = 3;
 };
 
 struct DecompositionProblem {

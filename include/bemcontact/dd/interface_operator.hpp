@@ -11,10 +11,12 @@
 // subdomains' own data on (a sign convention: (IV.8) prints r(0) itself).
 //
 // Units: displacement unknowns and compatibility residuals are multiplied by
-// displacement_scale = mu / L (mean shear modulus over the geometry size), so that every
-// unknown is a traction and every residual a traction: without it the mixed operator mixes
-// blocks that differ by E / L (10^5 in the thesis' plate) and GMRES's Euclidean residual
-// would ignore one of them.
+// displacement_scale = mu / h (mean shear modulus over the mean spacing of interface
+// nodes), so that every unknown and every residual is a traction. Without it the mixed
+// operator holds blocks of sizes E/h and h/E (10^6 apart in the thesis' plate) and GMRES's
+// Euclidean residual ignores one of them. mu / h is the size of S on the finest mode the
+// mesh carries; on the strips of IV.5 it gives the fewest iterations of the scales tried
+// (mu/L, 0.3, 3 and 10 times mu/h; L the geometry size).
 #include <vector>
 
 #include "bemcontact/bem/factored_body.hpp"

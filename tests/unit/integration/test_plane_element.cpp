@@ -5,11 +5,12 @@
 // displacement field.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
-#include <string>
 #include <numbers>
+#include <string>
 #include <vector>
 
 #include "bemcontact/integration/line_integrals.hpp"
@@ -284,7 +285,15 @@ Vec2 local_point(const BoundaryElement& e, double s, double eta) {
 }
 
 // ---------------------------------------------------------------------------------------
-// The long double reference kernels are the library's kernels.
+// The reference tools themselves.
+
+TEST(IntegrationPlaneElement, ReferenceGaussRuleIsExactToDegree39) {
+  for (int degree : {0, 1, 2, 17, 38, 39}) {
+    double sum = 0.0;
+    for (int q = 0; q < GaussRule::n; ++q) sum += kGauss.w[q] * std::pow(kGauss.x[q], degree);
+    EXPECT_NEAR(sum, 1.0 / (degree + 1), 1e-15) << "degree " << degree;  // 20 terms of round-off
+  }
+}
 
 TEST(IntegrationPlaneElement, LongDoubleReferenceKernelsMatchTheLibrary) {
   for (const auto& c : kMaterials)
@@ -505,7 +514,7 @@ TEST(IntegrationPlaneElement, NeverProducesNonFiniteValues) {
 // ---------------------------------------------------------------------------------------
 // Interior-stress kernels D and S.
 
-TEST(IntegrationPlaneElement, StressKernelsMatchQuadratureForFarAndModeratepoints) {
+TEST(IntegrationPlaneElement, StressKernelsMatchQuadratureForFarAndModeratePoints) {
   const std::vector<std::array<double, 2>> points{
       {0.5, 10.0}, {0.3, -7.0}, {12.0, 3.0}, {-50.0, 80.0}, {0.7, 0.3},
       {0.5, 1.0},  {0.2, 0.05}, {1.05, 0.1}, {-0.1, -0.02}, {1.3, 0.0}};

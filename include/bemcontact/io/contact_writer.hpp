@@ -1,0 +1,39 @@
+#pragma once
+// Writers of a contact solution; each returns file contents, the command writes them
+// (with OutputDirectory, all or nothing).
+//
+//   contact.csv        one row per node pair (final state):
+//                      pair,x,y,coordinate,nx,ny,gap,p_n,p_t,slip_ratio,jump_n,jump_t,status
+//                      (x, y: body 1's node; n: common normal out of body 1; p_n < 0 in
+//                      compression; slip_ratio = |p_t| / (beta |p_n|); jump = [u] = 1u - 2u;
+//                      status open / stick / slip)
+//   contact_steps.csv  one row per load step: step,load_factor,a,c,peak_pressure,
+//                      centre_pressure,normal_force,approach,pairs_in_contact,
+//                      newton_iterations,kalker_iterations,threshold_iterations,gmres_cycles,residual
+//   contact_step<k>.csv  the pairs at step k (when record_steps)
+//   <body>_boundary.csv, <body>_interior.csv (+ .vtk): each body's fields (formats of
+//                      io/results_writer.hpp), for stresses and von Mises iso-contours.
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "bemcontact/contact/contact_solver.hpp"
+
+namespace bemcontact::io {
+
+std::string contact_csv(const std::vector<contact::PairResult>& pairs);
+std::string contact_steps_csv(const contact::ContactResult& result);
+
+// The "contact" fragment of summary.json: kind, algorithm, friction, increments, pairs,
+// unknowns, and the final a, c, c/a, peak and centre pressure, total normal force,
+// approach delta, iterations per loop, residual, time per phase, and c/a per step.
+nlohmann::json contact_summary_json(const contact::ContactProblem& problem, const contact::ContactResult& result);
+
+// Every file of a contact run as (file name, content), summary.json included.
+std::vector<std::pair<std::string, std::string>> contact_output_files(const contact::ContactProblem& problem,
+                                                                      const contact::ContactResult& result,
+                                                                      bool vtk = true);
+
+}  // namespace bemcontact::io

@@ -1,0 +1,120 @@
+#include "bemcontact/io/contact_writer.hpp"
+
+#include <cctype>
+#include <charconv>
+
+#include "bemcontact/io/json_writer.hpp"
+#include "bemcontact/io/results_writer.hpp"
+
+namespace bemcontact::io {
+namespace {
+
+std::string number(double value) {
+  char buffer[64];
+  const auto end = std::to_chars(buffer, buffer + sizeof buffer, value).ptr;
+  return std::string(buffer, end);
+}
+
+std::string file_stem(const std::string& name) {
+  std::string out;
+  for (const char c : name) out += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
+  return out;
+}
+
+nlohmann::json summary_json(const contact::ContactSummary& s) {
+  return {{"load_factor", s.load_factor},
+          {"a", s.contact_radius},
+          {"c", s.stick_radius},
+          {"c_over_a", s.contact_radius > 0.0 ? s.stick_radius / s.contact_radius : 0.0},
+          {"peak_pressure", s.peak_pressure},
+          {"centre_pressure", s.centre_pressure},
+          {"normal_force", s.normal_force},
+          {"approach", s.approach},
+          {"pairs_in_contact", s.pairs_in_contact},
+          {"iterations",
+           {{"newton", s.newton_iterations},
+            {"kalker", s.kalker_iterations},
+            {"threshold", s.threshold_iterations},
+            {"gmres_cycles", s.gmres_cycles}}},
+          {"residual", s.residual}};
+}
+
+}  // namespace
+
+std::string contact_csv(const std::vector<contact::PairResult>& pairs) {
+  std::string out = "pair,x,y,coordinate,nx,ny,gap,p_n,p_t,slip_ratio,jump_n,jump_t,status\n";
+  for (std::size_t i = 0; i < pairs.size(); ++i) {
+    const auto& p = pairs[i];
+    out += std::to_string(i) + "," + number(p.position.x()) + "," + number(p.position.y()) + "," +
+           number(p.coordinate) + "," + number(p.normal.x()) + "," + number(p.normal.y()) + "," + number(p.gap) + "," +
+           number(p.p_n) + "," + number(p.p_t) + "," + number(p.slip_ratio) + "," + number(p.jump_n) + "," +
+           number(p.jump_t) + "," + contact::to_string(p.status) + "\n";
+  }
+  return out;
+}
+
+std::string contact_steps_csv(const contact::ContactResult& result) {
+  std::string out =
+      "step,load_factor,a,c,peak_pressure,centre_pressure,normal_force,approach,pairs_in_contact,"
+      "newton_iterations,kalker_iterations,threshold_iterations,gmres_cycles,residual\n";
+  for (std::size_t k = 0; k < result.steps.size(); ++k) {
+    const auto& s = result.steps[k];
+    out += std::to_string(k + 1) + "," + number(s.load_factor) + "," + number(s.contact_radius) + "," +
+           number(s.stick_radius) + "," + number(s.peak_pressure) + "," + number(s.centre_pressure) + "," +
+           number(s.normal_force) + "," + number(s.approach) + "," + std::to_string(s.pairs_in_contact) + "," +
+           std::to_string(s.newton_iterations) + "," + std::to_string(s.kalker_iterations) + "," +
+           std::to_string(s.threshold_iterations) + "," + std::to_string(s.gmres_cycles) + "," + number(s.residual) +
+           "\n";
+  }
+  return out;
+}
+
+nlohmann::json contact_summary_json(const contact::ContactProblem& problem, const contact::ContactResult& result) {
+  nlohmann::json j = summary_json(result.summary);
+  j["kind"] = contact::to_string(problem.kind);
+  j["algorithm"] = contact::to_string(problem.solver.algorithm);
+  if (problem.solver.algorithm == contact::Algorithm::thesis) {
+    j["gmres_restart"] = problem.solver.gmres_restart;
+    j["xi"] = problem.solver.xi;
+  } else {
+    j["tolerance"] = problem.solver.tolerance;
+  }
+  j["friction"] = problem.friction;
+  j["tangential_coupling"] = problem.tangential_coupling;
+  j["increments"] = problem.increments;
+  j["pairs"] = result.pairs.size();
+  j["unknowns"] = result.unknowns;
+  j["bodies"] = {result.body_names[0], result.body_names[1]};
+  j["timings"] = timings_json(result.timings);
+  nlohmann::json steps = nlohmann::json::array();
+  for (const auto& s : result.steps) steps.push_back(summary_json(s));
+  j["steps"] = steps;
+  return j;
+}
+
+std::vector<std::pair<std::string, std::string>> contact_output_files(const contact::ContactProblem& problem,
+                                                                      const contact::ContactResult& result, bool vtk) {
+  std::vector<std::pair<std::string, std::string>> files;
+  files.emplace_back("contact.csv", contact_csv(result.pairs));
+  files.emplace_back("contact_steps.csv", contact_steps_csv(result));
+  for (std::size_t k = 0; k < result.step_pairs.size(); ++k)
+    files.emplace_back("contact_step" + std::to_string(k + 1) + ".csv", contact_csv(result.step_pairs[k]));
+  for (int b = 0; b < 2; ++b) {
+    const std::string stem = file_stem(result.body_names[b]);
+    files.emplace_back(stem + "_boundary.csv", boundary_csv(result.meshes[b], result.boundary[b]));
+    if (vtk) files.emplace_back(stem + "_boundary.vtk", boundary_vtk(result.meshes[b], result.boundary[b], problem.title));
+    if (!result.interior[b].points.empty()) {
+      files.emplace_back(stem + "_interior.csv", interior_csv(result.interior[b]));
+      if (vtk) files.emplace_back(stem + "_interior.vtk", interior_vtk(result.interior[b], problem.title));
+    }
+  }
+  nlohmann::json summary;
+  summary["title"] = problem.title;
+  summary["source_file"] = problem.source_file;
+  summary["analysis"] = to_string(problem.analysis);
+  summary["contact"] = contact_summary_json(problem, result);
+  files.emplace_back("summary.json", write_json_string(summary));
+  return files;
+}
+
+}  // namespace bemcontact::io

@@ -1,0 +1,280 @@
+#include "bemcontact/io/decomposition_file.hpp"
+
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "bemcontact/io/body_parser.hpp"
+#include "bemcontact/io/problem_schema.hpp"
+#include "bemcontact/io/suggestions.hpp"
+#include "bemcontact/io/toml_reader.hpp"
+
+namespace bemcontact::io {
+
+namespace {
+
+const std::vector<std::string>& root_keys() {
+  static const std::vector<std::string> keys{"title",  "analysis", "interpolation", "parameters",
+                                             "mesh",   "output",   "decomposition", "vertices",
+                                             "subdomain"};
+  return keys;
+}
+const std::vector<std::string>& decomposition_keys() {
+  static const std::vector<std::string> keys{"method",         "restart",             "tolerance",
+                                             "max_iterations", "interface_tolerance", "displacement_nodes"};
+  return keys;
+}
+const std::vector<std::string>& subdomain_keys() {
+  static std::vector<std::string> keys = [] {
+    std::vector<std::string> k{"name", "interior"};
+    k.insert(k.end(), schema::body_keys().begin(), schema::body_keys().end());
+    return k;
+  }();
+  return keys;
+}
+const std::vector<std::string>& interface_boundary_keys() {
+  static std::vector<std::string> keys = [] {
+    std::vector<std::string> k = schema::boundary_keys();
+    k.push_back("interface");
+    return k;
+  }();
+  return keys;
+}
+
+std::string read_text(const std::filesystem::path& path) {
+  const SourceLocation where{path.string(), 0, ""};
+  std::error_code error;
+  const auto status = std::filesystem::status(path, error);
+  if (!std::filesystem::exists(status)) throw InputError(where, "cannot read the problem file: no such file");
+  if (std::filesystem::is_directory(status)) throw InputError(where, "cannot read the problem file: it is a directory");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(where, std::string("cannot open the problem file: ") + std::strerror(errno));
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// [parameters]: numbers or expressions of the parameters above (as in one-body files).
+void read_parameters(const TableReader& root, FileContext& context) {
+  const toml::table* table = root.optional_table("parameters", "[parameters]");
+  if (!table) return;
+  const TableReader parameters(*table, "parameters", context, root.line());
+  std::vector<std::pair<std::string, const toml::node*>> entries;
+  for (const auto& [key, node] : *table) entries.emplace_back(std::string(key.str()), &node);
+  std::sort(entries.begin(), entries.end(),
+            [](const auto& a, const auto& b) { return a.second->source().begin < b.second->source().begin; });
+  for (const auto& [name, node] : entries) {
+    const SourceLocation where = parameters.where(name);
+    if (!is_identifier(name) || is_reserved_name(name))
+      throw InputError(where, "invalid parameter name '" + name + "' (a name starts with a letter or '_'; x, y, "
+                              "r, z, pi and the function names are reserved)");
+    context.parameters[name] = read_number(*node, where, context);
+  }
+}
+
+void read_options(const TableReader& root, const FileContext& context, dd::DecompositionOptions& options) {
+  const toml::table* table = root.optional_table("decomposition", "[decomposition]");
+  if (!table) return;
+  const TableReader reader(*table, "decomposition", context, root.line());
+  reader.check_keys(decomposition_keys(), "the [decomposition] table");
+  const std::string method = reader.choice("method", {"mixed", "conforming", "hybrid"}, "mixed");
+  options.method = method == "conforming" ? dd::InterfaceMethod::conforming
+                   : method == "hybrid"   ? dd::InterfaceMethod::hybrid
+                                          : dd::InterfaceMethod::mixed;
+  options.restart = reader.integer_or("restart", options.restart);
+  if (options.restart < 1)
+    reader.fail("restart", "the GMRES restart length m must be >= 1, found " + std::to_string(options.restart));
+  options.max_iterations = reader.integer_or("max_iterations", options.max_iterations);
+  if (options.max_iterations < 1)
+    reader.fail("max_iterations", "max_iterations must be >= 1, found " + std::to_string(options.max_iterations));
+  if (const auto tol = reader.optional_number("tolerance")) {
+    if (!(*tol > 0.0 && *tol < 1.0))
+      reader.fail("tolerance", "the GMRES tolerance (relative residual) must satisfy 0 < tolerance < 1, found " +
+                                   format_number(*tol));
+    options.tolerance = *tol;
+  }
+  if (const auto tol = reader.optional_number("interface_tolerance")) {
+    if (!(*tol > 0.0 && *tol < 0.1))
+      reader.fail("interface_tolerance", "the interface tolerance (a fraction of the geometry size) must satisfy "
+                                         "0 < interface_tolerance < 0.1, found " + format_number(*tol));
+    options.interface_tolerance = *tol;
+  }
+  options.displacement_nodes = reader.integer_or("displacement_nodes", options.displacement_nodes);
+  if (options.displacement_nodes < 1)
+    reader.fail("displacement_nodes", "displacement_nodes (interface nodes with displacement continuity in the "
+                                      "mixed method) must be >= 1, found " +
+                                          std::to_string(options.displacement_nodes));
+  if (reader.has("displacement_nodes") && options.method != dd::InterfaceMethod::mixed)
+    reader.fail("displacement_nodes", "displacement_nodes applies to method = \"mixed\" only");
+}
+
+std::vector<bem::InteriorPoint> read_points(const TableReader& sub, const FileContext& context) {
+  std::vector<bem::InteriorPoint> points;
+  const toml::table* table = sub.optional_table("interior", "[subdomain.interior]");
+  if (!table) return points;
+  const TableReader interior(*table, sub.key_path("interior"), context, sub.line());
+  interior.check_keys({"points"}, "a [subdomain.interior] table");
+  const toml::node& node = interior.require("points", "a list of points " + context.point_form());
+  const toml::array* list = node.as_array();
+  if (!list) interior.fail("points", "must be a list of points [" + context.point_form() + ", ...], found " +
+                                         describe_node(node));
+  for (const toml::node& point : *list) {
+    SourceLocation where = interior.where("points");
+    if (line_of(point) > 0) where.line = line_of(point);
+    points.push_back(bem::InteriorPoint{read_point(point, where, context), false});
+  }
+  return points;
+}
+
+}  // namespace
+
+bool is_decomposition_text(std::string_view text) {
+  try {
+    const toml::table table = toml::parse(text);
+    return table.contains("subdomain");
+  } catch (const toml::parse_error&) {
+    return false;
+  }
+}
+
+bool is_decomposition_file(const std::filesystem::path& path) {
+  try {
+    return is_decomposition_text(read_text(path));
+  } catch (const InputError&) {
+    return false;
+  }
+}
+
+DecompositionFile read_decomposition_file(const std::filesystem::path& path) {
+  return parse_decomposition(read_text(path), path.string());
+}
+
+DecompositionFile parse_decomposition(std::string_view text, const std::string& file_name) {
+  toml::table root_table;
+  try {
+    root_table = toml::parse(text, std::string_view(file_name));
+  } catch (const toml::parse_error& error) {
+    const auto& begin = error.source().begin;
+    throw InputError(SourceLocation{file_name, static_cast<int>(begin.line), ""},
+                     "TOML syntax error at column " + std::to_string(begin.column) + ": " +
+                         std::string(error.description()));
+  }
+  DecompositionFile result;
+  FileContext context;
+  context.file = file_name;
+  const TableReader root(root_table, "", context, 1);
+  // Body keys at the top level are a one-body habit: say where they go.
+  for (const std::string& key : {"material", "boundary", "constraint", "interior"})
+    if (root.has(key))
+      root.fail(key, "'" + key + "' belongs in each [[subdomain]] table in a file with subdomains (write [subdomain." +
+                         key + "] or [[subdomain." + key + "]] after the subdomain's [[subdomain]] line)");
+  root.check_keys(root_keys(), "the top level of a file with subdomains");
+
+  auto& problem = result.problem;
+  problem.source_file = file_name;
+  const std::string analysis = root.choice("analysis", {"plane_strain", "plane_stress", "axisymmetric"}, std::nullopt);
+  problem.analysis = analysis == "plane_stress"   ? AnalysisType::plane_stress
+                     : analysis == "axisymmetric" ? AnalysisType::axisymmetric
+                                                  : AnalysisType::plane_strain;
+  context.analysis = problem.analysis;
+  problem.title = root.optional_string("title").value_or(std::filesystem::path(file_name).stem().string());
+  problem.mesh.interpolation = root.choice("interpolation", {"linear", "constant"}, "linear") == "constant"
+                                   ? Interpolation::constant
+                                   : Interpolation::linear;
+  read_parameters(root, context);
+  result.parameters = context.parameters;
+  read_options(root, context, problem.options);
+  if (const toml::table* table = root.optional_table("mesh", "[mesh]")) {
+    const TableReader mesh(*table, "mesh", context, root.line());
+    mesh.check_keys(schema::mesh_keys(), "the [mesh] table");
+    if (const auto shift = mesh.optional_number("corner_shift")) {
+      if (!(*shift > 0.0 && *shift < 0.5))
+        mesh.fail("corner_shift", "the corner shift must satisfy 0 < corner_shift < 0.5, found " + format_number(*shift));
+      problem.mesh.corner_shift = *shift;
+    }
+  }
+  if (const toml::table* table = root.optional_table("output", "[output]")) {
+    const TableReader output(*table, "output", context, root.line());
+    output.check_keys(schema::output_keys(), "the [output] table");
+    result.output.vtk = output.boolean_or("vtk", true);
+  }
+
+  // Shared vertices: checked here (with their lines), then copied into every subdomain that
+  // does not define a vertex of the same name.
+  const toml::table* shared = root.optional_table("vertices", "[vertices]");
+  if (shared)
+    for (const auto& [key, node] : *shared)
+      read_point(node, SourceLocation{file_name, line_of(node), "vertices." + std::string(key.str())}, context);
+
+  toml::node* subdomain_node = root_table.get("subdomain");
+  toml::array* subdomains = subdomain_node ? subdomain_node->as_array() : nullptr;
+  if (!subdomains || subdomains->empty() || !subdomains->is_array_of_tables())
+    root.fail("subdomain", "must be one or more [[subdomain]] tables (double brackets), found " +
+                               (subdomain_node ? describe_node(*subdomain_node) : std::string("nothing")));
+  if (subdomains->size() < 2)
+    root.fail("subdomain", "a decomposition needs at least two [[subdomain]] tables; for one body write a "
+                           "one-body file (docs/problem-file.md)");
+  std::map<std::string, int> name_lines;
+  int index = 0;
+  for (toml::node& node : *subdomains) {
+    ++index;
+    toml::table& table = *node.as_table();
+    const std::string path = "subdomain[" + std::to_string(index) + "]";
+    const TableReader sub(table, path, context, root.where("subdomain").line);
+    sub.check_keys(subdomain_keys(), "a [[subdomain]] table");
+    dd::Subdomain subdomain;
+    const std::string name = sub.optional_string("name").value_or("subdomain" + std::to_string(index));
+    if (name.empty()) sub.fail("name", "the name must not be empty");
+    const auto [existing, inserted] = name_lines.emplace(name, sub.line());
+    if (!inserted)
+      sub.fail("name", "the subdomain name '" + name + "' is already used at line " + std::to_string(existing->second) +
+                           "; subdomain names must be unique");
+
+    // interface = "<name>" is read here and removed, so parse_body sees a plain boundary.
+    std::vector<std::string> interfaces;
+    if (toml::array* boundaries = table.get("boundary") ? table.get("boundary")->as_array() : nullptr;
+        boundaries && boundaries->is_array_of_tables()) {
+      int b = 0;
+      for (toml::node& boundary_node : *boundaries) {
+        ++b;
+        toml::table& boundary = *boundary_node.as_table();
+        const TableReader reader(boundary, path + ".boundary[" + std::to_string(b) + "]", context, sub.line());
+        reader.check_keys(interface_boundary_keys(), "each [[subdomain.boundary]] table");
+        std::string interface;
+        if (reader.has("interface")) {
+          const auto value = reader.optional_string("interface");
+          if (!value || value->empty()) reader.fail("interface", "the interface name must be a non-empty string");
+          interface = *value;
+          for (const char* key : {"u1", "u2", "t1", "t2", "un", "ut", "tn", "tt", "pressure"})
+            if (reader.has(key))
+              reader.fail(key, "boundary on interface '" + interface + "' takes no condition ('" + key +
+                                   "'): continuity with the subdomain on the other side is its condition");
+          boundary.erase("interface");
+        }
+        interfaces.push_back(interface);
+      }
+    }
+    if (shared) {
+      if (!table.contains("vertices")) table.insert("vertices", toml::table{});
+      if (toml::table* own = table.get("vertices")->as_table())
+        for (const auto& [key, value] : *shared)
+          if (!own->contains(key.str())) own->insert(key, value);
+    }
+    subdomain.body = parse_body(table, BodyContext{&context, path, {"name", "interior"}, sub.line()});
+    subdomain.body.name = name;
+    subdomain.piece_interface.assign(subdomain.body.pieces.size(), "");
+    for (std::size_t p = 0; p < interfaces.size() && p < subdomain.body.pieces.size(); ++p)
+      if (!interfaces[p].empty()) dd::mark_interface(subdomain, p, interfaces[p]);
+    if (std::none_of(interfaces.begin(), interfaces.end(), [](const std::string& s) { return !s.empty(); }))
+      sub.fail("boundary", "subdomain '" + name + "' has no boundary with interface = \"...\"; every subdomain "
+                           "must share at least one interface with another");
+    subdomain.interior_points = read_points(sub, context);
+    problem.subdomains.push_back(std::move(subdomain));
+  }
+  return result;
+}
+
+}  // namespace bemcontact::io

@@ -1,0 +1,219 @@
+#include "bemcontact/kernels/axisymmetric.hpp"
+
+#include <cmath>
+#include <numbers>
+
+#include "bemcontact/core/error.hpp"
+#include "bemcontact/kernels/ring_integrals.hpp"
+
+namespace bemcontact::kernels {
+namespace {
+
+constexpr double pi = std::numbers::pi;
+
+// Polynomial in u = (1 - cos theta)/2 of degree <= 4, the numerators of the 3D kernels on
+// the ring. Useful identities: cos theta = 1 - 2u, sin^2 theta = 4u - 4u^2,
+// d.e_X = r cos theta - R = b - 2 r u, d.e_r(theta) = r - R cos theta = b + 2 R u.
+struct Poly {
+  std::array<double, 5> c{};
+  constexpr Poly() = default;
+  constexpr Poly(double c0) { c[0] = c0; }
+  constexpr Poly(double c0, double c1) {
+    c[0] = c0;
+    c[1] = c1;
+  }
+};
+inline Poly operator+(const Poly& a, const Poly& b) {
+  Poly r;
+  for (int i = 0; i < 5; ++i) r.c[i] = a.c[i] + b.c[i];
+  return r;
+}
+inline Poly operator-(const Poly& a, const Poly& b) {
+  Poly r;
+  for (int i = 0; i < 5; ++i) r.c[i] = a.c[i] - b.c[i];
+  return r;
+}
+inline Poly operator*(double s, const Poly& a) {
+  Poly r;
+  for (int i = 0; i < 5; ++i) r.c[i] = s * a.c[i];
+  return r;
+}
+inline Poly operator*(const Poly& a, const Poly& b) {
+  Poly r;
+  for (int i = 0; i < 5; ++i)
+    for (int j = 0; i + j < 5; ++j) r.c[i + j] += a.c[i] * b.c[j];
+  return r;
+}
+
+// W[p][j] = 4 A^{-(p+1/2)} H(p, j), so that int_0^{2pi} P(u) rho^{-(2p+1)} dtheta = sum_j P_j W[p][j].
+struct RingWeights {
+  RingIntegrals w;
+  double operator()(const Poly& poly, int p) const {
+    for (int j = p + 2; j < 5; ++j) BEMCONTACT_ASSERT(poly.c[j] == 0.0);  // degree <= p + 1
+    double sum = 0.0;
+    for (int j = 0; j <= p + 1; ++j) sum += poly.c[j] * w.h[p][j];
+    return sum;
+  }
+};
+
+void scale_to_weights(const RingPair& g, int max_p, RingIntegrals& h) {
+  double factor = 4.0 / std::sqrt(g.A);  // 4 A^{-(p+1/2)}
+  const double inverse_A = 1.0 / g.A;
+  for (int p = 0; p <= max_p; ++p) {
+    for (int j = 0; j <= p + 1; ++j) h.h[p][j] *= factor;
+    factor *= inverse_A;
+  }
+}
+
+RingWeights weights(const RingPair& g, int max_p) {
+  RingWeights W;
+  ring_integrals(g.m, g.m1, max_p, W.w);
+  scale_to_weights(g, max_p, W.w);
+  return W;
+}
+
+RingWeights log_weights(const RingPair& g, int max_p) {
+  RingWeights W;
+  ring_integral_log_parts(g.m1, max_p, W.w);
+  scale_to_weights(g, max_p, W.w);
+  return W;
+}
+
+// Factors of the 3D kernels on the ring, for source direction k (0 = X = e_r at x,
+// 1 = Z) and field direction i (0 = e_r(theta), 1 = e_z).
+struct RingFactors {
+  Poly d_source[2];  // d.e_k: (b - 2 r u, c)
+  Poly d_field[2];   // d.e_i: (b + 2 R u, c)
+  Poly n_source[2];  // n.e_k: (n_r cos theta, n_z)
+  double n_field[2];  // n.e_i: (n_r, n_z)
+  Poly basis_dot[2][2];  // e_k . e_i: cos theta, 0; 0, 1
+  Poly d_dot_n;          // (n_r b + n_z c) + 2 R n_r u
+  RingFactors(const RingPair& g, const Vec2& n) {
+    const Poly cos_theta(1.0, -2.0);
+    d_source[0] = Poly(g.b, -2.0 * g.r);
+    d_source[1] = Poly(g.c);
+    d_field[0] = Poly(g.b, 2.0 * g.R);
+    d_field[1] = Poly(g.c);
+    n_source[0] = n.x() * cos_theta;
+    n_source[1] = Poly(n.y());
+    n_field[0] = n.x();
+    n_field[1] = n.y();
+    basis_dot[0][0] = cos_theta;
+    basis_dot[0][1] = basis_dot[1][0] = Poly(0.0);
+    basis_dot[1][1] = Poly(1.0);
+    d_dot_n = Poly(n.x() * g.b + n.y() * g.c, 2.0 * g.R * n.x());
+  }
+};
+
+RingKernels displacement_traction(const KelvinAxisymmetric& kelvin, const RingPair& g, const Vec2& n,
+                                  const RingWeights& W) {
+  const double nu = kelvin.poisson_ratio;
+  const double cu = 1.0 / (16.0 * pi * kelvin.shear_modulus * (1.0 - nu));
+  const double ct = -1.0 / (8.0 * pi * (1.0 - nu));
+  const RingFactors f(g, n);
+  RingKernels out;
+  for (int k = 0; k < 2; ++k)
+    for (int i = 0; i < 2; ++i) {
+      const Poly dd = f.d_source[k] * f.d_field[i];
+      out.U(k, i) = cu * ((3.0 - 4.0 * nu) * W(f.basis_dot[k][i], 0) + W(dd, 1));
+      const Poly cauchy = f.n_field[i] * f.d_source[k] - f.d_field[i] * f.n_source[k];
+      out.T(k, i) = ct * ((1.0 - 2.0 * nu) * (W(f.basis_dot[k][i] * f.d_dot_n, 1) - W(cauchy, 1)) +
+                          3.0 * W(dd * f.d_dot_n, 2));
+    }
+  if (g.R == 0.0) {  // radial ring source on the axis: no load at all
+    out.U.row(0).setZero();
+    out.T.row(0).setZero();
+  }
+  return out;
+}
+
+}  // namespace
+
+RingPair::RingPair(const Vec2& source, const Vec2& field)
+    : R(source.x()), Z(source.y()), r(field.x()), z(field.y()) {
+  b = r - R;
+  c = z - Z;
+  s2 = b * b + c * c;
+  const double sum = r + R;
+  A = sum * sum + c * c;
+  m = 4.0 * r * R / A;
+  m1 = s2 / A;
+}
+
+RingKernels ring_kernels(const KelvinAxisymmetric& kelvin, const Vec2& source, const Vec2& field,
+                         const Vec2& normal) {
+  const RingPair g(source, field);
+  return displacement_traction(kelvin, g, normal, weights(g, 2));
+}
+
+RingKernels ring_kernel_log_parts(const KelvinAxisymmetric& kelvin, const Vec2& source,
+                                  const Vec2& field, const Vec2& normal) {
+  const RingPair g(source, field);
+  if (g.R == 0.0 || g.r == 0.0) return {};  // m = 0: no logarithm
+  return displacement_traction(kelvin, g, normal, log_weights(g, 2));
+}
+
+// 3D interior-stress kernels (Brebbia & Dominguez), d = y - x, d.n = (y - x).n:
+//   D3_jab = [(1-2nu)(delta_ja d_b + delta_jb d_a - delta_ab d_j)/rho^3
+//             + 3 d_j d_a d_b / rho^5] / (8 pi (1-nu))
+//   S3_jab = mu / (4 pi (1-nu)) { 3 (d.n) [(1-2nu) delta_ab d_j + nu (delta_ja d_b + delta_jb d_a)]/rho^5
+//             - 15 (d.n) d_a d_b d_j / rho^7 + 3 nu (n_a d_b + n_b d_a) d_j / rho^5
+//             + (1-2nu) (3 n_j d_a d_b / rho^5 + (n_b delta_ja + n_a delta_jb) / rho^3)
+//             - (1-4nu) n_j delta_ab / rho^3 }
+// with j the field direction (contracted with e_i(theta)) and a, b the stress components at
+// x in the frame of theta = 0: X = r, Z = z, Y = theta. Out-of-plane factors come in pairs:
+// d_Y d_Y = r^2 sin^2, (e_i.e_Y) d_Y = r sin^2 (i = r), n_Y d_Y = n_r r sin^2,
+// (e_i.e_Y) n_Y = n_r sin^2 (i = r); mixed rY, zY components integrate to zero.
+RingStressKernels ring_stress_kernels(const KelvinAxisymmetric& kelvin, const Vec2& source,
+                                      const Vec2& field, const Vec2& normal) {
+  const RingPair g(source, field);
+  const RingWeights W = weights(g, 3);
+  const RingFactors f(g, normal);
+  const double nu = kelvin.poisson_ratio;
+  const double cd = 1.0 / (8.0 * pi * (1.0 - nu));
+  const double cs = kelvin.shear_modulus / (4.0 * pi * (1.0 - nu));
+  Poly sin_squared(0.0, 4.0);
+  sin_squared.c[2] = -4.0;  // sin^2 theta = 4u - 4u^2
+  const Poly& dn = f.d_dot_n;
+  RingStressKernels out;
+  for (int i = 0; i < 2; ++i) {
+    const Poly& dj = f.d_field[i];
+    const double nj = f.n_field[i];
+    // The in-plane stress components a, b in {X, Z} at x: d_a = d_source[a], n_a = n_source[a],
+    // delta_ja = basis_dot[a][i].
+    const int in_plane[3][2] = {{0, 0}, {1, 1}, {0, 1}};  // rr, zz, rz
+    for (int component = 0; component < 3; ++component) {
+      const int a = in_plane[component][0], b = in_plane[component][1];
+      const Poly& da = f.d_source[a];
+      const Poly& db = f.d_source[b];
+      const Poly& dja = f.basis_dot[a][i];
+      const Poly& djb = f.basis_dot[b][i];
+      const double dab = a == b ? 1.0 : 0.0;
+      const Poly dadb = da * db;
+      out.D[i][component] =
+          cd * ((1.0 - 2.0 * nu) * W(dja * db + djb * da - dab * dj, 1) + 3.0 * W(dj * dadb, 2));
+      const Poly& na = f.n_source[a];
+      const Poly& nb = f.n_source[b];
+      out.S[i][component] =
+          cs * (3.0 * W(dn * ((1.0 - 2.0 * nu) * dab * dj + nu * (dja * db + djb * da)), 2) -
+                15.0 * W(dn * dadb * dj, 3) + 3.0 * nu * W((na * db + nb * da) * dj, 2) +
+                (1.0 - 2.0 * nu) * (3.0 * nj * W(dadb, 2) + W(nb * dja + na * djb, 1)) -
+                (1.0 - 4.0 * nu) * nj * dab * W(Poly(1.0), 1));
+    }
+    // Hoop component (a = b = Y).
+    const Poly dY_dY = (g.r * g.r) * sin_squared;
+    const Poly ejY_dY = i == 0 ? g.r * sin_squared : Poly(0.0);
+    const Poly nY_dY = (normal.x() * g.r) * sin_squared;
+    const Poly ejY_nY = i == 0 ? normal.x() * sin_squared : Poly(0.0);
+    out.D[i][stress_tt] =
+        cd * ((1.0 - 2.0 * nu) * W(2.0 * ejY_dY - dj, 1) + 3.0 * W(dj * dY_dY, 2));
+    out.S[i][stress_tt] =
+        cs * (3.0 * W(dn * ((1.0 - 2.0 * nu) * dj + 2.0 * nu * ejY_dY), 2) -
+              15.0 * W(dn * dY_dY * dj, 3) + 6.0 * nu * W(nY_dY * dj, 2) +
+              (1.0 - 2.0 * nu) * (3.0 * nj * W(dY_dY, 2) + 2.0 * W(ejY_nY, 1)) -
+              (1.0 - 4.0 * nu) * nj * W(Poly(1.0), 1));
+  }
+  return out;
+}
+
+}  // namespace bemcontact::kernels
