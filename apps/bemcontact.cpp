@@ -11,6 +11,7 @@
 
 #include "bemcontact/bem/analysis.hpp"
 #include "bemcontact/core/error.hpp"
+#include "bemcontact/io/json_writer.hpp"
 #include "bemcontact/io/output_directory.hpp"
 #include "bemcontact/io/problem_file.hpp"
 #include "bemcontact/io/results_writer.hpp"
@@ -91,10 +92,12 @@ int command_run(const std::string& input, const std::string& output_dir, bool qu
       {"input", input},
       {"title", file.problem.title},
       {"options", options_json(file.problem)},
+      {"problem", io::problem_echo_json(file)},
       {"mesh", mesh_json(result.mesh)},
       {"solve", {{"unknowns", result.report.unknowns},
                  {"reciprocal_condition_estimate", result.report.reciprocal_condition},
-                 {"relative_residual", result.report.relative_residual}}},
+                 {"relative_residual", result.report.relative_residual},
+                 {"constraints_fix_rigid_modes_only", result.report.constraints_fix_rigid_modes_only}}},
       {"results", {{"max_boundary_displacement", max_u},
                    {"max_boundary_von_mises", max_vm},
                    {"max_boundary_von_mises_at", {peak.x(), peak.y()}},
@@ -103,7 +106,7 @@ int command_run(const std::string& input, const std::string& output_dir, bool qu
                    {"max_interior_von_mises", interior_max_vm}}},
       {"timings_seconds", timings},
       {"outputs", out.names()}};
-  out.add("summary.json", summary.dump(2) + "\n");
+  out.add("summary.json", io::write_json_string(summary));
   out.commit(output_dir);
 
   if (!quiet) {

@@ -53,7 +53,7 @@ ContactModel::ContactModel(const ContactProblem& problem, const bem::ProgressCal
   c.M = Q * Bprime * R;
   if (!problem.tangential_coupling)
     for (Index i = 0; i < n; ++i)
-      for (Index j = 0; j < n; ++j) c.M(2 * i, 2 * j + 1) = c.M(2 * i + 1, 2 * j) = 0.0;
+      for (Index j = 0; j < n; ++j) c.M(2 * i, 2 * j + 1) = 0.0;  // no w_n from tau
   c.a = Q * (fixed_response[0].head(2 * n) - fixed_response[1].head(2 * n));
   c.gap.resize(n);
   c.on_axis.resize(n);

@@ -102,17 +102,34 @@ ContactSummary summarise(const ContactModel& model, const std::vector<PairResult
         s.contact_radius = std::clamp(r_last + q_last * (r_last - r_prev) / (q_prev - q_last), r_last, r_open);
     }
   }
-  // Stick edge: midway between the outermost stick pair and the next slipping pair.
-  std::ptrdiff_t last_stick = -1;
-  for (std::size_t k = 0; k < order.size(); ++k)
-    if (pairs[order[k]].status == PairStatus::stick) last_stick = static_cast<std::ptrdiff_t>(k);
-  if (last_stick >= 0) {
-    s.stick_radius = std::abs(pairs[order[last_stick]].coordinate);
-    for (std::size_t k = last_stick + 1; k < order.size(); ++k)
-      if (pairs[order[k]].status == PairStatus::slip) {
-        s.stick_radius = 0.5 * (s.stick_radius + std::abs(pairs[order[k]].coordinate));
-        break;
-      }
+  // Stick edge: inside the stick zone the margin beta |p_n| - |p_t| vanishes like a square
+  // root at c (Cattaneo, Spence), so (1 - |p_t| / (beta |p_n|))^2 is extrapolated linearly
+  // from the two outermost stick pairs to its zero, kept between the outermost stick pair
+  // and the next slipping pair (midway when the extrapolation is not possible).
+  double r_stick = -1.0, m_stick = 0.0;
+  for (const auto& pair : pairs)
+    if (pair.status == PairStatus::stick && std::abs(pair.coordinate) > r_stick)
+      r_stick = std::abs(pair.coordinate), m_stick = std::pow(1.0 - pair.slip_ratio, 2);
+  if (r_stick >= 0.0) {
+    s.stick_radius = r_stick;
+    double r_slip = -1.0, r_in = -1.0, m_in = 0.0;
+    for (const auto& pair : pairs) {
+      const double r = std::abs(pair.coordinate);
+      if (pair.status == PairStatus::slip && r > r_stick && (r_slip < 0.0 || r < r_slip)) r_slip = r;
+      if (pair.status == PairStatus::stick && r < r_stick * (1.0 - 1e-9) && r > r_in)
+        r_in = r, m_in = std::pow(1.0 - pair.slip_ratio, 2);
+    }
+    if (r_slip < 0.0 && s.pairs_in_contact > 0) {
+      // Every pair in contact sticks: the slip annulus (if any) is narrower than the mesh.
+      bool all_stick = true;
+      for (const auto& pair : pairs) all_stick = all_stick && pair.status != PairStatus::slip;
+      if (all_stick) s.stick_radius = s.contact_radius;
+    }
+    if (r_slip > 0.0) {
+      s.stick_radius = 0.5 * (r_stick + r_slip);
+      if (r_in >= 0.0 && m_in > m_stick)
+        s.stick_radius = std::clamp(r_stick + m_stick * (r_stick - r_in) / (m_in - m_stick), r_stick, r_slip);
+    }
   }
   return s;
 }

@@ -77,12 +77,14 @@ bool intersect(const geometry::BoundaryPiece& piece, const Vec2& x, const Vec2& 
 // Point of piece 2 facing x1 (outward normal n1 of body 1) along the common normal (V.2):
 // the normal is re-evaluated at the facing point a few times (it converges quadratically
 // for smooth facing boundaries).
-bool facing_point(const geometry::BoundaryPiece& piece2, const Vec2& x1, const Vec2& n1, double& fraction) {
+bool facing_point(const geometry::BoundaryPiece& piece2, const Vec2& x1, const Vec2& n1, double& fraction,
+                  PairNormal choice) {
   Vec2 n = n1;
   for (int iteration = 0; iteration < 8; ++iteration) {
     if (!intersect(piece2, x1, n, fraction)) return false;
+    if (choice == PairNormal::body1) return true;
     const Vec2 n2 = geometry::point_on_piece(piece2, std::clamp(fraction, 0.0, 1.0)).outward_normal;
-    const Vec2 common = n1 - n2;
+    const Vec2 common = choice == PairNormal::body2 ? Vec2(-n2) : Vec2(n1 - n2);
     if (common.norm() < 1e-12) return false;
     n = common.normalized();
   }
@@ -182,7 +184,7 @@ PreparedContact prepare_contact(const ContactProblem& problem) {
   std::vector<double> f(s1.size());
   for (std::size_t j = 0; j < s1.size(); ++j) {
     const auto point = geometry::point_on_piece(piece1, s1[j]);
-    if (!facing_point(piece2, point.position, point.outward_normal, f[j]))
+    if (!facing_point(piece2, point.position, point.outward_normal, f[j], problem.pair_normal))
       throw GeometryError("contact: the common normal through " + point_text(point.position) + " on " + zone1 +
                           " does not meet " + zone2 + ": the contact boundaries do not face each other");
   }
@@ -248,7 +250,7 @@ PreparedContact prepare_contact(const ContactProblem& problem) {
   for (std::size_t i = 0; i < nodes1.size(); ++i) {
     const auto& node1 = mesh1.nodes[nodes1[i]];
     double fraction = 0.0;
-    if (!facing_point(piece2, node1.position, node1.normal, fraction))
+    if (!facing_point(piece2, node1.position, node1.normal, fraction, problem.pair_normal))
       throw GeometryError("contact: node " + point_text(node1.position) + " of " + zone1 + " has no facing point on " +
                           zone2 + "; the zone cannot be paired");
     const Vec2 target = geometry::point_on_piece(piece2, std::clamp(fraction, 0.0, 1.0)).position;
@@ -274,7 +276,9 @@ PreparedContact prepare_contact(const ContactProblem& problem) {
     pair.node2 = nodes2[best];
     pair.position1 = node1.position;
     pair.position2 = node2.position;
-    pair.normal = (node1.normal - node2.normal).normalized();  // (V.2)
+    pair.normal = problem.pair_normal == PairNormal::common ? Vec2((node1.normal - node2.normal).normalized())  // (V.2)
+                  : problem.pair_normal == PairNormal::body1 ? node1.normal
+                                                             : Vec2(-node2.normal);
     pair.tangent = Vec2(-pair.normal.y(), pair.normal.x());
     pair.gap = (node2.position - node1.position).dot(pair.normal);  // (V.3)
     pair.weight = weights[i];

@@ -167,7 +167,7 @@ ContactFile parse_contact_problem(std::string_view text, const std::string& file
   if (!contact_table) root.fail("contact", "missing [contact] table");
   const TableReader contact(*contact_table, "contact", context, root.line());
   contact.check_keys({"boundary1", "boundary2", "kind", "friction", "coupling", "increments", "algorithm",
-                      "gmres_restart", "xi", "tolerance", "max_iterations", "record_steps", "load"},
+                      "gmres_restart", "xi", "tolerance", "max_iterations", "record_steps", "load", "normal"},
                      "the [contact] table");
   for (int b = 0; b < 2; ++b) {
     const std::string key = "boundary" + std::to_string(b + 1);
@@ -186,6 +186,10 @@ ContactFile parse_contact_problem(std::string_view text, const std::string& file
   problem.friction = contact.optional_number("friction").value_or(0.0);
   if (!(problem.friction >= 0.0)) contact.fail("friction", "the friction coefficient must be >= 0");
   problem.tangential_coupling = contact.boolean_or("coupling", true);
+  const std::string normal = contact.choice("normal", {"common", "body1", "body2"}, "common");
+  problem.pair_normal = normal == "body1"   ? contact::PairNormal::body1
+                        : normal == "body2" ? contact::PairNormal::body2
+                                            : contact::PairNormal::common;
   problem.increments = contact.integer_or("increments", problem.friction > 0.0 ? 16 : 1);
   if (problem.increments < 1) contact.fail("increments", "the number of load increments must be >= 1");
   problem.record_steps = contact.boolean_or("record_steps", false);

@@ -105,22 +105,48 @@ struct RingFactors {
   }
 };
 
+// U and T written out from the 3D kernels with the factors of RingFactors (kept explicit:
+// this runs in the assembly's inner loop). With u the ring variable:
+//   d.e_X d.e_r = b^2 - 2 b^2 u - 4 r R u^2,  d.e_X c = c (b - 2 r u),  c d.e_r = c (b + 2 R u),
+//   (e_k.e_i)(d.n): rr (1 - 2u)(dn0 + dn1 u), zz dn0 + dn1 u,
+//   Cauchy n_i d_k - d_i n_k: rr 4 R n_r (u^2 - u), rz (n_z b - n_r c) + 2 (n_r c - r n_z) u,
+//   zr (n_r c - n_z b) - 2 R n_z u, zz 0,
+// with dn0 = n_r b + n_z c, dn1 = 2 R n_r (d.n = dn0 + dn1 u).
 RingKernels displacement_traction(const KelvinAxisymmetric& kelvin, const RingPair& g, const Vec2& n,
-                                  const RingWeights& W) {
+                                  const RingIntegrals& W) {
   const double nu = kelvin.poisson_ratio;
   const double cu = 1.0 / (16.0 * pi * kelvin.shear_modulus * (1.0 - nu));
   const double ct = -1.0 / (8.0 * pi * (1.0 - nu));
-  const RingFactors f(g, n);
+  const double a = 1.0 - 2.0 * nu, three_four = 3.0 - 4.0 * nu;
+  const auto& W0 = W.h[0];
+  const auto& W1 = W.h[1];
+  const auto& W2 = W.h[2];
+  const double b = g.b, c = g.c, r = g.r, R = g.R, nr = n.x(), nz = n.y();
+  const double dn0 = nr * b + nz * c, dn1 = 2.0 * R * nr;
+  // d_k d_i as p0 + p1 u + p2 u^2, and its product with d.n contracted with W2.
+  auto cubic = [&](double p0, double p1, double p2) {
+    return p0 * dn0 * W2[0] + (p1 * dn0 + p0 * dn1) * W2[1] + (p2 * dn0 + p1 * dn1) * W2[2] + p2 * dn1 * W2[3];
+  };
+  const double b2 = b * b;
+  const double rr0 = b2, rr1 = -2.0 * b2, rr2 = -4.0 * r * R;
+  const double rz0 = c * b, rz1 = -2.0 * c * r;
+  const double zr0 = c * b, zr1 = 2.0 * c * R;
+  const double zz0 = c * c;
   RingKernels out;
-  for (int k = 0; k < 2; ++k)
-    for (int i = 0; i < 2; ++i) {
-      const Poly dd = f.d_source[k] * f.d_field[i];
-      out.U(k, i) = cu * ((3.0 - 4.0 * nu) * W(f.basis_dot[k][i], 0) + W(dd, 1));
-      const Poly cauchy = f.n_field[i] * f.d_source[k] - f.d_field[i] * f.n_source[k];
-      out.T(k, i) = ct * ((1.0 - 2.0 * nu) * (W(f.basis_dot[k][i] * f.d_dot_n, 1) - W(cauchy, 1)) +
-                          3.0 * W(dd * f.d_dot_n, 2));
-    }
-  if (g.R == 0.0) {  // radial ring source on the axis: no load at all
+  out.U(0, 0) = cu * (three_four * (W0[0] - 2.0 * W0[1]) + rr0 * W1[0] + rr1 * W1[1] + rr2 * W1[2]);
+  out.U(0, 1) = cu * (rz0 * W1[0] + rz1 * W1[1]);
+  out.U(1, 0) = cu * (zr0 * W1[0] + zr1 * W1[1]);
+  out.U(1, 1) = cu * (three_four * W0[0] + zz0 * W1[0]);
+  const double basis_rr = dn0 * W1[0] + (dn1 - 2.0 * dn0) * W1[1] - 2.0 * dn1 * W1[2];
+  const double basis_zz = dn0 * W1[0] + dn1 * W1[1];
+  const double cauchy_rr = 4.0 * R * nr * (W1[2] - W1[1]);
+  const double cauchy_rz = (nz * b - nr * c) * W1[0] + 2.0 * (nr * c - r * nz) * W1[1];
+  const double cauchy_zr = (nr * c - nz * b) * W1[0] - 2.0 * R * nz * W1[1];
+  out.T(0, 0) = ct * (a * (basis_rr - cauchy_rr) + 3.0 * cubic(rr0, rr1, rr2));
+  out.T(0, 1) = ct * (-a * cauchy_rz + 3.0 * cubic(rz0, rz1, 0.0));
+  out.T(1, 0) = ct * (-a * cauchy_zr + 3.0 * cubic(zr0, zr1, 0.0));
+  out.T(1, 1) = ct * (a * basis_zz + 3.0 * cubic(zz0, 0.0, 0.0));
+  if (R == 0.0) {  // radial ring source on the axis: no load at all
     out.U.row(0).setZero();
     out.T.row(0).setZero();
   }
@@ -143,14 +169,14 @@ RingPair::RingPair(const Vec2& source, const Vec2& field)
 RingKernels ring_kernels(const KelvinAxisymmetric& kelvin, const Vec2& source, const Vec2& field,
                          const Vec2& normal) {
   const RingPair g(source, field);
-  return displacement_traction(kelvin, g, normal, weights(g, 2));
+  return displacement_traction(kelvin, g, normal, weights(g, 2).w);
 }
 
 RingKernels ring_kernel_log_parts(const KelvinAxisymmetric& kelvin, const Vec2& source,
                                   const Vec2& field, const Vec2& normal) {
   const RingPair g(source, field);
   if (g.R == 0.0 || g.r == 0.0) return {};  // m = 0: no logarithm
-  return displacement_traction(kelvin, g, normal, log_weights(g, 2));
+  return displacement_traction(kelvin, g, normal, log_weights(g, 2).w);
 }
 
 // 3D interior-stress kernels (Brebbia & Dominguez), d = y - x, d.n = (y - x).n:

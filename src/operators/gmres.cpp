@@ -118,19 +118,21 @@ GmresResult gmres(const LinearOperator& A, const Vector& b, const GmresOptions& 
     }
     if (steps == 0) break;  // no step left in the budget
 
-    // y = R^{-1} g; a zero pivot means the Hessenberg matrix is singular (A is singular on
-    // the Krylov space).
+    // y = R^{-1} g. A zero pivot at k means the operator is singular on the Krylov space:
+    // the minimal-residual correction then lies in the first k directions, and the solver
+    // stops with status breakdown after applying it.
     const double pivot_floor = 1e-14 * H.topLeftCorner(steps, steps).cwiseAbs().maxCoeff();
-    bool singular = false;
-    for (int k = 0; k < steps; ++k) singular = singular || !(std::abs(H(k, k)) > pivot_floor);
-    if (singular) {
-      result.status = GmresStatus::breakdown;
-      result.message = "breakdown: the Hessenberg matrix is singular (the operator is singular on the "
-                       "Krylov space) after " + std::to_string(result.iterations) + " iterations";
-      break;
+    int usable = steps;
+    for (int k = 0; k < steps; ++k)
+      if (!(std::abs(H(k, k)) > pivot_floor)) {
+        usable = k;
+        break;
+      }
+    const bool singular = usable < steps;
+    if (usable > 0) {
+      const Vector y = H.topLeftCorner(usable, usable).triangularView<Eigen::Upper>().solve(g.head(usable));
+      result.x += V.leftCols(usable) * y;
     }
-    const Vector y = H.topLeftCorner(steps, steps).triangularView<Eigen::Upper>().solve(g.head(steps));
-    result.x += V.leftCols(steps) * y;
     A.apply(result.x, w);
     r = b - w;
     const double relative = r.norm() / r00;
@@ -139,6 +141,12 @@ GmresResult gmres(const LinearOperator& A, const Vector& b, const GmresOptions& 
       result.status = GmresStatus::converged;
       result.message = "converged in " + std::to_string(result.iterations) + " iterations (relative residual " +
                        number_text(relative) + ")";
+      break;
+    }
+    if (singular) {
+      result.status = GmresStatus::breakdown;
+      result.message = "breakdown: the operator is singular on the Krylov space after " +
+                       std::to_string(result.iterations) + " iterations; relative residual " + number_text(relative);
       break;
     }
     if (invariant) {

@@ -37,6 +37,17 @@ struct ForceLoad {
   double force = 0.0;
 };
 
+// Direction of the pair normal n (and tangent t) on the contact zone.
+enum class PairNormal {
+  common,  // (V.2): n = (1n - 2n) / |1n - 2n|, the bisector of the two outward normals
+  body1,   // n = 1n, the outward normal of body 1's zone
+  body2,   // n = -2n: the inward normal of body 2's zone (e.g. a flat support). With a
+           // curved body 1, the common normal tilts by half its slope, and the rigid
+           // approach of the body then leaks into the tangential jump [u_t] (by delta r / 2R
+           // for a ball): a flat body's normal keeps the half-space kinematics of Hertz and
+           // Spence.
+};
+
 struct SolverOptions {
   Algorithm algorithm = Algorithm::newton;
   double tolerance = 1e-10;  // Newton: relative residual of the complementarity functions
@@ -57,10 +68,11 @@ struct ContactProblem {
   std::array<int, 2> contact_piece{-1, -1};  // the boundary of each body that forms Gamma_c
   ContactKind kind = ContactKind::unilateral;
   double friction = 0.0;  // beta (Coulomb)
-  // false drops the coupling between tangential tractions and normal displacements (and
-  // back) in the condensed operator: the uncoupled (Goodman-type) approximation under
-  // which Spence's (E.1) holds (DESIGN.md section 6).
+  // false drops the normal displacements due to tangential tractions from the condensed
+  // operator (the pressure then stays the frictionless one): the uncoupled (Goodman-type)
+  // approximation under which Spence's (E.1) holds (DESIGN.md section 6).
   bool tangential_coupling = true;
+  PairNormal pair_normal = PairNormal::common;
   int increments = 1;  // quasi-static load steps, equal load factors k / N
   bool record_steps = false;
   std::optional<ForceLoad> force;

@@ -361,11 +361,14 @@ TEST(IoProblemFile, ReadsFromDiskAndEchoesOptions) {
   EXPECT_EQ(text.back(), '\n');
 }
 
-TEST(IoProblemFile, EveryBundledExampleParses) {
+TEST(IoProblemFile, EveryBundledOneBodyExampleParses) {
   const std::filesystem::path examples = std::filesystem::path(BEMCONTACT_SOURCE_DIR) / "examples";
   int count = 0;
   for (const auto& entry : std::filesystem::directory_iterator(examples)) {
     if (entry.path().extension() != ".toml") continue;
+    // Several subdomains or two bodies in contact have formats of their own (dd_*, contact_*).
+    const std::string stem = entry.path().stem().string();
+    if (stem.rfind("dd_", 0) == 0 || stem.rfind("contact_", 0) == 0) continue;
     ++count;
     EXPECT_NO_THROW({
       const ProblemFile file = read_problem_file(entry.path());
