@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "bemcontact/core/error.hpp"
+#include "bemcontact/core/parallel.hpp"
 #include "bemcontact/integration/plane_element.hpp"
 
 namespace bemcontact::bem {
@@ -19,13 +20,8 @@ ElementIntegrator::ElementIntegrator(AnalysisType type, const Material& material
 integration::ElementInfluence ElementIntegrator::influence(const Vec2& source,
                                                            const geometry::BoundaryElement& element,
                                                            int source_node) const {
-  if (type_ == AnalysisType::axisymmetric) {
-#ifdef BEMCONTACT_HAS_AXISYMMETRIC
+  if (type_ == AnalysisType::axisymmetric)
     return integration::integrate_axisymmetric_element(axisymmetric_, source, element, source_node);
-#else
-    throw Error("axisymmetric analysis is not available in this build");
-#endif
-  }
   return integration::integrate_plane_element(plane_, source, element, source_node);
 }
 
@@ -92,10 +88,13 @@ InfluenceMatrices assemble_influence_matrices(const geometry::BoundaryMesh& mesh
   const Index n = mesh.node_count();
   InfluenceMatrices m{Matrix::Zero(2 * n, 2 * n), Matrix::Zero(2 * n, 2 * n)};
   std::atomic<Index> rows_done{0};
+  ParallelErrors errors;
   // One source node per iteration: every entry is written by one thread, so the result
   // does not depend on the thread count.
 #pragma omp parallel for schedule(dynamic, 8)
   for (Index i = 0; i < n; ++i) {
+    if (errors.failed()) continue;
+    errors.run([&] {
     const Vec2& source = mesh.nodes[i].position;
     for (const auto& element : mesh.elements) {
       int source_node = -1;
@@ -110,7 +109,9 @@ InfluenceMatrices assemble_influence_matrices(const geometry::BoundaryMesh& mesh
     }
     const Index done = ++rows_done;
     if (progress && omp_get_thread_num() == 0) progress("assembly", static_cast<double>(done) / n);
+    });
   }
+  errors.rethrow();
   set_diagonal_blocks(mesh, integrator, m);
   if (progress) progress("assembly", 1.0);
   return m;

@@ -8,6 +8,7 @@
 #include <limits>
 #include <numbers>
 
+#include "bemcontact/core/parallel.hpp"
 #include "bemcontact/integration/plane_element.hpp"
 
 namespace bemcontact::bem {
@@ -107,7 +108,11 @@ std::vector<StressTensor> boundary_stresses(const geometry::BoundaryMesh& mesh, 
   return stresses;
 }
 
-bool point_inside(const geometry::BoundaryMesh& mesh, const Vec2& point, double tolerance) {
+bool point_inside(const geometry::BoundaryMesh& mesh, const Vec2& query, double tolerance) {
+  // In axisymmetry the axis is inside the body, not its boundary: test a point just off it.
+  bool has_axis = false;
+  for (bool skipped : mesh.piece_skipped) has_axis = has_axis || skipped;
+  const Vec2 point = has_axis && std::abs(query.x()) <= 1e-9 * mesh.scale ? Vec2(1e-6 * mesh.scale, query.y()) : query;
   double winding = 0.0;
   for (const auto& e : mesh.elements) {
     const Vec2 a = e.start - point, b = e.end - point;
@@ -124,7 +129,7 @@ bool point_inside(const geometry::BoundaryMesh& mesh, const Vec2& point, double 
     }
   }
   if (std::abs(winding) < std::numbers::pi) return false;
-  return project_on_boundary(mesh, point).distance > tolerance;
+  return project_on_boundary(mesh, query).distance > tolerance;
 }
 
 BoundaryProjection project_on_boundary(const geometry::BoundaryMesh& mesh, const Vec2& point) {
@@ -246,12 +251,7 @@ StressTensor somigliana_stress(const geometry::BoundaryMesh& mesh, const Element
   const auto axi = integration::AxisymmetricKelvin::from(integrator.material());
   for (const auto& e : mesh.elements) {
     if (axisymmetric) {
-#ifdef BEMCONTACT_HAS_AXISYMMETRIC
       const auto s = integration::integrate_axisymmetric_element_stress(axi, point, e);
-#else
-      integration::AxisymmetricStressInfluence s;
-      (void)axi;
-#endif
       for (int a = 0; a < e.node_count; ++a) {
         const Index j = e.nodes[a];
         for (int k = 0; k < 2; ++k) {
@@ -286,8 +286,11 @@ InteriorSolution interior_values(const geometry::BoundaryMesh& mesh, const Eleme
   result.displacement.resize(m);
   result.stress.resize(m);
   std::atomic<Index> done{0};
+  ParallelErrors errors;
 #pragma omp parallel for schedule(dynamic, 4)
   for (Index k = 0; k < m; ++k) {
+    if (errors.failed()) continue;
+    errors.run([&] {
     const Vec2& x = points[k];
     result.displacement[k] = somigliana_displacement(mesh, integrator, solution, x);
     const auto projection = project_on_boundary(mesh, x);
@@ -319,7 +322,9 @@ InteriorSolution interior_values(const geometry::BoundaryMesh& mesh, const Eleme
     }
     const Index count = ++done;
     if (progress && omp_get_thread_num() == 0) progress("interior points", static_cast<double>(count) / m);
+    });
   }
+  errors.rethrow();
   return result;
 }
 

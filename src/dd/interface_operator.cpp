@@ -30,6 +30,12 @@ InterfaceOperator::InterfaceOperator(const DecompositionProblem& problem,
                         "own): " + advice + ". (" + error.what() + ")");
     }
   }
+  if (problem.options.explicit_operators)
+    for (std::size_t s = 0; s < count; ++s) {
+      const Index dofs = bodies_[s].variable_dofs();
+      maps_.push_back(bodies_[s].complementary_columns(Matrix::Identity(dofs, dofs), false));
+      responses_.push_back(bodies_[s].complementary(Vector::Zero(dofs), true));
+    }
   if (progress) progress("factorisation", 1.0);
   // Mean spacing of facing nodes along the interfaces (see the header).
   double spacing = 0.0;
@@ -66,8 +72,14 @@ Vector InterfaceOperator::residual(const Vector& y, bool with_fixed_data) const 
   for (std::size_t s = 0; s < bodies_.size(); ++s) {
     const auto& slots = connectivity_.slots[s];
     if (slots.empty()) continue;
-    const Vector complementary = bodies_[s].complementary(subdomain_data(s, y), with_fixed_data);
-    ++solves_;
+    Vector complementary;
+    if (maps_.empty()) {
+      complementary = bodies_[s].complementary(subdomain_data(s, y), with_fixed_data);
+      ++solves_;
+    } else {
+      complementary = maps_[s] * subdomain_data(s, y);
+      if (with_fixed_data) complementary += responses_[s];
+    }
     for (std::size_t k = 0; k < slots.size(); ++k) {
       const auto& slot = slots[k];
       const Index i = connectivity_.unknown_of(slot);
@@ -96,6 +108,7 @@ std::size_t InterfaceOperator::memory_bytes() const {
     const std::size_t n = 2 * static_cast<std::size_t>(body.mesh().node_count());
     bytes += sizeof(double) * (n * n + n * static_cast<std::size_t>(body.variable_dofs()) + 2 * n);
   }
+  for (const auto& map : maps_) bytes += sizeof(double) * static_cast<std::size_t>(map.size());
   return bytes;
 }
 

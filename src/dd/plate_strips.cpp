@@ -29,11 +29,12 @@ DecompositionProblem plate_strips(const PlateStripsSpec& spec) {
   DecompositionProblem problem;
   problem.title = "plate in tension, " + std::to_string(spec.strips) + " strips, h = 1/" +
                   std::to_string(spec.elements_per_unit);
+  problem.options.method = spec.method;
   problem.source_file = "plate_strips";
   problem.analysis = spec.analysis;
   problem.options.method = spec.method;
   const int n = spec.strips;
-  const double T = 2.0 / n;
+  const double T = spec.height / n;
   const int across = 2 * spec.elements_per_unit;
   const int up = std::max(1, static_cast<int>(std::lround(T * spec.elements_per_unit)));
   const double P = spec.applied_stress;

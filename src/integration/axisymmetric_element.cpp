@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <complex>
 
 #include "bemcontact/core/error.hpp"
 #include "bemcontact/kernels/axisymmetric.hpp"
@@ -18,16 +17,20 @@ KelvinAxisymmetric kernel_constants(const AxisymmetricKelvin& kelvin) {
 }
 
 // ---------------------------------------------------------------------------------------
-// Number of Gauss points from the distance to the singularities (section II.4.4.1: "nous
+// Number of Gauss points from the distance to the singularity (section II.4.4.1: "nous
 // modulons le nombre de points de Gauss en fonction de la distance").
 //
 // The ring kernels, as functions of the element fraction f (y(f) = start + f (end - start)),
-// are analytic except where |y(f) - x|^2 = 0 (the source x, s -> 0) or A = |y(f) - x'|^2 = 0
-// (the mirror point x' = (-R, Z), where m -> infinity): at the complex fractions
-// f = f_p +- i h_p / L of each point p (f_p its projection on the line, h_p its distance).
-// For an analytic integrand in the Bernstein ellipse of parameter rho around [fa, fb],
-// n-point Gauss-Legendre errs by O(rho^-2n); n is chosen for rho^-2n = 1e-15, and an interval
-// that would need more than kMaxPoints is split (geometric refinement toward the point).
+// are analytic except where |y(f) - x|^2 = 0, at the complex fractions f = f_p +- i h / L
+// (f_p the projection of the source x on the line, h its distance), and where
+// A = |y(f) - x'|^2 = 0 for the mirror point x' = (-R, Z) (m -> infinity). In the element's
+// frame these are the points x and x' themselves, and the Bernstein ellipse through x
+// (foci at the interval's ends y_a, y_b) has semi-axis a = (|x - y_a| + |x - y_b|) / |y_b - y_a|
+// and parameter rho = a + sqrt(a^2 - 1). Since |y - x'| >= |y - x| for every y with r >= 0,
+// the mirror's ellipse is never the smaller one and only x matters.
+// n-point Gauss-Legendre errs by O(rho^-2n) for an integrand analytic inside the ellipse;
+// n is the smallest with rho^-2n <= 1e-15, and an interval that would need more than
+// kMaxPoints is split (geometric refinement toward the source).
 constexpr double kLogTolerance = 34.5;  // ln(1e15)
 constexpr int kMinPoints = 3;
 constexpr int kMaxPoints = 16;
@@ -35,61 +38,59 @@ constexpr int kMaxPoints = 16;
 constexpr int kNearPoints = 12;
 constexpr double kNearFactor = 0.5;  // near zone length / source radius
 
-struct Singularity {
-  double re, im;  // complex fraction
+// Smallest semi-axis a for which n points suffice: rho_n = exp(kLogTolerance / 2n),
+// a_n = (rho_n + 1/rho_n) / 2. Compared with a directly, so no logarithm per interval.
+struct PointTable {
+  std::array<double, kMaxPoints + 1> min_axis{};
+  PointTable() {
+    for (int n = 1; n <= kMaxPoints; ++n) {
+      const double rho = std::exp(kLogTolerance / (2.0 * n));
+      min_axis[n] = 0.5 * (rho + 1.0 / rho);
+    }
+  }
 };
+const PointTable kPointTable;
 
 struct Line {
   Vec2 start, delta;
   double length;
   explicit Line(const geometry::BoundaryElement& e) : start(e.start), delta(e.end - e.start), length(e.length) {}
   Vec2 at(double f) const { return start + f * delta; }
-  Singularity singularity_of(const Vec2& p) const {
-    const Vec2 w = p - start;
-    const double L2 = delta.squaredNorm();
-    const double along = w.dot(delta) / L2;
-    const double cross = std::abs(w.x() * delta.y() - w.y() * delta.x()) / L2;
-    return {along, cross};
-  }
+  // Projection of p on the line as a fraction.
+  double fraction_of(const Vec2& p) const { return (p - start).dot(delta) / delta.squaredNorm(); }
 };
 
-double bernstein_parameter(double fa, double fb, const Singularity& s) {
-  const std::complex<double> xi((2.0 * s.re - fa - fb) / (fb - fa), 2.0 * s.im / (fb - fa));
-  const std::complex<double> root = std::sqrt(xi * xi - 1.0);
-  return std::max(std::abs(xi + root), std::abs(xi - root));
-}
-
 // Calls add(f, w) for the nodes f and weights w (in units of f) of a Gauss rule on [fa, fb],
-// refined until every piece is far enough from the singularities.
+// refined until every piece is far enough from the source (see above).
 template <class Add>
-void integrate_adaptive(double fa, double fb, const Singularity* singular, int count, const Add& add,
+void integrate_adaptive(const Line& line, double fa, double fb, const Vec2& source, const Add& add,
                         int depth = 0) {
-  double rho = 1e300;
-  const Singularity* nearest = nullptr;
-  for (int i = 0; i < count; ++i) {
-    const double r = bernstein_parameter(fa, fb, singular[i]);
-    if (r < rho) {
-      rho = r;
-      nearest = &singular[i];
-    }
-  }
-  const double needed = rho > 1.0 ? kLogTolerance / (2.0 * std::log(rho)) : 1e9;
-  if (needed > kMaxPoints && depth < 80) {
-    // Split at the projection of the nearest singularity, kept 20 % inside the interval: a
-    // singularity beyond an end is approached geometrically (ratio 0.2).
+  const double axis = ((source - line.at(fa)).norm() + (source - line.at(fb)).norm()) / ((fb - fa) * line.length);
+  int n = kMinPoints;
+  while (n <= kMaxPoints && axis < kPointTable.min_axis[n]) ++n;
+  if (n > kMaxPoints && depth < 80) {
+    // Split at the projection of the source, kept 20 % inside the interval: a source beyond
+    // an end is approached geometrically (ratio 0.2).
     const double w = fb - fa;
-    const double cut = std::clamp(nearest->re, fa + 0.2 * w, fb - 0.2 * w);
-    integrate_adaptive(fa, cut, singular, count, add, depth + 1);
-    integrate_adaptive(cut, fb, singular, count, add, depth + 1);
+    const double cut = std::clamp(line.fraction_of(source), fa + 0.2 * w, fb - 0.2 * w);
+    integrate_adaptive(line, fa, cut, source, add, depth + 1);
+    integrate_adaptive(line, cut, fb, source, add, depth + 1);
     return;
   }
-  const int n = std::clamp(static_cast<int>(std::ceil(needed)), kMinPoints, kMaxPoints);
+  n = std::min(n, kMaxPoints);
   const quadrature::Rule& rule = quadrature::gauss_legendre(n);
   const double half = 0.5 * (fb - fa), mid = 0.5 * (fa + fb);
   for (int i = 0; i < n; ++i) add(mid + half * rule.nodes[i], half * rule.weights[i]);
 }
 
 // ---------------------------------------------------------------------------------------
+// BoundaryElement::shape, inlined for the inner loop: linear through the element's nodes.
+inline double shape(const geometry::BoundaryElement& e, int a, double f) {
+  if (e.node_count == 1) return 1.0;
+  const double f0 = e.node_fraction[0], f1 = e.node_fraction[1];
+  return a == 0 ? (f1 - f) / (f1 - f0) : (f - f0) / (f1 - f0);
+}
+
 struct Accumulator {
   const geometry::BoundaryElement& element;
   const KelvinAxisymmetric kelvin;
@@ -102,7 +103,7 @@ struct Accumulator {
   void add_kernels(double f, double weight, const Mat2& U, const Mat2& T) {
     const double r = line.at(f).x();
     for (int a = 0; a < element.node_count; ++a) {
-      const double factor = weight * line.length * r * element.shape(a, f);
+      const double factor = weight * line.length * r * shape(element, a, f);
       out.G[a] += factor * U;
       if (a != skip_h) out.H[a] += factor * T;
     }
@@ -112,6 +113,12 @@ struct Accumulator {
     add_kernels(f, weight, k.U, k.T);
   }
 };
+
+double distance_to_element(const Vec2& p, const geometry::BoundaryElement& e) {
+  const Vec2 d = e.end - e.start;
+  const double f = std::clamp((p - e.start).dot(d) / d.squaredNorm(), 0.0, 1.0);
+  return (p - (e.start + f * d)).norm();
+}
 
 // Source on the element at fraction f0 (section II.4.4.1). Near zone |s| <= near on each
 // side: with ln(1/m1) = ln A - 2 ln s,
@@ -131,7 +138,6 @@ void integrate_singular(Accumulator& acc, double f0) {
   const quadrature::Rule& gauss = quadrature::gauss_legendre(kNearPoints);
   const quadrature::Rule& log_rule = quadrature::gauss_log(kNearPoints);
   const Vec2& n = acc.element.normal;
-  const Singularity singular[2] = {{f0, 0.0}, acc.line.singularity_of(Vec2(-R, acc.source.y()))};
   for (int side = 0; side < 2; ++side) {
     if (side_length[side] <= 0.0) continue;
     const double direction = side == 0 ? -1.0 : 1.0;
@@ -161,17 +167,12 @@ void integrate_singular(Accumulator& acc, double f0) {
     }
     if (near < side_length[side]) {
       const double fa = f0 + direction * near_f, fb = side == 0 ? 0.0 : 1.0;
-      integrate_adaptive(std::min(fa, fb), std::max(fa, fb), singular, 2,
+      integrate_adaptive(acc.line, std::min(fa, fb), std::max(fa, fb), acc.source,
                          [&](double f, double w) { acc.add(f, w); });
     }
   }
 }
 
-double distance_to_element(const Vec2& p, const geometry::BoundaryElement& e) {
-  const Vec2 d = e.end - e.start;
-  const double f = std::clamp((p - e.start).dot(d) / d.squaredNorm(), 0.0, 1.0);
-  return (p - (e.start + f * d)).norm();
-}
 
 }  // namespace
 
@@ -180,18 +181,15 @@ ElementInfluence integrate_axisymmetric_element(const AxisymmetricKelvin& kelvin
                                                 int source_node) {
   BEMCONTACT_ASSERT(source_node < element.node_count);
   Accumulator acc{element, kernel_constants(kelvin), source, Line(element), source_node, {}};
-  const Singularity projection = acc.line.singularity_of(source);
   if (source_node >= 0) {
     const double f0 = element.node_count == 1 ? 0.5 : element.node_fraction[source_node];
     integrate_singular(acc, f0);
-  } else if (projection.im * element.length <= 1e-12 * element.length && projection.re >= 0.0 &&
-             projection.re <= 1.0) {
+  } else if (distance_to_element(source, element) <= 1e-12 * element.length) {
     // A source on the element that is not one of its nodes: G is still exact and H is the
     // principal value (the free term is the caller's business).
-    integrate_singular(acc, projection.re);
+    integrate_singular(acc, std::clamp(acc.line.fraction_of(source), 0.0, 1.0));
   } else {
-    const Singularity singular[2] = {projection, acc.line.singularity_of(Vec2(-source.x(), source.y()))};
-    integrate_adaptive(0.0, 1.0, singular, 2, [&](double f, double w) { acc.add(f, w); });
+    integrate_adaptive(acc.line, 0.0, 1.0, source, [&](double f, double w) { acc.add(f, w); });
   }
   return acc.out;
 }
@@ -209,12 +207,11 @@ AxisymmetricStressInfluence integrate_axisymmetric_element_stress(const Axisymme
       out.in_plane.D[a][k].setZero();
       out.in_plane.S[a][k].setZero();
     }
-  const Singularity singular[2] = {line.singularity_of(point), line.singularity_of(Vec2(-point.x(), point.y()))};
-  integrate_adaptive(0.0, 1.0, singular, 2, [&](double f, double w) {
+  integrate_adaptive(line, 0.0, 1.0, point, [&](double f, double w) {
     const Vec2 y = line.at(f);
     const kernels::RingStressKernels k = kernels::ring_stress_kernels(constants, point, y, element.normal);
     for (int a = 0; a < element.node_count; ++a) {
-      const double factor = w * line.length * y.x() * element.shape(a, f);
+      const double factor = w * line.length * y.x() * shape(element, a, f);
       for (int i = 0; i < 2; ++i) {
         Mat2 D, S;
         D << k.D[i][kernels::stress_rr], k.D[i][kernels::stress_rz], k.D[i][kernels::stress_rz],

@@ -24,7 +24,8 @@ const std::vector<std::string>& root_keys() {
 }
 const std::vector<std::string>& decomposition_keys() {
   static const std::vector<std::string> keys{"method",         "restart",             "tolerance",
-                                             "max_iterations", "interface_tolerance", "displacement_nodes"};
+                                             "max_iterations", "interface_tolerance", "displacement_nodes",
+                                             "explicit_operators"};
   return keys;
 }
 const std::vector<std::string>& subdomain_keys() {
@@ -107,6 +108,7 @@ void read_options(const TableReader& root, const FileContext& context, dd::Decom
     reader.fail("displacement_nodes", "displacement_nodes (interface nodes with displacement continuity in the "
                                       "mixed method) must be >= 1, found " +
                                           std::to_string(options.displacement_nodes));
+  options.explicit_operators = reader.boolean_or("explicit_operators", options.explicit_operators);
   if (reader.has("displacement_nodes") && options.method != dd::InterfaceMethod::mixed)
     reader.fail("displacement_nodes", "displacement_nodes applies to method = \"mixed\" only");
 }
@@ -167,7 +169,7 @@ DecompositionFile parse_decomposition(std::string_view text, const std::string& 
   context.file = file_name;
   const TableReader root(root_table, "", context, 1);
   // Body keys at the top level are a one-body habit: say where they go.
-  for (const std::string& key : {"material", "boundary", "constraint", "interior"})
+  for (const std::string key : {"material", "boundary", "constraint", "interior"})
     if (root.has(key))
       root.fail(key, "'" + key + "' belongs in each [[subdomain]] table in a file with subdomains (write [subdomain." +
                          key + "] or [[subdomain." + key + "]] after the subdomain's [[subdomain]] line)");

@@ -145,6 +145,7 @@ nlohmann::json decomposition_summary_json(const dd::DecompositionProblem& proble
                 {"relative_residual", result.gmres.relative_residual}};
   if (problem.options.method == dd::InterfaceMethod::mixed)
     j["displacement_nodes"] = problem.options.displacement_nodes;
+  j["explicit_operators"] = problem.options.explicit_operators;
   j["subdomain_solves"] = result.subdomain_solves;
   j["factor_memory_bytes"] = result.factor_memory_bytes;
   j["timings"] = timings_json(result.timings);

@@ -162,8 +162,9 @@ RingPair::RingPair(const Vec2& source, const Vec2& field)
   s2 = b * b + c * c;
   const double sum = r + R;
   A = sum * sum + c * c;
-  m = 4.0 * r * R / A;
-  m1 = s2 / A;
+  const double inverse_A = 1.0 / A;
+  m = 4.0 * r * R * inverse_A;
+  m1 = s2 * inverse_A;
 }
 
 RingKernels ring_kernels(const KelvinAxisymmetric& kelvin, const Vec2& source, const Vec2& field,

@@ -10,11 +10,11 @@ namespace {
 constexpr double half_pi = 0.5 * std::numbers::pi;
 
 // AGM (Abramowitz & Stegun 17.6): a_0 = 1, b_0 = sqrt(m1), c_0^2 = m;
-// a_{n+1} = (a_n + b_n)/2, b_{n+1} = sqrt(a_n b_n), c_{n+1} = (a_n - b_n)/2;
-//   K = pi / (2 a_inf),   K - E = K sum_n 2^{n-1} c_n^2.
-// The loop stops once c_{n+1} < 1e-9 a: the next c is below 1e-18 a, so a_{n+1} equals the
-// limit and the omitted terms of the sum are below 1e-17 (quadratic convergence: 4 to 8
-// passes for m1 down to 1e-300). K - E comes out as a sum of positive terms, without
+// a_{n+1} = (a_n + b_n)/2, b_{n+1} = sqrt(a_n b_n), c_{n+1} = (a_n - b_n)/2 = c_n^2 / (4 a_{n+1});
+//   K = pi / (2 a_inf),   K - E = K sum_n 2^{n-1} c_n^2,   a_inf = a_{n+1} - sum_{k>n+1} c_k.
+// Convergence is quadratic: once c_{n+1} < 1e-4 a_{n+1}, c_{n+2} = c_{n+1}^2 / (4 a) is taken in
+// closed form instead of another square root, and c_{n+3} < 2e-18 a is dropped (4 passes for
+// m = 0.9, 6 for m1 = 1e-15). K - E comes out as a sum of positive terms, without
 // cancellation, which matters when m is small.
 struct Agm {
   double K;
@@ -28,11 +28,16 @@ Agm agm(double m, double m1) {
   for (int pass = 0; pass < 64; ++pass) {
     const double c = 0.5 * (a - b);
     const double a_next = 0.5 * (a + b);
-    b = std::sqrt(a * b);
-    a = a_next;
     weight *= 2.0;
     sum += weight * c * c;
-    if (c < 1e-9 * a) break;
+    if (c < 1e-4 * a_next) {
+      const double c_next = c * c / (4.0 * a_next);
+      a = a_next - c_next;
+      sum += 2.0 * weight * c_next * c_next;
+      break;
+    }
+    b = std::sqrt(a * b);
+    a = a_next;
   }
   const double K = half_pi / a;
   return {K, K * sum};

@@ -1,8 +1,232 @@
-// Reference cases of this group (to be filled by its module's author).
+// Contact reference cases of chapter V: Hertz (V.5.2.3), Spence (V.5.2.4), the thesis'
+// flat punch (V.5.1) and a rigid punch on a half-plane (closed form).
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <sstream>
+
+#include "bemcontact/contact/contact_solver.hpp"
+#include "bemcontact/io/contact_file.hpp"
+#include "bemcontact/reference/flat_punch.hpp"
+#include "bemcontact/reference/hertz.hpp"
+#include "bemcontact/reference/spence.hpp"
 #include "bemcontact/validation/case_groups.hpp"
 
 namespace bemcontact::validation {
+namespace {
 
-std::vector<Case> contact_cases() { return {}; }
+io::ContactFile load(const Context& context, const std::string& file) {
+  return io::read_contact_file(context.examples_dir + "/" + file);
+}
+
+void tag(std::vector<Record>& records, std::size_t from, const std::string& case_name,
+         const std::vector<std::pair<std::string, std::string>>& params) {
+  for (std::size_t k = from; k < records.size(); ++k) {
+    records[k].case_name = case_name;
+    records[k].params = params;
+  }
+}
+
+std::string text(double value) {
+  std::ostringstream out;
+  out << value;
+  return out.str();
+}
+
+// Largest |difference| of p_n and p_t between two solutions, over the peak pressure.
+double algorithm_difference(const contact::ContactResult& a, const contact::ContactResult& b) {
+  double worst = 0.0;
+  for (std::size_t i = 0; i < a.pairs.size() && i < b.pairs.size(); ++i)
+    worst = std::max({worst, std::abs(a.pairs[i].p_n - b.pairs[i].p_n), std::abs(a.pairs[i].p_t - b.pairs[i].p_t)});
+  return worst / a.summary.peak_pressure;
+}
+
+// Nodal value at x1 = x by linear interpolation between the pairs around it.
+double pressure_at(const std::vector<contact::PairResult>& pairs, double x) {
+  const contact::PairResult* below = nullptr;
+  const contact::PairResult* above = nullptr;
+  for (const auto& p : pairs) {
+    if (p.coordinate <= x && (!below || p.coordinate > below->coordinate)) below = &p;
+    if (p.coordinate >= x && (!above || p.coordinate < above->coordinate)) above = &p;
+  }
+  if (!below) return -above->p_n;
+  if (!above || above == below) return -below->p_n;
+  const double f = (x - below->coordinate) / (above->coordinate - below->coordinate);
+  return -((1 - f) * below->p_n + f * above->p_n);
+}
+
+// Ball on a support (V.5.2.3): a, p0, delta within 2 % of Hertz (thesis: 1.2 %, 0.7 %,
+// 2.2 %), the profile within 3 % of p0 for 0 < r < 0.9a (the axis pair on its own, 5 %), Huber's axis stresses within 3 % of
+// p0, and the two algorithms against each other.
+std::vector<Record> run_hertz_sphere(const Context& context) {
+  std::vector<Record> records;
+  const auto file = load(context, "contact_hertz_sphere.toml");
+  const double R = file.parameters.at("R");
+  struct Load { double E_ball, P; };
+  for (const Load load : {Load{72000.0, 10.0}, Load{216000.0, 10.0}, Load{432000.0, 10.0}, Load{432000.0, 31.5}}) {
+    auto problem = file.problem;
+    problem.bodies[0].material.young_modulus = load.E_ball;
+    problem.force->force = -load.P;
+    const bool last = load.P == 31.5;
+    const auto hertz = reference::hertz_point_contact(load.P, R, problem.bodies[0].material,
+                                                      std::numeric_limits<double>::infinity(), problem.bodies[1].material);
+    const double a = hertz.contact_radius(), p0 = hertz.max_pressure();
+    if (last)
+      for (int k = 1; k <= 16; ++k) problem.interior_points[1].push_back(Vec2(0.02 * a, -k * a / 8.0));
+    const auto result = contact::solve_contact(problem, context.progress);
+    const std::size_t first = records.size();
+    records.push_back(compare_relative("a", result.summary.contact_radius, a, 0.02));
+    // p0 from the profile: p^2 = p0^2 (1 - r^2/a^2) is linear in r^2, fitted by least squares
+    // on the pairs 0 < r < 0.8a. The pair on the axis is reported on its own: collocation
+    // at r = 0 gives it a value a few per cent high that grows slowly with refinement.
+    double s0 = 0, s1 = 0, s2 = 0, t0 = 0, t1 = 0, axis = 0;
+    for (const auto& pair : result.pairs) {
+      const double r = pair.coordinate;
+      if (r <= 1e-12) axis = -pair.p_n;
+      if (r <= 1e-12 || r >= 0.8 * a || pair.status == contact::PairStatus::open) continue;
+      const double x = r * r, y = pair.p_n * pair.p_n;
+      s0 += 1, s1 += x, s2 += x * x, t0 += y, t1 += x * y;
+    }
+    const double intercept = (s2 * t0 - s1 * t1) / (s0 * s2 - s1 * s1);
+    records.push_back(compare_relative("p0", std::sqrt(intercept), p0, 0.02));
+    records.push_back(compare_relative("p0_axis_node", axis, p0, 0.05));
+    records.push_back(compare_relative("delta", -result.summary.approach, hertz.approach(), 0.02));
+    double profile = 0.0;
+    for (const auto& pair : result.pairs)
+      if (pair.coordinate > 1e-12 && pair.coordinate < 0.9 * a) profile = std::max(profile, std::abs(-pair.p_n - hertz.pressure(pair.coordinate)) / p0);
+    records.push_back(compare_scaled("pressure_profile_max_error", profile, 0.0, 1.0, 0.03));
+    records.push_back(require_at_least("newton_iterations", result.summary.newton_iterations, 1));
+    if (last) {
+      const double nu = problem.bodies[1].material.poisson_ratio;
+      double szz = 0.0, srr = 0.0, tau = 0.0, tau_max = 0.0, tau_depth = 0.0;
+      const auto& interior = result.interior[1];
+      for (std::size_t k = 0; k < interior.points.size(); ++k) {
+        const double depth = -interior.points[k].y();
+        const auto exact = hertz.axis_stress(nu, depth);
+        const auto& s = interior.stress[k];
+        szz = std::max(szz, std::abs(s.s22 - exact.s22) / p0);
+        srr = std::max(srr, std::abs(s.s11 - exact.s11) / p0);
+        const double t = 0.5 * std::abs(s.s11 - s.s22);
+        tau = std::max(tau, std::abs(t - 0.5 * std::abs(exact.s11 - exact.s22)) / p0);
+        if (t > tau_max) tau_max = t, tau_depth = depth;
+      }
+      const auto huber = reference::huber_max_shear_on_axis(nu);
+      records.push_back(compare_scaled("axis_szz_max_error", szz, 0.0, 1.0, 0.03));
+      records.push_back(compare_scaled("axis_srr_max_error", srr, 0.0, 1.0, 0.03));
+      records.push_back(compare_scaled("axis_tau_max_error", tau, 0.0, 1.0, 0.03));
+      records.push_back(compare_relative("tau_max_over_p0", tau_max / p0, huber.shear_over_p0, 0.03));
+      // Sampled every a/8: the depth of the maximum is known to +- a/16.
+      records.push_back(compare_scaled("tau_max_depth_over_a", tau_depth / a, huber.depth_over_a, 1.0, 0.0625));
+      auto thesis = problem;
+      thesis.solver.algorithm = contact::Algorithm::thesis;
+      thesis.interior_points = {};
+      const auto other = contact::solve_contact(thesis, context.progress);
+      // xi = 1e-8 on relative changes: the algorithms agree to ~1e-6 of the peak pressure.
+      records.push_back(compare_scaled("thesis_vs_newton_max_difference", algorithm_difference(result, other), 0.0, 1.0, 1e-4));
+      records.push_back(require_at_least("thesis_kalker_iterations", other.summary.kalker_iterations, 1));
+      records.push_back(require_at_least("thesis_gmres_cycles", other.summary.gmres_cycles, 1));
+    }
+    tag(records, first, "hertz-sphere", {{"E_ball", text(load.E_ball)}, {"P", text(load.P)}});
+  }
+  return records;
+}
+
+// Spence (V.5.2.4): c/a within 0.03 of (E.1) (uncoupled model) and of the coupled value
+// 0.513 (DESIGN.md section 6); friction lowers a and raises p0; c/a for 1, 4, 16, 64 steps.
+std::vector<Record> run_spence_sphere(const Context& context) {
+  std::vector<Record> records;
+  const auto file = load(context, "contact_spence_sphere.toml");
+  auto frictionless = file.problem;
+  frictionless.friction = 0.0;
+  frictionless.increments = 1;
+  const auto reference_result = contact::solve_contact(frictionless, context.progress);
+  const double gamma = reference::spence_gamma(file.problem.bodies[0].material, file.problem.bodies[1].material);
+  for (const double beta : {0.1, 0.6}) {
+    const std::size_t first = records.size();
+    const double spence = reference::spence_stick_ratio(beta, std::abs(gamma));
+    auto problem = file.problem;
+    problem.friction = beta;
+    const auto result = contact::solve_contact(problem, context.progress);
+    const double c_over_a = result.summary.stick_radius / result.summary.contact_radius;
+    const double coupled = beta == 0.1 ? 0.513 : 0.9997;  // DESIGN.md section 6, 640 steps
+    records.push_back(compare_scaled("c_over_a", c_over_a, coupled, 1.0, 0.03));
+    auto uncoupled = problem;
+    uncoupled.tangential_coupling = false;
+    const auto u = contact::solve_contact(uncoupled, context.progress);
+    records.push_back(compare_scaled("c_over_a_uncoupled_vs_E1", u.summary.stick_radius / u.summary.contact_radius,
+                                     spence, 1.0, 0.03));
+    records.push_back(require_at_least("a_decrease_with_friction",
+                                       reference_result.summary.contact_radius - result.summary.contact_radius, 0.0));
+    records.push_back(require_at_least("p0_increase_with_friction",
+                                       result.summary.centre_pressure - reference_result.summary.centre_pressure, 0.0));
+    for (const int steps : {1, 4, 64}) {
+      auto history = problem;
+      history.increments = steps;
+      const auto h = contact::solve_contact(history, context.progress);
+      const double ratio = h.summary.stick_radius / h.summary.contact_radius;
+      // The history matters only until the steps resolve the growth of the stick zone:
+      // 64 steps must agree with 16 to 0.01; 1 and 4 steps are reported against 16.
+      records.push_back(steps == 64 ? compare_scaled("c_over_a_64_steps", ratio, c_over_a, 1.0, 0.01)
+                                    : compare_scaled("c_over_a_" + std::to_string(steps) + "_steps", ratio, c_over_a, 1.0, 1.0));
+    }
+    if (beta == 0.1) {
+      auto thesis = problem;
+      thesis.solver.algorithm = contact::Algorithm::thesis;
+      const auto other = contact::solve_contact(thesis, context.progress);
+      records.push_back(compare_scaled("thesis_vs_newton_max_difference", algorithm_difference(result, other), 0.0, 1.0, 1e-4));
+      records.push_back(compare_scaled("thesis_c_over_a", other.summary.stick_radius / other.summary.contact_radius,
+                                       c_over_a, 1.0, 1e-3));
+    }
+    tag(records, first, "spence-sphere", {{"beta", text(beta)}, {"increments", text(problem.increments)},
+                                          {"spence_E1", text(spence)}});
+  }
+  return records;
+}
+
+// Thesis' flat punch (V.5.1), reconstructed geometry: p_n(0), p_n(4.68), c next to the
+// thesis' numbers. The geometry is a reconstruction, so these are reported with a loose
+// scaled tolerance that documents the gap rather than hides it (see the example's header).
+std::vector<Record> run_flat_punch(const Context& context) {
+  std::vector<Record> records;
+  const auto file = load(context, "contact_flat_punch.toml");
+  struct Thesis { double beta, p0, pI, c; };
+  for (const Thesis t : {Thesis{0.05, 1.39, 6.51, 2.90}, Thesis{0.10, 1.43, 6.37, 3.87}}) {
+    const std::size_t first = records.size();
+    auto problem = file.problem;
+    problem.friction = t.beta;
+    const auto result = contact::solve_contact(problem, context.progress);
+    records.push_back(compare_scaled("p_n_at_0_vs_thesis", pressure_at(result.pairs, 0.0), t.p0, t.p0, 0.25));
+    records.push_back(compare_scaled("p_n_at_4.68_vs_thesis", pressure_at(result.pairs, 4.68), t.pI, t.pI, 0.5));
+    records.push_back(compare_scaled("c_vs_thesis", result.summary.stick_radius, t.c, t.c, 0.6));
+    auto thesis = problem;
+    thesis.solver.algorithm = contact::Algorithm::thesis;
+    const auto other = contact::solve_contact(thesis, context.progress);
+    records.push_back(compare_scaled("thesis_vs_newton_max_difference", algorithm_difference(result, other), 0.0, 1.0, 1e-4));
+    tag(records, first, "flat-punch", {{"beta", text(t.beta)}});
+  }
+  // Frictionless stiff punch on a large support: P / (pi sqrt(a^2 - x^2)) within 3 % for |x| < 0.8a.
+  const auto half_plane = load(context, "contact_punch_halfplane.toml");
+  const double a = half_plane.parameters.at("a"), P = half_plane.parameters.at("P");
+  const auto result = contact::solve_contact(half_plane.problem, context.progress);
+  const reference::FlatPunchPlane exact{P, a, 1.0};
+  double worst = 0.0;
+  for (const auto& pair : result.pairs)
+    if (std::abs(pair.coordinate) < 0.8 * a)
+      worst = std::max(worst, std::abs(-pair.p_n - exact.pressure(pair.coordinate)) / exact.pressure(pair.coordinate));
+  const std::size_t first = records.size();
+  records.push_back(compare_scaled("pressure_max_relative_error", worst, 0.0, 1.0, 0.03));
+  tag(records, first, "flat-punch", {{"support", "half-plane"}, {"beta", "0"}});
+  return records;
+}
+
+}  // namespace
+
+std::vector<Case> contact_cases() {
+  return {
+      {"hertz-sphere", "V.5.2.3", "ball on a flat support, frictionless, against Hertz and Huber", run_hertz_sphere},
+      {"spence-sphere", "V.5.2.4", "ball on a flat support with friction, stick zone against Spence", run_spence_sphere},
+      {"flat-punch", "V.5.1", "stiff flat punch: thesis' bilateral case and a rigid punch on a half-plane", run_flat_punch},
+  };
+}
 
 }  // namespace bemcontact::validation

@@ -53,7 +53,8 @@ struct SolverOptions {
   double tolerance = 1e-10;  // Newton: relative residual of the complementarity functions
   int max_iterations = 100;  // Newton iterations per load step; Kalker loops (Alg V.3)
   // Thesis algorithm
-  int gmres_restart = 2;       // m of GMRES(m) (Alg V.1); the thesis used 1, or 2-3 when 1 diverged
+  int gmres_restart = 3;       // m of GMRES(m) (Alg V.1); the thesis used 1, or 2-3 when 1 diverged
+                               // (here 1 and 2 stall in the Spence case)
   double xi = 1e-8;            // relative change tests of Alg V.1 and (V.19) (thesis: 1e-4)
   int max_gmres_cycles = 20000;
   int max_threshold_iterations = 200;  // Alg V.2

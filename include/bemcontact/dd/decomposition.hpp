@@ -43,6 +43,11 @@ struct DecompositionOptions {
   // continuity (gamma_d); the others carry traction continuity (gamma_c). Two fix the rigid
   // motion of a floating subdomain; 3 converged fastest on the strips of IV.5.
   int displacement_nodes = 3;
+  // false: K applied matrix-free, one subdomain solve per application (Alg IV.1).
+  // true: each subdomain's interface map (S, S^-1 or mixed) is formed once by a block solve
+  // with unit data (one BLAS-3 solve), then K costs small dense products: worth it when
+  // GMRES needs more iterations than a subdomain has interface unknowns.
+  bool explicit_operators = false;
 };
 
 struct DecompositionProblem {

@@ -48,12 +48,17 @@ class InterfaceOperator : public operators::LinearOperator {
   std::size_t subdomain_count() const { return bodies_.size(); }
   // Number of subdomain solves done by apply/residual so far (for reports).
   long solves() const { return solves_; }
-  // Bytes held by the factored subdomains (LU factors and right-hand-side columns).
+  // Bytes held by the factored subdomains (LU factors, right-hand-side columns and, with
+  // explicit_operators, the interface maps).
   std::size_t memory_bytes() const;
 
  private:
   const Connectivity& connectivity_;
   std::vector<bem::FactoredBody> bodies_;
+  // explicit_operators: per subdomain, complementary field = maps_[s] * data + responses_[s]
+  // (the response to the subdomain's own data).
+  std::vector<Matrix> maps_;
+  std::vector<Vector> responses_;
   double scale_ = 1.0;
   mutable long solves_ = 0;
 };

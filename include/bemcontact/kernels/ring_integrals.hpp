@@ -13,9 +13,9 @@
 // for p = 0..3 (rho^-1 ... rho^-7) and j = 0..p+1 (the kernels' numerators, written as
 // polynomials in u, never have a higher degree).
 //
-// For m >= 0.3 (0.45 when p = 3 is asked) the H come from K(m), E(m) by exact recurrences;
+// For m >= 0.2 (0.45 when p = 3 is asked) the H come from K(m), E(m) by exact recurrences;
 // below, where those recurrences divide by powers of m, from the trapezoidal rule in psi
-// (spectrally accurate: the integrand is periodic and analytic). Both to ~3e-14 relative.
+// (spectrally accurate: the integrand is periodic and analytic). Both to ~1e-13 relative.
 //
 // As m -> 1 (field point close to the source) H(p, j) = H_reg + H_log ln(1/m1), with H_log
 // analytic in m1 and H_reg analytic apart from a pole m1^{j-p} when j < p (Abramowitz &

@@ -86,3 +86,25 @@ TEST(DdInterface, MatrixFreeOperatorIsLinearAndMatchesItsDenseForm) {
 
 }  // namespace
 }  // namespace bemcontact::dd
+
+namespace bemcontact::dd {
+namespace {
+
+TEST(DdInterface, ExplicitInterfaceMapsGiveTheMatrixFreeOperator) {
+  auto problem = plate_strips({3, 6});
+  const auto meshes = mesh_subdomains(problem);
+  const auto c = build_connectivity(problem, meshes);
+  const InterfaceOperator free_op(problem, meshes, c);
+  problem.options.explicit_operators = true;
+  const InterfaceOperator explicit_op(problem, meshes, c);
+  const Vector x = Vector::LinSpaced(free_op.rows(), -2.0, 1.0);
+  Vector a, b;
+  free_op.apply(x, a);
+  explicit_op.apply(x, b);
+  EXPECT_LT((a - b).norm(), 1e-11 * a.norm());
+  EXPECT_LT((free_op.right_hand_side() - explicit_op.right_hand_side()).norm(),
+            1e-11 * free_op.right_hand_side().norm());
+}
+
+}  // namespace
+}  // namespace bemcontact::dd

@@ -65,7 +65,7 @@ TEST(KernelsRingIntegrals, MatchDefinitionOverWholeRange) {
   std::vector<double> m1_values;
   for (double m = 0.0; m < 0.95; m += 0.025) m1_values.push_back(1.0 - m);
   for (double m1 = 0.05; m1 > 1e-13; m1 /= 3.0) m1_values.push_back(m1);
-  for (double m : {0.29999, 0.30001, 0.44999, 0.45001, 1e-3, 1e-6}) m1_values.push_back(1.0 - m);
+  for (double m : {0.19999, 0.20001, 0.44999, 0.45001, 1e-3, 1e-6}) m1_values.push_back(1.0 - m);
   double worst = 0.0;
   for (double m1 : m1_values) {
     const double m = 1.0 - m1;  // both exact doubles here, consistent with each other
@@ -77,7 +77,9 @@ TEST(KernelsRingIntegrals, MatchDefinitionOverWholeRange) {
           const Real ref = reference_h(m, m1, p, j);
           const double error = static_cast<double>(std::abs((h.h[p][j] - ref) / ref));
           worst = std::max(worst, error);
-          EXPECT_LT(error, 3e-14) << "m=" << m << " m1=" << m1 << " p=" << p << " j=" << j;
+          // The K/E recurrences divide by m once per level of j: ~m^-(p+1) ulp, 8e-14 at the
+          // switch (m = 0.2 for p <= 2, 0.45 for p = 3); the trapezoid branch stays near 1e-15.
+          EXPECT_LT(error, 1e-13) << "m=" << m << " m1=" << m1 << " p=" << p << " j=" << j;
         }
     }
   }

@@ -1,0 +1,101 @@
+// Bad contact problem files -> clear messages naming the file, line, key, boundary or body.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "bemcontact/contact/contact_solver.hpp"
+#include "bemcontact/core/error.hpp"
+#include "bemcontact/io/contact_file.hpp"
+
+namespace bemcontact {
+namespace {
+
+std::string example_text() {
+  std::ifstream in(std::string(BEMCONTACT_EXAMPLES_DIR) + "/contact_hertz_sphere.toml");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+std::string replaced(std::string text, const std::string& from, const std::string& to) {
+  const auto at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  if (at != std::string::npos) text.replace(at, from.size(), to);
+  return text;
+}
+
+std::string input_error(const std::string& text) {
+  try {
+    io::parse_contact_problem(text, "ball.toml");
+  } catch (const InputError& error) {
+    return error.what();
+  }
+  return "no error";
+}
+
+bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+}  // namespace
+
+TEST(ContactErrors, ExampleIsAContactFile) {
+  EXPECT_TRUE(io::is_contact_text(example_text()));
+  EXPECT_FALSE(io::is_contact_text("analysis = \"plane_strain\"\n"));
+  EXPECT_NO_THROW(io::parse_contact_problem(example_text(), "ball.toml"));
+}
+
+TEST(ContactErrors, BoundariesThatDoNotFaceEachOther) {
+  const auto message = input_error(replaced(example_text(), "D = [\"b\", 0.0]", "D = [\"2*b\", 0.0]"));
+  EXPECT_TRUE(contains(message, "ball.toml:")) << message;
+  EXPECT_TRUE(contains(message, "do not face each other")) << message;
+  EXPECT_TRUE(contains(message, "boundary 'contact' of body 'support'")) << message;
+}
+
+TEST(ContactErrors, InitiallyOverlappingBodies) {
+  auto text = replaced(example_text(), "S = [0.0, 0.0]", "S = [0.0, -0.001]");
+  text = replaced(text, "Q = [\"rc\", \"R - R*cos(theta)\"]", "Q = [\"rc\", \"R - R*cos(theta) - 0.001\"]");
+  text = replaced(text, "E = [\"R\", \"R\"]", "E = [\"R\", \"R - 0.001\"]");
+  text = replaced(text, "N = [0.0, \"R\"]", "N = [0.0, \"R - 0.001\"]");
+  text = replaced(text, "O = [0.0, \"R\"]", "O = [0.0, \"R - 0.001\"]");
+  const auto message = input_error(text);
+  EXPECT_TRUE(contains(message, "overlap")) << message;
+}
+
+TEST(ContactErrors, UnknownContactBoundaryListsTheBoundaries) {
+  const auto message = input_error(replaced(example_text(), "boundary2 = \"contact\"", "boundary2 = \"contakt\""));
+  EXPECT_TRUE(contains(message, "contact.boundary2")) << message;
+  EXPECT_TRUE(contains(message, "'base'")) << message;
+}
+
+TEST(ContactErrors, ContactBoundaryWithConditions) {
+  const auto message = input_error(replaced(example_text(), "name = \"contact\"\nfrom = \"D\"\nto = \"F\"\nelements = 30",
+                                            "name = \"contact\"\nfrom = \"D\"\nto = \"F\"\nelements = 30\nu2 = 0.0"));
+  EXPECT_TRUE(contains(message, "carries conditions")) << message;
+}
+
+TEST(ContactErrors, NegativeFrictionAndBadIncrements) {
+  EXPECT_TRUE(contains(input_error(replaced(example_text(), "friction = 0.0", "friction = -0.1")), "contact.friction"));
+  EXPECT_TRUE(contains(input_error(replaced(example_text(), "increments = 1", "increments = 0")), "contact.increments"));
+}
+
+TEST(ContactErrors, ForceOnAnUnknownBody) {
+  const auto message = input_error(replaced(example_text(), "body = \"ball\"", "body = \"bal\""));
+  EXPECT_TRUE(contains(message, "contact.load.body")) << message;
+}
+
+TEST(ContactErrors, FreeBodyNamesTheBody) {
+  // Without the platen the ball is held by nothing but the contact zone.
+  auto file = io::parse_contact_problem(example_text(), "ball.toml");
+  file.problem.force.reset();
+  file.problem.bodies[0].conditions[2] = {};  // the top: free
+  try {
+    contact::solve_contact(file.problem);
+    FAIL() << "a free body was solved";
+  } catch (const SolverError& error) {
+    const std::string message = error.what();
+    EXPECT_TRUE(contains(message, "body 'ball'")) << message;
+    EXPECT_TRUE(contains(message, "rigid body")) << message;
+  }
+}
+
+}  // namespace bemcontact

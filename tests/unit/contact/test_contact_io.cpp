@@ -1,0 +1,61 @@
+// The contact problem file and the writers: the examples read as documented, and the
+// outputs hold one row per pair and the summary quantities.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <map>
+
+#include <nlohmann/json.hpp>
+
+#include "bemcontact/contact/contact_solver.hpp"
+#include "bemcontact/io/contact_file.hpp"
+#include "bemcontact/io/contact_writer.hpp"
+
+namespace bemcontact {
+
+TEST(ContactIo, ExamplesReadWithTheirSettings) {
+  const std::string dir = BEMCONTACT_EXAMPLES_DIR;
+  const auto hertz = io::read_contact_file(dir + "/contact_hertz_sphere.toml");
+  EXPECT_EQ(hertz.problem.analysis, AnalysisType::axisymmetric);
+  EXPECT_EQ(hertz.problem.kind, contact::ContactKind::unilateral);
+  EXPECT_EQ(hertz.problem.pair_normal, contact::PairNormal::body2);
+  ASSERT_TRUE(hertz.problem.force.has_value());
+  EXPECT_DOUBLE_EQ(hertz.problem.force->force, -31.5);
+  EXPECT_EQ(hertz.problem.force->component, 1);
+  EXPECT_EQ(hertz.problem.bodies[0].name, "ball");
+  EXPECT_DOUBLE_EQ(hertz.problem.bodies[0].material.young_modulus, 432000.0);
+  const auto spence = io::read_contact_file(dir + "/contact_spence_sphere.toml");
+  EXPECT_DOUBLE_EQ(spence.problem.friction, 0.1);
+  EXPECT_EQ(spence.problem.increments, 16);
+  const auto punch = io::read_contact_file(dir + "/contact_flat_punch.toml");
+  EXPECT_EQ(punch.problem.kind, contact::ContactKind::bilateral);
+  EXPECT_EQ(punch.problem.analysis, AnalysisType::plane_stress);
+  EXPECT_FALSE(punch.problem.force.has_value());
+  EXPECT_TRUE(io::is_contact_file(dir + "/contact_punch_halfplane.toml"));
+  EXPECT_FALSE(io::is_contact_file(dir + "/plate_tension.toml"));
+}
+
+TEST(ContactIo, WritersHoldEveryPairAndTheSummary) {
+  auto file = io::read_contact_file(std::string(BEMCONTACT_EXAMPLES_DIR) + "/contact_punch_halfplane.toml");
+  file.problem.record_steps = true;
+  file.problem.increments = 2;
+  const auto result = contact::solve_contact(file.problem);
+  const auto files = io::contact_output_files(file.problem, result, false);
+  std::map<std::string, std::string> by_name(files.begin(), files.end());
+  ASSERT_TRUE(by_name.count("contact.csv"));
+  ASSERT_TRUE(by_name.count("contact_step2.csv"));
+  ASSERT_TRUE(by_name.count("punch_boundary.csv"));
+  ASSERT_TRUE(by_name.count("support_boundary.csv"));
+  const std::string& csv = by_name["contact.csv"];
+  EXPECT_EQ(csv.substr(0, csv.find('\n')), "pair,x,y,coordinate,nx,ny,gap,p_n,p_t,slip_ratio,jump_n,jump_t,status");
+  EXPECT_EQ(static_cast<std::size_t>(std::count(csv.begin(), csv.end(), '\n')), result.pairs.size() + 1);
+  const auto summary = nlohmann::json::parse(by_name["summary.json"]);
+  const auto& c = summary.at("contact");
+  EXPECT_DOUBLE_EQ(c.at("a").get<double>(), result.summary.contact_radius);
+  EXPECT_DOUBLE_EQ(c.at("approach").get<double>(), result.summary.approach);
+  EXPECT_EQ(c.at("steps").size(), 2u);
+  EXPECT_EQ(c.at("algorithm").get<std::string>(), "newton");
+  EXPECT_TRUE(c.at("timings").contains("phases"));
+}
+
+}  // namespace bemcontact

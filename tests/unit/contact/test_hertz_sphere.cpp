@@ -1,0 +1,54 @@
+// Axisymmetric ball on a support at a coarse resolution (half the example's contact
+// elements): Hertz within 3 %, both algorithms the same answer, friction and history.
+#include <gtest/gtest.h>
+
+#include <limits>
+
+#include "bemcontact/contact/contact_solver.hpp"
+#include "bemcontact/io/contact_file.hpp"
+#include "bemcontact/reference/hertz.hpp"
+
+namespace bemcontact::contact {
+namespace {
+
+ContactProblem coarse_ball() {
+  auto file = io::read_contact_file(std::string(BEMCONTACT_EXAMPLES_DIR) + "/contact_hertz_sphere.toml");
+  for (int b = 0; b < 2; ++b) file.problem.bodies[b].pieces[file.problem.contact_piece[b]].elements = 15;
+  return file.problem;
+}
+
+}  // namespace
+
+TEST(ContactHertzSphere, CoarseMeshMatchesHertz) {
+  const auto problem = coarse_ball();
+  const auto result = solve_contact(problem);
+  const auto hertz = reference::hertz_point_contact(31.5, 1.0, problem.bodies[0].material,
+                                                    std::numeric_limits<double>::infinity(), problem.bodies[1].material);
+  // Contact elements of a/10: a and delta within 3 % (2 % at the example's resolution).
+  EXPECT_NEAR(result.summary.contact_radius, hertz.contact_radius(), 0.03 * hertz.contact_radius());
+  EXPECT_NEAR(-result.summary.approach, hertz.approach(), 0.03 * hertz.approach());
+  EXPECT_NEAR(result.summary.normal_force, 31.5, 0.01 * 31.5);
+}
+
+TEST(ContactHertzSphere, AlgorithmsAgreeWithFrictionAndIncrements) {
+  auto problem = coarse_ball();
+  problem.friction = 0.1;
+  problem.increments = 4;
+  const auto newton = solve_contact(problem);
+  problem.solver.algorithm = Algorithm::thesis;
+  const auto thesis = solve_contact(problem);
+  double worst = 0.0;
+  for (std::size_t i = 0; i < newton.pairs.size(); ++i)
+    worst = std::max({worst, std::abs(newton.pairs[i].p_n - thesis.pairs[i].p_n),
+                      std::abs(newton.pairs[i].p_t - thesis.pairs[i].p_t)});
+  EXPECT_LT(worst / newton.summary.peak_pressure, 1e-4);
+  EXPECT_NEAR(newton.summary.stick_radius, thesis.summary.stick_radius, 1e-3 * newton.summary.contact_radius);
+  // A stick zone exists, and one step (no history) gives a smaller one than four.
+  EXPECT_GT(newton.summary.stick_radius, 0.3 * newton.summary.contact_radius);
+  problem.solver.algorithm = Algorithm::newton;
+  problem.increments = 1;
+  const auto one_step = solve_contact(problem);
+  EXPECT_LT(one_step.summary.stick_radius, newton.summary.stick_radius);
+}
+
+}  // namespace bemcontact::contact
