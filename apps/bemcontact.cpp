@@ -11,6 +11,9 @@
 
 #include "bemcontact/bem/analysis.hpp"
 #include "bemcontact/core/error.hpp"
+#include "bemcontact/dd/solver.hpp"
+#include "bemcontact/io/decomposition_file.hpp"
+#include "bemcontact/io/decomposition_writer.hpp"
 #include "bemcontact/io/json_writer.hpp"
 #include "bemcontact/io/output_directory.hpp"
 #include "bemcontact/io/problem_file.hpp"
@@ -57,7 +60,62 @@ json mesh_json(const geometry::BoundaryMesh& mesh) {
           {"contours", mesh.contours.size()}, {"split_corners", split}};
 }
 
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+void print_written(const std::string& output_dir, const io::OutputDirectory& out) {
+  std::printf("  wrote %s/{", output_dir.c_str());
+  bool first = true;
+  for (const auto& name : out.names()) {
+    std::printf("%s%s", first ? "" : ",", name.c_str());
+    first = false;
+  }
+  std::printf("}\n");
+}
+
+// Several subdomains glued along interfaces (chapter IV).
+int command_run_decomposition(const std::string& input, const std::string& output_dir, bool quiet) {
+  const auto started = std::chrono::steady_clock::now();
+  const auto file = io::read_decomposition_file(input);
+  const auto result = dd::solve_decomposition(file.problem, make_progress(quiet));
+  json summary = {{"bemcontact_version", BEMCONTACT_VERSION},
+                  {"input", input},
+                  {"title", file.problem.title},
+                  {"decomposition", io::decomposition_summary_json(file.problem, result)}};
+  io::OutputDirectory out;
+  if (result.converged()) {
+    for (const auto& [name, content] : io::decomposition_files(result, file.problem.title, file.output.vtk))
+      out.add(name, content);
+  } else {
+    // No answer from an unconverged iteration: only the diagnostics.
+    out.add("gmres.csv", io::gmres_history_csv(result.gmres));
+  }
+  summary["timings_seconds"] = {{"total", seconds_since(started)}};
+  summary["outputs"] = out.names();
+  out.add("summary.json", io::write_json_string(summary));
+  out.commit(output_dir);
+  if (!result.converged()) {
+    std::fprintf(stderr, "bemcontact: solver error: the interface problem did not converge: %s\n",
+                 result.gmres.message.c_str());
+    return solver_failed;
+  }
+  if (!quiet) {
+    std::printf("%s\n  %zu subdomains, method %s, %ld interface unknowns\n", file.problem.title.c_str(),
+                result.subdomains.size(), dd::to_string(result.method), static_cast<long>(result.interface_unknowns));
+    std::printf("  GMRES(%d): %d iterations, relative residual %.3g\n", file.problem.options.restart,
+                result.gmres.iterations, result.gmres.relative_residual);
+    double jump_u = 0.0, jump_p = 0.0;
+    for (const auto& j : result.jumps) jump_u = std::max(jump_u, j.jump_u), jump_p = std::max(jump_p, j.jump_p);
+    std::printf("  max interface jumps: [u] = %.3g, [p] = %.3g\n", jump_u, jump_p);
+    std::printf("  time %.3f s\n", seconds_since(started));
+    print_written(output_dir, out);
+  }
+  return ok;
+}
+
 int command_run(const std::string& input, const std::string& output_dir, bool quiet) {
+  if (io::is_decomposition_file(input)) return command_run_decomposition(input, output_dir, quiet);
   const auto started = std::chrono::steady_clock::now();
   const auto file = io::read_problem_file(input);
   const auto read_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();

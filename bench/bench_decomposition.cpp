@@ -12,6 +12,8 @@
 // decomposition; the one dense system plus the per-strip H and G for the monolithic solve).
 #include <benchmark/benchmark.h>
 
+#include <cmath>
+
 #include "bemcontact/dd/monolithic.hpp"
 #include "bemcontact/dd/plate_strips.hpp"
 #include "bemcontact/dd/solver.hpp"

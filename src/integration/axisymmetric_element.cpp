@@ -173,7 +173,6 @@ void integrate_singular(Accumulator& acc, double f0) {
   }
 }
 
-
 }  // namespace
 
 ElementInfluence integrate_axisymmetric_element(const AxisymmetricKelvin& kelvin, const Vec2& source,

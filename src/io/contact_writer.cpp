@@ -3,7 +3,12 @@
 #include <cctype>
 #include <charconv>
 
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
 #include "bemcontact/io/json_writer.hpp"
+#include "bemcontact/reference/hertz.hpp"
 #include "bemcontact/io/results_writer.hpp"
 
 namespace bemcontact::io {
@@ -90,6 +95,42 @@ nlohmann::json contact_summary_json(const contact::ContactProblem& problem, cons
   for (const auto& s : result.steps) steps.push_back(summary_json(s));
   j["steps"] = steps;
   return j;
+}
+
+std::string contact_report_text(const contact::ContactProblem& problem, const contact::ContactResult& result) {
+  const auto& s = result.summary;
+  char line[256];
+  std::string out;
+  std::snprintf(line, sizeof line, "contact: %zu pairs, %d in contact, a = %.6g, c = %.6g (c/a = %.4f)\n",
+                result.pairs.size(), s.pairs_in_contact, s.contact_radius, s.stick_radius,
+                s.contact_radius > 0 ? s.stick_radius / s.contact_radius : 0.0);
+  out += line;
+  std::snprintf(line, sizeof line, "  peak pressure %.6g, centre pressure %.6g, normal force %.6g, approach %.6g\n",
+                s.peak_pressure, s.centre_pressure, s.normal_force, s.approach);
+  out += line;
+  std::snprintf(line, sizeof line, "  %s algorithm, %d load steps: newton %d, kalker %d, threshold %d, gmres cycles %d\n",
+                contact::to_string(problem.solver.algorithm), problem.increments, s.newton_iterations,
+                s.kalker_iterations, s.threshold_iterations, s.gmres_cycles);
+  out += line;
+  const auto& ball = problem.bodies[0].pieces[problem.contact_piece[0]];
+  const auto& flat = problem.bodies[1].pieces[problem.contact_piece[1]];
+  if (problem.analysis == AnalysisType::axisymmetric && problem.force && ball.shape == geometry::PieceShape::arc &&
+      flat.shape == geometry::PieceShape::line) {
+    const double R = (ball.start - ball.center).norm();
+    const auto hertz = reference::hertz_point_contact(std::abs(problem.force->force), R, problem.bodies[0].material,
+                                                      std::numeric_limits<double>::infinity(),
+                                                      problem.bodies[1].material);
+    std::snprintf(line, sizeof line, "  Hertz (R = %.6g): a = %.6g (computed %.6g, %+.2f %%)\n", R,
+                  hertz.contact_radius(), s.contact_radius, 100.0 * (s.contact_radius / hertz.contact_radius() - 1.0));
+    out += line;
+    std::snprintf(line, sizeof line, "                   p0 = %.6g (centre %.6g, %+.2f %%)\n", hertz.max_pressure(),
+                  s.centre_pressure, 100.0 * (s.centre_pressure / hertz.max_pressure() - 1.0));
+    out += line;
+    std::snprintf(line, sizeof line, "                   delta = %.6g (computed %.6g, %+.2f %%)\n", hertz.approach(),
+                  std::abs(s.approach), 100.0 * (std::abs(s.approach) / hertz.approach() - 1.0));
+    out += line;
+  }
+  return out;
 }
 
 std::vector<std::pair<std::string, std::string>> contact_output_files(const contact::ContactProblem& problem,

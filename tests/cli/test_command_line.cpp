@@ -157,3 +157,14 @@ TEST(CommandLine, ValidateWritesJsonRecordsWithTheDocumentedKeys) {
   EXPECT_EQ(records[0]["params"]["interpolation"], "linear");
   fs::remove_all(dir);
 }
+
+TEST(CommandLine, RunSolvesADecompositionFile) {
+  const auto dir = scratch("dd");
+  const auto out = run("run " + example("dd_strips_2.toml") + " -o " + dir.string() + " -q");
+  ASSERT_EQ(out.exit_code, 0) << out.output;
+  for (const char* name : {"interface.csv", "gmres.csv", "summary.json"}) EXPECT_TRUE(fs::exists(dir / name)) << name;
+  std::ifstream in(dir / "summary.json");
+  const auto summary = nlohmann::json::parse(in);
+  EXPECT_EQ(summary["decomposition"]["gmres"]["status"], "converged");
+  fs::remove_all(dir);
+}

@@ -31,6 +31,11 @@ std::string contact_steps_csv(const contact::ContactResult& result);
 // approach delta, iterations per loop, residual, time per phase, and c/a per step.
 nlohmann::json contact_summary_json(const contact::ContactProblem& problem, const contact::ContactResult& result);
 
+// A short text for the terminal: a, c, peak pressure, normal force, approach, iterations,
+// and, for a force-loaded axisymmetric ball (an arc zone on body 1 facing a straight zone
+// on body 2), the Hertz values a, p0, delta next to the computed ones (Annex D).
+std::string contact_report_text(const contact::ContactProblem& problem, const contact::ContactResult& result);
+
 // Every file of a contact run as (file name, content), summary.json included.
 std::vector<std::pair<std::string, std::string>> contact_output_files(const contact::ContactProblem& problem,
                                                                       const contact::ContactResult& result,

@@ -8,18 +8,19 @@
 // the source or field radius occurs, so sources on the axis (R = 0), field points on the
 // axis (r = 0) and points near the axis need no special branch; the row of a radial source
 // on the axis is exactly zero (the ring of radial forces shrinks to a self-equilibrated
-// point). The printed forms of Annex B are not used (conversion errors).
+// point). The printed general forms of Annex B are not used (conversion errors); its on-axis
+// forms agree with these kernels (unit test).
 //
 // Conventions (source x = (R, Z), field y = (r, z), components (r, z) = (0, 1), n = outward
 // unit normal at y in the meridian plane; in 3D x = (R, 0, Z), y(theta) = (r cos theta,
 // r sin theta, z), e_r(theta) = (cos theta, sin theta, 0), n(theta) = n_r e_r(theta) + n_z e_z,
-// d = y - x, rho = |d|):
+// d = y - x, rho = |d|, e = d / rho):
 //   U(k, i) = int_0^{2pi} U3_kj(x, y(theta)) e_i(theta)_j dtheta
 //   T(k, i) = int_0^{2pi} T3_kj(x, y(theta), n(theta)) e_i(theta)_j dtheta
 // with e_k at x taken at theta = 0 (e_r(0) = X axis), and
-//   U3_kj = [(3 - 4nu) delta_kj + d_k d_j / rho^2] / (16 pi mu (1 - nu) rho),
-//   T3_kj = -[((1 - 2nu) delta_kj + 3 d_k d_j / rho^2) (d.n)/rho
-//             - (1 - 2nu)(d_k n_j - d_j n_k)] / (8 pi (1 - nu) rho^2).
+//   U3_kj = [(3 - 4nu) delta_kj + e_k e_j] / (16 pi mu (1 - nu) rho),
+//   T3_kj = -[((1 - 2nu) delta_kj + 3 e_k e_j) (e.n) - (1 - 2nu)(e_k n_j - e_j n_k)]
+//           / (8 pi (1 - nu) rho^2).
 // So U(k, i) is the displacement k at x caused by a ring load at y of unit intensity per
 // radian in direction i, and the boundary integral equation over the meridian curve reads
 //   c u(x) + int T u r dGamma = int U p r dGamma.

@@ -6,6 +6,7 @@
 
 #include "bemcontact/contact/contact_solver.hpp"
 #include "bemcontact/io/contact_file.hpp"
+#include "bemcontact/io/contact_writer.hpp"
 #include "bemcontact/reference/hertz.hpp"
 
 namespace bemcontact::contact {
@@ -28,6 +29,9 @@ TEST(ContactHertzSphere, CoarseMeshMatchesHertz) {
   EXPECT_NEAR(result.summary.contact_radius, hertz.contact_radius(), 0.03 * hertz.contact_radius());
   EXPECT_NEAR(-result.summary.approach, hertz.approach(), 0.03 * hertz.approach());
   EXPECT_NEAR(result.summary.normal_force, 31.5, 0.01 * 31.5);
+  const std::string text = io::contact_report_text(problem, result);
+  EXPECT_NE(text.find("Hertz (R = 1)"), std::string::npos) << text;
+  EXPECT_NE(text.find("delta = 0.00490583"), std::string::npos) << text;
 }
 
 TEST(ContactHertzSphere, AlgorithmsAgreeWithFrictionAndIncrements) {
