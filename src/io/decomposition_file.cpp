@@ -155,15 +155,7 @@ DecompositionFile read_decomposition_file(const std::filesystem::path& path) {
 }
 
 DecompositionFile parse_decomposition(std::string_view text, const std::string& file_name) {
-  toml::table root_table;
-  try {
-    root_table = toml::parse(text, std::string_view(file_name));
-  } catch (const toml::parse_error& error) {
-    const auto& begin = error.source().begin;
-    throw InputError(SourceLocation{file_name, static_cast<int>(begin.line), ""},
-                     "TOML syntax error at column " + std::to_string(begin.column) + ": " +
-                         std::string(error.description()));
-  }
+  const toml::table root_table = parse_toml_text(text, file_name);
   DecompositionFile result;
   FileContext context;
   context.file = file_name;

@@ -208,4 +208,15 @@ const toml::table* TableReader::optional_table(std::string_view key, std::string
   fail(key, "must be a table (" + std::string(header) + "), found " + describe_node(*node));
 }
 
+toml::table parse_toml_text(std::string_view text, const std::string& file_name) {
+  try {
+    return toml::parse(text, std::string_view(file_name));
+  } catch (const toml::parse_error& error) {
+    const auto& begin = error.source().begin;
+    throw InputError(SourceLocation{file_name, static_cast<int>(begin.line), ""},
+                     "TOML syntax error at column " + std::to_string(begin.column) + ": " +
+                         std::string(error.description()));
+  }
+}
+
 }  // namespace bemcontact::io

@@ -42,6 +42,9 @@ Vec2 read_point(const toml::node& node, const SourceLocation& where, const FileC
 
 // One table of the file with its dotted path, e.g. path "boundary[2]" for the second
 // [[boundary]] table, "" for the root.
+// Parses TOML text; a syntax error becomes an InputError with the file, line and column.
+toml::table parse_toml_text(std::string_view text, const std::string& file_name);
+
 class TableReader {
  public:
   TableReader(const toml::table& table, std::string path, const FileContext& context,
