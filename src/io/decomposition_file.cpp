@@ -155,7 +155,7 @@ DecompositionFile read_decomposition_file(const std::filesystem::path& path) {
 }
 
 DecompositionFile parse_decomposition(std::string_view text, const std::string& file_name) {
-  const toml::table root_table = parse_toml_text(text, file_name);
+  toml::table root_table = parse_toml_text(text, file_name);
   DecompositionFile result;
   FileContext context;
   context.file = file_name;
