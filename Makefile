@@ -1,7 +1,7 @@
 # bemcontact: the two commands of the README, and their parts.
 BUILD_DIR ?= build
 JOBS ?= 2
-DEMO ?= examples/plate_hole.toml
+DEMO ?= examples/contact_hertz_sphere.toml
 
 .PHONY: deps configure build demo test bench clean
 

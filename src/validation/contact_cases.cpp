@@ -168,7 +168,7 @@ std::vector<Record> run_spence_sphere(const Context& context) {
       // The history matters only until the steps resolve the growth of the stick zone:
       // 64 steps must agree with 16 to 0.01; 1 and 4 steps are reported against 16.
       records.push_back(steps == 64 ? compare_scaled("c_over_a_64_steps", ratio, c_over_a, 1.0, 0.01)
-                                    : compare_scaled("c_over_a_" + std::to_string(steps) + "_steps", ratio, c_over_a, 1.0, 1.0));
+                                    : report_only("c_over_a_" + std::to_string(steps) + "_steps", ratio, c_over_a));
     }
     if (beta == 0.1) {
       auto thesis = problem;
@@ -196,9 +196,9 @@ std::vector<Record> run_flat_punch(const Context& context) {
     auto problem = file.problem;
     problem.friction = t.beta;
     const auto result = contact::solve_contact(problem, context.progress);
-    records.push_back(compare_scaled("p_n_at_0_vs_thesis", pressure_at(result.pairs, 0.0), t.p0, t.p0, 1.0));
-    records.push_back(compare_scaled("p_n_at_4.68_vs_thesis", pressure_at(result.pairs, 4.68), t.pI, t.pI, 1.0));
-    records.push_back(compare_scaled("c_vs_thesis", result.summary.stick_radius, t.c, t.c, 1.0));
+    records.push_back(report_only("p_n_at_0_vs_thesis", pressure_at(result.pairs, 0.0), t.p0));
+    records.push_back(report_only("p_n_at_4.68_vs_thesis", pressure_at(result.pairs, 4.68), t.pI));
+    records.push_back(report_only("c_vs_thesis", result.summary.stick_radius, t.c));
     auto thesis = problem;
     thesis.solver.algorithm = contact::Algorithm::thesis;
     const auto other = contact::solve_contact(thesis, context.progress);
