@@ -1,5 +1,7 @@
 #include "bemcontact/io/body_parser.hpp"
 
+#include <filesystem>
+
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -441,6 +443,77 @@ bem::BodyDefinition parse_body(const toml::table& table, const BodyContext& body
     }
   }
   return definition;
+}
+
+namespace {
+
+std::vector<std::string> identifiers_in(std::string_view text) {
+  std::vector<std::string> names;
+  const auto name_char = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+  for (std::size_t i = 0; i < text.size();) {
+    const bool starts = (std::isalpha(static_cast<unsigned char>(text[i])) || text[i] == '_') &&
+                        (i == 0 || (!name_char(text[i - 1]) && text[i - 1] != '.'));
+    if (!starts) {
+      ++i;
+      continue;
+    }
+    std::size_t end = i;
+    while (end < text.size() && name_char(text[end])) ++end;
+    names.emplace_back(text.substr(i, end - i));
+    i = end;
+  }
+  return names;
+}
+
+}  // namespace
+
+void read_parameters(const TableReader& root, FileContext& context) {
+  const toml::table* table = root.optional_table("parameters", "[parameters]");
+  if (!table) return;
+  const TableReader parameters(*table, "parameters", context, root.line());
+  std::vector<std::pair<std::string, const toml::node*>> entries;
+  for (const auto& [key, node] : *table) entries.emplace_back(std::string(key.str()), &node);
+  std::sort(entries.begin(), entries.end(), [](const auto& a, const auto& b) {
+    return a.second->source().begin < b.second->source().begin;
+  });
+  for (std::size_t i = 0; i < entries.size(); ++i) {
+    const auto& [name, node] = entries[i];
+    const SourceLocation where = parameters.where(name);
+    if (!is_identifier(name))
+      throw InputError(where, "invalid parameter name '" + name + "': a name starts with a letter or "
+                              "'_' and holds only letters, digits and '_'");
+    if (is_reserved_name(name))
+      throw InputError(where, "'" + name + "' cannot be a parameter name: x, y, r, z, pi and the "
+                              "function names are reserved");
+    if (node->is_string()) {
+      // Say plainly when an expression uses a parameter defined further down.
+      const std::string text = *node->value_exact<std::string>();
+      for (const std::string& used : identifiers_in(text))
+        for (std::size_t j = i + 1; j < entries.size(); ++j)
+          if (entries[j].first == used && !context.parameters.count(used))
+            throw InputError(where, "parameter '" + name + "' uses '" + used +
+                                        "', which is defined later (line " +
+                                        std::to_string(line_of(*entries[j].second)) +
+                                        "); a parameter may only use the parameters written before it");
+    } else if (!node->is_integer() && !node->is_floating_point()) {
+      throw InputError(where, "a parameter must be a number or an expression in quotes, found " +
+                                  describe_node(*node));
+    }
+    context.parameters[name] = read_number(*node, where, context);
+  }
+}
+
+void read_file_header(const TableReader& root, FileContext& context, const std::string& file_name,
+                      AnalysisType& analysis, std::string& title, Interpolation& interpolation) {
+  const std::string type = root.choice("analysis", {"plane_strain", "plane_stress", "axisymmetric"}, std::nullopt);
+  analysis = type == "plane_stress"   ? AnalysisType::plane_stress
+             : type == "axisymmetric" ? AnalysisType::axisymmetric
+                                      : AnalysisType::plane_strain;
+  context.analysis = analysis;
+  title = root.optional_string("title").value_or(std::filesystem::path(file_name).stem().string());
+  interpolation = root.choice("interpolation", {"linear", "constant"}, "linear") == "constant" ? Interpolation::constant
+                                                                                          : Interpolation::linear;
+  read_parameters(root, context);
 }
 
 }  // namespace bemcontact::io

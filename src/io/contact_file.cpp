@@ -13,28 +13,7 @@
 namespace bemcontact::io {
 namespace {
 
-toml::table parse_toml(std::string_view text, const std::string& file_name) {
-  try {
-    return toml::parse(text, std::string_view(file_name));
-  } catch (const toml::parse_error& error) {
-    const auto& begin = error.source().begin;
-    throw InputError(SourceLocation{file_name, static_cast<int>(begin.line), ""},
-                     "TOML syntax error at column " + std::to_string(begin.column) + ": " +
-                         std::string(error.description()));
-  }
-}
 
-void read_parameters(const TableReader& root, FileContext& context) {
-  const toml::table* table = root.optional_table("parameters", "[parameters]");
-  if (!table) return;
-  const TableReader parameters(*table, "parameters", context, root.line());
-  std::vector<std::pair<std::string, const toml::node*>> entries;
-  for (const auto& [key, node] : *table) entries.emplace_back(std::string(key.str()), &node);
-  std::sort(entries.begin(), entries.end(),
-            [](const auto& a, const auto& b) { return a.second->source().begin < b.second->source().begin; });
-  for (const auto& [name, node] : entries)  // each may use the ones written before it
-    context.parameters[name] = read_number(*node, parameters.where(name), context);
-}
 
 std::vector<Vec2> read_points(const TableReader& body, const FileContext& context) {
   std::vector<Vec2> points;
@@ -108,7 +87,7 @@ ContactFile read_contact_file(const std::filesystem::path& path) {
 }
 
 ContactFile parse_contact_problem(std::string_view text, const std::string& file_name) {
-  const toml::table root_table = parse_toml(text, file_name);
+  const toml::table root_table = parse_toml_text(text, file_name);
   ContactFile result;
   FileContext context;
   context.file = file_name;
@@ -117,18 +96,9 @@ ContactFile parse_contact_problem(std::string_view text, const std::string& file
                   "the top level of a contact file");
   auto& problem = result.problem;
   problem.source_file = file_name;
-  const std::string analysis = root.choice("analysis", {"plane_strain", "plane_stress", "axisymmetric"}, std::nullopt);
-  problem.analysis = analysis == "plane_stress"   ? AnalysisType::plane_stress
-                     : analysis == "axisymmetric" ? AnalysisType::axisymmetric
-                                                  : AnalysisType::plane_strain;
-  context.analysis = problem.analysis;
-  problem.title = root.optional_string("title").value_or(std::filesystem::path(file_name).stem().string());
-  problem.mesh.interpolation = root.choice("interpolation", {"linear", "constant"}, "linear") == "constant"
-                                   ? Interpolation::constant
-                                   : Interpolation::linear;
+  read_file_header(root, context, file_name, problem.analysis, problem.title, problem.mesh.interpolation);
   if (problem.mesh.interpolation == Interpolation::constant)
     root.fail("interpolation", "contact problems need linear elements (nodes at the element ends face each other)");
-  read_parameters(root, context);
   result.parameters = context.parameters;
   if (const toml::table* mesh = root.optional_table("mesh", "[mesh]")) {
     const TableReader reader(*mesh, "mesh", context, root.line());

@@ -59,22 +59,6 @@ std::string read_text(const std::filesystem::path& path) {
 }
 
 // [parameters]: numbers or expressions of the parameters above (as in one-body files).
-void read_parameters(const TableReader& root, FileContext& context) {
-  const toml::table* table = root.optional_table("parameters", "[parameters]");
-  if (!table) return;
-  const TableReader parameters(*table, "parameters", context, root.line());
-  std::vector<std::pair<std::string, const toml::node*>> entries;
-  for (const auto& [key, node] : *table) entries.emplace_back(std::string(key.str()), &node);
-  std::sort(entries.begin(), entries.end(),
-            [](const auto& a, const auto& b) { return a.second->source().begin < b.second->source().begin; });
-  for (const auto& [name, node] : entries) {
-    const SourceLocation where = parameters.where(name);
-    if (!is_identifier(name) || is_reserved_name(name))
-      throw InputError(where, "invalid parameter name '" + name + "' (a name starts with a letter or '_'; x, y, "
-                              "r, z, pi and the function names are reserved)");
-    context.parameters[name] = read_number(*node, where, context);
-  }
-}
 
 void read_options(const TableReader& root, const FileContext& context, dd::DecompositionOptions& options) {
   const toml::table* table = root.optional_table("decomposition", "[decomposition]");
@@ -169,16 +153,7 @@ DecompositionFile parse_decomposition(std::string_view text, const std::string& 
 
   auto& problem = result.problem;
   problem.source_file = file_name;
-  const std::string analysis = root.choice("analysis", {"plane_strain", "plane_stress", "axisymmetric"}, std::nullopt);
-  problem.analysis = analysis == "plane_stress"   ? AnalysisType::plane_stress
-                     : analysis == "axisymmetric" ? AnalysisType::axisymmetric
-                                                  : AnalysisType::plane_strain;
-  context.analysis = problem.analysis;
-  problem.title = root.optional_string("title").value_or(std::filesystem::path(file_name).stem().string());
-  problem.mesh.interpolation = root.choice("interpolation", {"linear", "constant"}, "linear") == "constant"
-                                   ? Interpolation::constant
-                                   : Interpolation::linear;
-  read_parameters(root, context);
+  read_file_header(root, context, file_name, problem.analysis, problem.title, problem.mesh.interpolation);
   result.parameters = context.parameters;
   read_options(root, context, problem.options);
   if (const toml::table* table = root.optional_table("mesh", "[mesh]")) {

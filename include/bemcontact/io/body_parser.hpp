@@ -33,4 +33,12 @@ struct PrescribedValue {
 PrescribedValue read_prescribed_value(const toml::node& node, const SourceLocation& where,
                                       const FileContext& context);
 
+// The [parameters] table, in file order: each may use the ones written before it.
+void read_parameters(const TableReader& root, FileContext& context);
+
+// The settings every problem file starts with: analysis (required), title (default: the
+// file name without extension), interpolation (default linear), then [parameters].
+void read_file_header(const TableReader& root, FileContext& context, const std::string& file_name,
+                      AnalysisType& analysis, std::string& title, Interpolation& interpolation);
+
 }  // namespace bemcontact::io
