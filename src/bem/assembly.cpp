@@ -2,8 +2,10 @@
 
 #include <omp.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <vector>
 
 #include "bemcontact/core/error.hpp"
 #include "bemcontact/core/parallel.hpp"
@@ -41,43 +43,75 @@ Mat2 radial_expansion_stress(const Material& material) {
   return sigma;
 }
 
+// Sum over all node columns of each 2-row block, by columns (contiguous in memory); the
+// diagonal blocks are still zero here, so this is the sum over j != i.
+Matrix column_sums(const Matrix& h) {
+  const Index n = h.cols() / 2;
+  Matrix sums = Matrix::Zero(h.rows(), 2);
+  constexpr Index chunk = 256;
+  const Index chunks = (h.rows() + chunk - 1) / chunk;
+#pragma omp parallel for schedule(static)
+  for (Index c = 0; c < chunks; ++c) {
+    const Index r0 = c * chunk, rows = std::min(chunk, h.rows() - r0);
+    for (Index j = 0; j < n; ++j) {
+      sums.col(0).segment(r0, rows) += h.col(2 * j).segment(r0, rows);
+      sums.col(1).segment(r0, rows) += h.col(2 * j + 1).segment(r0, rows);
+    }
+  }
+  return sums;
+}
+
 void set_diagonal_blocks(const geometry::BoundaryMesh& mesh, const ElementIntegrator& integrator,
                          InfluenceMatrices& m) {
   const Index n = mesh.node_count();
-  const bool axisymmetric = integrator.type() == AnalysisType::axisymmetric;
-  Vector radial_u, radial_p;
-  if (axisymmetric) {
-    radial_u = Vector::Zero(2 * n);
-    radial_p = Vector::Zero(2 * n);
-    const Mat2 sigma = radial_expansion_stress(integrator.material());
-    for (Index j = 0; j < n; ++j) {
-      radial_u[2 * j] = mesh.nodes[j].position.x();
-      radial_p.segment<2>(2 * j) = sigma * mesh.nodes[j].normal;
-    }
+  const Matrix off_diagonal = column_sums(m.H);  // (2n x 2): sum over j != i of H_ij
+  if (integrator.type() != AnalysisType::axisymmetric) {
+    // Rigid translations give zero traction: sum_j H_ij = 0 (section I.4.2, remark).
+    for (Index i = 0; i < n; ++i) m.H.block<2, 2>(2 * i, 2 * i) = -off_diagonal.middleRows<2>(2 * i);
+    return;
   }
-#pragma omp parallel for schedule(static)
+  // Axial translation (only rigid mode of axisymmetry, section II.3.3) gives the z column;
+  // the radial expansion u_r = r gives the r column: H_ii[:, r] r_i = (G p - H' u)_i.
+  Vector radial_u = Vector::Zero(2 * n), radial_p = Vector::Zero(2 * n);
+  const Mat2 sigma = radial_expansion_stress(integrator.material());
+  for (Index j = 0; j < n; ++j) {
+    radial_u[2 * j] = mesh.nodes[j].position.x();
+    radial_p.segment<2>(2 * j) = sigma * mesh.nodes[j].normal;
+  }
+  const Vector residual = m.G * radial_p - m.H * radial_u;  // H_ii still zero
   for (Index i = 0; i < n; ++i) {
-    Mat2 off_diagonal_sum = Mat2::Zero();
-    for (Index j = 0; j < n; ++j)
-      if (j != i) off_diagonal_sum += m.H.block<2, 2>(2 * i, 2 * j);
-    if (!axisymmetric) {
-      // Rigid translations give zero traction: sum_j H_ij = 0 (section I.4.2, remark).
-      m.H.block<2, 2>(2 * i, 2 * i) = -off_diagonal_sum;
-      continue;
-    }
-    // Axial translation (only rigid mode of axisymmetry, section II.3.3) gives the z column.
-    m.H.block<2, 1>(2 * i, 2 * i + 1) = -off_diagonal_sum.col(1);
-    // The radial expansion gives the r column: H_ii[:, r] r_i = (G p - H' u)_i.
-    const double r_i = mesh.nodes[i].position.x();
-    if (node_on_axis(mesh, i)) {
+    m.H.block<2, 1>(2 * i, 2 * i + 1) = -off_diagonal.block<2, 1>(2 * i, 1);
+    if (node_on_axis(mesh, i))
       m.H.block<2, 1>(2 * i, 2 * i).setZero();  // multiplies u_r = 0
-      continue;
-    }
-    Eigen::Vector2d residual = m.G.middleRows<2>(2 * i) * radial_p;
-    for (Index j = 0; j < n; ++j)
-      if (j != i) residual -= m.H.block<2, 1>(2 * i, 2 * j) * radial_u[2 * j];
-    m.H.block<2, 1>(2 * i, 2 * i) = residual / r_i;
+    else
+      m.H.block<2, 1>(2 * i, 2 * i) = residual.segment<2>(2 * i) / mesh.nodes[i].position.x();
   }
+}
+
+// Elements in groups that share no node, so that each group can fill its columns of H and
+// G in parallel without two threads touching one column (each node has at most two
+// elements, so three groups suffice; the order of the sums is fixed).
+std::vector<std::vector<Index>> elements_by_colour(const geometry::BoundaryMesh& mesh) {
+  std::vector<std::vector<Index>> node_elements(mesh.node_count());
+  for (Index e = 0; e < mesh.element_count(); ++e)
+    for (int a = 0; a < mesh.elements[e].node_count; ++a) node_elements[mesh.elements[e].nodes[a]].push_back(e);
+  std::vector<int> colour(mesh.element_count(), -1);
+  std::vector<std::vector<Index>> groups;
+  for (Index e = 0; e < mesh.element_count(); ++e) {
+    std::vector<bool> taken;
+    for (int a = 0; a < mesh.elements[e].node_count; ++a)
+      for (Index other : node_elements[mesh.elements[e].nodes[a]])
+        if (colour[other] >= 0) {
+          if (static_cast<std::size_t>(colour[other]) >= taken.size()) taken.resize(colour[other] + 1, false);
+          taken[colour[other]] = true;
+        }
+    int c = 0;
+    while (static_cast<std::size_t>(c) < taken.size() && taken[c]) ++c;
+    colour[e] = c;
+    if (static_cast<std::size_t>(c) >= groups.size()) groups.resize(c + 1);
+    groups[c].push_back(e);
+  }
+  return groups;
 }
 
 }  // namespace
@@ -86,32 +120,43 @@ InfluenceMatrices assemble_influence_matrices(const geometry::BoundaryMesh& mesh
                                               const ElementIntegrator& integrator,
                                               const ProgressCallback& progress) {
   const Index n = mesh.node_count();
-  InfluenceMatrices m{Matrix::Zero(2 * n, 2 * n), Matrix::Zero(2 * n, 2 * n)};
-  std::atomic<Index> rows_done{0};
-  ParallelErrors errors;
-  // One source node per iteration: every entry is written by one thread, so the result
-  // does not depend on the thread count.
-#pragma omp parallel for schedule(dynamic, 8)
-  for (Index i = 0; i < n; ++i) {
-    if (errors.failed()) continue;
-    errors.run([&] {
-    const Vec2& source = mesh.nodes[i].position;
-    for (const auto& element : mesh.elements) {
-      int source_node = -1;
-      for (int a = 0; a < element.node_count; ++a)
-        if (element.nodes[a] == i) source_node = a;
-      const auto influence = integrator.influence(source, element, source_node);
-      for (int a = 0; a < element.node_count; ++a) {
-        const Index j = element.nodes[a];
-        m.G.block<2, 2>(2 * i, 2 * j) += influence.G[a];
-        if (a != source_node) m.H.block<2, 2>(2 * i, 2 * j) += influence.H[a];
-      }
-    }
-    const Index done = ++rows_done;
-    if (progress && omp_get_thread_num() == 0) progress("assembly", static_cast<double>(done) / n);
-    });
+  InfluenceMatrices m{Matrix(2 * n, 2 * n), Matrix(2 * n, 2 * n)};
+  // Zero the columns in parallel (first touch spreads the pages over both cores' work).
+#pragma omp parallel for schedule(static)
+  for (Index j = 0; j < 2 * n; ++j) {
+    m.H.col(j).setZero();
+    m.G.col(j).setZero();
   }
-  errors.rethrow();
+  std::atomic<Index> elements_done{0};
+  ParallelErrors errors;
+  // Element by element, all sources: each element fills the columns of its nodes from top
+  // to bottom (contiguous in column-major storage). Elements of one colour share no node,
+  // so no column is written by two threads, and every sum runs in a fixed order: the
+  // result does not depend on the thread count.
+  for (const auto& group : elements_by_colour(mesh)) {
+#pragma omp parallel for schedule(dynamic, 4)
+    for (std::size_t k = 0; k < group.size(); ++k) {
+      if (errors.failed()) continue;
+      errors.run([&] {
+        const auto& element = mesh.elements[group[k]];
+        for (Index i = 0; i < n; ++i) {
+          int source_node = -1;
+          for (int a = 0; a < element.node_count; ++a)
+            if (element.nodes[a] == i) source_node = a;
+          const auto influence = integrator.influence(mesh.nodes[i].position, element, source_node);
+          for (int a = 0; a < element.node_count; ++a) {
+            const Index j = element.nodes[a];
+            m.G.block<2, 2>(2 * i, 2 * j) += influence.G[a];
+            if (a != source_node) m.H.block<2, 2>(2 * i, 2 * j) += influence.H[a];
+          }
+        }
+        const Index done = ++elements_done;
+        if (progress && omp_get_thread_num() == 0)
+          progress("assembly", static_cast<double>(done) / static_cast<double>(mesh.element_count()));
+      });
+    }
+    errors.rethrow();
+  }
   set_diagonal_blocks(mesh, integrator, m);
   if (progress) progress("assembly", 1.0);
   return m;
