@@ -26,13 +26,6 @@ Index interior_at(const bem::InteriorSolution& interior, const Vec2& x) {
   throw Error("validation: no interior point at the expected place");
 }
 
-void tag(std::vector<Record>& records, std::size_t from, const std::string& name,
-         const std::vector<std::pair<std::string, std::string>>& params) {
-  for (std::size_t k = from; k < records.size(); ++k) {
-    records[k].case_name = name;
-    records[k].params = params;
-  }
-}
 
 // Cylinder in tension (II.7.4): the field is linear, so linear elements reproduce it up
 // to the quadrature accuracy of the ring integrals (~1e-10): tolerance 1e-5 (the issue's).

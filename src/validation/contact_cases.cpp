@@ -19,13 +19,6 @@ io::ContactFile load(const Context& context, const std::string& file) {
   return io::read_contact_file(context.examples_dir + "/" + file);
 }
 
-void tag(std::vector<Record>& records, std::size_t from, const std::string& case_name,
-         const std::vector<std::pair<std::string, std::string>>& params) {
-  for (std::size_t k = from; k < records.size(); ++k) {
-    records[k].case_name = case_name;
-    records[k].params = params;
-  }
-}
 
 std::string text(double value) {
   std::ostringstream out;

@@ -18,14 +18,7 @@ namespace bemcontact::validation {
 
 namespace {
 
-using Params = std::vector<std::pair<std::string, std::string>>;
 
-void tag(std::vector<Record>& records, std::size_t from, const std::string& case_name, const Params& params) {
-  for (std::size_t k = from; k < records.size(); ++k) {
-    records[k].case_name = case_name;
-    records[k].params = params;
-  }
-}
 
 std::string text(double value, const char* format = "%.3g") {
   char buffer[32];

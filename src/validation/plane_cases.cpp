@@ -32,13 +32,6 @@ Mat2 in_plane(const bem::StressTensor& s) {
   return m;
 }
 
-void tag(std::vector<Record>& records, std::size_t from, const std::string& case_name,
-         const std::vector<std::pair<std::string, std::string>>& params) {
-  for (std::size_t k = from; k < records.size(); ++k) {
-    records[k].case_name = case_name;
-    records[k].params = params;
-  }
-}
 
 }  // namespace
 

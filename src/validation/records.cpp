@@ -48,6 +48,13 @@ Record report_only(std::string quantity, double computed, double published) {
   return r;
 }
 
+void tag(std::vector<Record>& records, std::size_t from, const std::string& case_name, const Params& params) {
+  for (std::size_t k = from; k < records.size(); ++k) {
+    records[k].case_name = case_name;
+    records[k].params = params;
+  }
+}
+
 double observed_order(double coarse_error, double fine_error, double ratio) {
   return std::log(coarse_error / fine_error) / std::log(ratio);
 }

@@ -51,6 +51,10 @@ Record compare_scaled(std::string quantity, double computed, double reference, d
 Record require_at_least(std::string quantity, double computed, double minimum);
 Record report_only(std::string quantity, double computed, double published);
 
+using Params = std::vector<std::pair<std::string, std::string>>;
+// Sets case name and params of records[from...].
+void tag(std::vector<Record>& records, std::size_t from, const std::string& case_name, const Params& params);
+
 // Observed order of convergence between two meshes whose sizes differ by `ratio`.
 double observed_order(double coarse_error, double fine_error, double ratio);
 
