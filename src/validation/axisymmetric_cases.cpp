@@ -6,31 +6,17 @@
 #include "bemcontact/reference/lame.hpp"
 #include "bemcontact/reference/uniaxial_tension.hpp"
 #include "bemcontact/validation/case_groups.hpp"
+#include "bemcontact/validation/case_support.hpp"
 
 namespace bemcontact::validation {
 namespace {
 
-io::ProblemFile load(const Context& context, const std::string& file) {
-  return io::read_problem_file(context.examples_dir + "/" + file);
-}
-
-Index node_at(const geometry::BoundaryMesh& mesh, const Vec2& x) {
-  const Index i = geometry::find_node_at(mesh, x, 1e-9 * mesh.scale);
-  if (i < 0) throw Error("validation: no boundary node at the expected point");
-  return i;
-}
-
-Index interior_at(const bem::InteriorSolution& interior, const Vec2& x) {
-  for (std::size_t k = 0; k < interior.points.size(); ++k)
-    if ((interior.points[k] - x).norm() < 1e-9 * (1.0 + x.norm())) return static_cast<Index>(k);
-  throw Error("validation: no interior point at the expected place");
-}
 
 
 // Cylinder in tension (II.7.4): the field is linear, so linear elements reproduce it up
 // to the quadrature accuracy of the ring integrals (~1e-10): tolerance 1e-5 (the issue's).
 std::vector<Record> run_cylinder_tension(const Context& context) {
-  const auto file = load(context, "cylinder_tension.toml");
+  const auto file = load_example(context, "cylinder_tension.toml");
   const auto& problem = file.problem;
   const double P = file.parameters.at("P");
   const reference::CylinderInTension exact{P, problem.body.material};
@@ -39,7 +25,7 @@ std::vector<Record> run_cylinder_tension(const Context& context) {
   const Index n10 = node_at(result.mesh, Vec2(10.0, 0.0));
   records.push_back(compare_relative("ur_r10", result.boundary.displacement[n10].x(),
                                      exact.displacement(10.0, 0.0).x(), 1e-5));
-  const Index k = interior_at(result.interior, Vec2(20.0, 40.0));
+  const Index k = interior_point_at(result.interior, Vec2(20.0, 40.0));
   records.push_back(compare_relative("uz_z40", result.interior.displacement[k].y(), exact.displacement(20.0, 40.0).y(), 1e-5));
   records.push_back(compare_relative("szz_interior", result.interior.stress[k].s22, P, 1e-5));
   double u_error = 0.0, p_error = 0.0, s_error = 0.0;
@@ -63,7 +49,7 @@ std::vector<Record> run_cylinder_tension(const Context& context) {
 // Thick cylinder with free ends (II.7.5) against Lame: u_r on both surfaces within 0.1 %
 // (thesis 0.07 %), interior s_rr and s_tt on z = 20 within 1 % for r >= 46 (the issue's).
 std::vector<Record> run_thick_cylinder(const Context& context) {
-  const auto file = load(context, "thick_cylinder.toml");
+  const auto file = load_example(context, "thick_cylinder.toml");
   const auto& problem = file.problem;
   const double a = file.parameters.at("a"), b = file.parameters.at("b"), P = file.parameters.at("P");
   reference::ThickCylinder exact;
@@ -78,7 +64,7 @@ std::vector<Record> run_thick_cylinder(const Context& context) {
   const Index ia = node_at(result.mesh, Vec2(a, H / 2)), ib = node_at(result.mesh, Vec2(b, H / 2));
   records.push_back(compare_relative("ur_a", result.boundary.displacement[ia].x(), exact.radial_displacement(a), 1e-3));
   records.push_back(compare_relative("ur_b", result.boundary.displacement[ib].x(), exact.radial_displacement(b), 1e-3));
-  const Index k = interior_at(result.interior, Vec2(50.0, 20.0));
+  const Index k = interior_point_at(result.interior, Vec2(50.0, 20.0));
   records.push_back(compare_relative("srr_r50", result.interior.stress[k].s11, exact.polar_stress(50.0).rr, 1e-2));
   records.push_back(compare_relative("stt_r50", result.interior.stress[k].s33, exact.polar_stress(50.0).tt, 1e-2));
   double worst = 0.0;
@@ -100,7 +86,7 @@ std::vector<Record> run_thick_cylinder(const Context& context) {
 // four times the 40-element bounds (second order). s_rr = -P on the inner surface within
 // 0.5 %.
 std::vector<Record> run_thick_sphere(const Context& context) {
-  const auto file = load(context, "thick_sphere.toml");
+  const auto file = load_example(context, "thick_sphere.toml");
   const double a = file.parameters.at("a"), b = file.parameters.at("b"), P = file.parameters.at("P");
   reference::ThickSphere exact;
   exact.inner_radius = a;

@@ -9,20 +9,12 @@
 #include "bemcontact/reference/lame.hpp"
 #include "bemcontact/reference/uniaxial_tension.hpp"
 #include "bemcontact/validation/case_groups.hpp"
+#include "bemcontact/validation/case_support.hpp"
 #include "bemcontact/validation/plane_cases.hpp"
 
 namespace bemcontact::validation {
 namespace {
 
-io::ProblemFile load_example(const Context& context, const std::string& file) {
-  return io::read_problem_file(context.examples_dir + "/" + file);
-}
-
-Index vertex_at(const geometry::BoundaryMesh& mesh, const Vec2& point) {
-  const Index v = geometry::find_vertex_at(mesh, point, 1e-9 * mesh.scale);
-  if (v < 0) throw Error("validation: no vertex at the expected point");
-  return v;
-}
 
 double max_abs_difference(const Mat2& a, const Mat2& b) { return (a - b).cwiseAbs().maxCoeff(); }
 
@@ -229,12 +221,8 @@ std::vector<Record> run_thick_ring_plane_strain(const Context& context) {
   exact.material = problem.body.material;
   exact.ends = reference::CylinderEnds::plane_strain;
   const auto result = bem::solve_body(problem, context.progress);
-  auto node_near = [&](const Vec2& x) {
-    return geometry::find_node_at(result.mesh, x, 1e-9 * result.mesh.scale);
-  };
   const double c = std::sqrt(0.5);
-  const Index ia = node_near(Vec2(a * c, a * c)), ib = node_near(Vec2(b * c, b * c));
-  if (ia < 0 || ib < 0) throw Error("validation: no node at 45 degrees on the arcs");
+  const Index ia = node_at(result.mesh, Vec2(a * c, a * c)), ib = node_at(result.mesh, Vec2(b * c, b * c));
   const Vec2 er(c, c), et(-c, c);
   std::vector<Record> records;
   records.push_back(compare_relative("ur_a", result.boundary.displacement[ia].dot(er), exact.radial_displacement(a), 5e-3));
