@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "assembly_benchmark.hpp"
 #include "bemcontact/bem/analysis.hpp"
 #include "bemcontact/kernels/axisymmetric.hpp"
 #include "bemcontact/kernels/elliptic.hpp"
@@ -37,17 +38,7 @@ bem::ProblemDefinition hollow_section(int elements, AnalysisType type) {
 }
 
 void assembly(benchmark::State& state, AnalysisType type) {
-  const auto problem = hollow_section(static_cast<int>(state.range(0)), type);
-  const auto mesh = bem::mesh_body(problem);
-  const bem::ElementIntegrator integrator(problem.analysis, problem.body.material);
-  for (auto _ : state) {
-    auto m = bem::assemble_influence_matrices(mesh, integrator);
-    benchmark::DoNotOptimize(m.H.data());
-  }
-  const double pairs = static_cast<double>(mesh.node_count()) * mesh.element_count();
-  state.counters["elements"] = static_cast<double>(mesh.element_count());
-  state.counters["ns_per_pair"] =
-      benchmark::Counter(pairs * 1e-9, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+  bench::measure_assembly(state, hollow_section(static_cast<int>(state.range(0)), type));
 }
 
 void BM_AssemblyPlane(benchmark::State& state) { assembly(state, AnalysisType::plane_strain); }

@@ -3,6 +3,7 @@
 #include <benchmark/benchmark.h>
 #include <cblas.h>
 
+#include "assembly_benchmark.hpp"
 #include "bemcontact/bem/analysis.hpp"
 #include "bemcontact/bem/boundary_system.hpp"
 #include "bemcontact/operators/dense_lu.hpp"
@@ -40,17 +41,7 @@ bem::ProblemDefinition square_plate(int elements) {
 }
 
 void BM_PlaneAssembly(benchmark::State& state) {
-  const auto problem = square_plate(static_cast<int>(state.range(0)));
-  const auto mesh = bem::mesh_body(problem);
-  const bem::ElementIntegrator integrator(problem.analysis, problem.body.material);
-  for (auto _ : state) {
-    auto m = bem::assemble_influence_matrices(mesh, integrator);
-    benchmark::DoNotOptimize(m.H.data());
-  }
-  const double pairs = static_cast<double>(mesh.node_count()) * mesh.element_count();
-  state.counters["elements"] = static_cast<double>(mesh.element_count());
-  state.counters["ns_per_pair"] =
-      benchmark::Counter(pairs * 1e-9, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+  bench::measure_assembly(state, square_plate(static_cast<int>(state.range(0))));
 }
 BENCHMARK(BM_PlaneAssembly)->Arg(250)->Arg(500)->Arg(1000)->Arg(2000)->Arg(4000)->Unit(benchmark::kMillisecond)
     ->UseRealTime();

@@ -66,7 +66,7 @@ BodyResult solve_body(const ProblemDefinition& problem, const ProgressCallback& 
   result.report.threads = omp_get_max_threads();
   const Index dofs = 2 * result.mesh.node_count();
   const bool rigid_only =
-      constraints_fix_only_rigid_modes(free_rigid_modes(result.mesh, conditions, problem.analysis), conditions, constraints);
+      constraints_fix_only_rigid_modes(free_rigid_modes(result.mesh, conditions, problem.analysis), constraints);
   const Matrix reaction_columns = system.A.block(0, dofs, dofs, static_cast<Index>(constraints.size()));
   if (progress) progress("factorisation", 0.0);
   const operators::DenseLU lu(std::move(system.A), "the boundary element system of body '" + body.name + "'");

@@ -40,9 +40,7 @@ Matrix free_rigid_modes(const geometry::BoundaryMesh& mesh, const std::vector<No
   return modes * null_basis;
 }
 
-bool constraints_fix_only_rigid_modes(const Matrix& free_modes, const std::vector<NodeCondition>& conditions,
-                                      const std::vector<ConstraintEquation>& constraints) {
-  (void)conditions;
+bool constraints_fix_only_rigid_modes(const Matrix& free_modes, const std::vector<ConstraintEquation>& constraints) {
   const Index k = static_cast<Index>(constraints.size());
   if (k == 0 || free_modes.cols() != k) return false;
   Matrix c(k, k);

@@ -18,6 +18,30 @@ namespace bemcontact::validation {
 
 namespace {
 
+// The compound-cylinder closed form for a two-layer example (parameters a, c, b, p).
+reference::TwoLayerRing two_layer_reference(const io::DecompositionFile& file, AnalysisType type) {
+  reference::TwoLayerRing exact;
+  exact.inner_radius = file.parameters.at("a");
+  exact.interface_radius = file.parameters.at("c");
+  exact.outer_radius = file.parameters.at("b");
+  exact.inner_pressure = file.parameters.at("p");
+  exact.inner = file.problem.subdomains[0].body.material;
+  exact.outer = file.problem.subdomains[1].body.material;
+  exact.type = type;
+  return exact;
+}
+
+// Largest displacement and traction jumps over all interfaces.
+std::pair<double, double> largest_jumps(const dd::DecompositionResult& result) {
+  double jump_u = 0, jump_p = 0;
+  for (const auto& jump : result.jumps) {
+    jump_u = std::max(jump_u, jump.jump_u);
+    jump_p = std::max(jump_p, jump.jump_p);
+  }
+  return {jump_u, jump_p};
+}
+
+
 
 
 std::string text(double value, const char* format = "%.3g") {
@@ -66,11 +90,8 @@ std::vector<Record> strips_records(const dd::DecompositionProblem& problem, cons
   if (seconds) *seconds = seconds_since(start);
   const double P = 1.0;
   const reference::PlateInTension exact{P, problem.subdomains[0].body.material, problem.analysis};
-  double jump_u = 0, jump_p = 0, err_u1 = 0, err_u2 = 0, err_p = 0;
-  for (const auto& jump : result.jumps) {
-    jump_u = std::max(jump_u, jump.jump_u);
-    jump_p = std::max(jump_p, jump.jump_p);
-  }
+  const auto [jump_u, jump_p] = largest_jumps(result);
+  double err_u1 = 0, err_u2 = 0, err_p = 0;
   for (const auto& interface : result.connectivity.interfaces) {
     double diff[2] = {0, 0}, size[2] = {0, 0};
     for (const auto& pair : interface.pairs)
@@ -212,14 +233,7 @@ std::vector<Record> run_many_strips(const Context& context) {
 std::vector<Record> run_two_layer_ring(const Context& context) {
   std::vector<Record> records;
   const auto file = io::read_decomposition_file(context.examples_dir + "/dd_two_layer_ring.toml");
-  reference::TwoLayerRing exact;
-  exact.inner_radius = file.parameters.at("a");
-  exact.interface_radius = file.parameters.at("c");
-  exact.outer_radius = file.parameters.at("b");
-  exact.inner_pressure = file.parameters.at("p");
-  exact.inner = file.problem.subdomains[0].body.material;
-  exact.outer = file.problem.subdomains[1].body.material;
-  exact.type = file.problem.analysis;
+  const auto exact = two_layer_reference(file, file.problem.analysis);
   for (const auto method : {dd::InterfaceMethod::mixed, dd::InterfaceMethod::conforming, dd::InterfaceMethod::hybrid}) {
     auto problem = file.problem;
     problem.options.method = method;
@@ -245,11 +259,7 @@ std::vector<Record> run_two_layer_ring(const Context& context) {
                                        result.subdomains[0].boundary.displacement[geometry::find_node_at(
                                            result.subdomains[0].mesh, Vec2(exact.inner_radius, 0.0), 1e9)].x(),
                                        exact.radial_displacement(exact.inner_radius), 1e-2));
-    double jump_u = 0, jump_p = 0;
-    for (const auto& jump : result.jumps) {
-      jump_u = std::max(jump_u, jump.jump_u);
-      jump_p = std::max(jump_p, jump.jump_p);
-    }
+    const auto [jump_u, jump_p] = largest_jumps(result);
     records.push_back(compare_scaled("jump_u", jump_u, 0.0, 1.0, 1e-6));
     records.push_back(compare_scaled("jump_p", jump_p, 0.0, 1.0, 1e-6));
     const auto [du, dp] = monolithic_difference(problem, result);
@@ -270,14 +280,7 @@ std::vector<Record> run_two_layer_ring(const Context& context) {
 std::vector<Record> run_two_layer_tube(const Context& context) {
   std::vector<Record> records;
   const auto file = io::read_decomposition_file(context.examples_dir + "/dd_two_layer_tube_axisymmetric.toml");
-  reference::TwoLayerRing exact;
-  exact.inner_radius = file.parameters.at("a");
-  exact.interface_radius = file.parameters.at("c");
-  exact.outer_radius = file.parameters.at("b");
-  exact.inner_pressure = file.parameters.at("p");
-  exact.inner = file.problem.subdomains[0].body.material;
-  exact.outer = file.problem.subdomains[1].body.material;
-  exact.type = AnalysisType::plane_strain;
+  const auto exact = two_layer_reference(file, AnalysisType::plane_strain);
   for (const auto method : {dd::InterfaceMethod::mixed, dd::InterfaceMethod::conforming, dd::InterfaceMethod::hybrid}) {
     auto problem = file.problem;
     problem.options.method = method;
@@ -292,11 +295,7 @@ std::vector<Record> run_two_layer_tube(const Context& context) {
         if (std::abs(x.x() - exact.inner_radius) < 1e-9)
           hoop_error = std::max(hoop_error, std::abs(sub.boundary.stress[i].s33 - exact.polar_stress(x.x()).tt));
       }
-    double jump_u = 0, jump_p = 0;
-    for (const auto& jump : result.jumps) {
-      jump_u = std::max(jump_u, jump.jump_u);
-      jump_p = std::max(jump_p, jump.jump_p);
-    }
+    const auto [jump_u, jump_p] = largest_jumps(result);
     const std::size_t first = records.size();
     records.push_back(compare_scaled("u_boundary_max_error", u_error / u_scale, 0.0, 1.0, 1e-2));
     records.push_back(compare_scaled("hoop_stress_bore_max_error", hoop_error / exact.inner_pressure, 0.0, 1.0, 3e-2));

@@ -22,8 +22,7 @@ Matrix free_rigid_modes(const geometry::BoundaryMesh& mesh, const std::vector<No
 
 // True when the constraints fix exactly the free rigid modes (as many equations as free
 // modes, independent on them).
-bool constraints_fix_only_rigid_modes(const Matrix& free_modes, const std::vector<NodeCondition>& conditions,
-                                      const std::vector<ConstraintEquation>& constraints);
+bool constraints_fix_only_rigid_modes(const Matrix& free_modes, const std::vector<ConstraintEquation>& constraints);
 
 // Given the factored bordered system M (point-force reaction columns) and its solution y,
 // returns the solution with the multipliers along the left null space instead
