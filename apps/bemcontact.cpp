@@ -79,13 +79,15 @@ void print_written(const std::string& output_dir, const io::OutputDirectory& out
 }
 
 // Several subdomains glued along interfaces (chapter IV).
-int command_run_decomposition(const std::string& input, const std::string& output_dir, bool quiet) {
+int command_run_decomposition(const std::string& input, const std::string& output_dir, bool quiet,
+                              const io::ParameterOverrides& overrides) {
   const auto started = std::chrono::steady_clock::now();
-  const auto file = io::read_decomposition_file(input);
+  const auto file = io::read_decomposition_file(input, overrides);
   const auto result = dd::solve_decomposition(file.problem, make_progress(quiet));
   json summary = {{"bemcontact_version", BEMCONTACT_VERSION},
                   {"input", input},
                   {"title", file.problem.title},
+                  {"parameters", file.parameters},
                   {"decomposition", io::decomposition_summary_json(file.problem, result)}};
   io::OutputDirectory out;
   if (result.converged()) {
@@ -119,12 +121,13 @@ int command_run_decomposition(const std::string& input, const std::string& outpu
 }
 
 // Two elastic bodies in contact (chapter V).
-int command_run_contact(const std::string& input, const std::string& output_dir, bool quiet) {
+int command_run_contact(const std::string& input, const std::string& output_dir, bool quiet,
+                        const io::ParameterOverrides& overrides) {
   const auto started = std::chrono::steady_clock::now();
-  const auto file = io::read_contact_file(input);
+  const auto file = io::read_contact_file(input, overrides);
   const auto result = contact::solve_contact(file.problem, make_progress(quiet));
   io::OutputDirectory out;
-  for (const auto& [name, content] : io::contact_output_files(file.problem, result, file.vtk)) out.add(name, content);
+  for (const auto& [name, content] : io::contact_output_files(file.problem, result, file.vtk, file.parameters)) out.add(name, content);
   out.commit(output_dir);
   if (!quiet) {
     std::printf("%s", io::contact_report_text(file.problem, result).c_str());
@@ -134,11 +137,12 @@ int command_run_contact(const std::string& input, const std::string& output_dir,
   return ok;
 }
 
-int command_run(const std::string& input, const std::string& output_dir, bool quiet) {
-  if (io::is_decomposition_file(input)) return command_run_decomposition(input, output_dir, quiet);
-  if (io::is_contact_file(input)) return command_run_contact(input, output_dir, quiet);
+int command_run(const std::string& input, const std::string& output_dir, bool quiet,
+                const io::ParameterOverrides& overrides) {
+  if (io::is_decomposition_file(input)) return command_run_decomposition(input, output_dir, quiet, overrides);
+  if (io::is_contact_file(input)) return command_run_contact(input, output_dir, quiet, overrides);
   const auto started = std::chrono::steady_clock::now();
-  const auto file = io::read_problem_file(input);
+  const auto file = io::read_problem_file(input, overrides);
   const auto read_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   auto result = bem::solve_body(file.problem, make_progress(quiet));
 
@@ -170,6 +174,7 @@ int command_run(const std::string& input, const std::string& output_dir, bool qu
       {"bemcontact_version", BEMCONTACT_VERSION},
       {"input", input},
       {"title", file.problem.title},
+      {"parameters", file.parameters},
       {"options", options_json(file.problem)},
       {"problem", io::problem_echo_json(file)},
       {"mesh", mesh_json(result.mesh)},
@@ -217,8 +222,9 @@ int command_run(const std::string& input, const std::string& output_dir, bool qu
   return ok;
 }
 
-int command_mesh(const std::string& input, const std::string& output_dir, bool quiet) {
-  const auto file = io::read_problem_file(input);
+int command_mesh(const std::string& input, const std::string& output_dir, bool quiet,
+                 const io::ParameterOverrides& overrides) {
+  const auto file = io::read_problem_file(input, overrides);
   const auto mesh = bem::mesh_body(file.problem);
   io::OutputDirectory out;
   out.add("mesh_nodes.csv", io::mesh_nodes_csv(mesh));
@@ -324,11 +330,14 @@ int main(int argc, char** argv) {
   run->add_option("FILE", input, "problem file (TOML)")->required();
   run->add_option("-o,--output", output_dir, "output directory (default: out)");
   run->add_flag("-q,--quiet", quiet, "no progress and no summary on the terminal");
+  std::vector<std::string> assignments;
+  run->add_option("--set", assignments, "NAME=VALUE: replace a [parameters] value of the file (repeatable)");
 
   auto* mesh = app.add_subcommand("mesh", "write the boundary mesh only (nodes, elements, normals)");
   mesh->add_option("FILE", input, "problem file (TOML)")->required();
   mesh->add_option("-o,--output", output_dir, "output directory (default: out)");
   mesh->add_flag("-q,--quiet", quiet, "print nothing");
+  mesh->add_option("--set", assignments, "NAME=VALUE: replace a [parameters] value of the file (repeatable)");
 
   std::vector<std::string> cases, skip;
   std::string json_path, examples = BEMCONTACT_EXAMPLES_DIR;
@@ -344,8 +353,10 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
   if (threads > 0) omp_set_num_threads(threads);
   try {
-    if (*run) return command_run(input, output_dir, quiet);
-    if (*mesh) return command_mesh(input, output_dir, quiet);
+    io::ParameterOverrides overrides;
+    for (const auto& assignment : assignments) io::add_parameter_override(overrides, assignment);
+    if (*run) return command_run(input, output_dir, quiet, overrides);
+    if (*mesh) return command_mesh(input, output_dir, quiet, overrides);
     if (*validate) return command_validate(cases, skip, json_path, examples, quiet, list);
   } catch (const InputError& e) {
     std::fprintf(stderr, "bemcontact: error: %s\n", e.what());

@@ -61,8 +61,10 @@ Matrix column_sums(const Matrix& h) {
   return sums;
 }
 
+// radial_traction_integral: int U p over the boundary for the traction p = sigma n_e of the
+// radial expansion on each straight element (axisymmetry only).
 void set_diagonal_blocks(const geometry::BoundaryMesh& mesh, const ElementIntegrator& integrator,
-                         InfluenceMatrices& m) {
+                         const Vector& radial_traction_integral, InfluenceMatrices& m) {
   const Index n = mesh.node_count();
   const Matrix off_diagonal = column_sums(m.H);  // (2n x 2): sum over j != i of H_ij
   if (integrator.type() != AnalysisType::axisymmetric) {
@@ -71,14 +73,16 @@ void set_diagonal_blocks(const geometry::BoundaryMesh& mesh, const ElementIntegr
     return;
   }
   // Axial translation (only rigid mode of axisymmetry, section II.3.3) gives the z column;
-  // the radial expansion u_r = r gives the r column: H_ii[:, r] r_i = (G p - H' u)_i.
-  Vector radial_u = Vector::Zero(2 * n), radial_p = Vector::Zero(2 * n);
-  const Mat2 sigma = radial_expansion_stress(integrator.material());
-  for (Index j = 0; j < n; ++j) {
-    radial_u[2 * j] = mesh.nodes[j].position.x();
-    radial_p.segment<2>(2 * j) = sigma * mesh.nodes[j].normal;
-  }
-  const Vector residual = m.G * radial_p - m.H * radial_u;  // H_ii still zero
+  // the radial expansion u_r = r gives the r column: H_ii[:, r] r_i = (int U p - H' u)_i.
+  // Its traction is taken on the straight elements (sigma n_e, constant on each), not
+  // interpolated from the nodes' true normals: on the polygon the field then satisfies every
+  // row exactly. Nodal tractions on curved pieces would leave an O(h^2 / R^2) residual
+  // everywhere, which the division by r_i blows up near the axis (and which the axis rows,
+  // r_i = 0, cannot absorb at all).
+  Vector radial_u = Vector::Zero(2 * n);
+  for (Index j = 0; j < n; ++j) radial_u[2 * j] = mesh.nodes[j].position.x();
+  (void)integrator;
+  const Vector residual = radial_traction_integral - m.H * radial_u;  // H_ii still zero
   for (Index i = 0; i < n; ++i) {
     m.H.block<2, 1>(2 * i, 2 * i + 1) = -off_diagonal.block<2, 1>(2 * i, 1);
     if (node_on_axis(mesh, i))
@@ -129,35 +133,53 @@ InfluenceMatrices assemble_influence_matrices(const geometry::BoundaryMesh& mesh
   }
   std::atomic<Index> elements_done{0};
   ParallelErrors errors;
+  const bool axisymmetric = integrator.type() == AnalysisType::axisymmetric;
+  const Mat2 sigma = radial_expansion_stress(integrator.material());
+  Vector radial_traction_integral = Vector::Zero(axisymmetric ? 2 * n : 0);
   // Element by element, all sources: each element fills the columns of its nodes from top
   // to bottom (contiguous in column-major storage). Elements of one colour share no node,
   // so no column is written by two threads, and every sum runs in a fixed order: the
   // result does not depend on the thread count.
+  // In axisymmetry each element also adds int_e U sigma n_e (the radial expansion's traction
+  // on it) to every row: added in element order (ordered), so that the sum does not depend
+  // on the threads either.
   for (const auto& group : elements_by_colour(mesh)) {
-#pragma omp parallel for schedule(dynamic, 4)
-    for (std::size_t k = 0; k < group.size(); ++k) {
-      if (errors.failed()) continue;
-      errors.run([&] {
-        const auto& element = mesh.elements[group[k]];
-        for (Index i = 0; i < n; ++i) {
-          int source_node = -1;
-          for (int a = 0; a < element.node_count; ++a)
-            if (element.nodes[a] == i) source_node = a;
-          const auto influence = integrator.influence(mesh.nodes[i].position, element, source_node);
-          for (int a = 0; a < element.node_count; ++a) {
-            const Index j = element.nodes[a];
-            m.G.block<2, 2>(2 * i, 2 * j) += influence.G[a];
-            if (a != source_node) m.H.block<2, 2>(2 * i, 2 * j) += influence.H[a];
-          }
-        }
-        const Index done = ++elements_done;
-        if (progress && omp_get_thread_num() == 0)
-          progress("assembly", static_cast<double>(done) / static_cast<double>(mesh.element_count()));
-      });
+#pragma omp parallel
+    {
+      Vector contribution(axisymmetric ? 2 * n : 0);
+#pragma omp for schedule(dynamic, 4) ordered
+      for (std::size_t k = 0; k < group.size(); ++k) {
+        bool computed = false;
+        if (!errors.failed())
+          errors.run([&] {
+            const auto& element = mesh.elements[group[k]];
+            const Vec2 element_traction = sigma * element.normal;
+            for (Index i = 0; i < n; ++i) {
+              int source_node = -1;
+              for (int a = 0; a < element.node_count; ++a)
+                if (element.nodes[a] == i) source_node = a;
+              const auto influence = integrator.influence(mesh.nodes[i].position, element, source_node);
+              Vec2 traction_term = Vec2::Zero();
+              for (int a = 0; a < element.node_count; ++a) {
+                const Index j = element.nodes[a];
+                m.G.block<2, 2>(2 * i, 2 * j) += influence.G[a];
+                if (a != source_node) m.H.block<2, 2>(2 * i, 2 * j) += influence.H[a];
+                traction_term += influence.G[a] * element_traction;
+              }
+              if (axisymmetric) contribution.segment<2>(2 * i) = traction_term;
+            }
+            computed = true;
+            const Index done = ++elements_done;
+            if (progress && omp_get_thread_num() == 0)
+              progress("assembly", static_cast<double>(done) / static_cast<double>(mesh.element_count()));
+          });
+#pragma omp ordered
+        if (computed && axisymmetric) radial_traction_integral += contribution;
+      }
     }
     errors.rethrow();
   }
-  set_diagonal_blocks(mesh, integrator, m);
+  set_diagonal_blocks(mesh, integrator, radial_traction_integral, m);
   if (progress) progress("assembly", 1.0);
   return m;
 }

@@ -29,8 +29,8 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-std::vector<PairResult> pair_results(const ContactModel& model, const StepOutput& step, const ContactProblem& problem) {
-  const auto& pairs = model.prepared().pairs;
+std::vector<PairResult> pair_results(const std::vector<ContactPair>& pairs, const StepOutput& step,
+                                     const ContactProblem& problem) {
   double scale = 0.0;
   for (Index i = 0; i < static_cast<Index>(pairs.size()); ++i) scale = std::max(scale, std::abs(step.x[2 * i]));
   std::vector<PairResult> out;
@@ -58,8 +58,11 @@ std::vector<PairResult> pair_results(const ContactModel& model, const StepOutput
   return out;
 }
 
-ContactSummary summarise(const ContactModel& model, const std::vector<PairResult>& pairs, const StepOutput& step,
-                         double load) {
+// (1 - ratio)^(2/3): linear in r near Spence's stick edge (see summarise).
+double stick_margin_measure(double slip_ratio) { return std::cbrt(std::pow(std::max(1.0 - slip_ratio, 0.0), 2)); }
+
+ContactSummary summarise(const std::vector<ContactPair>& geometry, const std::vector<PairResult>& pairs,
+                         const StepOutput& step, double load) {
   ContactSummary s;
   s.load_factor = load;
   s.approach = step.delta;
@@ -68,7 +71,6 @@ ContactSummary summarise(const ContactModel& model, const std::vector<PairResult
   s.kalker_iterations = step.kalker_iterations;
   s.threshold_iterations = step.threshold_iterations;
   s.gmres_cycles = step.gmres_cycles;
-  const auto& prepared = model.prepared();
   std::vector<std::size_t> order(pairs.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
   std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
@@ -84,7 +86,7 @@ ContactSummary summarise(const ContactModel& model, const std::vector<PairResult
     if (pair.status == PairStatus::open) continue;
     s.pairs_in_contact += 1;
     s.peak_pressure = std::max(s.peak_pressure, -pair.p_n);
-    s.normal_force += -pair.p_n * prepared.pairs[order[k]].weight;
+    s.normal_force += -pair.p_n * geometry[order[k]].weight;
     r_last = std::abs(pair.coordinate);
     q_last = pair.p_n * pair.p_n;
   }
@@ -104,14 +106,16 @@ ContactSummary summarise(const ContactModel& model, const std::vector<PairResult
         s.contact_radius = std::clamp(r_last + q_last * (r_last - r_prev) / (q_prev - q_last), r_last, r_open);
     }
   }
-  // Stick edge: inside the stick zone the margin beta |p_n| - |p_t| vanishes like a square
-  // root at c (Cattaneo, Spence), so (1 - |p_t| / (beta |p_n|))^2 is extrapolated linearly
-  // from the two outermost stick pairs to its zero, kept between the outermost stick pair
-  // and the next slipping pair (midway when the extrapolation is not possible).
+  // Stick edge: under a growing normal load the stick edge c is where the shear traction is
+  // smooth (Spence, Annex E): the square-root terms of a Cattaneo edge vanish and the margin
+  // 1 - |p_t| / (beta |p_n|) goes like (c - r)^(3/2). So the margin^(2/3) is extrapolated
+  // linearly from the two outermost stick pairs to its zero, kept between the outermost
+  // stick pair and the next slipping pair (midway when the extrapolation is not possible).
+  // Checked on an independent half-space model against (E.1) (validate spence-halfspace).
   double r_stick = -1.0, m_stick = 0.0;
   for (const auto& pair : pairs)
     if (pair.status == PairStatus::stick && std::abs(pair.coordinate) > r_stick)
-      r_stick = std::abs(pair.coordinate), m_stick = std::pow(1.0 - pair.slip_ratio, 2);
+      r_stick = std::abs(pair.coordinate), m_stick = stick_margin_measure(pair.slip_ratio);
   if (r_stick >= 0.0) {
     s.stick_radius = r_stick;
     double r_slip = -1.0, r_in = -1.0, m_in = 0.0;
@@ -119,7 +123,7 @@ ContactSummary summarise(const ContactModel& model, const std::vector<PairResult
       const double r = std::abs(pair.coordinate);
       if (pair.status == PairStatus::slip && r > r_stick && (r_slip < 0.0 || r < r_slip)) r_slip = r;
       if (pair.status == PairStatus::stick && r < r_stick * (1.0 - 1e-9) && r > r_in)
-        r_in = r, m_in = std::pow(1.0 - pair.slip_ratio, 2);
+        r_in = r, m_in = stick_margin_measure(pair.slip_ratio);
     }
     if (r_slip < 0.0 && s.pairs_in_contact > 0) {
       // Every pair in contact sticks: the slip annulus (if any) is narrower than the mesh.
@@ -145,18 +149,12 @@ std::string format_residual(double value) {
 
 }  // namespace
 
-ContactResult solve_contact(const ContactProblem& problem, const bem::ProgressCallback& progress) {
+LoadHistory solve_load_history(const CondensedProblem& condensed, const std::vector<ContactPair>& pairs,
+                               const ContactProblem& problem, const bem::ProgressCallback& progress) {
   if (problem.increments < 1) throw Error("contact: the number of load increments must be >= 1");
   if (problem.friction < 0.0) throw Error("contact: the friction coefficient must be >= 0");
-  ContactResult result;
-  auto start = Clock::now();
-  const ContactModel model(problem, progress);
-  result.timings.add("assembly, factorisation and condensation", seconds_since(start));
-  const auto& condensed = model.condensed();
   const Index n = condensed.pairs;
-  result.unknowns = 2 * n + (condensed.has_force ? 1 : 0);
-
-  start = Clock::now();
+  LoadHistory history;
   StepInput input;
   input.problem = &condensed;
   input.kind = problem.kind;
@@ -173,9 +171,9 @@ ContactResult solve_contact(const ContactProblem& problem, const bem::ProgressCa
       throw SolverError("contact (" + std::string(to_string(problem.solver.algorithm)) + " algorithm): load step " +
                         std::to_string(k) + " of " + std::to_string(problem.increments) + ": " + step.failure +
                         "; complementarity residual " + format_residual(step.residual) + " (relative)");
-    const auto pairs = pair_results(model, step, problem);
-    result.steps.push_back(summarise(model, pairs, step, input.load));
-    if (problem.record_steps) result.step_pairs.push_back(pairs);
+    const auto results = pair_results(pairs, step, problem);
+    history.steps.push_back(summarise(pairs, results, step, input.load));
+    if (problem.record_steps) history.step_pairs.push_back(results);
     totals.newton_iterations += step.newton_iterations;
     totals.kalker_iterations += step.kalker_iterations;
     totals.threshold_iterations += step.threshold_iterations;
@@ -185,20 +183,40 @@ ContactResult solve_contact(const ContactProblem& problem, const bem::ProgressCa
     input.delta_start = step.delta;
     if (progress) progress("contact load steps", static_cast<double>(k) / problem.increments);
   }
+  history.pairs = pair_results(pairs, step, problem);
+  history.summary = history.steps.back();
+  history.summary.newton_iterations = totals.newton_iterations;
+  history.summary.kalker_iterations = totals.kalker_iterations;
+  history.summary.threshold_iterations = totals.threshold_iterations;
+  history.summary.gmres_cycles = totals.gmres_cycles;
+  history.x = step.x;
+  history.delta = step.delta;
+  return history;
+}
+
+ContactResult solve_contact(const ContactProblem& problem, const bem::ProgressCallback& progress) {
+  if (problem.increments < 1) throw Error("contact: the number of load increments must be >= 1");
+  if (problem.friction < 0.0) throw Error("contact: the friction coefficient must be >= 0");
+  ContactResult result;
+  auto start = Clock::now();
+  const ContactModel model(problem, progress);
+  result.timings.add("assembly, factorisation and condensation", seconds_since(start));
+  result.unknowns = 2 * model.condensed().pairs + (model.condensed().has_force ? 1 : 0);
+
+  start = Clock::now();
+  auto history = solve_load_history(model.condensed(), model.prepared().pairs, problem, progress);
   result.timings.add("contact iterations", seconds_since(start));
-  result.pairs = pair_results(model, step, problem);
-  result.summary = result.steps.back();
-  result.summary.newton_iterations = totals.newton_iterations;
-  result.summary.kalker_iterations = totals.kalker_iterations;
-  result.summary.threshold_iterations = totals.threshold_iterations;
-  result.summary.gmres_cycles = totals.gmres_cycles;
+  result.pairs = std::move(history.pairs);
+  result.summary = history.summary;
+  result.steps = std::move(history.steps);
+  result.step_pairs = std::move(history.step_pairs);
 
   start = Clock::now();
   for (int b = 0; b < 2; ++b) {
     const auto& body = model.prepared().bodies[b];
     result.body_names[b] = body.name;
     result.meshes[b] = model.prepared().meshes[b];
-    result.boundary[b] = model.body(b).solve(model.variable_data(b, step.x, step.delta), true);
+    result.boundary[b] = model.body(b).solve(model.variable_data(b, history.x, history.delta), true);
     if (result.boundary[b].stress.empty())
       result.boundary[b].stress = bem::boundary_stresses(result.meshes[b], problem.analysis, body.material, result.boundary[b]);
   }

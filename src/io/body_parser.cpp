@@ -469,6 +469,15 @@ std::vector<std::string> identifiers_in(std::string_view text) {
 
 void read_parameters(const TableReader& root, FileContext& context) {
   const toml::table* table = root.optional_table("parameters", "[parameters]");
+  for (const auto& [name, value] : context.overrides)
+    if (!table || !table->contains(name)) {
+      std::string known;
+      if (table)
+        for (const auto& [key, node] : *table) known += (known.empty() ? "" : ", ") + std::string(key.str());
+      throw InputError(SourceLocation{context.file, table ? root.where("parameters").line : 0, "parameters." + name},
+                       "--set " + name + ": the file has no parameter '" + name + "' to replace (" +
+                           (known.empty() ? "it has no [parameters]" : "its parameters: " + known) + ")");
+    }
   if (!table) return;
   const TableReader parameters(*table, "parameters", context, root.line());
   std::vector<std::pair<std::string, const toml::node*>> entries;
@@ -499,7 +508,8 @@ void read_parameters(const TableReader& root, FileContext& context) {
       throw InputError(where, "a parameter must be a number or an expression in quotes, found " +
                                   describe_node(*node));
     }
-    context.parameters[name] = read_number(*node, where, context);
+    const auto replaced = context.overrides.find(name);
+    context.parameters[name] = replaced != context.overrides.end() ? replaced->second : read_number(*node, where, context);
   }
 }
 

@@ -78,18 +78,16 @@ bool is_contact_file(const std::filesystem::path& path) {
   return is_contact_text(text.str());
 }
 
-ContactFile read_contact_file(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(SourceLocation{path.string(), 0, ""}, "cannot open the problem file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parse_contact_problem(text.str(), path.string());
+ContactFile read_contact_file(const std::filesystem::path& path, const ParameterOverrides& overrides) {
+  return parse_contact_problem(read_problem_text(path), path.string(), overrides);
 }
 
-ContactFile parse_contact_problem(std::string_view text, const std::string& file_name) {
+ContactFile parse_contact_problem(std::string_view text, const std::string& file_name,
+                                  const ParameterOverrides& overrides) {
   const toml::table root_table = parse_toml_text(text, file_name);
   ContactFile result;
   FileContext context;
+  context.overrides = overrides;
   context.file = file_name;
   const TableReader root(root_table, "", context, 1);
   root.check_keys({"title", "analysis", "interpolation", "parameters", "mesh", "output", "body", "contact"},

@@ -45,18 +45,6 @@ const std::vector<std::string>& interface_boundary_keys() {
   return keys;
 }
 
-std::string read_text(const std::filesystem::path& path) {
-  const SourceLocation where{path.string(), 0, ""};
-  std::error_code error;
-  const auto status = std::filesystem::status(path, error);
-  if (!std::filesystem::exists(status)) throw InputError(where, "cannot read the problem file: no such file");
-  if (std::filesystem::is_directory(status)) throw InputError(where, "cannot read the problem file: it is a directory");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(where, std::string("cannot open the problem file: ") + std::strerror(errno));
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 // [parameters]: numbers or expressions of the parameters above (as in one-body files).
 
@@ -128,20 +116,22 @@ bool is_decomposition_text(std::string_view text) {
 
 bool is_decomposition_file(const std::filesystem::path& path) {
   try {
-    return is_decomposition_text(read_text(path));
+    return is_decomposition_text(read_problem_text(path));
   } catch (const InputError&) {
     return false;
   }
 }
 
-DecompositionFile read_decomposition_file(const std::filesystem::path& path) {
-  return parse_decomposition(read_text(path), path.string());
+DecompositionFile read_decomposition_file(const std::filesystem::path& path, const ParameterOverrides& overrides) {
+  return parse_decomposition(read_problem_text(path), path.string(), overrides);
 }
 
-DecompositionFile parse_decomposition(std::string_view text, const std::string& file_name) {
+DecompositionFile parse_decomposition(std::string_view text, const std::string& file_name,
+                                      const ParameterOverrides& overrides) {
   toml::table root_table = parse_toml_text(text, file_name);
   DecompositionFile result;
   FileContext context;
+  context.overrides = overrides;
   context.file = file_name;
   const TableReader root(root_table, "", context, 1);
   // Body keys at the top level are a one-body habit: say where they go.

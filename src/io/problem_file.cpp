@@ -102,12 +102,13 @@ std::vector<bem::InteriorPoint> read_interior(const TableReader& root, const Fil
 
 }  // namespace
 
-ProblemFile parse_problem(std::string_view text, const std::string& file_name) {
+ProblemFile parse_problem(std::string_view text, const std::string& file_name, const ParameterOverrides& overrides) {
   const toml::table root_table = parse_toml_text(text, file_name);
 
   ProblemFile result;
   FileContext context;
   context.file = file_name;
+  context.overrides = overrides;
   const TableReader root(root_table, "", context, 1);
   std::vector<std::string> root_keys = schema::file_keys();
   root_keys.insert(root_keys.end(), schema::body_keys().begin(), schema::body_keys().end());
@@ -140,21 +141,8 @@ ProblemFile parse_problem(std::string_view text, const std::string& file_name) {
   return result;
 }
 
-ProblemFile read_problem_file(const std::filesystem::path& path) {
-  const SourceLocation where{path.string(), 0, ""};
-  std::error_code error;
-  const auto status = std::filesystem::status(path, error);
-  if (!std::filesystem::exists(status))
-    throw InputError(where, "cannot read the problem file: no such file");
-  if (std::filesystem::is_directory(status))
-    throw InputError(where, "cannot read the problem file: it is a directory");
-  std::ifstream in(path, std::ios::binary);
-  if (!in)
-    throw InputError(where, std::string("cannot open the problem file: ") + std::strerror(errno));
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) throw InputError(where, "error while reading the problem file");
-  return parse_problem(text.str(), path.string());
+ProblemFile read_problem_file(const std::filesystem::path& path, const ParameterOverrides& overrides) {
+  return parse_problem(read_problem_text(path), path.string(), overrides);
 }
 
 }  // namespace bemcontact::io

@@ -1,8 +1,12 @@
 #include "bemcontact/io/toml_reader.hpp"
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <cstring>
+#include <fstream>
 #include <limits>
+#include <sstream>
 
 #include "bemcontact/io/problem_schema.hpp"
 #include "bemcontact/io/suggestions.hpp"
@@ -217,6 +221,39 @@ toml::table parse_toml_text(std::string_view text, const std::string& file_name)
                      "TOML syntax error at column " + std::to_string(begin.column) + ": " +
                          std::string(error.description()));
   }
+}
+
+std::string read_problem_text(const std::filesystem::path& path) {
+  const SourceLocation where{path.string(), 0, ""};
+  std::error_code error;
+  const auto status = std::filesystem::status(path, error);
+  if (!std::filesystem::exists(status)) throw InputError(where, "cannot read the problem file: no such file");
+  if (std::filesystem::is_directory(status)) throw InputError(where, "cannot read the problem file: it is a directory");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(where, std::string("cannot open the problem file: ") + std::strerror(errno));
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) throw InputError(where, "error while reading the problem file");
+  return text.str();
+}
+
+void add_parameter_override(ParameterOverrides& overrides, const std::string& assignment) {
+  const auto equals = assignment.find('=');
+  const std::string name = assignment.substr(0, equals);
+  const SourceLocation where{"command line", 0, "--set " + assignment};
+  if (equals == std::string::npos || name.empty()) throw InputError(where, "expected NAME=VALUE, e.g. --set R=4");
+  const std::string value = assignment.substr(equals + 1);
+  std::size_t used = 0;
+  double number = 0.0;
+  try {
+    number = std::stod(value, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used == 0 || used != value.size() || !std::isfinite(number))
+    throw InputError(where, "'" + value + "' is not a finite number");
+  if (overrides.count(name)) throw InputError(where, "parameter '" + name + "' is set twice");
+  overrides[name] = number;
 }
 
 }  // namespace bemcontact::io

@@ -8,6 +8,7 @@
 
 #include "bemcontact/bem/progress.hpp"
 #include "bemcontact/bem/solution.hpp"
+#include "bemcontact/contact/condensed.hpp"
 #include "bemcontact/contact/contact_problem.hpp"
 #include "bemcontact/geometry/mesh.hpp"
 
@@ -57,6 +58,21 @@ struct ContactResult {
   bem::PhaseTimings timings;
   Index unknowns = 0;  // condensed unknowns
 };
+
+// The load history on a condensed problem, whatever model gave it (the two BEM bodies, or
+// the half-space model of contact/halfspace_model.hpp): equal load factors k / N, Coulomb's
+// law in incremental form. Uses the problem's kind, friction, increments, solver and
+// record_steps. Throws SolverError (with the load step and the residual) on non-convergence.
+struct LoadHistory {
+  std::vector<PairResult> pairs;        // final state
+  ContactSummary summary;               // final state, iterations summed over the steps
+  std::vector<ContactSummary> steps;
+  std::vector<std::vector<PairResult>> step_pairs;  // when record_steps
+  Vector x;                             // final (lambda_n, tau) per pair
+  double delta = 0.0;                   // final approach
+};
+LoadHistory solve_load_history(const CondensedProblem& condensed, const std::vector<ContactPair>& pairs,
+                               const ContactProblem& problem, const bem::ProgressCallback& progress = {});
 
 // Throws SolverError (with the load step and the residual) when a step does not converge,
 // GeometryError for a zone that cannot be paired, InputError for inconsistent options.

@@ -26,6 +26,7 @@
 #include <string>
 #include <string_view>
 
+#include "bemcontact/io/parameter_overrides.hpp"
 #include "bemcontact/contact/contact_problem.hpp"
 
 namespace bemcontact::io {
@@ -41,7 +42,8 @@ struct ContactFile {
 bool is_contact_file(const std::filesystem::path& path);
 bool is_contact_text(std::string_view text);
 
-ContactFile read_contact_file(const std::filesystem::path& path);
-ContactFile parse_contact_problem(std::string_view text, const std::string& file_name);
+ContactFile read_contact_file(const std::filesystem::path& path, const ParameterOverrides& overrides = {});
+ContactFile parse_contact_problem(std::string_view text, const std::string& file_name,
+                                  const ParameterOverrides& overrides = {});
 
 }  // namespace bemcontact::io

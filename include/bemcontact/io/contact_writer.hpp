@@ -13,6 +13,7 @@
 //   contact_step<k>.csv  the pairs at step k (when record_steps)
 //   <body>_boundary.csv, <body>_interior.csv (+ .vtk): each body's fields (formats of
 //                      io/results_writer.hpp), for stresses and von Mises iso-contours.
+#include <map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -36,9 +37,10 @@ nlohmann::json contact_summary_json(const contact::ContactProblem& problem, cons
 // on body 2), the Hertz values a, p0, delta next to the computed ones (Annex D).
 std::string contact_report_text(const contact::ContactProblem& problem, const contact::ContactResult& result);
 
-// Every file of a contact run as (file name, content), summary.json included.
-std::vector<std::pair<std::string, std::string>> contact_output_files(const contact::ContactProblem& problem,
-                                                                      const contact::ContactResult& result,
-                                                                      bool vtk = true);
+// Every file of a contact run as (file name, content), summary.json included (with the
+// evaluated [parameters] of the file, when given).
+std::vector<std::pair<std::string, std::string>> contact_output_files(
+    const contact::ContactProblem& problem, const contact::ContactResult& result, bool vtk = true,
+    const std::map<std::string, double>& parameters = {});
 
 }  // namespace bemcontact::io

@@ -13,6 +13,7 @@
 #include <string>
 #include <string_view>
 
+#include "bemcontact/io/parameter_overrides.hpp"
 #include "bemcontact/dd/decomposition.hpp"
 #include "bemcontact/io/problem_file.hpp"
 
@@ -29,7 +30,8 @@ struct DecompositionFile {
 bool is_decomposition_file(const std::filesystem::path& path);
 bool is_decomposition_text(std::string_view text);
 
-DecompositionFile read_decomposition_file(const std::filesystem::path& path);
-DecompositionFile parse_decomposition(std::string_view text, const std::string& file_name);
+DecompositionFile read_decomposition_file(const std::filesystem::path& path, const ParameterOverrides& overrides = {});
+DecompositionFile parse_decomposition(std::string_view text, const std::string& file_name,
+                                      const ParameterOverrides& overrides = {});
 
 }  // namespace bemcontact::io

@@ -7,6 +7,7 @@
 #include <string>
 #include <string_view>
 
+#include "bemcontact/io/parameter_overrides.hpp"
 #include "bemcontact/bem/problem.hpp"
 
 namespace bemcontact::io {
@@ -24,9 +25,10 @@ struct ProblemFile {
 };
 
 // Reads and parses `path`; throws InputError when the file is missing or unreadable.
-ProblemFile read_problem_file(const std::filesystem::path& path);
+// `overrides` replace [parameters] of the same name (InputError for a name the file lacks).
+ProblemFile read_problem_file(const std::filesystem::path& path, const ParameterOverrides& overrides = {});
 
 // Parses problem-file text; `file_name` is used in messages and as source_file.
-ProblemFile parse_problem(std::string_view text, const std::string& file_name);
+ProblemFile parse_problem(std::string_view text, const std::string& file_name, const ParameterOverrides& overrides = {});
 
 }  // namespace bemcontact::io

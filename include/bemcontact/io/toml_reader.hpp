@@ -2,6 +2,7 @@
 // Typed, checked access to the tables of a problem file (toml++). Every failure throws
 // InputError naming the file, the line and the dotted key ("material.E",
 // "boundary[2].elements", 1-based indices), says what was found and what is valid.
+#include <filesystem>
 #include <map>
 #include <optional>
 #include <string>
@@ -12,6 +13,7 @@
 
 #include "bemcontact/core/error.hpp"
 #include "bemcontact/io/expression.hpp"
+#include "bemcontact/io/parameter_overrides.hpp"
 
 namespace bemcontact::io {
 
@@ -20,6 +22,7 @@ struct FileContext {
   std::string file;  // as given by the user, for messages
   AnalysisType analysis = AnalysisType::plane_strain;
   std::map<std::string, double> parameters;
+  ParameterOverrides overrides;
 
   bool axisymmetric() const { return analysis == AnalysisType::axisymmetric; }
   // Numbers, pi and parameters (geometry, material, parameter definitions).
@@ -44,6 +47,10 @@ Vec2 read_point(const toml::node& node, const SourceLocation& where, const FileC
 // [[boundary]] table, "" for the root.
 // Parses TOML text; a syntax error becomes an InputError with the file, line and column.
 toml::table parse_toml_text(std::string_view text, const std::string& file_name);
+
+// The whole text of a problem file; InputError naming the file when it is missing, a
+// directory or unreadable.
+std::string read_problem_text(const std::filesystem::path& path);
 
 class TableReader {
  public:

@@ -1,0 +1,87 @@
+// Command-line parameter overrides (bemcontact run FILE --set NAME=VALUE): the value
+// replaces the file's, later expressions see it, and mistakes are named.
+#include <gtest/gtest.h>
+
+#include <functional>
+#include <string>
+
+#include "bemcontact/io/problem_file.hpp"
+
+namespace bemcontact::io {
+namespace {
+
+const std::string plate = R"(analysis = "plane_stress"
+[parameters]
+L = 2.0
+P = "3 * L"
+[material]
+E = 1000.0
+nu = 0.3
+[vertices]
+A = [0.0, 0.0]
+B = ["L", 0.0]
+C = ["L", 1.0]
+D = [0.0, 1.0]
+[[boundary]]
+from = "A"
+to = "B"
+u1 = 0.0
+u2 = 0.0
+[[boundary]]
+from = "B"
+to = "C"
+t1 = "P"
+[[boundary]]
+from = "C"
+to = "D"
+[[boundary]]
+from = "D"
+to = "A"
+)";
+
+std::string error_of(const std::function<void()>& action) {
+  try {
+    action();
+  } catch (const InputError& error) {
+    return error.what();
+  }
+  return "no error";
+}
+
+TEST(IoParameterOverrides, ReplaceTheValueAndLaterExpressions) {
+  const auto file = parse_problem(plate, "plate.toml", {{"L", 5.0}});
+  EXPECT_EQ(file.parameters.at("L"), 5.0);
+  EXPECT_EQ(file.parameters.at("P"), 15.0);  // "3 * L" sees the new L
+  EXPECT_EQ(file.problem.body.pieces[0].end.x(), 5.0);
+  const auto unchanged = parse_problem(plate, "plate.toml");
+  EXPECT_EQ(unchanged.parameters.at("P"), 6.0);
+}
+
+TEST(IoParameterOverrides, AnExpressionParameterCanBeReplaced) {
+  EXPECT_EQ(parse_problem(plate, "plate.toml", {{"P", 1.5}}).parameters.at("P"), 1.5);
+}
+
+TEST(IoParameterOverrides, UnknownNameIsNamedWithTheFileAndItsParameters) {
+  const std::string message = error_of([] { parse_problem(plate, "plate.toml", {{"Q", 1.0}}); });
+  EXPECT_NE(message.find("plate.toml:2"), std::string::npos) << message;
+  EXPECT_NE(message.find("parameters.Q"), std::string::npos) << message;
+  EXPECT_NE(message.find("its parameters: L, P"), std::string::npos) << message;
+}
+
+TEST(IoParameterOverrides, AssignmentsAreChecked) {
+  ParameterOverrides overrides;
+  add_parameter_override(overrides, "R=4");
+  add_parameter_override(overrides, "E_ball=4.32e5");
+  EXPECT_EQ(overrides.at("R"), 4.0);
+  EXPECT_EQ(overrides.at("E_ball"), 432000.0);
+  EXPECT_NE(error_of([&] { add_parameter_override(overrides, "R=5"); }).find("set twice"), std::string::npos);
+  EXPECT_NE(error_of([&] { add_parameter_override(overrides, "X=1.5e"); }).find("not a finite number"),
+            std::string::npos);
+  EXPECT_NE(error_of([&] { add_parameter_override(overrides, "Y=inf"); }).find("not a finite number"),
+            std::string::npos);
+  EXPECT_NE(error_of([&] { add_parameter_override(overrides, "=1"); }).find("NAME=VALUE"), std::string::npos);
+  EXPECT_NE(error_of([&] { add_parameter_override(overrides, "Z"); }).find("NAME=VALUE"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace bemcontact::io
