@@ -4,6 +4,8 @@
 #include <set>
 
 #include "bemcontact/contact/step_solvers.hpp"
+#include "bemcontact/core/error.hpp"
+#include "bemcontact/operators/dense_lu.hpp"
 
 namespace bemcontact::contact {
 namespace {
@@ -94,42 +96,70 @@ StepOutput solve_step_newton(const StepInput& in, const SolverOptions& options) 
     }
     if (!damped && !seen.insert(state).second && iteration > 2) damped = true;  // the sets cycle
 
-    Matrix J = Matrix::Zero(size, size);
-    Vector rhs = Vector::Zero(size);
+    // The Newton system in the unknowns that are not fixed by their own row: lambda_n of
+    // the pairs in contact, tau of the sticking pairs, delta. The others are eliminated:
+    // lambda_n = 0 (open), tau = 0 (frictionless, on the axis), tau = +-beta lambda_n
+    // (slip), whose column joins lambda_n's. Rows: w_n = d (contact), no slip increment
+    // (stick), the force.
+    std::vector<Index> free_dofs;
+    Vector slip_factor = Vector::Zero(n);      // tau_i = slip_factor_i lambda_i when slipping
     for (Index i = 0; i < n; ++i) {
-      const Index rn = 2 * i, rt = 2 * i + 1;
-      if (state[rn] == 1) {  // w_n = d
-        J.row(rn).head(2 * n) = p.M.row(rn);
-        if (p.has_force) J(rn, 2 * n) = p.b[rn];
-        rhs[rn] = p.gap[i] - in.load * p.a[rn];
-      } else {
-        J(rn, rn) = 1.0;  // lambda_n = 0
+      if (state[2 * i] == 1) free_dofs.push_back(2 * i);
+      if (state[2 * i + 1] == 1) free_dofs.push_back(2 * i + 1);
+      if (state[2 * i + 1] >= 2) {
+        const double s = state[2 * i + 1] == 2 ? 1.0 : -1.0;
+        const double sigma = in.kind == ContactKind::bilateral && x[2 * i] < 0.0 ? -1.0 : 1.0;
+        slip_factor[i] = in.friction * s * sigma;
       }
-      if (state[rt] == 0) {
-        J(rt, rt) = 1.0;
-      } else if (state[rt] == 1) {  // no slip increment
-        J.row(rt).head(2 * n) = p.M.row(rt);
-        if (p.has_force) J(rt, 2 * n) = p.b[rt];
-        rhs[rt] = in.previous_tangential_jump[i] - in.load * p.a[rt];
-      } else {  // tau = +-beta lambda_n (sign of lambda_n in bilateral contact)
-        const double s = state[rt] == 2 ? 1.0 : -1.0;
-        const double sigma = in.kind == ContactKind::bilateral && x[rn] < 0.0 ? -1.0 : 1.0;
-        J(rt, rt) = 1.0;
-        J(rt, rn) = -in.friction * s * sigma;
+    }
+    const Index reduced = static_cast<Index>(free_dofs.size());
+    const Index system_size = reduced + (p.has_force ? 1 : 0);
+    // Column k of the reduced operator: M's column of the unknown, plus the slip column.
+    auto column_of = [&](Index dof) -> Vector {
+      Vector column = p.M.col(dof);
+      if (dof % 2 == 0 && slip_factor[dof / 2] != 0.0) column += slip_factor[dof / 2] * p.M.col(dof + 1);
+      return column;
+    };
+    Matrix J = Matrix::Zero(system_size, system_size);
+    Vector rhs = Vector::Zero(system_size);
+    for (Index k = 0; k < reduced; ++k) {
+      const Vector column = column_of(free_dofs[k]);
+      for (Index a = 0; a < reduced; ++a) J(a, k) = column[free_dofs[a]];
+      if (p.has_force) {
+        const Index dof = free_dofs[k];
+        J(reduced, k) = p.f[dof] + (dof % 2 == 0 ? slip_factor[dof / 2] * p.f[dof + 1] : 0.0);
       }
+    }
+    for (Index a = 0; a < reduced; ++a) {
+      const Index row = free_dofs[a], i = row / 2;
+      if (p.has_force) J(a, reduced) = p.b[row];
+      rhs[a] = (row % 2 == 0 ? p.gap[i] : in.previous_tangential_jump[i]) - in.load * p.a[row];
     }
     if (p.has_force) {
-      J.row(2 * n).head(2 * n) = p.f.transpose();
-      J(2 * n, 2 * n) = p.f_delta;
-      rhs[2 * n] = in.load * (p.force - p.F0);
+      J(reduced, reduced) = p.f_delta;
+      rhs[reduced] = in.load * (p.force - p.F0);
     }
-    const Eigen::PartialPivLU<Matrix> lu(J);
-    Vector y = lu.solve(rhs);
-    if (!y.allFinite() || (J * y - rhs).norm() > 1e-6 * (rhs.norm() + 1e-300) + 1e-12 * J.norm() * y.norm()) {
-      out.failure = "the Newton system of iteration " + std::to_string(iteration) +
-                    " is singular (no pair in contact can carry the load?)";
-      break;
+    // LAPACK through DenseLU: the dense solve is the cost of an iteration, at BLAS-3 speed.
+    const std::string singular = "the Newton system of iteration " + std::to_string(iteration) +
+                                 " is singular (no pair in contact can carry the load?)";
+    Vector z;
+    if (system_size > 0) {
+      try {
+        z = operators::DenseLU(J, "the Newton system").solve(rhs);
+      } catch (const SolverError&) {
+        out.failure = singular;
+        break;
+      }
+      if (!z.allFinite() || (J * z - rhs).norm() > 1e-6 * (rhs.norm() + 1e-300) + 1e-12 * J.norm() * z.norm()) {
+        out.failure = singular;
+        break;
+      }
     }
+    Vector y = Vector::Zero(size);
+    for (Index k = 0; k < reduced; ++k) y[free_dofs[k]] = z[k];
+    for (Index i = 0; i < n; ++i)
+      if (slip_factor[i] != 0.0) y[2 * i + 1] = slip_factor[i] * y[2 * i];
+    if (p.has_force) y[2 * n] = z[reduced];
     Vector x_new = y.head(2 * n);
     double delta_new = p.has_force ? y[2 * n] : 0.0;
     double new_residual = complementarity_residual(in, x_new, delta_new);

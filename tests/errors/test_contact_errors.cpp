@@ -68,8 +68,8 @@ TEST(ContactErrors, UnknownContactBoundaryListsTheBoundaries) {
 }
 
 TEST(ContactErrors, ContactBoundaryWithConditions) {
-  const auto message = input_error(replaced(example_text(), "name = \"contact\"\nfrom = \"D\"\nto = \"F\"\nelements = 30",
-                                            "name = \"contact\"\nfrom = \"D\"\nto = \"F\"\nelements = 30\nu2 = 0.0"));
+  const auto message = input_error(replaced(example_text(), "name = \"contact\"\nfrom = \"D\"\nto = \"F\"\nelements = \"contact_elements\"",
+                                            "name = \"contact\"\nfrom = \"D\"\nto = \"F\"\nelements = \"contact_elements\"\nu2 = 0.0"));
   EXPECT_TRUE(contains(message, "carries conditions")) << message;
 }
 

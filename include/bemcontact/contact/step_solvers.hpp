@@ -8,8 +8,9 @@
 //    complementarity functions (Alart-Curnier form, c = 1 / mean diag M)
 //      C_n = lambda_n - max(0, lambda_n - c (d - w_n))        (unilateral; c (d - w_n) bilateral)
 //      C_t = tau - proj_[-g, g](tau - c s)
-//    The slip direction is part of the solution. Each iteration solves one small dense
-//    linear system; the step ends when max |C| <= tolerance * pressure scale.
+//    The slip direction is part of the solution. Each iteration solves one dense linear
+//    system in the unknowns not fixed by their own row (lambda_n in contact, tau sticking,
+//    delta); the step ends when max |C| <= tolerance * pressure scale.
 //  - solve_step_thesis: the thesis' algorithms (Alg V.1, V.2, V.3, section V.3.4).
 // Both return the residual max |C| (relative) so that a failure is never silent.
 #include <string>
