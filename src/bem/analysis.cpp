@@ -39,9 +39,10 @@ geometry::BoundaryMesh mesh_body(const ProblemDefinition& problem) {
   if (body.conditions.size() != body.pieces.size())
     throw Error("internal: one boundary condition per piece expected");
   if (problem.analysis == AnalysisType::axisymmetric) {
+    const double tolerance = 1e-9 * geometry::geometry_scale(body.pieces);
     for (const auto& piece : body.pieces)
       for (int k = 0; k <= 4; ++k)
-        if (geometry::point_on_piece(piece, k / 4.0).position.x() < -1e-9 * geometry::geometry_scale(body.pieces))
+        if (geometry::point_on_piece(piece, k / 4.0).position.x() < -tolerance)
           throw InputError(piece.where, "boundary '" + piece.name +
                                             "' reaches r < 0; axisymmetric sections lie in r >= 0");
   }

@@ -141,43 +141,43 @@ InfluenceMatrices assemble_influence_matrices(const geometry::BoundaryMesh& mesh
   // so no column is written by two threads, and every sum runs in a fixed order: the
   // result does not depend on the thread count.
   // In axisymmetry each element also adds int_e U sigma n_e (the radial expansion's traction
-  // on it) to every row: added in element order (ordered), so that the sum does not depend
-  // on the threads either.
+  // on it) to every row. Elements go in batches: each keeps its contribution apart, and the
+  // batch's contributions are summed in element order afterwards, so that the sum does not
+  // depend on the threads either.
+  constexpr std::size_t batch = 64;
+  Matrix contributions(axisymmetric ? 2 * n : 0, axisymmetric ? static_cast<Index>(batch) : 0);
   for (const auto& group : elements_by_colour(mesh)) {
-#pragma omp parallel
-    {
-      Vector contribution(axisymmetric ? 2 * n : 0);
-#pragma omp for schedule(dynamic, 4) ordered
-      for (std::size_t k = 0; k < group.size(); ++k) {
-        bool computed = false;
-        if (!errors.failed())
-          errors.run([&] {
-            const auto& element = mesh.elements[group[k]];
-            const Vec2 element_traction = sigma * element.normal;
-            for (Index i = 0; i < n; ++i) {
-              int source_node = -1;
-              for (int a = 0; a < element.node_count; ++a)
-                if (element.nodes[a] == i) source_node = a;
-              const auto influence = integrator.influence(mesh.nodes[i].position, element, source_node);
-              Vec2 traction_term = Vec2::Zero();
-              for (int a = 0; a < element.node_count; ++a) {
-                const Index j = element.nodes[a];
-                m.G.block<2, 2>(2 * i, 2 * j) += influence.G[a];
-                if (a != source_node) m.H.block<2, 2>(2 * i, 2 * j) += influence.H[a];
-                traction_term += influence.G[a] * element_traction;
-              }
-              if (axisymmetric) contribution.segment<2>(2 * i) = traction_term;
+    for (std::size_t first = 0; first < group.size(); first += batch) {
+      const std::size_t count = std::min(batch, group.size() - first);
+#pragma omp parallel for schedule(dynamic, 2)
+      for (std::size_t k = 0; k < count; ++k) {
+        if (errors.failed()) continue;
+        errors.run([&] {
+          const auto& element = mesh.elements[group[first + k]];
+          const Vec2 element_traction = sigma * element.normal;
+          for (Index i = 0; i < n; ++i) {
+            int source_node = -1;
+            for (int a = 0; a < element.node_count; ++a)
+              if (element.nodes[a] == i) source_node = a;
+            const auto influence = integrator.influence(mesh.nodes[i].position, element, source_node);
+            Vec2 traction_term = Vec2::Zero();
+            for (int a = 0; a < element.node_count; ++a) {
+              const Index j = element.nodes[a];
+              m.G.block<2, 2>(2 * i, 2 * j) += influence.G[a];
+              if (a != source_node) m.H.block<2, 2>(2 * i, 2 * j) += influence.H[a];
+              traction_term += influence.G[a] * element_traction;
             }
-            computed = true;
-            const Index done = ++elements_done;
-            if (progress && omp_get_thread_num() == 0)
-              progress("assembly", static_cast<double>(done) / static_cast<double>(mesh.element_count()));
-          });
-#pragma omp ordered
-        if (computed && axisymmetric) radial_traction_integral += contribution;
+            if (axisymmetric) contributions.block<2, 1>(2 * i, static_cast<Index>(k)) = traction_term;
+          }
+          const Index done = ++elements_done;
+          if (progress && omp_get_thread_num() == 0)
+            progress("assembly", static_cast<double>(done) / static_cast<double>(mesh.element_count()));
+        });
       }
+      errors.rethrow();
+      if (axisymmetric)
+        for (std::size_t k = 0; k < count; ++k) radial_traction_integral += contributions.col(static_cast<Index>(k));
     }
-    errors.rethrow();
   }
   set_diagonal_blocks(mesh, integrator, radial_traction_integral, m);
   if (progress) progress("assembly", 1.0);
