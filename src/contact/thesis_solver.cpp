@@ -196,7 +196,9 @@ BilateralResult successive_thresholds(const StepInput& in, const std::vector<boo
     if (!projected_gmres(in, r, g, slip_sign, options, y, out.gmres_cycles)) {
       result.converged = false;
       result.failure = "projected GMRES(" + std::to_string(options.gmres_restart) + ") (Alg V.1) did not settle in " +
-                       std::to_string(options.max_gmres_cycles) + " cycles";
+                       std::to_string(options.max_gmres_cycles) +
+                       " cycles (its cycle count grows with the number of pairs: raise max_gmres_cycles, or use the "
+                       "default algorithm = \"newton\")";
       break;
     }
     if (friction == 0.0) break;

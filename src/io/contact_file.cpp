@@ -135,7 +135,8 @@ ContactFile parse_contact_problem(std::string_view text, const std::string& file
   if (!contact_table) root.fail("contact", "missing [contact] table");
   const TableReader contact(*contact_table, "contact", context, root.line());
   contact.check_keys({"boundary1", "boundary2", "kind", "friction", "coupling", "increments", "algorithm",
-                      "gmres_restart", "xi", "tolerance", "max_iterations", "record_steps", "load", "normal"},
+                      "gmres_restart", "max_gmres_cycles", "xi", "tolerance", "max_iterations", "record_steps", "load",
+                      "normal"},
                      "the [contact] table");
   for (int b = 0; b < 2; ++b) {
     const std::string key = "boundary" + std::to_string(b + 1);
@@ -166,6 +167,8 @@ ContactFile parse_contact_problem(std::string_view text, const std::string& file
                                  : contact::Algorithm::newton;
   problem.solver.gmres_restart = contact.integer_or("gmres_restart", problem.solver.gmres_restart);
   if (problem.solver.gmres_restart < 1) contact.fail("gmres_restart", "m of GMRES(m) must be >= 1");
+  problem.solver.max_gmres_cycles = contact.integer_or("max_gmres_cycles", problem.solver.max_gmres_cycles);
+  if (problem.solver.max_gmres_cycles < 1) contact.fail("max_gmres_cycles", "must be >= 1");
   if (const auto xi = contact.optional_number("xi")) {
     if (!(*xi > 0.0 && *xi < 1.0)) contact.fail("xi", "must satisfy 0 < xi < 1");
     problem.solver.xi = *xi;

@@ -80,6 +80,7 @@ nlohmann::json contact_summary_json(const contact::ContactProblem& problem, cons
   j["algorithm"] = contact::to_string(problem.solver.algorithm);
   if (problem.solver.algorithm == contact::Algorithm::thesis) {
     j["gmres_restart"] = problem.solver.gmres_restart;
+    j["max_gmres_cycles"] = problem.solver.max_gmres_cycles;
     j["xi"] = problem.solver.xi;
   } else {
     j["tolerance"] = problem.solver.tolerance;
