@@ -81,7 +81,6 @@ void set_diagonal_blocks(const geometry::BoundaryMesh& mesh, const ElementIntegr
   // r_i = 0, cannot absorb at all).
   Vector radial_u = Vector::Zero(2 * n);
   for (Index j = 0; j < n; ++j) radial_u[2 * j] = mesh.nodes[j].position.x();
-  (void)integrator;
   const Vector residual = radial_traction_integral - m.H * radial_u;  // H_ii still zero
   for (Index i = 0; i < n; ++i) {
     m.H.block<2, 1>(2 * i, 2 * i + 1) = -off_diagonal.block<2, 1>(2 * i, 1);

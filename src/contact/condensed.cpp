@@ -4,6 +4,11 @@
 
 namespace bemcontact::contact {
 
+void drop_tangential_coupling(CondensedProblem& problem) {
+  for (Index i = 0; i < problem.pairs; ++i)
+    for (Index j = 0; j < problem.pairs; ++j) problem.M(2 * i, 2 * j + 1) = 0.0;
+}
+
 ContactModel::ContactModel(const ContactProblem& problem, const bem::ProgressCallback& progress)
     : problem_(problem), prepared_(prepare_contact(problem)) {
   const auto& pairs = prepared_.pairs;
@@ -51,9 +56,7 @@ ContactModel::ContactModel(const ContactProblem& problem, const bem::ProgressCal
   auto& c = condensed_;
   c.pairs = n;
   c.M = Q * Bprime * R;
-  if (!problem.tangential_coupling)
-    for (Index i = 0; i < n; ++i)
-      for (Index j = 0; j < n; ++j) c.M(2 * i, 2 * j + 1) = 0.0;  // no w_n from tau
+  if (!problem.tangential_coupling) drop_tangential_coupling(c);
   c.a = Q * (fixed_response[0].head(2 * n) - fixed_response[1].head(2 * n));
   c.gap.resize(n);
   c.on_axis.resize(n);

@@ -140,6 +140,11 @@ ContactSummary summarise(const std::vector<ContactPair>& geometry, const std::ve
   return s;
 }
 
+void check_history_options(const ContactProblem& problem) {
+  if (problem.increments < 1) throw Error("contact: the number of load increments must be >= 1");
+  if (problem.friction < 0.0) throw Error("contact: the friction coefficient must be >= 0");
+}
+
 std::string format_residual(double value) {
   std::ostringstream out;
   out.precision(3);
@@ -151,8 +156,7 @@ std::string format_residual(double value) {
 
 LoadHistory solve_load_history(const CondensedProblem& condensed, const std::vector<ContactPair>& pairs,
                                const ContactProblem& problem, const bem::ProgressCallback& progress) {
-  if (problem.increments < 1) throw Error("contact: the number of load increments must be >= 1");
-  if (problem.friction < 0.0) throw Error("contact: the friction coefficient must be >= 0");
+  check_history_options(problem);
   const Index n = condensed.pairs;
   LoadHistory history;
   StepInput input;
@@ -195,8 +199,7 @@ LoadHistory solve_load_history(const CondensedProblem& condensed, const std::vec
 }
 
 ContactResult solve_contact(const ContactProblem& problem, const bem::ProgressCallback& progress) {
-  if (problem.increments < 1) throw Error("contact: the number of load increments must be >= 1");
-  if (problem.friction < 0.0) throw Error("contact: the friction coefficient must be >= 0");
+  check_history_options(problem);  // before the bodies are assembled
   ContactResult result;
   auto start = Clock::now();
   const ContactModel model(problem, progress);

@@ -1,6 +1,7 @@
 #include "bemcontact/contact/halfspace_model.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 
@@ -31,13 +32,13 @@ std::vector<std::pair<double, double>> graded_panels(double lo, double hi, doubl
   return panels;
 }
 
-}  // namespace
-
-Matrix halfspace_surface_flexibility(const std::vector<double>& radii, const Material& material, bool upper) {
+// For every node j and every quadrature point s of the hats around it: add(j, e, s, w, shapes,
+// integrals), with the element [radii[e], radii[e + 1]], the weight w and the two hats'
+// values there. The ring integrals are evaluated once per point, whatever the materials.
+template <class Add>
+void integrate_over_hats(const std::vector<double>& radii, Add add) {
   const Index n = static_cast<Index>(radii.size());
   const auto& rule = quadrature::gauss_legendre(10);
-  Matrix C = Matrix::Zero(2 * n, 2 * n);
-  const double G = material.shear_modulus(), nu = material.poisson_ratio;
   for (Index j = 0; j < n; ++j) {
     const double r = radii[j];
     for (Index e = 0; e + 1 < n; ++e) {  // element [radii[e], radii[e + 1]]: hats e (falling), e + 1 (rising)
@@ -50,19 +51,33 @@ Matrix halfspace_surface_flexibility(const std::vector<double>& radii, const Mat
           for (int q = 0; q < rule.size(); ++q) {
             const double s = 0.5 * (p0 + p1) + 0.5 * (p1 - p0) * rule.nodes[q];
             const double w = 0.5 * (p1 - p0) * rule.weights[q];
-            const auto k = kernels::halfspace_ring_kernel(kernels::halfspace_ring_integrals(r, s), s, G, nu, upper);
-            const double shapes[2] = {(b - s) / length, (s - a) / length};
-            for (int side = 0; side < 2; ++side) {
-              const Index col = 2 * (e + side);
-              const double f = w * shapes[side];
-              C(2 * j, col) += f * k.rr;
-              C(2 * j, col + 1) += f * k.rz;
-              C(2 * j + 1, col) += f * k.zr;
-              C(2 * j + 1, col + 1) += f * k.zz;
-            }
+            const std::array<double, 2> shapes{(b - s) / length, (s - a) / length};
+            add(j, e, s, w, shapes, kernels::halfspace_ring_integrals(r, s));
           }
     }
   }
+}
+
+// Adds one material's ring kernel at s, times f, to the 2 x 2 block (node j, hat k).
+void add_kernel(Matrix& C, Index j, Index k, double f, const kernels::HalfSpaceRingIntegrals& integrals, double s,
+                const Material& material, bool upper) {
+  const auto kernel =
+      kernels::halfspace_ring_kernel(integrals, s, material.shear_modulus(), material.poisson_ratio, upper);
+  C(2 * j, 2 * k) += f * kernel.rr;
+  C(2 * j, 2 * k + 1) += f * kernel.rz;
+  C(2 * j + 1, 2 * k) += f * kernel.zr;
+  C(2 * j + 1, 2 * k + 1) += f * kernel.zz;
+}
+
+}  // namespace
+
+Matrix halfspace_surface_flexibility(const std::vector<double>& radii, const Material& material, bool upper) {
+  const Index n = static_cast<Index>(radii.size());
+  Matrix C = Matrix::Zero(2 * n, 2 * n);
+  integrate_over_hats(radii, [&](Index j, Index e, double s, double w, const std::array<double, 2>& shapes,
+                                 const kernels::HalfSpaceRingIntegrals& integrals) {
+    for (int side = 0; side < 2; ++side) add_kernel(C, j, e + side, w * shapes[side], integrals, s, material, upper);
+  });
   return C;
 }
 
@@ -77,18 +92,25 @@ HalfSpaceModel halfspace_sphere_model(const HalfSpaceSphereContact& contact) {
 
   HalfSpaceModel model;
   // [u] = u_sphere - u_flat = (C_sphere + C_flat) p, p the traction on the sphere = (tau, lambda).
-  const Matrix C = halfspace_surface_flexibility(radii, contact.sphere, true) +
-                   halfspace_surface_flexibility(radii, contact.flat, false);
+  Matrix C = Matrix::Zero(2 * n, 2 * n);
+  integrate_over_hats(radii, [&](Index j, Index e, double s, double w, const std::array<double, 2>& shapes,
+                                 const kernels::HalfSpaceRingIntegrals& integrals) {
+    for (int side = 0; side < 2; ++side) {
+      add_kernel(C, j, e + side, w * shapes[side], integrals, s, contact.sphere, true);
+      add_kernel(C, j, e + side, w * shapes[side], integrals, s, contact.flat, false);
+    }
+  });
   auto& c = model.condensed;
   c.pairs = n;
   c.M.resize(2 * n, 2 * n);
   for (Index i = 0; i < n; ++i)
     for (Index j = 0; j < n; ++j) {  // w_n = -[u]_z, w_t = [u]_r; x = (lambda, tau)
       c.M(2 * i, 2 * j) = -C(2 * i + 1, 2 * j + 1);
-      c.M(2 * i, 2 * j + 1) = contact.tangential_coupling ? -C(2 * i + 1, 2 * j) : 0.0;
+      c.M(2 * i, 2 * j + 1) = -C(2 * i + 1, 2 * j);
       c.M(2 * i + 1, 2 * j) = C(2 * i, 2 * j + 1);
       c.M(2 * i + 1, 2 * j + 1) = C(2 * i, 2 * j);
     }
+  if (!contact.tangential_coupling) drop_tangential_coupling(c);
   c.a = Vector::Zero(2 * n);
   c.gap.resize(n);
   c.on_axis.assign(n, false);

@@ -57,7 +57,6 @@ double complementarity_residual(const StepInput& in, const Vector& x, double del
 StepOutput solve_step_newton(const StepInput& in, const SolverOptions& options) {
   const auto& p = *in.problem;
   const Index n = p.pairs;
-  const Index size = 2 * n + (p.has_force ? 1 : 0);
   const double c = penalty_scale(p);
   StepOutput out;
   Vector x = in.x_start.size() == 2 * n ? in.x_start : Vector::Zero(2 * n);
@@ -114,21 +113,18 @@ StepOutput solve_step_newton(const StepInput& in, const SolverOptions& options) 
     }
     const Index reduced = static_cast<Index>(free_dofs.size());
     const Index system_size = reduced + (p.has_force ? 1 : 0);
-    // Column k of the reduced operator: M's column of the unknown, plus the slip column.
-    auto column_of = [&](Index dof) -> Vector {
-      Vector column = p.M.col(dof);
-      if (dof % 2 == 0 && slip_factor[dof / 2] != 0.0) column += slip_factor[dof / 2] * p.M.col(dof + 1);
-      return column;
+    // Entry of a row of (M | f) in the column of free unknown `dof`, with the slip column
+    // tau = slip_factor lambda folded into lambda's.
+    auto folded = [&](auto&& entry, Index dof) {
+      const double slip = dof % 2 == 0 ? slip_factor[dof / 2] : 0.0;
+      return slip != 0.0 ? entry(dof) + slip * entry(dof + 1) : entry(dof);
     };
-    Matrix J = Matrix::Zero(system_size, system_size);
-    Vector rhs = Vector::Zero(system_size);
+    Matrix J(system_size, system_size);
+    Vector rhs(system_size);
     for (Index k = 0; k < reduced; ++k) {
-      const Vector column = column_of(free_dofs[k]);
-      for (Index a = 0; a < reduced; ++a) J(a, k) = column[free_dofs[a]];
-      if (p.has_force) {
-        const Index dof = free_dofs[k];
-        J(reduced, k) = p.f[dof] + (dof % 2 == 0 ? slip_factor[dof / 2] * p.f[dof + 1] : 0.0);
-      }
+      for (Index a = 0; a < reduced; ++a)
+        J(a, k) = folded([&](Index c) { return p.M(free_dofs[a], c); }, free_dofs[k]);
+      if (p.has_force) J(reduced, k) = folded([&](Index c) { return p.f[c]; }, free_dofs[k]);
     }
     for (Index a = 0; a < reduced; ++a) {
       const Index row = free_dofs[a], i = row / 2;
@@ -140,28 +136,27 @@ StepOutput solve_step_newton(const StepInput& in, const SolverOptions& options) 
       rhs[reduced] = in.load * (p.force - p.F0);
     }
     // LAPACK through DenseLU: the dense solve is the cost of an iteration, at BLAS-3 speed.
-    const std::string singular = "the Newton system of iteration " + std::to_string(iteration) +
-                                 " is singular (no pair in contact can carry the load?)";
     Vector z;
+    bool singular = false;
     if (system_size > 0) {
       try {
         z = operators::DenseLU(J, "the Newton system").solve(rhs);
       } catch (const SolverError&) {
-        out.failure = singular;
-        break;
+        singular = true;
       }
-      if (!z.allFinite() || (J * z - rhs).norm() > 1e-6 * (rhs.norm() + 1e-300) + 1e-12 * J.norm() * z.norm()) {
-        out.failure = singular;
-        break;
-      }
+      singular = singular || !z.allFinite() ||
+                 (J * z - rhs).norm() > 1e-6 * (rhs.norm() + 1e-300) + 1e-12 * J.norm() * z.norm();
     }
-    Vector y = Vector::Zero(size);
-    for (Index k = 0; k < reduced; ++k) y[free_dofs[k]] = z[k];
+    if (singular) {
+      out.failure = "the Newton system of iteration " + std::to_string(iteration) +
+                    " is singular (no pair in contact can carry the load?)";
+      break;
+    }
+    Vector x_new = Vector::Zero(2 * n);
+    for (Index k = 0; k < reduced; ++k) x_new[free_dofs[k]] = z[k];
     for (Index i = 0; i < n; ++i)
-      if (slip_factor[i] != 0.0) y[2 * i + 1] = slip_factor[i] * y[2 * i];
-    if (p.has_force) y[2 * n] = z[reduced];
-    Vector x_new = y.head(2 * n);
-    double delta_new = p.has_force ? y[2 * n] : 0.0;
+      if (slip_factor[i] != 0.0) x_new[2 * i + 1] = slip_factor[i] * x_new[2 * i];
+    double delta_new = p.has_force ? z[reduced] : 0.0;
     double new_residual = complementarity_residual(in, x_new, delta_new);
     if (damped && new_residual >= residual) {  // backtrack along the Newton direction
       const Vector dx = x_new - x;

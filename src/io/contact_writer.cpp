@@ -30,7 +30,7 @@ nlohmann::json summary_json(const contact::ContactSummary& s) {
   return {{"load_factor", s.load_factor},
           {"a", s.contact_radius},
           {"c", s.stick_radius},
-          {"c_over_a", s.contact_radius > 0.0 ? s.stick_radius / s.contact_radius : 0.0},
+          {"c_over_a", s.stick_ratio()},
           {"peak_pressure", s.peak_pressure},
           {"centre_pressure", s.centre_pressure},
           {"normal_force", s.normal_force},
@@ -104,7 +104,7 @@ std::string contact_report_text(const contact::ContactProblem& problem, const co
   std::string out;
   std::snprintf(line, sizeof line, "contact: %zu pairs, %d in contact, a = %.6g, c = %.6g (c/a = %.4f)\n",
                 result.pairs.size(), s.pairs_in_contact, s.contact_radius, s.stick_radius,
-                s.contact_radius > 0 ? s.stick_radius / s.contact_radius : 0.0);
+                s.stick_ratio());
   out += line;
   std::snprintf(line, sizeof line, "  peak pressure %.6g, centre pressure %.6g, normal force %.6g, approach %.6g\n",
                 s.peak_pressure, s.centre_pressure, s.normal_force, s.approach);

@@ -52,12 +52,7 @@ std::vector<Record> run_thick_cylinder(const Context& context) {
   const auto file = load_example(context, "thick_cylinder.toml");
   const auto& problem = file.problem;
   const double a = file.parameters.at("a"), b = file.parameters.at("b"), P = file.parameters.at("P");
-  reference::ThickCylinder exact;
-  exact.inner_radius = a;
-  exact.outer_radius = b;
-  exact.inner_pressure = P;
-  exact.material = problem.body.material;
-  exact.ends = reference::CylinderEnds::open;
+  const reference::ThickCylinder exact{a, b, P, 0.0, problem.body.material, reference::CylinderEnds::open};
   const auto result = bem::solve_body(problem, context.progress);
   std::vector<Record> records;
   const double H = file.parameters.at("H");

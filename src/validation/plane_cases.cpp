@@ -214,12 +214,7 @@ std::vector<Record> run_thick_ring_plane_strain(const Context& context) {
   const auto file = load_example(context, "thick_ring_plane_strain.toml");
   auto problem = file.problem;
   const double a = file.parameters.at("a"), b = file.parameters.at("b"), p = file.parameters.at("p");
-  reference::ThickCylinder exact;
-  exact.inner_radius = a;
-  exact.outer_radius = b;
-  exact.inner_pressure = p;
-  exact.material = problem.body.material;
-  exact.ends = reference::CylinderEnds::plane_strain;
+  const reference::ThickCylinder exact{a, b, p, 0.0, problem.body.material, reference::CylinderEnds::plane_strain};
   const auto result = bem::solve_body(problem, context.progress);
   const double c = std::sqrt(0.5);
   const Index ia = node_at(result.mesh, Vec2(a * c, a * c)), ib = node_at(result.mesh, Vec2(b * c, b * c));

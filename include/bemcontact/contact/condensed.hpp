@@ -33,6 +33,10 @@ struct CondensedProblem {
   double force = 0.0;  // the prescribed total force at full load
 };
 
+// The uncoupled (Goodman-type) approximation of Spence's (E.1): the normal jumps no longer
+// depend on the tangential tractions (M's w_n rows lose their tau columns).
+void drop_tangential_coupling(CondensedProblem& problem);
+
 class ContactModel {
  public:
   ContactModel(const ContactProblem& problem, const bem::ProgressCallback& progress = {});

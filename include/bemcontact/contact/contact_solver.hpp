@@ -44,6 +44,8 @@ struct ContactSummary {
   int pairs_in_contact = 0;
   int newton_iterations = 0, kalker_iterations = 0, threshold_iterations = 0, gmres_cycles = 0;
   double residual = 0.0;        // relative complementarity residual
+
+  double stick_ratio() const { return contact_radius > 0.0 ? stick_radius / contact_radius : 0.0; }  // c/a
 };
 
 struct ContactResult {

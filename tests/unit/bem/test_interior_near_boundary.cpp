@@ -12,12 +12,7 @@ TEST(BemInteriorPoints, StressStaysAccurateApproachingTheBoundary) {
   auto file = io::read_problem_file(std::string(BEMCONTACT_SOURCE_DIR) + "/examples/thick_ring_plane_strain.toml");
   auto problem = file.problem;
   const double a = file.parameters.at("a"), b = file.parameters.at("b"), p = file.parameters.at("p");
-  reference::ThickCylinder exact;
-  exact.inner_radius = a;
-  exact.outer_radius = b;
-  exact.inner_pressure = p;
-  exact.material = problem.body.material;
-  exact.ends = reference::CylinderEnds::plane_strain;
+  const reference::ThickCylinder exact{a, b, p, 0.0, problem.body.material, reference::CylinderEnds::plane_strain};
   // Along the ray at 30 degrees (between nodes), from mid-wall to the inner surface.
   const double h = a * (3.14159265358979 / 2) / 32;  // inner element length
   const Vec2 dir(std::cos(0.5236), std::sin(0.5236));

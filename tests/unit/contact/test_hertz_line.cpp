@@ -83,7 +83,7 @@ TEST(ContactAlgorithms, ThesisAndNewtonAgreeWithFriction) {
   // Coulomb holds at every pair.
   for (const auto& pair : newton.pairs) EXPECT_LE(std::abs(pair.p_t), 0.1 * std::abs(pair.p_n) * (1 + 1e-9) + 1e-14);
   std::printf("friction: c/a %.3f, newton %d its, thesis kalker %d, V.2 %d, gmres cycles %d\n",
-              newton.summary.stick_radius / newton.summary.contact_radius, newton.summary.newton_iterations,
+              newton.summary.stick_ratio(), newton.summary.newton_iterations,
               thesis.summary.kalker_iterations, thesis.summary.threshold_iterations, thesis.summary.gmres_cycles);
 }
 
