@@ -175,9 +175,9 @@ LoadHistory solve_load_history(const CondensedProblem& condensed, const std::vec
       throw SolverError("contact (" + std::string(to_string(problem.solver.algorithm)) + " algorithm): load step " +
                         std::to_string(k) + " of " + std::to_string(problem.increments) + ": " + step.failure +
                         "; complementarity residual " + format_residual(step.residual) + " (relative)");
-    const auto results = pair_results(pairs, step, problem);
-    history.steps.push_back(summarise(pairs, results, step, input.load));
-    if (problem.record_steps) history.step_pairs.push_back(results);
+    history.pairs = pair_results(pairs, step, problem);
+    history.steps.push_back(summarise(pairs, history.pairs, step, input.load));
+    if (problem.record_steps) history.step_pairs.push_back(history.pairs);
     totals.newton_iterations += step.newton_iterations;
     totals.kalker_iterations += step.kalker_iterations;
     totals.threshold_iterations += step.threshold_iterations;
@@ -187,8 +187,7 @@ LoadHistory solve_load_history(const CondensedProblem& condensed, const std::vec
     input.delta_start = step.delta;
     if (progress) progress("contact load steps", static_cast<double>(k) / problem.increments);
   }
-  history.pairs = pair_results(pairs, step, problem);
-  history.summary = history.steps.back();
+  history.summary = history.steps.back();  // history.pairs: the last step's
   history.summary.newton_iterations = totals.newton_iterations;
   history.summary.kalker_iterations = totals.kalker_iterations;
   history.summary.threshold_iterations = totals.threshold_iterations;
