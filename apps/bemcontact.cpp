@@ -10,18 +10,11 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 
-#include "bemcontact/bem/analysis.hpp"
 #include "bemcontact/core/error.hpp"
-#include "bemcontact/contact/contact_solver.hpp"
-#include "bemcontact/dd/solver.hpp"
-#include "bemcontact/io/contact_file.hpp"
-#include "bemcontact/io/contact_writer.hpp"
-#include "bemcontact/io/decomposition_file.hpp"
-#include "bemcontact/io/decomposition_writer.hpp"
-#include "bemcontact/io/json_writer.hpp"
+#include "bemcontact/driver/run.hpp"
 #include "bemcontact/io/output_directory.hpp"
-#include "bemcontact/io/problem_file.hpp"
-#include "bemcontact/io/results_writer.hpp"
+#include "bemcontact/io/toml_reader.hpp"
+#include "bemcontact/operators/dense_lu.hpp"
 #include "bemcontact/validation/validation.hpp"
 
 #ifndef BEMCONTACT_EXAMPLES_DIR
@@ -48,26 +41,6 @@ bem::ProgressCallback make_progress(bool quiet) {
   };
 }
 
-json options_json(const bem::ProblemDefinition& problem) {
-  return {{"analysis", to_string(problem.analysis)},
-          {"interpolation", to_string(problem.mesh.interpolation)},
-          {"corner_shift", problem.mesh.corner_shift},
-          {"split_angle_radians", problem.mesh.split_angle_radians},
-          {"material", {{"E", problem.body.material.young_modulus}, {"nu", problem.body.material.poisson_ratio}}},
-          {"threads", omp_get_max_threads()}};
-}
-
-json mesh_json(const geometry::BoundaryMesh& mesh) {
-  int split = 0;
-  for (const auto& v : mesh.vertices) split += v.split;
-  return {{"nodes", mesh.node_count()}, {"elements", mesh.element_count()},
-          {"contours", mesh.contours.size()}, {"split_corners", split}};
-}
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
 void print_written(const std::string& output_dir, const io::OutputDirectory& out) {
   std::printf("  wrote %s/{", output_dir.c_str());
   bool first = true;
@@ -78,163 +51,24 @@ void print_written(const std::string& output_dir, const io::OutputDirectory& out
   std::printf("}\n");
 }
 
-// Several subdomains glued along interfaces (chapter IV).
-int command_run_decomposition(const std::string& input, const std::string& output_dir, bool quiet,
-                              const io::ParameterOverrides& overrides) {
-  const auto started = std::chrono::steady_clock::now();
-  const auto file = io::read_decomposition_file(input, overrides);
-  const auto result = dd::solve_decomposition(file.problem, make_progress(quiet));
-  json summary = {{"bemcontact_version", BEMCONTACT_VERSION},
-                  {"input", input},
-                  {"title", file.problem.title},
-                  {"parameters", file.parameters},
-                  {"decomposition", io::decomposition_summary_json(file.problem, result)}};
-  io::OutputDirectory out;
-  if (result.converged()) {
-    for (const auto& [name, content] : io::decomposition_files(result, file.problem.title, file.output.vtk))
-      out.add(name, content);
-  } else {
-    // No answer from an unconverged iteration: only the diagnostics.
-    out.add("gmres.csv", io::gmres_history_csv(result.gmres));
-  }
-  summary["timings_seconds"] = {{"total", seconds_since(started)}};
-  summary["outputs"] = out.names();
-  out.add("summary.json", io::write_json_string(summary));
-  out.commit(output_dir);
-  if (!result.converged()) {
-    std::fprintf(stderr, "bemcontact: solver error: the interface problem did not converge: %s\n",
-                 result.gmres.message.c_str());
+// `run` and `mesh`: the driver computes every file in memory, then the folder is replaced
+// whole (io/output_directory.hpp).
+int command_run(const std::string& input, const std::string& output_dir, bool quiet, driver::RunOptions options,
+                bool mesh_only) {
+  const std::string text = io::read_problem_text(input);
+  options.progress = make_progress(quiet);
+  const auto output = mesh_only ? driver::mesh_problem(text, input, options) : driver::run_problem(text, input, options);
+  for (const auto& warning : output.warnings) std::fprintf(stderr, "bemcontact: warning: %s\n", warning.c_str());
+  output.files.commit(output_dir);
+  if (!output.solver_failure.empty()) {
+    std::fprintf(stderr, "bemcontact: solver error: %s (diagnostics in %s)\n", output.solver_failure.c_str(),
+                 output_dir.c_str());
     return solver_failed;
   }
   if (!quiet) {
-    std::printf("%s\n  %zu subdomains, method %s, %ld interface unknowns\n", file.problem.title.c_str(),
-                result.subdomains.size(), dd::to_string(result.method), static_cast<long>(result.interface_unknowns));
-    std::printf("  GMRES(%d): %d iterations, relative residual %.3g\n", file.problem.options.restart,
-                result.gmres.iterations, result.gmres.relative_residual);
-    double jump_u = 0.0, jump_p = 0.0;
-    for (const auto& j : result.jumps) jump_u = std::max(jump_u, j.jump_u), jump_p = std::max(jump_p, j.jump_p);
-    std::printf("  max interface jumps: [u] = %.3g, [p] = %.3g\n", jump_u, jump_p);
-    std::printf("  time %.3f s\n", seconds_since(started));
-    print_written(output_dir, out);
+    std::printf("%s", output.report.c_str());
+    print_written(output_dir, output.files);
   }
-  return ok;
-}
-
-// Two elastic bodies in contact (chapter V).
-int command_run_contact(const std::string& input, const std::string& output_dir, bool quiet,
-                        const io::ParameterOverrides& overrides) {
-  const auto started = std::chrono::steady_clock::now();
-  const auto file = io::read_contact_file(input, overrides);
-  const auto result = contact::solve_contact(file.problem, make_progress(quiet));
-  io::OutputDirectory out;
-  for (const auto& [name, content] : io::contact_output_files(file.problem, result, file.vtk, file.parameters)) out.add(name, content);
-  out.commit(output_dir);
-  if (!quiet) {
-    std::printf("%s", io::contact_report_text(file.problem, result).c_str());
-    std::printf("  time %.3f s\n", seconds_since(started));
-    print_written(output_dir, out);
-  }
-  return ok;
-}
-
-int command_run(const std::string& input, const std::string& output_dir, bool quiet,
-                const io::ParameterOverrides& overrides) {
-  if (io::is_decomposition_file(input)) return command_run_decomposition(input, output_dir, quiet, overrides);
-  if (io::is_contact_file(input)) return command_run_contact(input, output_dir, quiet, overrides);
-  const auto started = std::chrono::steady_clock::now();
-  const auto file = io::read_problem_file(input, overrides);
-  const auto read_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-  auto result = bem::solve_body(file.problem, make_progress(quiet));
-
-  const auto write_started = std::chrono::steady_clock::now();
-  io::OutputDirectory out;
-  out.add("boundary.csv", io::boundary_csv(result.mesh, result.boundary));
-  if (!result.interior.points.empty()) out.add("interior.csv", io::interior_csv(result.interior));
-  if (file.output.vtk) {
-    out.add("boundary.vtk", io::boundary_vtk(result.mesh, result.boundary, file.problem.title));
-    if (!result.interior.points.empty())
-      out.add("interior.vtk", io::interior_vtk(result.interior, file.problem.title));
-  }
-  // Summary last, with the write time of the other files.
-  double max_vm = 0.0, max_u = 0.0;
-  Index max_vm_node = 0;
-  for (Index i = 0; i < result.mesh.node_count(); ++i) {
-    const double vm = result.boundary.stress[i].von_mises();
-    if (vm > max_vm) max_vm = vm, max_vm_node = i;
-    max_u = std::max(max_u, result.boundary.displacement[i].norm());
-  }
-  double interior_max_vm = 0.0;
-  for (const auto& s : result.interior.stress) interior_max_vm = std::max(interior_max_vm, s.von_mises());
-  json timings = {{"read", read_seconds}};
-  for (const auto& [phase, seconds] : result.timings.phases) timings[phase] = seconds;
-  timings["write"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - write_started).count();
-  timings["total"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-  const auto& peak = result.mesh.nodes[max_vm_node].position;
-  json summary = {
-      {"bemcontact_version", BEMCONTACT_VERSION},
-      {"input", input},
-      {"title", file.problem.title},
-      {"parameters", file.parameters},
-      {"options", options_json(file.problem)},
-      {"problem", io::problem_echo_json(file)},
-      {"mesh", mesh_json(result.mesh)},
-      {"solve", {{"unknowns", result.report.unknowns},
-                 {"reciprocal_condition_estimate", result.report.reciprocal_condition},
-                 {"relative_residual", result.report.relative_residual},
-                 {"constraints_fix_rigid_modes_only", result.report.constraints_fix_rigid_modes_only}}},
-      {"results", {{"max_boundary_displacement", max_u},
-                   {"max_boundary_von_mises", max_vm},
-                   {"max_boundary_von_mises_at", {peak.x(), peak.y()}},
-                   {"interior_points", result.interior.points.size()},
-                   {"interior_points_dropped_outside", result.interior.dropped_points.size()},
-                   {"max_interior_von_mises", interior_max_vm}}},
-      {"timings_seconds", timings},
-      {"outputs", out.names()}};
-  out.add("summary.json", io::write_json_string(summary));
-  out.commit(output_dir);
-
-  if (!quiet) {
-    std::printf("%s\n", file.problem.title.c_str());
-    std::printf("  %s, %s elements: %ld nodes, %ld elements, %ld unknowns\n", to_string(file.problem.analysis),
-                to_string(file.problem.mesh.interpolation), static_cast<long>(result.mesh.node_count()),
-                static_cast<long>(result.mesh.element_count()), static_cast<long>(result.report.unknowns));
-    std::printf("  condition estimate 1/rcond = %.3g, relative residual = %.3g\n",
-                1.0 / result.report.reciprocal_condition, result.report.relative_residual);
-    std::printf("  max |u| on the boundary = %.6g, max von Mises = %.6g at (%.6g, %.6g)\n", max_u, max_vm,
-                peak.x(), peak.y());
-    if (!result.interior.points.empty())
-      std::printf("  %zu interior points (%zu outside dropped), max von Mises = %.6g\n",
-                  result.interior.points.size(), result.interior.dropped_points.size(), interior_max_vm);
-    std::printf("  time %.3f s (", timings["total"].get<double>());
-    bool first = true;
-    for (const auto& [phase, seconds] : result.timings.phases) {
-      std::printf("%s%s %.3f", first ? "" : ", ", phase.c_str(), seconds);
-      first = false;
-    }
-    std::printf(")\n  wrote %s/{", output_dir.c_str());
-    first = true;
-    for (const auto& name : out.names()) {
-      std::printf("%s%s", first ? "" : ",", name.c_str());
-      first = false;
-    }
-    std::printf("}\n");
-  }
-  return ok;
-}
-
-int command_mesh(const std::string& input, const std::string& output_dir, bool quiet,
-                 const io::ParameterOverrides& overrides) {
-  const auto file = io::read_problem_file(input, overrides);
-  const auto mesh = bem::mesh_body(file.problem);
-  io::OutputDirectory out;
-  out.add("mesh_nodes.csv", io::mesh_nodes_csv(mesh));
-  out.add("mesh_elements.csv", io::mesh_elements_csv(mesh));
-  out.add("mesh.vtk", io::mesh_vtk(mesh, file.problem.title));
-  out.commit(output_dir);
-  if (!quiet)
-    std::printf("%s: %ld nodes, %ld elements; wrote %s/{mesh_nodes.csv,mesh_elements.csv,mesh.vtk}\n",
-                file.problem.title.c_str(), static_cast<long>(mesh.node_count()),
-                static_cast<long>(mesh.element_count()), output_dir.c_str());
   return ok;
 }
 
@@ -306,10 +140,7 @@ int command_validate(std::vector<std::string> names, const std::vector<std::stri
   }
   std::printf("validate: %d passed, %d failed\n", total - failed, failed);
   if (!json_path.empty()) {
-    io::OutputDirectory out;
-    const std::filesystem::path path(json_path);
-    out.add(path.filename().string(), records.dump(2) + "\n");
-    out.commit(path.has_parent_path() ? path.parent_path().string() : ".");
+    io::write_file_atomically(json_path, records.dump(2, ' ', false, json::error_handler_t::replace) + "\n");
   }
   return failed == 0 ? ok : validation_failed;
 }
@@ -326,18 +157,28 @@ int main(int argc, char** argv) {
 
   std::string input, output_dir = "out";
   bool quiet = false;
-  auto* run = app.add_subcommand("run", "solve a problem file and write boundary.csv, interior.csv, VTK, summary.json");
-  run->add_option("FILE", input, "problem file (TOML)")->required();
-  run->add_option("-o,--output", output_dir, "output directory (default: out)");
-  run->add_flag("-q,--quiet", quiet, "no progress and no summary on the terminal");
   std::vector<std::string> assignments;
-  run->add_option("--set", assignments, "NAME=VALUE: replace a [parameters] value of the file (repeatable)");
-
+  driver::RunOptions run_options;
+  double max_memory_gb = 0.0;
+  const auto add_run_options = [&](CLI::App* command, const char* quiet_help) {
+    command->add_option("FILE", input, "problem file (TOML)")->required();
+    command->add_option("-o,--output", output_dir, "output directory, replaced whole (default: out)");
+    command->add_flag("-q,--quiet", quiet, quiet_help);
+    command->add_option("--set", assignments, "NAME=VALUE: replace a [parameters] value of the file (repeatable)");
+    command->add_option("--max-elements", run_options.limits.max_elements,
+                        "largest number of elements of one body (default 200000)")
+        ->check(CLI::PositiveNumber);
+    command->add_option("--max-points", run_options.limits.max_interior_points,
+                        "largest number of interior points (default 2000000)")
+        ->check(CLI::PositiveNumber);
+    command->add_option("--max-memory", max_memory_gb,
+                        "memory the dense systems may take, in GB (default: 80 % of the machine's)")
+        ->check(CLI::PositiveNumber);
+  };
+  auto* run = app.add_subcommand("run", "solve a problem file and write boundary.csv, interior.csv, VTK, summary.json");
+  add_run_options(run, "no progress and no summary on the terminal");
   auto* mesh = app.add_subcommand("mesh", "write the boundary mesh only (nodes, elements, normals)");
-  mesh->add_option("FILE", input, "problem file (TOML)")->required();
-  mesh->add_option("-o,--output", output_dir, "output directory (default: out)");
-  mesh->add_flag("-q,--quiet", quiet, "print nothing");
-  mesh->add_option("--set", assignments, "NAME=VALUE: replace a [parameters] value of the file (repeatable)");
+  add_run_options(mesh, "print nothing");
 
   std::vector<std::string> cases, skip;
   std::string json_path, examples = BEMCONTACT_EXAMPLES_DIR;
@@ -350,13 +191,21 @@ int main(int argc, char** argv) {
   validate->add_option("--skip", skip, "cases to leave out of a full run");
   validate->add_flag("-q,--quiet", quiet, "no progress");
 
-  CLI11_PARSE(app, argc, argv);
-  if (threads > 0) omp_set_num_threads(threads);
   try {
-    io::ParameterOverrides overrides;
-    for (const auto& assignment : assignments) io::add_parameter_override(overrides, assignment);
-    if (*run) return command_run(input, output_dir, quiet, overrides);
-    if (*mesh) return command_mesh(input, output_dir, quiet, overrides);
+    app.parse(argc, argv);
+  } catch (const CLI::Success& e) {
+    return app.exit(e);  // --help, --version
+  } catch (const CLI::ParseError& e) {
+    app.exit(e);
+    return bad_input;  // every command-line error is bad input (exit 2)
+  }
+  if (threads > 0) omp_set_num_threads(threads);
+  operators::use_single_threaded_blas();
+  try {
+    for (const auto& assignment : assignments) io::add_parameter_override(run_options.overrides, assignment);
+    run_options.limits.max_memory_bytes = max_memory_gb * 1e9;
+    if (*run) return command_run(input, output_dir, quiet, run_options, false);
+    if (*mesh) return command_run(input, output_dir, quiet, run_options, true);
     if (*validate) return command_validate(cases, skip, json_path, examples, quiet, list);
   } catch (const InputError& e) {
     std::fprintf(stderr, "bemcontact: error: %s\n", e.what());

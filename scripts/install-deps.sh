@@ -1,8 +1,14 @@
 #!/usr/bin/env bash
 # Installs the Debian packages bemcontact builds with, when any is missing.
+#   install-deps.sh          what the build and `make test` need
+#   install-deps.sh --fuzz   plus clang, libFuzzer and clang's OpenMP (`make fuzz`)
 set -euo pipefail
+cd "$(dirname "$0")/.."
 packages=(g++ cmake make pkg-config libeigen3-dev libopenblas-dev liblapacke-dev
   libtomlplusplus-dev libcli11-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev)
+if [ "${1:-}" = "--fuzz" ]; then
+  packages+=(clang libclang-rt-14-dev libomp-14-dev)
+fi
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
@@ -17,4 +23,4 @@ if [ "$(id -u)" -ne 0 ]; then
 fi
 export DEBIAN_FRONTEND=noninteractive
 apt-get update -qq
-apt-get install -y -qq --no-install-recommends "${missing[@]}"
+apt-get install -y -qq --no-install-recommends "${missing[@]}" > /dev/null

@@ -113,6 +113,15 @@ bool point_inside(const geometry::BoundaryMesh& mesh, const Vec2& query, double 
   bool has_axis = false;
   for (bool skipped : mesh.piece_skipped) has_axis = has_axis || skipped;
   const Vec2 point = has_axis && std::abs(query.x()) <= 1e-9 * mesh.scale ? Vec2(1e-6 * mesh.scale, query.y()) : query;
+  // Outside the bounding box (or not a number): outside, before any product can overflow.
+  if (!point.allFinite()) return false;
+  Vec2 lo = mesh.elements.empty() ? point : mesh.elements.front().start, hi = lo;
+  for (const auto& e : mesh.elements) {
+    lo = lo.cwiseMin(e.start).cwiseMin(e.end);
+    hi = hi.cwiseMax(e.start).cwiseMax(e.end);
+  }
+  for (const auto& v : mesh.vertices) lo = lo.cwiseMin(v.position), hi = hi.cwiseMax(v.position);
+  if ((point.array() < lo.array()).any() || (point.array() > hi.array()).any()) return false;
   double winding = 0.0;
   for (const auto& e : mesh.elements) {
     const Vec2 a = e.start - point, b = e.end - point;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 #include <sstream>
+#include <unordered_map>
 
 namespace bemcontact::geometry {
 namespace {
@@ -46,6 +47,144 @@ bool segments_cross(const Vec2& p1, const Vec2& p2, const Vec2& q1, const Vec2& 
   const double t = cross(qp, s) / denom;
   const double u = cross(qp, r) / denom;
   return t > tol && t < 1.0 - tol && u > tol && u < 1.0 - tol;
+}
+
+
+// The polyline through every element end (and 32 points at least per arc) of each piece.
+struct Chord {
+  Vec2 a, b;
+  int piece;
+  int index;  // along the piece
+  int count;  // chords of the piece
+};
+
+std::vector<Chord> boundary_chords(const std::vector<BoundaryPiece>& pieces) {
+  std::vector<Chord> chords;
+  for (int i = 0; i < static_cast<int>(pieces.size()); ++i) {
+    const int m = std::max(pieces[i].elements, pieces[i].shape == PieceShape::arc ? 32 : 1);
+    for (int k = 0; k < m; ++k)
+      chords.push_back({point_on_piece(pieces[i], static_cast<double>(k) / m).position,
+                        point_on_piece(pieces[i], static_cast<double>(k + 1) / m).position, i, k, m});
+  }
+  return chords;
+}
+
+double point_segment_distance(const Vec2& p, const Vec2& a, const Vec2& b) {
+  const Vec2 d = b - a;
+  const double length2 = d.squaredNorm();
+  const double t = length2 > 0.0 ? std::clamp((p - a).dot(d) / length2, 0.0, 1.0) : 0.0;
+  return (p - (a + t * d)).norm();
+}
+
+// Distance between two closed segments (0 when they cross).
+double segment_distance(const Chord& p, const Chord& q) {
+  if (segments_cross(p.a, p.b, q.a, q.b, 0.0)) return 0.0;
+  return std::min({point_segment_distance(p.a, q.a, q.b), point_segment_distance(p.b, q.a, q.b),
+                   point_segment_distance(q.a, p.a, p.b), point_segment_distance(q.b, p.a, p.b)});
+}
+
+// Chords that follow each other along a contour share an end by construction.
+bool consecutive(const Chord& p, const Chord& q, const std::vector<int>& next) {
+  if (p.piece == q.piece && std::abs(p.index - q.index) == 1) return true;
+  if (next[p.piece] == q.piece && p.index == p.count - 1 && q.index == 0) return true;
+  if (next[q.piece] == p.piece && q.index == q.count - 1 && p.index == 0) return true;
+  return false;
+}
+
+// No two chords that do not follow each other may cross or touch (within tol), ends
+// included: boundaries that meet at an element end are caught too. Chords are binned on
+// a uniform grid along their length, so the check costs about linear time whatever the
+// orientation of the edges.
+void check_no_crossings(const std::vector<BoundaryPiece>& pieces, const std::vector<Chord>& chords,
+                        const std::vector<int>& next, double tol) {
+  Vec2 lo = chords.front().a, hi = lo;
+  double total_length = 0.0;
+  for (const auto& c : chords) {
+    lo = lo.cwiseMin(c.a).cwiseMin(c.b);
+    hi = hi.cwiseMax(c.a).cwiseMax(c.b);
+    total_length += (c.b - c.a).norm();
+  }
+  const double extent = std::max((hi - lo).maxCoeff(), tol);
+  // About two chords of mean length per cell, at most 2048 cells per side.
+  const double cell = std::max(2.0 * total_length / static_cast<double>(chords.size()), extent / 2048.0);
+  const auto cell_of = [&](double v, double origin) {
+    return static_cast<long>(std::floor((v - origin) / cell));
+  };
+  std::unordered_map<long long, std::vector<int>> grid;
+  const long columns = cell_of(hi.x(), lo.x()) + 2;
+  for (int c = 0; c < static_cast<int>(chords.size()); ++c) {
+    const Vec2 a = chords[c].a, b = chords[c].b;
+    const int steps = 1 + static_cast<int>((b - a).norm() / cell);
+    long long last = -1;
+    for (int k = 0; k < steps; ++k) {
+      // The box of each piece of the chord one cell long, widened by the tolerance.
+      const Vec2 p = a + (b - a) * (static_cast<double>(k) / steps);
+      const Vec2 q = a + (b - a) * (static_cast<double>(k + 1) / steps);
+      for (long i = cell_of(std::min(p.x(), q.x()) - tol, lo.x()); i <= cell_of(std::max(p.x(), q.x()) + tol, lo.x()); ++i)
+        for (long j = cell_of(std::min(p.y(), q.y()) - tol, lo.y()); j <= cell_of(std::max(p.y(), q.y()) + tol, lo.y()); ++j) {
+          const long long key = static_cast<long long>(j + 1) * (columns + 2) + (i + 1);
+          auto& list = grid[key];
+          if (key != last && (list.empty() || list.back() != c)) list.push_back(c);
+          last = key;
+        }
+    }
+  }
+  std::vector<long long> keys;
+  keys.reserve(grid.size());
+  for (const auto& [key, list] : grid) keys.push_back(key);
+  std::sort(keys.begin(), keys.end());  // the same first finding on every run
+  for (const long long key : keys) {
+    const auto& list = grid[key];
+    for (std::size_t u = 0; u < list.size(); ++u)
+      for (std::size_t v = u + 1; v < list.size(); ++v) {
+        const Chord& p = chords[list[u]];
+        const Chord& q = chords[list[v]];
+        if (consecutive(p, q, next) || segment_distance(p, q) > tol) continue;
+        const auto& first = pieces[p.piece];
+        const auto& second = pieces[q.piece];
+        Vec2 where = p.a;
+        const Vec2 r = p.b - p.a, d = q.b - q.a;
+        const double denom = r.x() * d.y() - r.y() * d.x();
+        if (std::abs(denom) > 0.0) {
+          const Vec2 w = q.a - p.a;
+          where = p.a + std::clamp((w.x() * d.y() - w.y() * d.x()) / denom, 0.0, 1.0) * r;
+        }
+        for (const Vec2& end : {p.a, p.b, q.a, q.b})
+          if (point_segment_distance(end, p.a, p.b) <= tol && point_segment_distance(end, q.a, q.b) <= tol) where = end;
+        if (p.piece == q.piece)
+          throw GeometryError(piece_text(first) + " crosses or touches itself near " + point_text(where));
+        throw GeometryError("boundaries '" + first.name + "' and '" + second.name + "' cross or touch near " +
+                            point_text(where) + " (contours may not meet except end to start)");
+      }
+  }
+}
+
+// Crossing number of `point` with the closed polylines of a contour's chords.
+bool inside_contour(const Vec2& point, const Contour& contour, const std::vector<Chord>& chords) {
+  bool inside = false;
+  for (const auto& c : chords) {
+    if (std::find(contour.pieces.begin(), contour.pieces.end(), c.piece) == contour.pieces.end()) continue;
+    if ((c.a.y() > point.y()) == (c.b.y() > point.y())) continue;
+    const double x = c.a.x() + (point.y() - c.a.y()) / (c.b.y() - c.a.y()) * (c.b.x() - c.a.x());
+    if (x > point.x()) inside = !inside;
+  }
+  return inside;
+}
+
+// Every hole lies inside the outer contour (contours[0]) and outside every other hole.
+template <class Names>
+void check_holes_inside(const std::vector<BoundaryPiece>& pieces, const std::vector<Contour>& contours,
+                        const std::vector<Chord>& chords, const Names& names) {
+  for (std::size_t h = 1; h < contours.size(); ++h) {
+    const Vec2 point = pieces[contours[h].pieces.front()].start;
+    if (!inside_contour(point, contours[0], chords))
+      throw GeometryError("the hole made of " + names(contours[h]) + " lies outside the outer contour (" +
+                          names(contours[0]) + "): a clockwise contour is a hole and must lie inside the body");
+    for (std::size_t other = 1; other < contours.size(); ++other)
+      if (other != h && inside_contour(point, contours[other], chords))
+        throw GeometryError("the hole made of " + names(contours[h]) + " lies inside the hole made of " +
+                            names(contours[other]));
+  }
 }
 
 }  // namespace
@@ -197,31 +336,44 @@ std::vector<Contour> build_contours(const std::vector<BoundaryPiece>& pieces) {
   }
   if (outer != 0) std::swap(contours[0], contours[outer]);
 
-  // Crossing pieces: test the polylines through the element breakpoints (and arc points).
-  struct Chord { Vec2 a, b; int piece; };
-  std::vector<Chord> chords;
-  for (int i = 0; i < n; ++i) {
-    const int m = std::max(pieces[i].elements, pieces[i].shape == PieceShape::arc ? 32 : 1);
-    for (int k = 0; k < m; ++k)
-      chords.push_back({point_on_piece(pieces[i], static_cast<double>(k) / m).position,
-                        point_on_piece(pieces[i], static_cast<double>(k + 1) / m).position, i});
-  }
-  // Sort by min x for a sweep that keeps the check near-linear for large meshes.
-  std::sort(chords.begin(), chords.end(), [](const Chord& l, const Chord& r) {
-    return std::min(l.a.x(), l.b.x()) < std::min(r.a.x(), r.b.x());
-  });
-  for (std::size_t p = 0; p < chords.size(); ++p) {
-    const double max_x = std::max(chords[p].a.x(), chords[p].b.x());
-    for (std::size_t q = p + 1; q < chords.size(); ++q) {
-      if (std::min(chords[q].a.x(), chords[q].b.x()) > max_x + tol) break;
-      if (segments_cross(chords[p].a, chords[p].b, chords[q].a, chords[q].b, 1e-9)) {
-        const auto& a = pieces[chords[p].piece];
-        const auto& b = pieces[chords[q].piece];
-        throw GeometryError("boundaries '" + a.name + "' and '" + b.name + "' cross each other");
+  const auto chords = boundary_chords(pieces);
+  check_no_crossings(pieces, chords, next, tol);
+  check_holes_inside(pieces, contours, chords, names);
+  return contours;
+}
+
+std::vector<std::string> geometry_warnings(const std::vector<BoundaryPiece>& pieces) {
+  std::vector<std::string> warnings;
+  const double tol = 1e-9 * geometry_scale(pieces);
+  for (const auto& piece : pieces) {
+    if (piece.shape == PieceShape::arc) {
+      const double degrees = std::abs(arc_sweep(piece)) * 180.0 / std::numbers::pi;
+      if (degrees > 180.0 + 1e-9) {
+        std::ostringstream text;
+        text << piece_text(piece) << " is an arc sweeping " << std::lround(degrees) << " degrees (direction = \""
+             << (piece.counterclockwise ? "ccw" : "cw") << "\"); if a " << std::lround(360.0 - degrees)
+             << " degree arc was meant, give the other direction";
+        warnings.push_back(text.str());
       }
     }
   }
-  return contours;
+  // A boundary over a thousand times shorter than a neighbour is usually a typing error.
+  for (const auto& piece : pieces) {
+    const double length = piece_length(piece);
+    for (const auto& other : pieces) {
+      const bool neighbour = (other.end - piece.start).norm() <= tol || (other.start - piece.end).norm() <= tol;
+      if (&other == &piece || !neighbour) continue;
+      const double ratio = piece_length(other) / length;
+      if (ratio > 1000.0) {
+        std::ostringstream text;
+        text << piece_text(piece) << " is " << std::lround(ratio) << " times shorter than its neighbour '" << other.name
+             << "'; check its end points";
+        warnings.push_back(text.str());
+        break;
+      }
+    }
+  }
+  return warnings;
 }
 
 }  // namespace bemcontact::geometry

@@ -275,6 +275,10 @@ BoundaryPiece read_piece(const TableReader& reader, int index, const Vertices& v
   piece.elements = reader.integer_or("elements", 1);
   if (piece.elements < 1)
     reader.fail("elements", "the number of elements must be >= 1, found " + std::to_string(piece.elements));
+  if (piece.elements > reader.context().limits.max_elements)
+    reader.fail("elements", std::to_string(piece.elements) + " elements, over the limit of " +
+                                std::to_string(reader.context().limits.max_elements) +
+                                " per body (raise it with --max-elements if the machine has the memory)");
   piece.grading = reader.optional_number("grading").value_or(1.0);
   if (!(piece.grading >= 1.0))
     reader.fail("grading", "the grading (ratio of the longest to the shortest element) must be >= 1 "

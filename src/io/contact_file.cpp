@@ -1,6 +1,7 @@
 #include "bemcontact/io/contact_file.hpp"
 
 #include <algorithm>
+#include <optional>
 #include <fstream>
 #include <sstream>
 
@@ -41,8 +42,16 @@ std::vector<Vec2> read_points(const TableReader& body, const FileContext& contex
       const double high = read_number(*range->get(1), reader.where(names[k]), context);
       const int count = read_integer(*range->get(2), reader.where(names[k]), context);
       if (count < 1 || high < low) reader.fail(names[k], "needs min <= max and a count >= 1");
+      if (count > context.limits.max_interior_points)
+        reader.fail(names[k], "the count " + std::to_string(count) + " is over the limit of " +
+                                  std::to_string(context.limits.max_interior_points) +
+                                  " interior points (raise it with --max-points)");
       for (int i = 0; i < count; ++i) axes[k].push_back(count == 1 ? low : low + (high - low) * i / (count - 1));
     }
+    if (static_cast<double>(axes[0].size()) * static_cast<double>(axes[1].size()) >
+        static_cast<double>(context.limits.max_interior_points))
+      reader.fail("", "the grid has more points than the limit of " +
+                          std::to_string(context.limits.max_interior_points) + " (raise it with --max-points)");
     for (const double y : axes[1])
       for (const double x : axes[0]) points.emplace_back(x, y);
   }
@@ -57,6 +66,22 @@ int piece_named(const bem::BodyDefinition& body, const std::string& name, const 
     names += (k ? ", '" : "'") + body.pieces[k].name + "'";
   }
   reader.fail(key, "body '" + body.name + "' has no boundary named '" + name + "'; its boundaries are " + names);
+}
+
+// The [[boundary]] table of `body` named `name` (a reader over it), to point at its keys.
+std::optional<TableReader> boundary_table(const toml::table& body, const std::string& path, const std::string& name,
+                                          const FileContext& context) {
+  const toml::array* boundaries = body.get_as<toml::array>("boundary");
+  if (!boundaries) return std::nullopt;
+  for (std::size_t k = 0; k < boundaries->size(); ++k) {
+    const toml::table* table = boundaries->get(k)->as_table();
+    if (!table) continue;
+    const auto* table_name = table->get_as<std::string>("name");
+    if (table_name && table_name->get() == name)
+      return TableReader(*table, path + ".boundary[" + std::to_string(k + 1) + "]", context,
+                         line_of(*boundaries->get(k)) > 0 ? line_of(*boundaries->get(k)) : 1);
+  }
+  return std::nullopt;
 }
 
 }  // namespace
@@ -83,11 +108,13 @@ ContactFile read_contact_file(const std::filesystem::path& path, const Parameter
 }
 
 ContactFile parse_contact_problem(std::string_view text, const std::string& file_name,
-                                  const ParameterOverrides& overrides) {
+                                  const ParameterOverrides& overrides,
+    const ResourceLimits& limits) {
   const toml::table root_table = parse_toml_text(text, file_name);
   ContactFile result;
   FileContext context;
   context.overrides = overrides;
+  context.limits = limits;
   context.file = file_name;
   const TableReader root(root_table, "", context, 1);
   root.check_keys({"title", "analysis", "interpolation", "parameters", "mesh", "output", "body", "contact"},
@@ -127,6 +154,9 @@ ContactFile parse_contact_problem(std::string_view text, const std::string& file
     problem.bodies[b].name = reader.optional_string("name").value_or(path);
     problem.interior_points[b] = read_points(reader, context);
   }
+  // Body 2's nodes on the zone are placed on body 1's common normals, so mesh keys there
+  // would have no effect.
+  std::array<const toml::table*, 2> body_tables{bodies->get(0)->as_table(), bodies->get(1)->as_table()};
   if (problem.bodies[0].name == problem.bodies[1].name)
     root.fail("body", "the two bodies have the same name '" + problem.bodies[0].name + "'");
 
@@ -143,6 +173,14 @@ ContactFile parse_contact_problem(std::string_view text, const std::string& file
     const auto name = contact.optional_string(key);
     if (!name) contact.fail(key, "missing: name the boundary of body '" + problem.bodies[b].name + "' in contact");
     problem.contact_piece[b] = piece_named(problem.bodies[b], *name, contact, key);
+    if (b == 1)
+      if (const auto zone = boundary_table(*body_tables[1], "body[2]", *name, context))
+        for (const char* mesh_key : {"elements", "grading", "refine"})
+          if (zone->has(mesh_key))
+            zone->fail(mesh_key, "body 2's contact boundary is meshed from body 1's (its nodes lie on the common "
+                                 "normals through body 1's nodes), so '" + std::string(mesh_key) +
+                                 "' has no effect here; set the mesh on body 1's contact boundary '" +
+                                 problem.bodies[0].pieces[problem.contact_piece[0]].name + "'");
     const auto& condition = problem.bodies[b].conditions[problem.contact_piece[b]];
     if (condition.kind[0] == bem::ConditionKind::displacement || condition.kind[1] == bem::ConditionKind::displacement ||
         condition.value[0] || condition.value[1])
@@ -177,6 +215,12 @@ ContactFile parse_contact_problem(std::string_view text, const std::string& file
     if (!(*tolerance > 0.0 && *tolerance < 1.0)) contact.fail("tolerance", "must satisfy 0 < tolerance < 1");
     problem.solver.tolerance = *tolerance;
   }
+  if (problem.solver.algorithm != contact::Algorithm::thesis)
+    for (const char* thesis_key : {"gmres_restart", "max_gmres_cycles", "xi"})
+      if (contact.has(thesis_key))
+        contact.fail(thesis_key, "'" + std::string(thesis_key) +
+                                     "' tunes the thesis algorithm only; it has no effect with algorithm = \"newton\" "
+                                     "(remove it, or set algorithm = \"thesis\")");
   problem.solver.max_iterations = contact.integer_or("max_iterations", problem.solver.max_iterations);
   if (problem.solver.max_iterations < 1) contact.fail("max_iterations", "must be >= 1");
 
@@ -197,6 +241,11 @@ ContactFile parse_contact_problem(std::string_view text, const std::string& file
     force.piece = piece_named(problem.bodies[force.body], *boundary, load, "boundary");
     if (force.piece == problem.contact_piece[force.body])
       load.fail("boundary", "the force cannot act on the contact boundary itself");
+    if (problem.bodies[force.body].conditions[force.piece].signature != "free")
+      load.fail("boundary", "boundary '" + *boundary + "' of body '" + *body_name +
+                                "' carries conditions, but a boundary under [contact.load] moves as a rigid platen "
+                                "(its displacement along the force is the unknown approach, the other component is "
+                                "held at 0), so they would have no effect; remove them");
     const int component = load.integer_or("component", 2);
     if (component != 1 && component != 2) load.fail("component", "must be 1 or 2");
     force.component = component - 1;

@@ -136,7 +136,8 @@ std::string contact_report_text(const contact::ContactProblem& problem, const co
 
 std::vector<std::pair<std::string, std::string>> contact_output_files(const contact::ContactProblem& problem,
                                                                       const contact::ContactResult& result, bool vtk,
-                                                                      const std::map<std::string, double>& parameters) {
+                                                                      const std::map<std::string, double>& parameters,
+                                                                      const std::vector<std::string>& warnings) {
   std::vector<std::pair<std::string, std::string>> files;
   files.emplace_back("contact.csv", contact_csv(result.pairs));
   files.emplace_back("contact_steps.csv", contact_steps_csv(result));
@@ -152,11 +153,13 @@ std::vector<std::pair<std::string, std::string>> contact_output_files(const cont
     }
   }
   nlohmann::json summary;
+  summary["bemcontact_version"] = BEMCONTACT_VERSION;
   summary["title"] = problem.title;
   summary["source_file"] = problem.source_file;
   summary["analysis"] = to_string(problem.analysis);
   summary["parameters"] = parameters;
   summary["contact"] = contact_summary_json(problem, result);
+  summary["warnings"] = warnings;
   files.emplace_back("summary.json", write_json_string(summary));
   return files;
 }

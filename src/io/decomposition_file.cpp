@@ -127,11 +127,13 @@ DecompositionFile read_decomposition_file(const std::filesystem::path& path, con
 }
 
 DecompositionFile parse_decomposition(std::string_view text, const std::string& file_name,
-                                      const ParameterOverrides& overrides) {
+                                      const ParameterOverrides& overrides,
+    const ResourceLimits& limits) {
   toml::table root_table = parse_toml_text(text, file_name);
   DecompositionFile result;
   FileContext context;
   context.overrides = overrides;
+  context.limits = limits;
   context.file = file_name;
   const TableReader root(root_table, "", context, 1);
   // Body keys at the top level are a one-body habit: say where they go.

@@ -74,7 +74,12 @@ struct Node {
   double value = 0.0;
   const Function* function = nullptr;
   int left = -1, right = -1;
+  int height = 1;  // of the subtree: evaluation and printing recurse this deep
 };
+
+// Deeper expressions than this are refused: the parser, the compiler and the printer
+// recurse once per level, and no real boundary value needs more.
+constexpr int max_expression_depth = 200;
 
 struct Instruction {
   Op op;
@@ -127,7 +132,8 @@ class Parser {
 
  private:
   [[noreturn]] void fail(std::size_t column, const std::string& what) const {
-    std::string shown(text_);
+    std::string shown(text_.substr(0, 120));
+    if (text_.size() > shown.size()) shown += "...";
     std::replace(shown.begin(), shown.end(), '\n', ' ');
     throw InputError(where_, "in expression \"" + shown + "\", column " + std::to_string(column + 1) +
                                  ": " + what + "\n    " + shown + "\n    " +
@@ -211,9 +217,29 @@ class Parser {
       else value = apply(node.op, a, b);
       node = Node{Op::constant, value};
     }
+    if (node.op != Op::constant) {
+      node.height = 1 + std::max(node.left >= 0 ? nodes[node.left].height : 0,
+                                 node.right >= 0 ? nodes[node.right].height : 0);
+      if (node.height > max_expression_depth) fail_too_deep();
+    }
     nodes.push_back(node);
     return static_cast<int>(nodes.size()) - 1;
   }
+
+  [[noreturn]] void fail_too_deep() const {
+    fail(current_.column, "the expression nests more than " + std::to_string(max_expression_depth) +
+                              " operations deep (the limit of the expression reader); split it into "
+                              "named [parameters]");
+  }
+
+  // Counts the parser's own recursion (parentheses, signs, calls).
+  struct Nesting {
+    explicit Nesting(const Parser& parser) : parser_(parser) {
+      if (++parser_.nesting_ > max_expression_depth) parser_.fail_too_deep();
+    }
+    ~Nesting() { --parser_.nesting_; }
+    const Parser& parser_;
+  };
 
   int parse_sum() {
     int left = parse_product();
@@ -238,6 +264,7 @@ class Parser {
   }
 
   int parse_unary() {
+    const Nesting nesting(*this);
     if (at_op('-')) {
       advance();
       const int operand = parse_unary();
@@ -265,6 +292,7 @@ class Parser {
         advance();
         return add_node(Node{Op::constant, token.value});
       case TokenKind::open: {
+        const Nesting nesting(*this);
         advance();
         const int inner = parse_sum();
         if (current_.kind != TokenKind::close)
@@ -381,6 +409,7 @@ class Parser {
   const SourceLocation& where_;
   std::size_t position_ = 0;
   Token current_;
+  mutable int nesting_ = 0;
 };
 
 std::string canonical_text(const std::vector<Node>& nodes, int index) {

@@ -1,8 +1,29 @@
 #include "bemcontact/io/json_writer.hpp"
 
+#include <cmath>
+
+#include "bemcontact/core/error.hpp"
+
 namespace bemcontact::io {
 
+namespace {
+
+// JSON has no NaN or infinity (nlohmann would write null): a non-finite number is a
+// broken result, reported with its path in the document.
+void check_finite(const nlohmann::json& value, const std::string& path) {
+  if (value.is_number_float() && !std::isfinite(value.get<double>()))
+    throw SolverError("the results hold a non-finite value at '" + path +
+                      "' of the summary: the solution broke down (check the data for extreme values)");
+  if (value.is_object())
+    for (const auto& [key, item] : value.items()) check_finite(item, path.empty() ? key : path + "." + key);
+  if (value.is_array())
+    for (std::size_t i = 0; i < value.size(); ++i) check_finite(value[i], path + "[" + std::to_string(i) + "]");
+}
+
+}  // namespace
+
 std::string write_json_string(const nlohmann::json& value, int indent) {
+  check_finite(value, "");
   // Invalid UTF-8 in a title must not abort the summary: replace it.
   return value.dump(indent, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
 }

@@ -51,9 +51,16 @@ std::vector<bem::InteriorPoint> read_grid(const TableReader& grid, const FileCon
     if (count == 1 && high != low)
       grid.fail(key, "a count of 1 needs min = max (one line of points); use a count >= 2 to "
                      "span [" + format_number(low) + ", " + format_number(high) + "]");
+    if (count > context.limits.max_interior_points)
+      grid.fail(key, "the count " + std::to_string(count) + " is over the limit of " +
+                         std::to_string(context.limits.max_interior_points) + " interior points (raise it with --max-points)");
     for (int i = 0; i < count; ++i)
       coordinates[axis].push_back(count == 1 ? low : low + (high - low) * i / (count - 1));
   }
+  const double total = static_cast<double>(coordinates[0].size()) * static_cast<double>(coordinates[1].size());
+  if (total > static_cast<double>(context.limits.max_interior_points))
+    grid.fail("", "the grid has " + format_number(total) + " points, over the limit of " +
+                      std::to_string(context.limits.max_interior_points) + " (raise it with --max-points)");
   // Row by row: x (r) varies fastest.
   std::vector<bem::InteriorPoint> points;
   for (const double y : coordinates[1])
@@ -102,13 +109,15 @@ std::vector<bem::InteriorPoint> read_interior(const TableReader& root, const Fil
 
 }  // namespace
 
-ProblemFile parse_problem(std::string_view text, const std::string& file_name, const ParameterOverrides& overrides) {
+ProblemFile parse_problem(std::string_view text, const std::string& file_name, const ParameterOverrides& overrides,
+    const ResourceLimits& limits) {
   const toml::table root_table = parse_toml_text(text, file_name);
 
   ProblemFile result;
   FileContext context;
   context.file = file_name;
   context.overrides = overrides;
+  context.limits = limits;
   const TableReader root(root_table, "", context, 1);
   std::vector<std::string> root_keys = schema::file_keys();
   root_keys.insert(root_keys.end(), schema::body_keys().begin(), schema::body_keys().end());

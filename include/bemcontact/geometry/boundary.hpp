@@ -54,6 +54,11 @@ struct Contour {
 };
 std::vector<Contour> build_contours(const std::vector<BoundaryPiece>& pieces);
 
+// Geometry that is valid but likely unintended, one message per finding naming the
+// boundary: an arc sweeping more than 180 degrees (a wrong `direction` turns a quarter
+// circle into a 270 degree lobe), a boundary over 1000 times shorter than a neighbour.
+std::vector<std::string> geometry_warnings(const std::vector<BoundaryPiece>& pieces);
+
 // A length scale of the geometry (bounding-box diagonal) for relative tolerances.
 double geometry_scale(const std::vector<BoundaryPiece>& pieces);
 

@@ -26,6 +26,7 @@
 #include <string>
 #include <string_view>
 
+#include "bemcontact/core/limits.hpp"
 #include "bemcontact/io/parameter_overrides.hpp"
 #include "bemcontact/contact/contact_problem.hpp"
 
@@ -44,6 +45,7 @@ bool is_contact_text(std::string_view text);
 
 ContactFile read_contact_file(const std::filesystem::path& path, const ParameterOverrides& overrides = {});
 ContactFile parse_contact_problem(std::string_view text, const std::string& file_name,
-                                  const ParameterOverrides& overrides = {});
+                                  const ParameterOverrides& overrides = {},
+    const ResourceLimits& limits = {});
 
 }  // namespace bemcontact::io

@@ -41,6 +41,6 @@ std::string contact_report_text(const contact::ContactProblem& problem, const co
 // evaluated [parameters] of the file, when given).
 std::vector<std::pair<std::string, std::string>> contact_output_files(
     const contact::ContactProblem& problem, const contact::ContactResult& result, bool vtk = true,
-    const std::map<std::string, double>& parameters = {});
+    const std::map<std::string, double>& parameters = {}, const std::vector<std::string>& warnings = {});
 
 }  // namespace bemcontact::io

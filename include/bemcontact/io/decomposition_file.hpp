@@ -13,6 +13,7 @@
 #include <string>
 #include <string_view>
 
+#include "bemcontact/core/limits.hpp"
 #include "bemcontact/io/parameter_overrides.hpp"
 #include "bemcontact/dd/decomposition.hpp"
 #include "bemcontact/io/problem_file.hpp"
@@ -32,6 +33,7 @@ bool is_decomposition_text(std::string_view text);
 
 DecompositionFile read_decomposition_file(const std::filesystem::path& path, const ParameterOverrides& overrides = {});
 DecompositionFile parse_decomposition(std::string_view text, const std::string& file_name,
-                                      const ParameterOverrides& overrides = {});
+                                      const ParameterOverrides& overrides = {},
+    const ResourceLimits& limits = {});
 
 }  // namespace bemcontact::io

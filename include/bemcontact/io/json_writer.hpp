@@ -9,7 +9,8 @@
 
 namespace bemcontact::io {
 
-// Indented text with a final newline; NaN and infinities become null.
+// Indented text with a final newline; SolverError naming the key when a number is NaN or
+// infinite (JSON cannot hold them).
 std::string write_json_string(const nlohmann::json& value, int indent = 2);
 
 // {"phases": {"assembly": 0.12, ...}, "total": 0.3} (phases in the order run).

@@ -1,9 +1,16 @@
 #pragma once
-// Output files collected in memory, then written all together: commit() writes every
-// file into a temporary folder beside the target directory, then moves each one in
-// (a rename within one file system, so no reader ever sees half a file). If anything
-// fails, the files of this commit are removed again and Error names the path: the
-// outputs of a run are complete or absent.
+// Output files collected in memory, then written all together.
+//
+// commit() makes the output folder hold exactly this run: every file is written into a
+// staging folder beside the target (same file system), then the staging folder takes the
+// target's place in one atomic exchange (renameat2 RENAME_EXCHANGE) and the previous
+// content is removed. SIGINT, SIGTERM, SIGHUP and SIGQUIT are held back meanwhile, so an
+// interrupted run leaves the folder as it was, and two runs into one folder never mix
+// their files: the last to commit wins whole. A target that is a symbolic link is
+// replaced where the link points. A folder that holds anything bemcontact did not write
+// (no marker file, not empty) is refused, so a wrong -o never deletes a user's files.
+//
+// write_file_atomically() replaces one file the same way (temporary file, rename).
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -16,6 +23,8 @@ class OutputDirectory {
     std::string name;  // plain file name, e.g. "boundary.csv"
     std::string content;
   };
+  // The marker written into every committed folder.
+  static constexpr const char* marker_name = ".bemcontact-output";
 
   // Throws Error for a name that is not a plain file name or is already added.
   void add(std::string name, std::string content);
@@ -23,12 +32,17 @@ class OutputDirectory {
   bool empty() const { return files_.empty(); }
   std::vector<std::string> names() const;  // in the order added
 
-  // Writes every file into `directory` (created with its parents when missing); returns
-  // the paths written. Throws Error naming the path on failure.
+  // Replaces `directory` (created with its parents when missing) by a folder holding
+  // exactly these files and the marker; returns the paths written. Throws Error naming
+  // the path on failure, the previous folder then being left as it was.
   std::vector<std::filesystem::path> commit(const std::filesystem::path& directory) const;
 
  private:
   std::vector<File> files_;
 };
+
+// Writes `content` to `path` through a temporary file in the same folder and a rename;
+// throws Error naming the path.
+void write_file_atomically(const std::filesystem::path& path, const std::string& content);
 
 }  // namespace bemcontact::io

@@ -7,6 +7,7 @@
 #include <string>
 #include <string_view>
 
+#include "bemcontact/core/limits.hpp"
 #include "bemcontact/io/parameter_overrides.hpp"
 #include "bemcontact/bem/problem.hpp"
 
@@ -29,6 +30,7 @@ struct ProblemFile {
 ProblemFile read_problem_file(const std::filesystem::path& path, const ParameterOverrides& overrides = {});
 
 // Parses problem-file text; `file_name` is used in messages and as source_file.
-ProblemFile parse_problem(std::string_view text, const std::string& file_name, const ParameterOverrides& overrides = {});
+ProblemFile parse_problem(std::string_view text, const std::string& file_name, const ParameterOverrides& overrides = {},
+    const ResourceLimits& limits = {});
 
 }  // namespace bemcontact::io

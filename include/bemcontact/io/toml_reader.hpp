@@ -12,6 +12,7 @@
 #include <toml++/toml.h>
 
 #include "bemcontact/core/error.hpp"
+#include "bemcontact/core/limits.hpp"
 #include "bemcontact/io/expression.hpp"
 #include "bemcontact/io/parameter_overrides.hpp"
 
@@ -23,6 +24,7 @@ struct FileContext {
   AnalysisType analysis = AnalysisType::plane_strain;
   std::map<std::string, double> parameters;
   ParameterOverrides overrides;
+  ResourceLimits limits;
 
   bool axisymmetric() const { return analysis == AnalysisType::axisymmetric; }
   // Numbers, pi and parameters (geometry, material, parameter definitions).

@@ -1,10 +1,16 @@
 #pragma once
-// Dense LU factorisation with partial pivoting through LAPACK (dgetrf/dgetrs/dgecon),
+// Dense LU factorisation with partial pivoting (blocked, tiled over OpenMP threads, on
+// LAPACK/BLAS kernels: dgetrf panels, dtrsm, dgemm; dgetrs, dgecon),
 // with column equilibration so that displacement and traction unknowns, whose units
 // differ, weigh alike in the condition estimate.
 #include "bemcontact/operators/linear_operator.hpp"
 
 namespace bemcontact::operators {
+
+// BLAS runs on one thread (OpenBLAS's threaded kernels change their rounding with the
+// thread count); the parallel work is ours, in fixed tiles, so results are the same for
+// every thread count. Called by every DenseLU; idempotent.
+void use_single_threaded_blas();
 
 class DenseLU {
  public:
@@ -22,6 +28,8 @@ class DenseLU {
   double reciprocal_condition() const { return rcond_; }
 
  private:
+  void solve_columns(char transpose, Matrix& rhs) const;
+
   Matrix factors_;
   Eigen::VectorXi pivots_;
   Vector column_scale_;  // A = A_s D^{-1}: x = D x_s

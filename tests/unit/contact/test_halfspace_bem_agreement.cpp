@@ -95,7 +95,6 @@ refine = "end"
 name = "contact"
 from = "D"
 to = "F"
-elements = "ne"
 [[body.boundary]]
 name = "axis"
 from = "F"

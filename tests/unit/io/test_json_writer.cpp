@@ -3,6 +3,10 @@
 
 #include <cmath>
 
+#include "bemcontact/core/error.hpp"
+
+#include <cmath>
+
 #include "bemcontact/io/json_writer.hpp"
 
 namespace bemcontact::io {
@@ -19,16 +23,26 @@ TEST(IoJsonWriter, TimingsKeepTheOrderRun) {
   EXPECT_EQ(json["total"], 0.75);
 }
 
-TEST(IoJsonWriter, NonFiniteNumbersBecomeNull) {
+TEST(IoJsonWriter, NonFiniteNumbersAreASolverErrorNamingTheKey) {
   bem::SolveReport report;
   report.unknowns = 12;
-  report.reciprocal_condition = std::nan("");
+  report.reciprocal_condition = 0.5;
   report.relative_residual = 1e-15;
-  const std::string text = write_json_string(solve_report_json(report));
-  const nlohmann::json back = nlohmann::json::parse(text);
+  const nlohmann::json back = nlohmann::json::parse(write_json_string(solve_report_json(report)));
   EXPECT_EQ(back["unknowns"], 12);
-  EXPECT_TRUE(back["reciprocal_condition"].is_null());
   EXPECT_EQ(back["relative_residual"], 1e-15);  // full precision survives the round trip
+  for (const double bad : {std::nan(""), HUGE_VAL, -HUGE_VAL}) {
+    report.reciprocal_condition = bad;
+    nlohmann::json nested = {{"solve", solve_report_json(report)}, {"list", {1.0, 2.0}}};
+    try {
+      write_json_string(nested);
+      ADD_FAILURE() << "no error for " << bad;
+    } catch (const SolverError& e) {
+      EXPECT_NE(std::string(e.what()).find("'solve.reciprocal_condition'"), std::string::npos) << e.what();
+    }
+  }
+  nlohmann::json list = {{"a", {1.0, std::nan("")}}};
+  EXPECT_THROW(write_json_string(list), SolverError);
 }
 
 }  // namespace

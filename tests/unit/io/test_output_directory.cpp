@@ -5,7 +5,9 @@
 
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
+#include <thread>
 
 #include "bemcontact/core/error.hpp"
 #include "bemcontact/io/output_directory.hpp"
@@ -55,38 +57,98 @@ TEST_F(IoOutputDirectory, CommitWritesEveryFileIntoANewDirectory) {
   EXPECT_EQ(read(root_ / "results/run1/boundary.csv"), "node,x\n0,1\n");
   EXPECT_EQ(read(root_ / "results/run1/summary.json"), "{}\n");
   EXPECT_TRUE(fs::exists(root_ / "results/run1/empty.txt"));
-  EXPECT_EQ(entries(), (std::vector<std::string>{"results", "results/run1", "results/run1/boundary.csv",
-                                                 "results/run1/empty.txt", "results/run1/summary.json"}));
+  EXPECT_EQ(entries(), (std::vector<std::string>{"results", "results/run1", "results/run1/.bemcontact-output",
+                                                 "results/run1/boundary.csv", "results/run1/empty.txt",
+                                                 "results/run1/summary.json"}));
 }
 
-TEST_F(IoOutputDirectory, CommitReplacesOldFilesAndAcceptsATrailingSlash) {
-  fs::create_directories(root_ / "out");
-  std::ofstream(root_ / "out/boundary.csv") << "old content, much longer than the new one\n";
-  std::ofstream(root_ / "out/keep.txt") << "unrelated\n";
-  OutputDirectory out;
-  out.add("boundary.csv", "new\n");
-  out.commit((root_ / "out").string() + "/");
+TEST_F(IoOutputDirectory, ASecondRunReplacesTheWholeFolder) {
+  OutputDirectory first;
+  first.add("boundary.csv", "old\n");
+  first.add("step1.csv", "old\n");
+  first.commit(root_ / "out");
+  OutputDirectory second;
+  second.add("boundary.csv", "new\n");
+  second.commit((root_ / "out").string() + "/");  // a trailing slash is the same folder
   EXPECT_EQ(read(root_ / "out/boundary.csv"), "new\n");
-  EXPECT_EQ(read(root_ / "out/keep.txt"), "unrelated\n");
-  EXPECT_EQ(entries(), (std::vector<std::string>{"out", "out/boundary.csv", "out/keep.txt"}));
+  EXPECT_EQ(entries(), (std::vector<std::string>{"out", "out/.bemcontact-output", "out/boundary.csv"}));
 }
 
-TEST_F(IoOutputDirectory, FailureWhileMovingTakesBackTheFilesAlreadyMoved) {
-  // A directory where the second file should go makes its rename fail after the first
-  // file has been moved in: the first must be removed again.
-  fs::create_directories(root_ / "out/b.csv");
+TEST_F(IoOutputDirectory, AnEmptyFolderIsUsedAndAForeignOneIsRefusedUntouched) {
+  fs::create_directories(root_ / "empty");
   OutputDirectory out;
-  out.add("a.csv", "a\n");
-  out.add("b.csv", "b\n");
-  out.add("c.csv", "c\n");
+  out.add("a.csv", "1\n");
+  out.commit(root_ / "empty");
+  EXPECT_EQ(read(root_ / "empty/a.csv"), "1\n");
+
+  fs::create_directories(root_ / "home");
+  std::ofstream(root_ / "home/thesis.tex") << "precious\n";
   try {
-    out.commit(root_ / "out");
-    FAIL() << "no error";
+    out.commit(root_ / "home");
+    FAIL() << "a folder bemcontact did not write was replaced";
   } catch (const Error& error) {
-    const std::string message = error.what();
-    EXPECT_NE(message.find((root_ / "out/b.csv").string()), std::string::npos) << message;
+    EXPECT_NE(std::string(error.what()).find("did not write"), std::string::npos) << error.what();
   }
-  EXPECT_EQ(entries(), (std::vector<std::string>{"out", "out/b.csv"}));
+  EXPECT_EQ(read(root_ / "home/thesis.tex"), "precious\n");
+  EXPECT_FALSE(fs::exists(root_ / "home/a.csv"));
+}
+
+TEST_F(IoOutputDirectory, ASymbolicLinkIsReplacedWhereItPoints) {
+  fs::create_directories(root_ / "elsewhere");
+  fs::create_directory_symlink(root_ / "elsewhere", root_ / "link");
+  OutputDirectory out;
+  out.add("a.csv", "1\n");
+  out.commit(root_ / "link");
+  out.commit(root_ / "link");  // the second time the target holds the marker
+  EXPECT_TRUE(fs::is_symlink(root_ / "link"));
+  EXPECT_EQ(read(root_ / "link/a.csv"), "1\n");
+  EXPECT_EQ(read(root_ / "elsewhere/a.csv"), "1\n");
+}
+
+TEST_F(IoOutputDirectory, ConcurrentCommitsNeverMixTheirFiles) {
+  // Two runs of different file sets into one folder, many times: the folder always holds
+  // exactly one run's files.
+  for (int round = 0; round < 20; ++round) {
+    std::vector<std::thread> runs;
+    for (int run = 0; run < 2; ++run)
+      runs.emplace_back([&, run] {
+        OutputDirectory out;
+        for (int f = 0; f < 5; ++f) out.add("run" + std::to_string(run) + "_" + std::to_string(f) + ".csv", "x\n");
+        out.commit(root_ / "out");
+      });
+    for (auto& thread : runs) thread.join();
+    std::set<char> owners;
+    int files = 0;
+    for (const auto& entry : fs::directory_iterator(root_ / "out")) {
+      const std::string name = entry.path().filename().string();
+      if (name == OutputDirectory::marker_name) continue;
+      owners.insert(name[3]);
+      ++files;
+    }
+    EXPECT_EQ(owners.size(), 1u);
+    EXPECT_EQ(files, 5);
+  }
+  EXPECT_EQ(entries().size(), 7u);  // out, the marker and 5 files: no staging folder left
+}
+
+TEST_F(IoOutputDirectory, AFailedCommitLeavesThePreviousRunInPlace) {
+  OutputDirectory first;
+  first.add("boundary.csv", "old\n");
+  first.commit(root_ / "out");
+  // A file the staging folder cannot hold: a name too long for the file system.
+  OutputDirectory second;
+  second.add("boundary.csv", "new\n");
+  second.add(std::string(300, 'x') + ".csv", "new\n");
+  EXPECT_THROW(second.commit(root_ / "out"), Error);
+  EXPECT_EQ(read(root_ / "out/boundary.csv"), "old\n");
+  EXPECT_EQ(entries(), (std::vector<std::string>{"out", "out/.bemcontact-output", "out/boundary.csv"}));
+}
+
+TEST_F(IoOutputDirectory, WriteFileAtomicallyReplacesOneFile) {
+  write_file_atomically(root_ / "sub" / "records.json", "1\n");
+  write_file_atomically(root_ / "sub" / "records.json", "2\n");
+  EXPECT_EQ(read(root_ / "sub/records.json"), "2\n");
+  EXPECT_EQ(entries(), (std::vector<std::string>{"sub", "sub/records.json"}));
 }
 
 TEST_F(IoOutputDirectory, TargetThatIsAFileFailsWithoutWritingAnything) {

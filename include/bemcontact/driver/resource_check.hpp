@@ -1,0 +1,32 @@
+#pragma once
+// Checks of a parsed problem against the run's resource limits (core/limits.hpp), made
+// before anything large is allocated, and the last check of a run's files: no NaN or
+// infinity may reach them.
+#include "bemcontact/contact/contact_problem.hpp"
+#include "bemcontact/core/limits.hpp"
+#include "bemcontact/dd/decomposition.hpp"
+#include "bemcontact/io/output_directory.hpp"
+
+namespace bemcontact::driver {
+
+// Dense memory of the bodies' boundary systems, estimated from their element counts.
+struct ResourceEstimate {
+  std::int64_t unknowns = 0;  // of the largest single body or subdomain
+  double bytes = 0.0;         // the peak of the run
+};
+
+ResourceEstimate estimate_resources(const bem::ProblemDefinition& problem);
+ResourceEstimate estimate_resources(const dd::DecompositionProblem& problem);
+ResourceEstimate estimate_resources(const contact::ContactProblem& problem);
+
+// InputError (naming the source file and the limit's option) when the estimate is over
+// the limits.
+void check_resources(const bem::ProblemDefinition& problem, const ResourceLimits& limits);
+void check_resources(const dd::DecompositionProblem& problem, const ResourceLimits& limits);
+void check_resources(const contact::ContactProblem& problem, const ResourceLimits& limits);
+
+// SolverError naming the file, line and column when a number in a CSV or VTK file, or a
+// value of a JSON file, is NaN or infinite.
+void check_output_finite(const io::OutputDirectory& files);
+
+}  // namespace bemcontact::driver

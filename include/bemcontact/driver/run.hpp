@@ -1,0 +1,43 @@
+#pragma once
+// The whole path of a run, from problem text to the files it writes, with nothing
+// touching the disk or the terminal: the command line, the fuzz target and the tests
+// all go through here. The caller commits `files` (OutputDirectory) and prints `report`.
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "bemcontact/bem/progress.hpp"
+#include "bemcontact/core/limits.hpp"
+#include "bemcontact/io/output_directory.hpp"
+#include "bemcontact/io/parameter_overrides.hpp"
+
+namespace bemcontact::driver {
+
+enum class ProblemKind { body, decomposition, contact };
+// By the tables of the text: [[subdomain]] -> decomposition, [contact] -> contact.
+ProblemKind problem_kind(std::string_view text);
+
+struct RunOptions {
+  io::ParameterOverrides overrides;
+  bem::ProgressCallback progress;
+  ResourceLimits limits;
+};
+
+struct RunOutput {
+  io::OutputDirectory files;          // summary.json included
+  std::string report;                 // the terminal summary, one line per fact
+  std::vector<std::string> warnings;  // also in summary.json
+  // Set when the run wrote only diagnostics (an unconverged interface problem): the
+  // command commits the files, prints this and exits with the solver's code.
+  std::string solver_failure;
+};
+
+// Parses and solves `text` (read from `file_name`, which messages name). Throws
+// InputError / GeometryError / SolverError like the parts it calls; every number of the
+// files is finite (a non-finite value is a SolverError naming where it appeared).
+RunOutput run_problem(std::string_view text, const std::string& file_name, const RunOptions& options);
+
+// Meshes only: mesh_nodes.csv, mesh_elements.csv, mesh.vtk.
+RunOutput mesh_problem(std::string_view text, const std::string& file_name, const RunOptions& options);
+
+}  // namespace bemcontact::driver

@@ -1,0 +1,237 @@
+#include "bemcontact/driver/run.hpp"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdarg>
+#include <cstdio>
+#include <nlohmann/json.hpp>
+
+#include "bemcontact/bem/analysis.hpp"
+#include "bemcontact/contact/contact_solver.hpp"
+#include "bemcontact/core/error.hpp"
+#include "bemcontact/dd/solver.hpp"
+#include "bemcontact/driver/resource_check.hpp"
+#include "bemcontact/io/contact_file.hpp"
+#include "bemcontact/io/contact_writer.hpp"
+#include "bemcontact/io/decomposition_file.hpp"
+#include "bemcontact/io/decomposition_writer.hpp"
+#include "bemcontact/io/json_writer.hpp"
+#include "bemcontact/io/problem_file.hpp"
+#include "bemcontact/io/results_writer.hpp"
+#include "bemcontact/geometry/boundary.hpp"
+#include "bemcontact/io/toml_reader.hpp"
+
+namespace bemcontact::driver {
+
+namespace {
+
+using nlohmann::json;
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// printf into a string.
+[[gnu::format(printf, 2, 3)]] void append(std::string& text, const char* format, ...) {
+  char buffer[1024];
+  va_list args;
+  va_start(args, format);
+  std::vsnprintf(buffer, sizeof buffer, format, args);
+  va_end(args);
+  text += buffer;
+}
+
+// Likely mistakes in the geometry of each body (geometry_warnings), named by body when
+// there are several.
+void add_geometry_warnings(std::vector<std::string>& warnings, const bem::BodyDefinition& body,
+                           const std::string& label) {
+  for (const auto& warning : geometry::geometry_warnings(body.pieces))
+    warnings.push_back(label.empty() ? warning : label + ": " + warning);
+}
+
+json options_json(const bem::ProblemDefinition& problem) {
+  return {{"analysis", to_string(problem.analysis)},
+          {"interpolation", to_string(problem.mesh.interpolation)},
+          {"corner_shift", problem.mesh.corner_shift},
+          {"split_angle_radians", problem.mesh.split_angle_radians},
+          {"material", {{"E", problem.body.material.young_modulus}, {"nu", problem.body.material.poisson_ratio}}},
+          {"threads", omp_get_max_threads()}};
+}
+
+json mesh_json(const geometry::BoundaryMesh& mesh) {
+  int split = 0;
+  for (const auto& v : mesh.vertices) split += v.split;
+  return {{"nodes", mesh.node_count()}, {"elements", mesh.element_count()},
+          {"contours", mesh.contours.size()}, {"split_corners", split}};
+}
+
+// Several subdomains glued along interfaces (chapter IV).
+RunOutput run_decomposition(std::string_view text, const std::string& file_name, const RunOptions& options) {
+  const auto started = Clock::now();
+  const auto file = io::parse_decomposition(text, file_name, options.overrides, options.limits);
+  check_resources(file.problem, options.limits);
+  RunOutput output;
+  for (const auto& subdomain : file.problem.subdomains)
+    add_geometry_warnings(output.warnings, subdomain.body, "subdomain '" + subdomain.body.name + "'");
+  const auto result = dd::solve_decomposition(file.problem, options.progress);
+  json summary = {{"bemcontact_version", BEMCONTACT_VERSION},
+                  {"input", file_name},
+                  {"title", file.problem.title},
+                  {"parameters", file.parameters},
+                  {"decomposition", io::decomposition_summary_json(file.problem, result)}};
+  if (result.converged()) {
+    for (const auto& [name, content] : io::decomposition_files(result, file.problem.title, file.output.vtk))
+      output.files.add(name, content);
+  } else {
+    // No answer from an unconverged iteration: only the diagnostics.
+    output.files.add("gmres.csv", io::gmres_history_csv(result.gmres));
+    output.solver_failure = "the interface problem did not converge: " + result.gmres.message;
+  }
+  summary["timings_seconds"] = {{"total", seconds_since(started)}};
+  summary["outputs"] = output.files.names();
+  summary["warnings"] = output.warnings;
+  output.files.add("summary.json", io::write_json_string(summary));
+
+  std::string& report = output.report;
+  append(report, "%s\n  %zu subdomains, method %s, %ld interface unknowns\n", file.problem.title.c_str(),
+         result.subdomains.size(), dd::to_string(result.method), static_cast<long>(result.interface_unknowns));
+  append(report, "  GMRES(%d): %d iterations, relative residual %.3g\n", file.problem.options.restart,
+         result.gmres.iterations, result.gmres.relative_residual);
+  double jump_u = 0.0, jump_p = 0.0;
+  for (const auto& j : result.jumps) jump_u = std::max(jump_u, j.jump_u), jump_p = std::max(jump_p, j.jump_p);
+  append(report, "  max interface jumps: [u] = %.3g, [p] = %.3g\n", jump_u, jump_p);
+  append(report, "  time %.3f s\n", seconds_since(started));
+  return output;
+}
+
+// Two elastic bodies in contact (chapter V).
+RunOutput run_contact(std::string_view text, const std::string& file_name, const RunOptions& options) {
+  const auto started = Clock::now();
+  const auto file = io::parse_contact_problem(text, file_name, options.overrides, options.limits);
+  check_resources(file.problem, options.limits);
+  RunOutput output;
+  for (const auto& body : file.problem.bodies) add_geometry_warnings(output.warnings, body, "body '" + body.name + "'");
+  const auto result = contact::solve_contact(file.problem, options.progress);
+  for (const auto& [name, content] :
+       io::contact_output_files(file.problem, result, file.vtk, file.parameters, output.warnings))
+    output.files.add(name, content);
+  output.report = io::contact_report_text(file.problem, result);
+  append(output.report, "  time %.3f s\n", seconds_since(started));
+  return output;
+}
+
+RunOutput run_body(std::string_view text, const std::string& file_name, const RunOptions& options) {
+  const auto started = Clock::now();
+  const auto file = io::parse_problem(text, file_name, options.overrides, options.limits);
+  check_resources(file.problem, options.limits);
+  const double read_seconds = seconds_since(started);
+  RunOutput output;
+  add_geometry_warnings(output.warnings, file.problem.body, "");
+  const auto result = bem::solve_body(file.problem, options.progress);
+
+  const auto write_started = Clock::now();
+  io::OutputDirectory& out = output.files;
+  out.add("boundary.csv", io::boundary_csv(result.mesh, result.boundary));
+  if (!result.interior.points.empty()) out.add("interior.csv", io::interior_csv(result.interior));
+  if (file.output.vtk) {
+    out.add("boundary.vtk", io::boundary_vtk(result.mesh, result.boundary, file.problem.title));
+    if (!result.interior.points.empty())
+      out.add("interior.vtk", io::interior_vtk(result.interior, file.problem.title));
+  }
+  double max_vm = 0.0, max_u = 0.0;
+  Index max_vm_node = 0;
+  for (Index i = 0; i < result.mesh.node_count(); ++i) {
+    const double vm = result.boundary.stress[i].von_mises();
+    if (vm > max_vm) max_vm = vm, max_vm_node = i;
+    max_u = std::max(max_u, result.boundary.displacement[i].norm());
+  }
+  double interior_max_vm = 0.0;
+  for (const auto& s : result.interior.stress) interior_max_vm = std::max(interior_max_vm, s.von_mises());
+  // Summary last, with the write time of the other files.
+  json timings = {{"read", read_seconds}};
+  for (const auto& [phase, seconds] : result.timings.phases) timings[phase] = seconds;
+  timings["write"] = seconds_since(write_started);
+  timings["total"] = seconds_since(started);
+  const auto& peak = result.mesh.nodes[max_vm_node].position;
+  json summary = {
+      {"bemcontact_version", BEMCONTACT_VERSION},
+      {"input", file_name},
+      {"title", file.problem.title},
+      {"parameters", file.parameters},
+      {"options", options_json(file.problem)},
+      {"problem", io::problem_echo_json(file)},
+      {"mesh", mesh_json(result.mesh)},
+      {"solve", {{"unknowns", result.report.unknowns},
+                 {"reciprocal_condition_estimate", result.report.reciprocal_condition},
+                 {"relative_residual", result.report.relative_residual},
+                 {"constraints_fix_rigid_modes_only", result.report.constraints_fix_rigid_modes_only}}},
+      {"results", {{"max_boundary_displacement", max_u},
+                   {"max_boundary_von_mises", max_vm},
+                   {"max_boundary_von_mises_at", {peak.x(), peak.y()}},
+                   {"interior_points", result.interior.points.size()},
+                   {"interior_points_dropped_outside", result.interior.dropped_points.size()},
+                   {"max_interior_von_mises", interior_max_vm}}},
+      {"timings_seconds", timings},
+      {"outputs", out.names()},
+      {"warnings", output.warnings}};
+  out.add("summary.json", io::write_json_string(summary));
+
+  std::string& report = output.report;
+  append(report, "%s\n", file.problem.title.c_str());
+  append(report, "  %s, %s elements: %ld nodes, %ld elements, %ld unknowns\n", to_string(file.problem.analysis),
+         to_string(file.problem.mesh.interpolation), static_cast<long>(result.mesh.node_count()),
+         static_cast<long>(result.mesh.element_count()), static_cast<long>(result.report.unknowns));
+  append(report, "  condition estimate 1/rcond = %.3g, relative residual = %.3g\n",
+         1.0 / result.report.reciprocal_condition, result.report.relative_residual);
+  append(report, "  max |u| on the boundary = %.6g, max von Mises = %.6g at (%.6g, %.6g)\n", max_u, max_vm,
+         peak.x(), peak.y());
+  if (!result.interior.points.empty())
+    append(report, "  %zu interior points (%zu outside dropped), max von Mises = %.6g\n",
+           result.interior.points.size(), result.interior.dropped_points.size(), interior_max_vm);
+  append(report, "  time %.3f s (", timings["total"].get<double>());
+  bool first = true;
+  for (const auto& [phase, seconds] : result.timings.phases) {
+    append(report, "%s%s %.3f", first ? "" : ", ", phase.c_str(), seconds);
+    first = false;
+  }
+  report += ")\n";
+  return output;
+}
+
+}  // namespace
+
+ProblemKind problem_kind(std::string_view text) {
+  if (io::is_decomposition_text(text)) return ProblemKind::decomposition;
+  if (io::is_contact_text(text)) return ProblemKind::contact;
+  return ProblemKind::body;
+}
+
+RunOutput run_problem(std::string_view text, const std::string& file_name, const RunOptions& options) {
+  RunOutput output;
+  switch (problem_kind(text)) {
+    case ProblemKind::decomposition: output = run_decomposition(text, file_name, options); break;
+    case ProblemKind::contact: output = run_contact(text, file_name, options); break;
+    case ProblemKind::body: output = run_body(text, file_name, options); break;
+  }
+  check_output_finite(output.files);
+  return output;
+}
+
+RunOutput mesh_problem(std::string_view text, const std::string& file_name, const RunOptions& options) {
+  const auto file = io::parse_problem(text, file_name, options.overrides, options.limits);
+  RunOutput output;
+  add_geometry_warnings(output.warnings, file.problem.body, "");
+  const auto mesh = bem::mesh_body(file.problem);
+  output.files.add("mesh_nodes.csv", io::mesh_nodes_csv(mesh));
+  output.files.add("mesh_elements.csv", io::mesh_elements_csv(mesh));
+  output.files.add("mesh.vtk", io::mesh_vtk(mesh, file.problem.title));
+  append(output.report, "%s: %ld nodes, %ld elements\n", file.problem.title.c_str(),
+         static_cast<long>(mesh.node_count()), static_cast<long>(mesh.element_count()));
+  check_output_finite(output.files);
+  return output;
+}
+
+}  // namespace bemcontact::driver
