@@ -1,9 +1,11 @@
 # bemcontact: the two commands of the README, and their parts.
 BUILD_DIR ?= build
+SANITIZE_DIR ?= build-asan
 JOBS ?= 2
 DEMO ?= examples/contact_hertz_sphere.toml
+FUZZ_SECONDS ?= 300
 
-.PHONY: deps configure build demo test bench clean
+.PHONY: deps configure build demo test test-sanitize fuzz bench clean
 
 deps:
 	@bash scripts/install-deps.sh
@@ -12,16 +14,32 @@ configure: deps
 	@cmake -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=Release > $(BUILD_DIR).configure.log 2>&1 || (cat $(BUILD_DIR).configure.log; exit 1)
 
 build: configure
-	@cmake --build $(BUILD_DIR) -j $(JOBS)
+	@cmake --build $(BUILD_DIR) -j $(JOBS) -- --no-print-directory
 
-demo: build
+# The demo needs only the library and the command.
+demo: configure
+	@cmake --build $(BUILD_DIR) -j $(JOBS) --target bemcontact -- --no-print-directory
 	@$(BUILD_DIR)/bemcontact run $(DEMO) -o $(BUILD_DIR)/demo
 
 test: build
 	@cd $(BUILD_DIR) && OMP_NUM_THREADS=$(JOBS) ctest --output-on-failure -j $(JOBS)
 
+# The whole test suite again under AddressSanitizer + UndefinedBehaviorSanitizer, with
+# libstdc++'s assertions and the library's own debug checks (no NDEBUG).
+test-sanitize: deps
+	@cmake -S . -B $(SANITIZE_DIR) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g" \
+	  -DBEMCONTACT_SANITIZE=ON -DBEMCONTACT_BUILD_BENCH=OFF > $(SANITIZE_DIR).configure.log 2>&1 \
+	  || (cat $(SANITIZE_DIR).configure.log; exit 1)
+	@cmake --build $(SANITIZE_DIR) -j $(JOBS) -- --no-print-directory
+	@cd $(SANITIZE_DIR) && OMP_NUM_THREADS=$(JOBS) ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 \
+	  UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 ctest --output-on-failure -j $(JOBS)
+
+# A bounded libFuzzer run (clang); findings are copied into tests/fuzz_regressions/.
+fuzz:
+	@FUZZ_SECONDS=$(FUZZ_SECONDS) bash scripts/fuzz.sh
+
 bench: build
 	@for b in $(BUILD_DIR)/bench/*; do $$b --benchmark_min_time=0.2; done
 
 clean:
-	rm -rf $(BUILD_DIR) $(BUILD_DIR).configure.log
+	rm -rf $(BUILD_DIR) $(BUILD_DIR).configure.log $(SANITIZE_DIR) $(SANITIZE_DIR).configure.log build-fuzz build-fuzz.configure.log

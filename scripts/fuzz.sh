@@ -18,17 +18,36 @@ log="$BUILD/fuzz.log"
 echo "fuzz: $FUZZ_SECONDS s; log in $log"
 # Fork mode keeps going after a finding; each finding is written to $findings.
 ASAN_OPTIONS=detect_leaks=0:allocator_may_return_null=0 UBSAN_OPTIONS=print_stacktrace=1 \
-  "$BUILD/fuzz_problem" -fork=1 -ignore_crashes=1 -ignore_timeouts=1 -ignore_ooms=1 \
+  "$BUILD/fuzz_problem" -fork="${FUZZ_JOBS:-2}" -ignore_crashes=1 -ignore_timeouts=1 -ignore_ooms=1 \
   -max_total_time="$FUZZ_SECONDS" -timeout=10 -rss_limit_mb=2048 -max_len=8192 \
   -dict=fuzz/problem.dict -artifact_prefix="$findings/" "$corpus" examples tests/fuzz_regressions > "$log" 2>&1 || true
-count() { find "$findings" -maxdepth 1 -name "$1-*" | wc -l; }
-crashes=$(count crash); timeouts=$(count timeout); ooms=$(count oom); leaks=$(count leak)
-oracle=$(grep -c "ORACLE FAILURE" "$log" || true)
-runs=$(grep -o "#[0-9]*" "$log" | tail -1 | tr -d '#' || true)
-echo "fuzz: ${runs:-?} runs; crashes $crashes (of which oracle findings $oracle), hangs $timeouts, out of memory $ooms, leaks $leaks"
+# Replay every finding once to sort it into its class.
+declare -A classes=()
 for f in "$findings"/*; do
   [ -f "$f" ] || continue
+  case "$(basename "$f")" in
+    timeout-*) class="hang over 10 s" ;;
+    oom-*) class="out of memory" ;;
+    leak-*) class="leak" ;;
+    *)
+      replay=$(ASAN_OPTIONS=detect_leaks=0 timeout 60 "$BUILD/fuzz_problem" "$f" 2>&1 || true)
+      if grep -q "ORACLE FAILURE: input error without" <<<"$replay"; then class="message without file/line/key"
+      elif grep -q "ORACLE FAILURE: geometry error naming" <<<"$replay"; then class="message without file/line/key"
+      elif grep -q "non-finite" <<<"$replay"; then class="NaN or inf in an output"
+      elif grep -q "ORACLE FAILURE: std::bad_alloc" <<<"$replay"; then class="out of memory"
+      elif grep -q "ORACLE FAILURE" <<<"$replay"; then class="unexpected exception"
+      elif grep -q "runtime error:" <<<"$replay"; then class="undefined behaviour (UBSan)"
+      elif grep -q "AddressSanitizer" <<<"$replay"; then class="memory error (ASan)"
+      else class="crash (signal)"
+      fi ;;
+  esac
+  classes[$class]=$(( ${classes[$class]:-0} + 1 ))
   cp "$f" "tests/fuzz_regressions/$(basename "$f")"
+  echo "fuzz: $class: tests/fuzz_regressions/$(basename "$f")"
 done
-grep "ORACLE FAILURE" "$log" | sort | uniq -c | sort -rn | head -20 || true
-[ $((crashes + timeouts + ooms + leaks)) -eq 0 ]
+runs=$(grep -o "^#[0-9]*" "$log" | tail -1 | tr -d '#' || true)
+total=0
+for class in "${!classes[@]}"; do total=$((total + classes[$class])); done
+echo "fuzz: ${runs:-?} runs in $FUZZ_SECONDS s, $total findings"
+for class in "${!classes[@]}"; do echo "  $class: ${classes[$class]}"; done
+[ "$total" -eq 0 ]

@@ -2,6 +2,8 @@
 
 #include <omp.h>
 
+#include <sstream>
+
 #include <chrono>
 
 #include "bemcontact/bem/boundary_system.hpp"
@@ -49,6 +51,16 @@ geometry::BoundaryMesh mesh_body(const ProblemDefinition& problem) {
   return geometry::mesh_boundary(body.pieces, effective_mesh_options(problem));
 }
 
+namespace {
+
+std::string point_label(const Vec2& p) {
+  std::ostringstream out;
+  out << "(" << p.x() << ", " << p.y() << ")";
+  return out.str();
+}
+
+}  // namespace
+
 BodyResult solve_body(const ProblemDefinition& problem, const ProgressCallback& progress) {
   BodyResult result;
   PhaseClock clock(result.timings);
@@ -56,6 +68,20 @@ BodyResult solve_body(const ProblemDefinition& problem, const ProgressCallback& 
   result.mesh = mesh_body(problem);
   const auto conditions = resolve_node_conditions(result.mesh, body, problem.analysis);
   const auto constraints = resolve_point_constraints(result.mesh, body, conditions);
+  // Interior points are sorted before the solve, so that a listed point outside the body
+  // is reported at once.
+  std::vector<Vec2> inside;
+  const double inside_tolerance = 1e-9 * result.mesh.scale;
+  for (const auto& p : problem.interior_points) {
+    if (point_inside(result.mesh, p.position, inside_tolerance)) {
+      inside.push_back(p.position);
+    } else if (p.from_grid) {
+      result.interior.dropped_points.push_back(p.position);
+    } else {
+      throw InputError(p.where.file.empty() ? SourceLocation{problem.source_file, 0, "interior.points"} : p.where,
+                       "point " + point_label(p.position) + " is not inside the body");
+    }
+  }
   clock.lap("mesh");
 
   const ElementIntegrator integrator(problem.analysis, body.material);
@@ -86,19 +112,6 @@ BodyResult solve_body(const ProblemDefinition& problem, const ProgressCallback& 
   clock.lap("boundary stress");
 
   if (!problem.interior_points.empty()) {
-    std::vector<Vec2> inside;
-    const double tol = 1e-9 * result.mesh.scale;
-    for (const auto& p : problem.interior_points) {
-      if (point_inside(result.mesh, p.position, tol)) {
-        inside.push_back(p.position);
-      } else if (p.from_grid) {
-        result.interior.dropped_points.push_back(p.position);
-      } else {
-        throw InputError({problem.source_file, 0, "interior.points"},
-                         "point (" + std::to_string(p.position.x()) + ", " + std::to_string(p.position.y()) +
-                             ") is not inside the body");
-      }
-    }
     auto dropped = std::move(result.interior.dropped_points);
     result.interior = interior_values(result.mesh, integrator, result.boundary, inside, progress);
     result.interior.dropped_points = std::move(dropped);

@@ -125,7 +125,7 @@ DecompositionResult solve_decomposition(const DecompositionProblem& problem, con
       else if (p.from_grid)
         dropped.push_back(p.position);
       else
-        throw InputError({problem.source_file, 0, "subdomain '" + sub.name + "' interior.points"},
+        throw InputError(p.where.file.empty() ? SourceLocation{problem.source_file, 0, "subdomain '" + sub.name + "' interior.points"} : p.where,
                          "point (" + std::to_string(p.position.x()) + ", " + std::to_string(p.position.y()) +
                              ") is not inside subdomain '" + sub.name + "'");
     }

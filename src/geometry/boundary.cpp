@@ -105,8 +105,9 @@ void check_no_crossings(const std::vector<BoundaryPiece>& pieces, const std::vec
     total_length += (c.b - c.a).norm();
   }
   const double extent = std::max((hi - lo).maxCoeff(), tol);
-  // About two chords of mean length per cell, at most 2048 cells per side.
-  const double cell = std::max(2.0 * total_length / static_cast<double>(chords.size()), extent / 2048.0);
+  // Cells twice the mean chord length: each chord enters a few cells, and all chords
+  // together about as many cells as there are chords.
+  const double cell = std::max(2.0 * total_length / static_cast<double>(chords.size()), extent * 1e-7);
   const auto cell_of = [&](double v, double origin) {
     return static_cast<long>(std::floor((v - origin) / cell));
   };
@@ -289,6 +290,10 @@ std::vector<Contour> build_contours(const std::vector<BoundaryPiece>& pieces) {
       throw GeometryError("open contour: no boundary ends at " + point_text(pieces[j].start) +
                           ", the start of " + piece_text(pieces[j]));
 
+  // Crossings first: a crossing boundary also spoils the areas and orientations below.
+  const auto chords = boundary_chords(pieces);
+  check_no_crossings(pieces, chords, next, tol);
+
   std::vector<Contour> contours;
   std::vector<bool> used(n, false);
   for (int first = 0; first < n; ++first) {
@@ -336,8 +341,6 @@ std::vector<Contour> build_contours(const std::vector<BoundaryPiece>& pieces) {
   }
   if (outer != 0) std::swap(contours[0], contours[outer]);
 
-  const auto chords = boundary_chords(pieces);
-  check_no_crossings(pieces, chords, next, tol);
   check_holes_inside(pieces, contours, chords, names);
   return contours;
 }

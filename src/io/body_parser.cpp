@@ -394,7 +394,9 @@ bem::BodyDefinition parse_body(const toml::table& table, const BodyContext& body
               [](const auto& a, const auto& b) { return before(*a.second, *b.second); });
     for (const auto& [key, node] : entries) {
       const std::string name(key->str());
-      SourceLocation where{context.file, line_of(*node), body.key_path("vertices." + name)};
+      // (Vertices copied from a decomposition's shared [vertices] have no line of their own.)
+      SourceLocation where{context.file, line_of(*node) > 0 ? line_of(*node) : body.line(),
+                           body.key_path("vertices." + name)};
       const Vec2 point = read_point(*node, where, context);
       check_half_plane(point, where, context);
       vertices.points[name] = point;

@@ -98,7 +98,7 @@ std::vector<bem::InteriorPoint> read_points(const TableReader& sub, const FileCo
   for (const toml::node& point : *list) {
     SourceLocation where = interior.where("points");
     if (line_of(point) > 0) where.line = line_of(point);
-    points.push_back(bem::InteriorPoint{read_point(point, where, context), false});
+    points.push_back(bem::InteriorPoint{read_point(point, where, context), false, where});
   }
   return points;
 }
@@ -167,8 +167,14 @@ DecompositionFile parse_decomposition(std::string_view text, const std::string& 
   // does not define a vertex of the same name.
   const toml::table* shared = root.optional_table("vertices", "[vertices]");
   if (shared)
-    for (const auto& [key, node] : *shared)
-      read_point(node, SourceLocation{file_name, line_of(node), "vertices." + std::string(key.str())}, context);
+    for (const auto& [key, node] : *shared) {
+      const SourceLocation where{file_name, line_of(node), "vertices." + std::string(key.str())};
+      const Vec2 point = read_point(node, where, context);
+      if (context.axisymmetric() && point.x() < -1e-12 * std::max(1.0, point.norm()))
+        throw InputError(where, "the point has r = " + format_number(point.x()) +
+                                    " < 0; in an axisymmetric problem the body lies in r >= 0 (the axis of "
+                                    "revolution is r = 0)");
+    }
 
   toml::node* subdomain_node = root_table.get("subdomain");
   toml::array* subdomains = subdomain_node ? subdomain_node->as_array() : nullptr;

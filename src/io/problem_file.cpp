@@ -64,7 +64,7 @@ std::vector<bem::InteriorPoint> read_grid(const TableReader& grid, const FileCon
   // Row by row: x (r) varies fastest.
   std::vector<bem::InteriorPoint> points;
   for (const double y : coordinates[1])
-    for (const double x : coordinates[0]) points.push_back(bem::InteriorPoint{Vec2(x, y), true});
+    for (const double x : coordinates[0]) points.push_back(bem::InteriorPoint{Vec2(x, y), true, {}});
   return points;
 }
 
@@ -82,7 +82,7 @@ std::vector<bem::InteriorPoint> read_interior(const TableReader& root, const Fil
     for (const toml::node& point : *list) {
       SourceLocation where = interior.where("points");
       if (line_of(point) > 0) where.line = line_of(point);
-      points.push_back(bem::InteriorPoint{read_point(point, where, context), false});
+      points.push_back(bem::InteriorPoint{read_point(point, where, context), false, where});
     }
   }
   if (const toml::node* node = interior.find("grid")) {

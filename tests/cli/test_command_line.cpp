@@ -7,7 +7,11 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <csignal>
+#include <map>
+#include <set>
 #include <sstream>
+#include <unistd.h>
 
 namespace fs = std::filesystem;
 
@@ -167,4 +171,99 @@ TEST(CommandLine, RunSolvesADecompositionFile) {
   const auto summary = nlohmann::json::parse(in);
   EXPECT_EQ(summary["decomposition"]["gmres"]["status"], "converged");
   fs::remove_all(dir);
+}
+
+TEST(CommandLine, CommandLineErrorsExitWith2) {
+  // Before the sub-command, a missing file argument, an unknown option, a bad number.
+  for (const std::string arguments :
+       {"run --threads 2 " + example("plate_tension.toml"), std::string("run"), std::string("run --no-such-option x.toml"),
+        "--threads zero run " + example("plate_tension.toml"), std::string("no-such-command")}) {
+    const auto out = run(arguments);
+    EXPECT_EQ(out.exit_code, 2) << arguments << "\n" << out.output;
+  }
+  EXPECT_EQ(run("--version").exit_code, 0);
+  EXPECT_EQ(run("--help").exit_code, 0);
+}
+
+TEST(CommandLine, LimitsAreInputErrorsThatSayHowToRaiseThem) {
+  const fs::path dir = scratch("limits");
+  const auto out = run("run " + example("plate_tension.toml") + " --max-elements 10 -o " + (dir / "out").string());
+  EXPECT_EQ(out.exit_code, 2) << out.output;
+  EXPECT_NE(out.output.find("--max-elements"), std::string::npos) << out.output;
+  EXPECT_NE(out.output.find("plate_tension.toml:"), std::string::npos) << out.output;
+  const auto memory = run("run " + example("plate_tension.toml") + " --max-memory 0.000001 -o " + (dir / "out").string());
+  EXPECT_EQ(memory.exit_code, 2) << memory.output;
+  EXPECT_NE(memory.output.find("--max-memory"), std::string::npos) << memory.output;
+  EXPECT_FALSE(fs::exists(dir / "out"));
+}
+
+TEST(CommandLine, AnArcOfMoreThanHalfATurnIsAWarningNamingIt) {
+  const fs::path dir = scratch("arc_warning");
+  std::ifstream in(example("plate_hole.toml"));
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string problem = text.str();
+  const auto at = problem.find("direction = \"cw\"");
+  ASSERT_NE(at, std::string::npos);
+  problem.replace(at, 16, "direction = \"ccw\"");
+  write(dir / "lobe.toml", problem);
+  const auto out = run("mesh " + (dir / "lobe.toml").string() + " -q -o " + (dir / "out").string());
+  EXPECT_NE(out.output.find("warning"), std::string::npos) << out.output;
+  EXPECT_NE(out.output.find("sweeping 270 degrees"), std::string::npos) << out.output;
+}
+
+// Every output byte is the same for --threads 1 and 2 and for any OpenBLAS thread count.
+TEST(CommandLine, OutputsAreIdenticalForEveryThreadSetting) {
+  const fs::path dir = scratch("threads");
+  for (const char* name : {"plate_hole.toml", "dd_strips_3.toml", "contact_flat_punch.toml"}) {
+    std::map<std::string, std::string> reference;
+    bool first = true;
+    for (const std::string setting : {"OPENBLAS_NUM_THREADS=1 ", "OPENBLAS_NUM_THREADS=2 "})
+      for (const std::string threads : {"1", "2"}) {
+        const fs::path out = dir / ("out" + threads);
+        const std::string command = "env " + setting + BEMCONTACT_BINARY + " --threads " + threads + " run " +
+                                    example(name) + " -q -o " + out.string() + " 2>&1";
+        ASSERT_EQ(std::system(command.c_str()), 0) << command;
+        std::map<std::string, std::string> files;
+        for (const auto& entry : fs::directory_iterator(out)) {
+          const std::string file = entry.path().filename().string();
+          if (file == "summary.json") continue;  // holds timings and the thread count
+          std::ifstream in(entry.path(), std::ios::binary);
+          std::stringstream content;
+          content << in.rdbuf();
+          files[file] = content.str();
+        }
+        if (first) reference = files, first = false;
+        else EXPECT_TRUE(files == reference) << name << " differs with " << setting << "--threads " << threads;
+      }
+  }
+}
+
+// SIGINT or SIGTERM at any moment leaves the output folder as it was before the run or
+// as the run made it, never a mix, and no staging folder behind.
+TEST(CommandLine, SignalsNeverLeaveAHalfWrittenFolder) {
+  const fs::path dir = scratch("signals");
+  const fs::path out = dir / "out";
+  ASSERT_EQ(run("run " + example("thick_ring_plane_strain.toml") + " -q -o " + out.string()).exit_code, 0);
+  std::set<std::string> complete;
+  for (const auto& entry : fs::directory_iterator(out)) complete.insert(entry.path().filename().string());
+  for (int trial = 0; trial < 24; ++trial) {
+    const pid_t child = fork();
+    ASSERT_GE(child, 0);
+    if (child == 0) {
+      const std::string input = example(trial % 2 ? "thick_ring_plane_strain.toml" : "plate_hole.toml");
+      execl(BEMCONTACT_BINARY, BEMCONTACT_BINARY, "run", input.c_str(), "-q", "-o", out.c_str(), nullptr);
+      _exit(127);
+    }
+    usleep(2000 * trial);  // 0 to 46 ms: before, during and after the commit
+    kill(child, trial % 3 ? SIGINT : SIGTERM);
+    int status = 0;
+    waitpid(child, &status, 0);
+    std::set<std::string> names;
+    for (const auto& entry : fs::directory_iterator(out)) names.insert(entry.path().filename().string());
+    EXPECT_TRUE(names.count(".bemcontact-output") && names.count("summary.json") && names.count("boundary.csv"))
+        << "trial " << trial;
+    for (const auto& entry : fs::directory_iterator(dir))
+      EXPECT_EQ(entry.path().filename().string(), "out") << "left behind: " << entry.path();
+  }
 }

@@ -52,6 +52,7 @@ struct BodyDefinition {
 struct InteriorPoint {
   Vec2 position;
   bool from_grid = false;  // grid points outside the body are dropped, listed ones are errors
+  SourceLocation where;    // of a listed point in the problem file
 };
 
 struct ProblemDefinition {

@@ -163,3 +163,62 @@ TEST(GeometryMesh, AxisPiecesCarryNoElements) {
   EXPECT_GE(find_node_at(mesh, {0, 0}, 1e-12), 0);
   EXPECT_GE(find_node_at(mesh, {0, 1}, 1e-12), 0);
 }
+
+namespace {
+
+std::string geometry_error(const std::vector<BoundaryPiece>& pieces) {
+  try {
+    build_contours(pieces);
+  } catch (const GeometryError& error) {
+    return error.what();
+  }
+  return "no error";
+}
+
+}  // namespace
+
+TEST(GeometryChecks, BoundariesThatMeetAtElementEndsAreRefused) {
+  // An hourglass whose two lobes touch at (1, 1), an element end of both diagonals.
+  const std::vector<BoundaryPiece> pieces{line("bottom", {0, 0}, {2, 0}, 2), line("rise", {2, 0}, {0, 2}, 2),
+                                          line("top", {0, 2}, {2, 2}, 2), line("fall", {2, 2}, {0, 0}, 2)};
+  const std::string message = geometry_error(pieces);
+  EXPECT_NE(message.find("'rise' and 'fall'"), std::string::npos) << message;
+  EXPECT_NE(message.find("(1, 1)"), std::string::npos) << message;
+}
+
+TEST(GeometryChecks, AHoleOutsideTheBodyIsRefused) {
+  auto pieces = unit_square(2);
+  // A small clockwise square to the right of the body.
+  pieces.push_back(line("h1", {3, 0.2}, {3, 0.8}, 1));
+  pieces.push_back(line("h2", {3, 0.8}, {3.5, 0.8}, 1));
+  pieces.push_back(line("h3", {3.5, 0.8}, {3.5, 0.2}, 1));
+  pieces.push_back(line("h4", {3.5, 0.2}, {3, 0.2}, 1));
+  const std::string message = geometry_error(pieces);
+  EXPECT_NE(message.find("lies outside the outer contour"), std::string::npos) << message;
+  EXPECT_NE(message.find("'h1'"), std::string::npos) << message;
+}
+
+TEST(GeometryChecks, ManyVerticalEdgesAreCheckedInLinearTime) {
+  // A tall thin strip of 400 000 elements, all edges vertical but the ends: the old sweep
+  // over x was quadratic here. Must finish well within the test's time.
+  const std::vector<BoundaryPiece> pieces{line("bottom", {0, 0}, {1e-3, 0}, 1), line("right", {1e-3, 0}, {1e-3, 1}, 200000),
+                                          line("top", {1e-3, 1}, {0, 1}, 1), line("left", {0, 1}, {0, 0}, 200000)};
+  EXPECT_EQ(geometry_error(pieces), "no error");
+}
+
+TEST(GeometryChecks, WarningsNameAWideArcAndATinyBoundary) {
+  // A quarter disc whose arc was given the wrong direction: a 270 degree lobe.
+  const std::vector<BoundaryPiece> lobe{line("x", {0, 0}, {1, 0}, 4), arc("rim", {1, 0}, {0, 1}, {0, 0}, false, 8),
+                                        line("y", {0, 1}, {0, 0}, 4)};
+  const auto warnings = geometry_warnings(lobe);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].find("'rim'"), std::string::npos) << warnings[0];
+  EXPECT_NE(warnings[0].find("270"), std::string::npos) << warnings[0];
+  EXPECT_TRUE(geometry_warnings(unit_square(2)).empty());
+  auto tiny = unit_square(2);
+  tiny[1] = line("right", {1, 0}, {1, 1e-4}, 1);
+  tiny.insert(tiny.begin() + 2, line("step", {1, 1e-4}, {1, 1}, 1));
+  const auto found = geometry_warnings(tiny);
+  ASSERT_FALSE(found.empty());
+  EXPECT_NE(found[0].find("'right'"), std::string::npos) << found[0];
+}
