@@ -7,7 +7,9 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <sstream>
 
+#include "bemcontact/core/error.hpp"
 #include "bemcontact/core/parallel.hpp"
 #include "bemcontact/integration/plane_element.hpp"
 
@@ -31,6 +33,20 @@ double StressTensor::von_mises() const {
   const double d12 = s11 - s22, d13 = s11 - s33, d23 = s22 - s33;
   return std::sqrt(0.5 * (d12 * d12 + d13 * d13 + d23 * d23) + 3.0 * s12 * s12);
 }
+
+namespace {
+
+bool stress_is_finite(const StressTensor& s) {
+  return std::isfinite(s.s11) && std::isfinite(s.s22) && std::isfinite(s.s12) && std::isfinite(s.s33);
+}
+
+std::string point_label(const Vec2& p) {
+  std::ostringstream out;
+  out << "(" << p.x() << ", " << p.y() << ")";
+  return out.str();
+}
+
+}  // namespace
 
 std::vector<StressTensor> boundary_stresses(const geometry::BoundaryMesh& mesh, AnalysisType type,
                                             const Material& material,
@@ -105,6 +121,10 @@ std::vector<StressTensor> boundary_stresses(const geometry::BoundaryMesh& mesh, 
     s.s12 = global(0, 1);
     s.s33 = type == AnalysisType::axisymmetric ? s33 : out_of_plane_stress(type, material, s.s11, s.s22);
   }
+  for (Index i = 0; i < mesh.node_count(); ++i)
+    if (!solution.displacement[i].allFinite() || !solution.traction[i].allFinite() || !stress_is_finite(stresses[i]))
+      throw SolverError("the boundary values at node " + std::to_string(i) + " " +
+                        point_label(mesh.nodes[i].position) + " are not finite (check the data for extreme values)");
   return stresses;
 }
 
@@ -334,6 +354,10 @@ InteriorSolution interior_values(const geometry::BoundaryMesh& mesh, const Eleme
     });
   }
   errors.rethrow();
+  for (std::size_t i = 0; i < result.points.size(); ++i)
+    if (!result.displacement[i].allFinite() || !stress_is_finite(result.stress[i]))
+      throw SolverError("the interior values at " + point_label(result.points[i]) +
+                        " are not finite: the boundary solution broke down or the point lies on the boundary");
   return result;
 }
 

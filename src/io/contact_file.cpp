@@ -193,12 +193,18 @@ ContactFile parse_contact_problem(std::string_view text, const std::string& file
   problem.friction = contact.optional_number("friction").value_or(0.0);
   if (!(problem.friction >= 0.0)) contact.fail("friction", "the friction coefficient must be >= 0");
   problem.tangential_coupling = contact.boolean_or("coupling", true);
+  if (contact.has("coupling") && problem.friction == 0.0)
+    contact.fail("coupling", "'coupling' acts on the tangential tractions of friction; with friction = 0 it has "
+                             "no effect (remove it, or give a friction coefficient)");
   const std::string normal = contact.choice("normal", {"common", "body1", "body2"}, "common");
   problem.pair_normal = normal == "body1"   ? contact::PairNormal::body1
                         : normal == "body2" ? contact::PairNormal::body2
                                             : contact::PairNormal::common;
   problem.increments = contact.integer_or("increments", problem.friction > 0.0 ? 16 : 1);
   if (problem.increments < 1) contact.fail("increments", "the number of load increments must be >= 1");
+  if (problem.increments > 100000)
+    contact.fail("increments", std::to_string(problem.increments) +
+                                   " load increments is over the limit of 100000 (each one is a contact solve)");
   problem.record_steps = contact.boolean_or("record_steps", false);
   problem.solver.algorithm = contact.choice("algorithm", {"newton", "thesis"}, "newton") == "thesis"
                                  ? contact::Algorithm::thesis

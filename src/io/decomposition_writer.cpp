@@ -35,9 +35,9 @@ std::string interface_csv(const dd::DecompositionResult& result) {
       const Vec2 ua = a.boundary.displacement[pair.node_a], ub = b.boundary.displacement[pair.node_b];
       const Vec2 ta = a.boundary.traction[pair.node_a], tb = b.boundary.traction[pair.node_b];
       const Vec2 ju = ua - ub, jt = ta + tb;
-      out << interface.name << ',' << j << ',' << kind_name(pair.kind) << ',' << format_number(pair.position.x())
-          << ',' << format_number(pair.position.y()) << ',' << a.name << ',' << pair.node_a << ',' << b.name << ','
-          << pair.node_b;
+      out << csv_field(interface.name) << ',' << j << ',' << kind_name(pair.kind) << ','
+          << format_number(pair.position.x()) << ',' << format_number(pair.position.y()) << ',' << csv_field(a.name)
+          << ',' << pair.node_a << ',' << csv_field(b.name) << ',' << pair.node_b;
       for (const Vec2* v : {&ua, &ub, &ta, &tb, &ju, &jt})
         out << ',' << format_number(v->x()) << ',' << format_number(v->y());
       out << '\n';

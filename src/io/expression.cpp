@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdlib>
 #include <numbers>
 
 #include "bemcontact/io/suggestions.hpp"
@@ -235,7 +236,8 @@ class Parser {
   // Counts the parser's own recursion (parentheses, signs, calls).
   struct Nesting {
     explicit Nesting(const Parser& parser) : parser_(parser) {
-      if (++parser_.nesting_ > max_expression_depth) parser_.fail_too_deep();
+      // (a level of parentheses takes two: the parenthesis and the sign before it)
+      if (++parser_.nesting_ > 2 * max_expression_depth) parser_.fail_too_deep();
     }
     ~Nesting() { --parser_.nesting_; }
     const Parser& parser_;
@@ -549,6 +551,25 @@ std::string format_number(double value) {
                                                              : std::chars_format::scientific;
   const auto result = std::to_chars(buffer, buffer + sizeof buffer, value, format);
   return std::string(buffer, result.ptr);
+}
+
+std::string csv_field(std::string_view text) {
+  bool quote = text.empty() || text.front() == ' ' || text.back() == ' ';
+  for (const char c : text) quote = quote || c == ',' || c == '"' || c == '\n' || c == '\r';
+  if (!quote) {
+    // Reads as a number (nan, inf, 1e5, ...)?
+    const std::string copy(text);
+    char* end = nullptr;
+    (void)std::strtod(copy.c_str(), &end);
+    quote = end == copy.c_str() + copy.size();
+  }
+  if (!quote) return std::string(text);
+  std::string field = "\"";
+  for (const char c : text) {
+    if (c == '"') field += '"';
+    field += c;
+  }
+  return field + "\"";
 }
 
 }  // namespace bemcontact::io

@@ -267,3 +267,20 @@ TEST(CommandLine, SignalsNeverLeaveAHalfWrittenFolder) {
       EXPECT_EQ(entry.path().filename().string(), "out") << "left behind: " << entry.path();
   }
 }
+
+TEST(CommandLine, APointFarOutsideTheBodyIsAnInputErrorNamingItsLine) {
+  const fs::path dir = scratch("far_point");
+  std::ifstream in(example("plate_tension.toml"));
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string problem = text.str();
+  const auto at = problem.find("points = [");
+  ASSERT_NE(at, std::string::npos);
+  problem.insert(at + 10, "[1e200, 0.5], ");
+  write(dir / "far.toml", problem);
+  const auto out = run("run " + (dir / "far.toml").string() + " -o " + (dir / "out").string());
+  EXPECT_EQ(out.exit_code, 2) << out.output;
+  EXPECT_NE(out.output.find("(1e+200, 0.5) is not inside the body"), std::string::npos) << out.output;
+  EXPECT_NE(out.output.find("far.toml:"), std::string::npos) << out.output;
+  EXPECT_FALSE(fs::exists(dir / "out"));
+}

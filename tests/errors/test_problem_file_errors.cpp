@@ -370,3 +370,36 @@ TEST(IoProblemFileErrors, MissingOrUnreadableFile) {
 
 }  // namespace
 }  // namespace bemcontact::io
+
+namespace bemcontact::io {
+namespace {
+
+TEST(IoProblemFileErrors, ExpressionsNestingTooDeepAreRefusedNotOverflowed) {
+  // 100 000 nested parentheses, signs, or a chain of operations on x: each would overflow
+  // a recursive reader's stack.
+  for (const std::string& deep : {std::string(100000, '(') + "1" + std::string(100000, ')'),
+                                  std::string(100000, '-') + "1", [] {
+                                    std::string chain = "x";
+                                    for (int i = 0; i < 100000; ++i) chain += "*x";
+                                    return chain;
+                                  }()}) {
+    const std::string text = replace(valid, "t2 = \"P\"", "t2 = \"" + deep + "\"");
+    expect_error(text, line_with(text, "t2 = "), "boundary[3].t2", {"nests more than 200"});
+  }
+  // 200 levels are fine.
+  EXPECT_NO_THROW(parse_problem(replace(valid, "t2 = \"P\"", "t2 = \"" + std::string(150, '(') + "P" +
+                                                                std::string(150, ')') + "\""),
+                                "case.toml"));
+}
+
+TEST(IoProblemFileErrors, HugeCountsAreLimitsNotAllocations) {
+  expect_changed("elements = 4", "elements = 2000000000", "elements = 2000000000", "boundary[1].elements",
+                 {"over the limit", "--max-elements"});
+  expect_changed("points = [[0.0, 1.0]]", "grid = { x = [-0.5, 0.5, 2000000000], y = [0.5, 1.5, 3] }", "grid =",
+                 "interior.grid.x", {"over the limit", "--max-points"});
+  expect_changed("points = [[0.0, 1.0]]", "grid = { x = [-0.5, 0.5, 40000], y = [0.5, 1.5, 40000] }", "grid =",
+                 "interior.grid", {"over the limit", "--max-points"});
+}
+
+}  // namespace
+}  // namespace bemcontact::io

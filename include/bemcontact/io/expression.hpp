@@ -71,4 +71,9 @@ double evaluate_finite(const bem::ScalarField& field, const Vec2& position,
 // Shortest text that reads back as exactly the same double ("0.1", "1e-05", "100000").
 std::string format_number(double value);
 
+// A text field of a CSV file as RFC 4180 writes it: in double quotes (doubled inside) when
+// it holds a comma, a quote, a line break or leading or trailing space, or reads as a
+// number (so that a name like "nan" is never taken for one); as it is otherwise.
+std::string csv_field(std::string_view text);
+
 }  // namespace bemcontact::io

@@ -48,8 +48,10 @@ TEST(DdInterface, MixedMethodSpreadsItsDisplacementNodes) {
   EXPECT_NEAR(x[1], 0.0, 1e-12);
   EXPECT_NEAR(x[2], 2.0 / 3.0, 1e-12);
   problem.options.method = InterfaceMethod::hybrid;
-  for (const auto& pair : build_connectivity(problem, mesh_subdomains(problem)).interfaces[0].pairs)
-    EXPECT_EQ(pair.kind, bem::ConditionKind::traction);
+  // (The connectivity is kept in a variable: a range-for over a member of a temporary
+  // would read it after its end.)
+  const auto hybrid = build_connectivity(problem, mesh_subdomains(problem));
+  for (const auto& pair : hybrid.interfaces[0].pairs) EXPECT_EQ(pair.kind, bem::ConditionKind::traction);
 }
 
 // The matrix-free operator against its own dense form: columns K e_j must make a matrix
