@@ -27,7 +27,7 @@ test: build
 # The whole test suite again under AddressSanitizer + UndefinedBehaviorSanitizer, with
 # libstdc++'s assertions and the library's own debug checks (no NDEBUG).
 test-sanitize: deps
-	@cmake -S . -B $(SANITIZE_DIR) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g" \
+	@cmake -S . -B $(SANITIZE_DIR) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" \
 	  -DBEMCONTACT_SANITIZE=ON -DBEMCONTACT_BUILD_BENCH=OFF > $(SANITIZE_DIR).configure.log 2>&1 \
 	  || (cat $(SANITIZE_DIR).configure.log; exit 1)
 	@cmake --build $(SANITIZE_DIR) -j $(JOBS) -- --no-print-directory

@@ -74,6 +74,7 @@ RunOutput run_decomposition(std::string_view text, const std::string& file_name,
   const auto file = io::parse_decomposition(text, file_name, options.overrides, options.limits);
   check_resources(file.problem, options.limits);
   RunOutput output;
+  output.warnings = file.warnings;
   for (const auto& subdomain : file.problem.subdomains)
     add_geometry_warnings(output.warnings, subdomain.body, "subdomain '" + subdomain.body.name + "'");
   const auto result = dd::solve_decomposition(file.problem, options.progress);
@@ -113,6 +114,7 @@ RunOutput run_contact(std::string_view text, const std::string& file_name, const
   const auto file = io::parse_contact_problem(text, file_name, options.overrides, options.limits);
   check_resources(file.problem, options.limits);
   RunOutput output;
+  output.warnings = file.warnings;
   for (const auto& body : file.problem.bodies) add_geometry_warnings(output.warnings, body, "body '" + body.name + "'");
   const auto result = contact::solve_contact(file.problem, options.progress);
   for (const auto& [name, content] :
@@ -129,6 +131,7 @@ RunOutput run_body(std::string_view text, const std::string& file_name, const Ru
   check_resources(file.problem, options.limits);
   const double read_seconds = seconds_since(started);
   RunOutput output;
+  output.warnings = file.warnings;
   add_geometry_warnings(output.warnings, file.problem.body, "");
   const auto result = bem::solve_body(file.problem, options.progress);
 
@@ -223,6 +226,7 @@ RunOutput run_problem(std::string_view text, const std::string& file_name, const
 RunOutput mesh_problem(std::string_view text, const std::string& file_name, const RunOptions& options) {
   const auto file = io::parse_problem(text, file_name, options.overrides, options.limits);
   RunOutput output;
+  output.warnings = file.warnings;
   add_geometry_warnings(output.warnings, file.problem.body, "");
   const auto mesh = bem::mesh_body(file.problem);
   output.files.add("mesh_nodes.csv", io::mesh_nodes_csv(mesh));

@@ -287,6 +287,9 @@ BoundaryPiece read_piece(const TableReader& reader, int index, const Vertices& v
   piece.refine_toward = reader.choice("refine", {"start", "end"}, "start") == "end"
                             ? geometry::RefineToward::end
                             : geometry::RefineToward::start;
+  if (reader.has("refine") && (piece.grading == 1.0 || piece.elements == 1))
+    reader.context().warnings.push_back(reader.where("refine").describe() +
+                                        ": refine has no effect on a uniform boundary (grading = 1 or one element)");
 
   // Geometry that can be checked on the piece alone, with the file position at hand;
   // the contour checks (closure, crossings, orientation) come later in geometry/.

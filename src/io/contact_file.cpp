@@ -227,6 +227,9 @@ ContactFile parse_contact_problem(std::string_view text, const std::string& file
         contact.fail(thesis_key, "'" + std::string(thesis_key) +
                                      "' tunes the thesis algorithm only; it has no effect with algorithm = \"newton\" "
                                      "(remove it, or set algorithm = \"thesis\")");
+  if (problem.solver.algorithm == contact::Algorithm::thesis && contact.has("tolerance"))
+    contact.fail("tolerance", "'tolerance' is the Newton algorithm's; the thesis algorithm stops on xi (give xi "
+                              "instead, or set algorithm = \"newton\")");
   problem.solver.max_iterations = contact.integer_or("max_iterations", problem.solver.max_iterations);
   if (problem.solver.max_iterations < 1) contact.fail("max_iterations", "must be >= 1");
 
@@ -266,6 +269,7 @@ ContactFile parse_contact_problem(std::string_view text, const std::string& file
   } catch (const GeometryError& error) {
     throw InputError(contact.where("boundary1"), error.what());
   }
+  result.warnings = context.warnings;
   return result;
 }
 

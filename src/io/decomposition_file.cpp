@@ -241,6 +241,7 @@ DecompositionFile parse_decomposition(std::string_view text, const std::string& 
     subdomain.interior_points = read_points(sub, context);
     problem.subdomains.push_back(std::move(subdomain));
   }
+  result.warnings = context.warnings;
   return result;
 }
 

@@ -147,6 +147,12 @@ ProblemFile parse_problem(std::string_view text, const std::string& file_name, c
     output.check_keys(schema::output_keys(), "the [output] table");
     result.output.vtk = output.boolean_or("vtk", true);
   }
+  if (problem.mesh.interpolation == Interpolation::constant && root.find("mesh") &&
+      root.find("mesh")->as_table() && root.find("mesh")->as_table()->contains("corner_shift"))
+    context.warnings.push_back(SourceLocation{file_name, root.line(), "mesh.corner_shift"}.describe() +
+                               ": corner_shift has no effect with constant elements (their nodes are at "
+                               "element middles)");
+  result.warnings = context.warnings;
   return result;
 }
 

@@ -99,3 +99,26 @@ TEST(ContactErrors, FreeBodyNamesTheBody) {
 }
 
 }  // namespace bemcontact
+
+namespace bemcontact {
+
+// Keys that would have no effect where they stand are refused, naming the key.
+TEST(ContactErrors, KeysWithoutEffectAreRefused) {
+  const std::string text = example_text();
+  std::string message = input_error(replaced(text, "increments = 1", "increments = 1\ngmres_restart = 2"));
+  EXPECT_TRUE(contains(message, "key 'contact.gmres_restart'") && contains(message, "thesis algorithm only")) << message;
+  message = input_error(replaced(text, "increments = 1", "increments = 1\nalgorithm = \"thesis\"\ntolerance = 1e-8"));
+  EXPECT_TRUE(contains(message, "key 'contact.tolerance'")) << message;
+  message = input_error(replaced(text, "increments = 1", "increments = 1\ncoupling = false"));
+  EXPECT_TRUE(contains(message, "key 'contact.coupling'") && contains(message, "friction = 0")) << message;
+  // Body 2's contact zone is meshed from body 1's.
+  message = input_error(replaced(text, "from = \"D\"\nto = \"F\"\n", "from = \"D\"\nto = \"F\"\nelements = 30\n"));
+  EXPECT_TRUE(contains(message, "key 'body[2].boundary[4].elements'") && contains(message, "no effect")) << message;
+  // The platen under [contact.load] takes no condition of its own.
+  message = input_error(replaced(text, "to = \"N\"\nelements = 6\n", "to = \"N\"\nelements = 6\nu1 = 0.0\n"));
+  EXPECT_TRUE(contains(message, "key 'contact.load.boundary'") && contains(message, "rigid platen")) << message;
+  message = input_error(replaced(text, "increments = 1", "increments = 1000000"));
+  EXPECT_TRUE(contains(message, "over the limit")) << message;
+}
+
+}  // namespace bemcontact

@@ -403,3 +403,22 @@ TEST(IoProblemFileErrors, HugeCountsAreLimitsNotAllocations) {
 
 }  // namespace
 }  // namespace bemcontact::io
+
+namespace bemcontact::io {
+namespace {
+
+TEST(IoProblemFileErrors, KeysWithoutEffectAreDocumentedWarnings) {
+  const auto file = parse_problem(replace(valid, "elements = 4", "elements = 4\nrefine = \"end\""), "case.toml");
+  ASSERT_EQ(file.warnings.size(), 1u);
+  EXPECT_NE(file.warnings[0].find("case.toml:"), std::string::npos) << file.warnings[0];
+  EXPECT_NE(file.warnings[0].find("key 'boundary[1].refine'"), std::string::npos) << file.warnings[0];
+  const auto constant =
+      parse_problem(replace(valid, "analysis = \"plane_stress\"", "analysis = \"plane_stress\"\ninterpolation = \"constant\""),
+                    "case.toml");
+  ASSERT_EQ(constant.warnings.size(), 1u);
+  EXPECT_NE(constant.warnings[0].find("corner_shift has no effect"), std::string::npos) << constant.warnings[0];
+  EXPECT_TRUE(parse_problem(valid, "case.toml").warnings.empty());
+}
+
+}  // namespace
+}  // namespace bemcontact::io

@@ -35,6 +35,7 @@ namespace bemcontact::io {
 struct ContactFile {
   contact::ContactProblem problem;
   std::map<std::string, double> parameters;
+  std::vector<std::string> warnings;  // documented warnings of the reader (file:line: key ...)
   bool vtk = true;  // [output] vtk
 };
 

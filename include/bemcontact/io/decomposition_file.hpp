@@ -24,6 +24,7 @@ struct DecompositionFile {
   dd::DecompositionProblem problem;
   OutputOptions output;
   std::map<std::string, double> parameters;
+  std::vector<std::string> warnings;  // documented warnings of the reader (file:line: key ...)
 };
 
 // True when the file (text) is valid TOML with [[subdomain]] tables; false otherwise

@@ -23,6 +23,7 @@ struct ProblemFile {
   bem::ProblemDefinition problem;
   OutputOptions output;
   std::map<std::string, double> parameters;  // the [parameters] table, evaluated
+  std::vector<std::string> warnings;  // documented warnings of the reader (file:line: key ...)
 };
 
 // Reads and parses `path`; throws InputError when the file is missing or unreadable.

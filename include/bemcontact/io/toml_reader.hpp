@@ -25,6 +25,9 @@ struct FileContext {
   std::map<std::string, double> parameters;
   ParameterOverrides overrides;
   ResourceLimits limits;
+  // Documented warnings found while reading (a key whose value makes it have no effect);
+  // copied into the file's result, printed on stderr and kept in summary.json.
+  mutable std::vector<std::string> warnings;
 
   bool axisymmetric() const { return analysis == AnalysisType::axisymmetric; }
   // Numbers, pi and parameters (geometry, material, parameter definitions).
