@@ -68,13 +68,22 @@ json mesh_json(const geometry::BoundaryMesh& mesh) {
           {"contours", mesh.contours.size()}, {"split_corners", split}};
 }
 
+// Parses the text with `parse`, checks the resource limits before anything is solved, and
+// starts the output with the reader's warnings.
+template <class Parse>
+auto read_checked(Parse parse, std::string_view text, const std::string& file_name, const RunOptions& options,
+                  RunOutput& output) {
+  auto file = parse(text, file_name, options.overrides, options.limits);
+  check_resources(file.problem, options.limits);
+  output.warnings = file.warnings;
+  return file;
+}
+
 // Several subdomains glued along interfaces (chapter IV).
 RunOutput run_decomposition(std::string_view text, const std::string& file_name, const RunOptions& options) {
   const auto started = Clock::now();
-  const auto file = io::parse_decomposition(text, file_name, options.overrides, options.limits);
-  check_resources(file.problem, options.limits);
   RunOutput output;
-  output.warnings = file.warnings;
+  const auto file = read_checked(io::parse_decomposition, text, file_name, options, output);
   for (const auto& subdomain : file.problem.subdomains)
     add_geometry_warnings(output.warnings, subdomain.body, "subdomain '" + subdomain.body.name + "'");
   const auto result = dd::solve_decomposition(file.problem, options.progress);
@@ -111,10 +120,8 @@ RunOutput run_decomposition(std::string_view text, const std::string& file_name,
 // Two elastic bodies in contact (chapter V).
 RunOutput run_contact(std::string_view text, const std::string& file_name, const RunOptions& options) {
   const auto started = Clock::now();
-  const auto file = io::parse_contact_problem(text, file_name, options.overrides, options.limits);
-  check_resources(file.problem, options.limits);
   RunOutput output;
-  output.warnings = file.warnings;
+  const auto file = read_checked(io::parse_contact_problem, text, file_name, options, output);
   for (const auto& body : file.problem.bodies) add_geometry_warnings(output.warnings, body, "body '" + body.name + "'");
   const auto result = contact::solve_contact(file.problem, options.progress);
   for (const auto& [name, content] :
@@ -127,11 +134,9 @@ RunOutput run_contact(std::string_view text, const std::string& file_name, const
 
 RunOutput run_body(std::string_view text, const std::string& file_name, const RunOptions& options) {
   const auto started = Clock::now();
-  const auto file = io::parse_problem(text, file_name, options.overrides, options.limits);
-  check_resources(file.problem, options.limits);
-  const double read_seconds = seconds_since(started);
   RunOutput output;
-  output.warnings = file.warnings;
+  const auto file = read_checked(io::parse_problem, text, file_name, options, output);
+  const double read_seconds = seconds_since(started);
   add_geometry_warnings(output.warnings, file.problem.body, "");
   const auto result = bem::solve_body(file.problem, options.progress);
 

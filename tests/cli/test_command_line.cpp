@@ -45,6 +45,13 @@ std::string example(const std::string& name) { return std::string(BEMCONTACT_SOU
 
 void write(const fs::path& path, const std::string& text) { std::ofstream(path) << text; }
 
+std::string example_text(const std::string& name) {
+  std::ifstream in(example(name));
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
 const char* free_body = R"(analysis = "plane_strain"
 [material]
 E = 1000.0
@@ -199,10 +206,7 @@ TEST(CommandLine, LimitsAreInputErrorsThatSayHowToRaiseThem) {
 
 TEST(CommandLine, AnArcOfMoreThanHalfATurnIsAWarningNamingIt) {
   const fs::path dir = scratch("arc_warning");
-  std::ifstream in(example("plate_hole.toml"));
-  std::stringstream text;
-  text << in.rdbuf();
-  std::string problem = text.str();
+  std::string problem = example_text("plate_hole.toml");
   const auto at = problem.find("direction = \"cw\"");
   ASSERT_NE(at, std::string::npos);
   problem.replace(at, 16, "direction = \"ccw\"");
@@ -270,10 +274,7 @@ TEST(CommandLine, SignalsNeverLeaveAHalfWrittenFolder) {
 
 TEST(CommandLine, APointFarOutsideTheBodyIsAnInputErrorNamingItsLine) {
   const fs::path dir = scratch("far_point");
-  std::ifstream in(example("plate_tension.toml"));
-  std::stringstream text;
-  text << in.rdbuf();
-  std::string problem = text.str();
+  std::string problem = example_text("plate_tension.toml");
   const auto at = problem.find("points = [");
   ASSERT_NE(at, std::string::npos);
   problem.insert(at + 10, "[1e200, 0.5], ");
