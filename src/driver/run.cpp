@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdarg>
 #include <cstdio>
 #include <nlohmann/json.hpp>
@@ -154,7 +155,7 @@ RunOutput run_body(std::string_view text, const std::string& file_name, const Ru
   for (Index i = 0; i < result.mesh.node_count(); ++i) {
     const double vm = result.boundary.stress[i].von_mises();
     if (vm > max_vm) max_vm = vm, max_vm_node = i;
-    max_u = std::max(max_u, result.boundary.displacement[i].norm());
+    max_u = std::max(max_u, std::hypot(result.boundary.displacement[i].x(), result.boundary.displacement[i].y()));
   }
   double interior_max_vm = 0.0;
   for (const auto& s : result.interior.stress) interior_max_vm = std::max(interior_max_vm, s.von_mises());

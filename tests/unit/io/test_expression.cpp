@@ -256,5 +256,19 @@ TEST(IoExpression, ReservedNamesAndIdentifiers) {
   EXPECT_FALSE(is_identifier(""));
 }
 
+// RFC 4180: quoted when needed, quotes doubled; names that read as numbers quoted too.
+TEST(IoCsvField, QuotesWhatCouldBeMisread) {
+  EXPECT_EQ(csv_field("interface"), "interface");
+  EXPECT_EQ(csv_field("top, left"), "\"top, left\"");
+  EXPECT_EQ(csv_field("the \"glued\" one"), "\"the \"\"glued\"\" one\"");
+  EXPECT_EQ(csv_field("two\nlines"), "\"two\nlines\"");
+  EXPECT_EQ(csv_field(" padded"), "\" padded\"");
+  EXPECT_EQ(csv_field(""), "\"\"");
+  EXPECT_EQ(csv_field("nan"), "\"nan\"");
+  EXPECT_EQ(csv_field("1e5"), "\"1e5\"");
+  EXPECT_EQ(csv_field("-inf"), "\"-inf\"");
+  EXPECT_EQ(csv_field("1e5a"), "1e5a");
+}
+
 }  // namespace
 }  // namespace bemcontact::io
