@@ -6,6 +6,9 @@
 #include <unistd.h>
 
 #include <atomic>
+#include <csignal>
+#include <iterator>
+#include <mutex>
 #include <cerrno>
 #include <cstring>
 
@@ -46,22 +49,49 @@ struct StagingGuard {
   }
 };
 
-// Holds back the signals that end a run while the folder is swapped; they are delivered
-// when the commit is over.
+// Holds back the signals that end a run while the folder is swapped: a handler (process
+// wide, so whichever thread receives the signal) remembers it, and the last hold to end
+// restores the previous handlers and raises it again. Holds may overlap (commits from
+// several threads).
+constexpr int held_signals[] = {SIGINT, SIGTERM, SIGHUP, SIGQUIT};
+volatile std::sig_atomic_t pending_signal = 0;
+extern "C" void remember_signal(int signal) { pending_signal = signal; }
+
 class SignalHold {
  public:
   SignalHold() {
-    sigset_t set;
-    sigemptyset(&set);
-    for (const int signal : {SIGINT, SIGTERM, SIGHUP, SIGQUIT}) sigaddset(&set, signal);
-    pthread_sigmask(SIG_BLOCK, &set, &previous_);
+    const std::lock_guard<std::mutex> lock(mutex());
+    if (holders()++ > 0) return;
+    struct sigaction action {};
+    action.sa_handler = remember_signal;
+    sigemptyset(&action.sa_mask);
+    for (std::size_t i = 0; i < std::size(held_signals); ++i) sigaction(held_signals[i], &action, &previous()[i]);
   }
-  ~SignalHold() { pthread_sigmask(SIG_SETMASK, &previous_, nullptr); }
+  ~SignalHold() {
+    const std::lock_guard<std::mutex> lock(mutex());
+    if (--holders() > 0) return;
+    for (std::size_t i = 0; i < std::size(held_signals); ++i) sigaction(held_signals[i], &previous()[i], nullptr);
+    if (const int signal = pending_signal) {
+      pending_signal = 0;
+      std::raise(signal);
+    }
+  }
   SignalHold(const SignalHold&) = delete;
   SignalHold& operator=(const SignalHold&) = delete;
 
  private:
-  sigset_t previous_;
+  static std::mutex& mutex() {
+    static std::mutex m;
+    return m;
+  }
+  static int& holders() {
+    static int count = 0;
+    return count;
+  }
+  static struct sigaction* previous() {
+    static struct sigaction actions[std::size(held_signals)];
+    return actions;
+  }
 };
 
 // A name beside `target` that no other commit uses.

@@ -4,8 +4,9 @@
 // commit() makes the output folder hold exactly this run: every file is written into a
 // staging folder beside the target (same file system), then the staging folder takes the
 // target's place in one atomic exchange (renameat2 RENAME_EXCHANGE) and the previous
-// content is removed. SIGINT, SIGTERM, SIGHUP and SIGQUIT are held back meanwhile, so an
-// interrupted run leaves the folder as it was, and two runs into one folder never mix
+// content is removed. SIGINT, SIGTERM, SIGHUP and SIGQUIT arriving meanwhile are
+// remembered and raised again once the commit is over, so an interrupted run leaves the
+// folder as it was or whole, and two runs into one folder never mix
 // their files: the last to commit wins whole. A target that is a symbolic link is
 // replaced where the link points. A folder that holds anything bemcontact did not write
 // (no marker file, not empty) is refused, so a wrong -o never deletes a user's files.
