@@ -17,6 +17,7 @@
 
 #include "bemcontact/core/error.hpp"
 #include "bemcontact/reference/cantilever.hpp"
+#include "bemcontact/reference/curved_beam.hpp"
 #include "bemcontact/reference/kirsch.hpp"
 #include "bemcontact/reference/lame.hpp"
 #include "bemcontact/reference/uniaxial_tension.hpp"
@@ -437,4 +438,37 @@ TEST(ReferenceThickSphere, FieldSatisfiesSphericalAndAxisymmetricEquations) {
   // Symmetry plane z = 0 of the quarter model: u_z = 0, s_rz = 0.
   EXPECT_EQ(sphere.axisymmetric_displacement(1.5, 0.0).y(), 0.0);
   EXPECT_EQ(sphere.axisymmetric_stress(1.5, 0.0).s12, 0.0);
+}
+
+// ------------------------------------------------- curved bar under end couples (T&G 29)
+TEST(ReferenceCurvedBeam, FreeArcsEndResultantsEquilibriumAndHooke) {
+  const double a = 1.0, b = 2.5, M = 3.0;
+  for (AnalysisType type : {AnalysisType::plane_stress, AnalysisType::plane_strain}) {
+    const ref::CurvedBeamEndCouple beam{a, b, M, Material{1000.0, 0.3}, type};
+    // Sector 0 < theta < 60 degrees: theta stays away from the branch cut of atan2.
+    expect_plane_field([&](const Vec2& x) { return beam.displacement(x); },
+                       [&](const Vec2& x) { return beam.stress(x); }, beam.material, type,
+                       {{1.2, 0.3}, {1.0, 1.2}, {2.0, 1.0}, {0.9, 1.9}}, b, 10.0 * M / (b * b));
+    // The arcs are free: s_rr = 0 at r = a and r = b.
+    EXPECT_NEAR(beam.polar_stress(a).rr, 0.0, 1e-13 * M);
+    EXPECT_NEAR(beam.polar_stress(b).rr, 0.0, 1e-13 * M);
+    // End section: no force, moment -M about the centre (Gauss-Legendre, 5 points on 64
+    // panels: exact to round-off for this smooth integrand).
+    const double x5[] = {-0.9061798459386640, -0.5384693101056831, 0.0, 0.5384693101056831, 0.9061798459386640};
+    const double w5[] = {0.2369268850561891, 0.4786286704993665, 0.5688888888888889, 0.4786286704993665,
+                         0.2369268850561891};
+    double force = 0.0, moment = 0.0;
+    const int panels = 64;
+    for (int k = 0; k < panels; ++k) {
+      const double lo = a + (b - a) * k / panels, hi = a + (b - a) * (k + 1) / panels;
+      for (int q = 0; q < 5; ++q) {
+        const double r = 0.5 * (lo + hi) + 0.5 * (hi - lo) * x5[q], w = 0.5 * (hi - lo) * w5[q];
+        force += w * beam.polar_stress(r).tt;
+        moment += w * beam.polar_stress(r).tt * r;
+      }
+    }
+    EXPECT_NEAR(force, 0.0, 1e-12 * M);
+    EXPECT_NEAR(moment, -M, 1e-12 * M);
+    EXPECT_GT(beam.polar_stress(a).tt, 0.0);  // M > 0 stretches the inner arc
+  }
 }
