@@ -34,6 +34,8 @@ ContactModel::ContactModel(const ContactProblem& problem, const bem::ProgressCal
       factored_[b] = std::make_unique<bem::FactoredBody>(prepared_.meshes[b], prepared_.bodies[b], problem.analysis,
                                                          std::move(variable), body_progress);
     } catch (const SolverError& error) {
+      // The hint is for a singular body; a matrix that is not finite has another cause.
+      if (std::string(error.what()).find("is singular") == std::string::npos) throw;
       throw SolverError(std::string(error.what()) + " In a contact problem each body must be held without the "
                         "contact zone (which carries tractions only): prescribe displacements on body '" +
                         prepared_.bodies[b].name + "', or press it with a [contact.load] force (a rigid platen).");
