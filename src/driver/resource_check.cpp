@@ -13,10 +13,9 @@ namespace {
 
 // Nodes of a body: one per element end (linear) or element (constant), plus the split
 // corners, at most one per piece.
-std::int64_t body_unknowns(const bem::BodyDefinition& body, const geometry::MeshOptions& mesh) {
+std::int64_t body_unknowns(const bem::BodyDefinition& body) {
   std::int64_t nodes = 0;
   for (const auto& piece : body.pieces) nodes += static_cast<std::int64_t>(piece.elements) + 1;
-  (void)mesh;
   return 2 * nodes;
 }
 
@@ -65,7 +64,7 @@ void check_points(std::size_t points, const ResourceLimits& limits, const std::s
 
 ResourceEstimate estimate_resources(const bem::ProblemDefinition& problem) {
   ResourceEstimate estimate;
-  estimate.unknowns = body_unknowns(problem.body, problem.mesh);
+  estimate.unknowns = body_unknowns(problem.body);
   estimate.bytes = dense_body_bytes(estimate.unknowns);
   return estimate;
 }
@@ -75,7 +74,7 @@ ResourceEstimate estimate_resources(const dd::DecompositionProblem& problem) {
   ResourceEstimate estimate;
   double factored = 0.0, largest = 0.0;
   for (const auto& subdomain : problem.subdomains) {
-    const std::int64_t n = body_unknowns(subdomain.body, problem.mesh);
+    const std::int64_t n = body_unknowns(subdomain.body);
     estimate.unknowns = std::max(estimate.unknowns, n);
     factored += 2.0 * 8.0 * static_cast<double>(n) * static_cast<double>(n);
     largest = std::max(largest, dense_body_bytes(n));
@@ -87,7 +86,7 @@ ResourceEstimate estimate_resources(const dd::DecompositionProblem& problem) {
 ResourceEstimate estimate_resources(const contact::ContactProblem& problem) {
   ResourceEstimate estimate;
   for (const auto& body : problem.bodies) {
-    const std::int64_t n = body_unknowns(body, problem.mesh);
+    const std::int64_t n = body_unknowns(body);
     estimate.unknowns = std::max(estimate.unknowns, n);
     estimate.bytes += dense_body_bytes(n);
   }

@@ -213,8 +213,13 @@ RunOutput run_body(std::string_view text, const std::string& file_name, const Ru
 }  // namespace
 
 ProblemKind problem_kind(std::string_view text) {
-  if (io::is_decomposition_text(text)) return ProblemKind::decomposition;
-  if (io::is_contact_text(text)) return ProblemKind::contact;
+  // Text that does not parse is left to the one-body reader to report.
+  try {
+    const toml::table root = toml::parse(text);
+    if (root.contains("subdomain")) return ProblemKind::decomposition;
+    if (root.contains("contact")) return ProblemKind::contact;
+  } catch (const toml::parse_error&) {
+  }
   return ProblemKind::body;
 }
 

@@ -27,34 +27,10 @@ std::vector<Vec2> read_points(const TableReader& body, const FileContext& contex
     if (!list) interior.fail("points", "must be a list of points " + context.point_form() + ", found " + describe_node(*node));
     for (const toml::node& point : *list) points.push_back(read_point(point, interior.where("points"), context));
   }
-  if (const toml::table* grid = interior.optional_table("grid", "grid")) {
-    const TableReader reader(*grid, interior.key_path("grid"), context, interior.line());
-    const std::string a = context.axisymmetric() ? "r" : "x", b = context.axisymmetric() ? "z" : "y";
-    reader.check_keys({a, b}, "the grid table");
-    std::array<std::vector<double>, 2> axes;
-    const std::array<std::string, 2> names{a, b};
-    for (int k = 0; k < 2; ++k) {
-      const toml::node& node = reader.require(names[k], "[min, max, count]");
-      const toml::array* range = node.as_array();
-      if (!range || range->size() != 3)
-        reader.fail(names[k], "must be [min, max, count], found " + describe_node(node));
-      const double low = read_number(*range->get(0), reader.where(names[k]), context);
-      const double high = read_number(*range->get(1), reader.where(names[k]), context);
-      const int count = read_integer(*range->get(2), reader.where(names[k]), context);
-      if (count < 1 || high < low) reader.fail(names[k], "needs min <= max and a count >= 1");
-      if (count > context.limits.max_interior_points)
-        reader.fail(names[k], "the count " + std::to_string(count) + " is over the limit of " +
-                                  std::to_string(context.limits.max_interior_points) +
-                                  " interior points (raise it with --max-points)");
-      for (int i = 0; i < count; ++i) axes[k].push_back(count == 1 ? low : low + (high - low) * i / (count - 1));
-    }
-    if (static_cast<double>(axes[0].size()) * static_cast<double>(axes[1].size()) >
-        static_cast<double>(context.limits.max_interior_points))
-      reader.fail("", "the grid has more points than the limit of " +
-                          std::to_string(context.limits.max_interior_points) + " (raise it with --max-points)");
-    for (const double y : axes[1])
-      for (const double x : axes[0]) points.emplace_back(x, y);
-  }
+  if (const toml::table* grid = interior.optional_table("grid", "grid"))
+    for (const auto& point : read_interior_grid(TableReader(*grid, interior.key_path("grid"), context, interior.line()),
+                                                context))
+      points.push_back(point.position);
   return points;
 }
 

@@ -19,55 +19,6 @@ namespace {
 
 // [parameters]: numbers, or expressions of the parameters written before them.
 
-std::vector<bem::InteriorPoint> read_grid(const TableReader& grid, const FileContext& context) {
-  std::vector<std::string> valid{"x", "y"};
-  if (context.axisymmetric()) valid = {"r", "z", "x", "y"};
-  grid.check_keys(valid, "a grid table");
-  std::array<std::vector<double>, 2> coordinates;
-  for (int axis = 0; axis < 2; ++axis) {
-    const std::string plane_name = axis == 0 ? "x" : "y";
-    const std::string axisymmetric_name = axis == 0 ? "r" : "z";
-    std::string key = plane_name;
-    if (context.axisymmetric()) {
-      if (grid.has(plane_name) && grid.has(axisymmetric_name))
-        grid.fail(axisymmetric_name, "give '" + axisymmetric_name + "' or its alias '" + plane_name +
-                                         "', not both");
-      key = grid.has(plane_name) ? plane_name : axisymmetric_name;
-    }
-    const toml::node& node =
-        grid.require(key, "[min, max, count] of the grid along " + key);
-    const toml::array* range = node.as_array();
-    if (!range || range->size() != 3)
-      grid.fail(key, "must be [min, max, count], found " +
-                         (range ? "an array of " + std::to_string(range->size()) + " values"
-                                : describe_node(node)));
-    const SourceLocation where = grid.where(key);
-    const double low = read_number(*range->get(0), where, context);
-    const double high = read_number(*range->get(1), where, context);
-    const int count = read_integer(*range->get(2), where, context);
-    if (count < 1) grid.fail(key, "the count must be >= 1, found " + std::to_string(count));
-    if (high < low)
-      grid.fail(key, "max (" + format_number(high) + ") is below min (" + format_number(low) + ")");
-    if (count == 1 && high != low)
-      grid.fail(key, "a count of 1 needs min = max (one line of points); use a count >= 2 to "
-                     "span [" + format_number(low) + ", " + format_number(high) + "]");
-    if (count > context.limits.max_interior_points)
-      grid.fail(key, "the count " + std::to_string(count) + " is over the limit of " +
-                         std::to_string(context.limits.max_interior_points) + " interior points (raise it with --max-points)");
-    for (int i = 0; i < count; ++i)
-      coordinates[axis].push_back(count == 1 ? low : low + (high - low) * i / (count - 1));
-  }
-  const double total = static_cast<double>(coordinates[0].size()) * static_cast<double>(coordinates[1].size());
-  if (total > static_cast<double>(context.limits.max_interior_points))
-    grid.fail("", "the grid has " + format_number(total) + " points, over the limit of " +
-                      std::to_string(context.limits.max_interior_points) + " (raise it with --max-points)");
-  // Row by row: x (r) varies fastest.
-  std::vector<bem::InteriorPoint> points;
-  for (const double y : coordinates[1])
-    for (const double x : coordinates[0]) points.push_back(bem::InteriorPoint{Vec2(x, y), true, {}});
-  return points;
-}
-
 std::vector<bem::InteriorPoint> read_interior(const TableReader& root, const FileContext& context) {
   std::vector<bem::InteriorPoint> points;
   const toml::table* table = root.optional_table("interior", "[interior]");
@@ -87,14 +38,14 @@ std::vector<bem::InteriorPoint> read_interior(const TableReader& root, const Fil
   }
   if (const toml::node* node = interior.find("grid")) {
     if (const toml::table* grid = node->as_table()) {
-      const auto grid_points = read_grid(TableReader(*grid, "interior.grid", context, interior.line()), context);
+      const auto grid_points = read_interior_grid(TableReader(*grid, "interior.grid", context, interior.line()), context);
       points.insert(points.end(), grid_points.begin(), grid_points.end());
     } else if (const toml::array* grids = node->as_array(); grids && grids->is_array_of_tables()) {
       int index = 0;
       for (const toml::node& grid : *grids) {
         ++index;
         const auto grid_points =
-            read_grid(TableReader(*grid.as_table(), "interior.grid[" + std::to_string(index) + "]",
+            read_interior_grid(TableReader(*grid.as_table(), "interior.grid[" + std::to_string(index) + "]",
                                   context, interior.where("grid").line),
                       context);
         points.insert(points.end(), grid_points.begin(), grid_points.end());

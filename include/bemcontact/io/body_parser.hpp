@@ -33,6 +33,10 @@ struct PrescribedValue {
 PrescribedValue read_prescribed_value(const toml::node& node, const SourceLocation& where,
                                       const FileContext& context);
 
+// A grid of interior points { x = [min, max, count], y = [...] } (r, z as aliases in
+// axisymmetry), row by row with x fastest; the counts are checked against the limits.
+std::vector<bem::InteriorPoint> read_interior_grid(const TableReader& grid, const FileContext& context);
+
 // The [parameters] table, in file order: each may use the ones written before it.
 void read_parameters(const TableReader& root, FileContext& context);
 
