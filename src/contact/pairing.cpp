@@ -110,6 +110,7 @@ std::vector<int> cut_piece(bem::BodyDefinition& body, int k, const std::vector<d
   for (std::size_t i = 0; i + 1 < s.size(); ++i) {
     auto sub = sub_piece(piece, s[i], s[i + 1]);
     sub.condition_signature = condition.signature;
+    sub.fixed_mesh = true;  // one element, paired with the other body's
     pieces.push_back(sub);
   }
   body.pieces.erase(body.pieces.begin() + k);

@@ -29,6 +29,10 @@ bem::ProblemDefinition subdomain_problem(const DecompositionProblem& problem, st
   one.analysis = problem.analysis;
   one.mesh = problem.mesh;
   one.body = problem.subdomains[s].body;
+  // Interface nodes are matched with the neighbour's: keep both meshes as given.
+  const auto& interfaces = problem.subdomains[s].piece_interface;
+  for (std::size_t p = 0; p < interfaces.size() && p < one.body.pieces.size(); ++p)
+    if (!interfaces[p].empty()) one.body.pieces[p].fixed_mesh = true;
   one.interior_points = problem.subdomains[s].interior_points;
   return one;
 }

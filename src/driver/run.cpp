@@ -45,6 +45,14 @@ double seconds_since(Clock::time_point start) {
   text += buffer;
 }
 
+// Neighbouring elements of very different lengths (mesh_quality_warnings), named by body
+// when there are several.
+void add_mesh_warnings(std::vector<std::string>& warnings, const geometry::BoundaryMesh& mesh,
+                       const std::string& label) {
+  for (const auto& warning : geometry::mesh_quality_warnings(mesh))
+    warnings.push_back(label.empty() ? warning : label + ": " + warning);
+}
+
 // Likely mistakes in the geometry of each body (geometry_warnings), named by body when
 // there are several.
 void add_geometry_warnings(std::vector<std::string>& warnings, const bem::BodyDefinition& body,
@@ -57,6 +65,7 @@ json options_json(const bem::ProblemDefinition& problem) {
   return {{"analysis", to_string(problem.analysis)},
           {"interpolation", to_string(problem.mesh.interpolation)},
           {"corner_shift", problem.mesh.corner_shift},
+          {"corner_transition", problem.mesh.corner_transition},
           {"split_angle_radians", problem.mesh.split_angle_radians},
           {"material", {{"E", problem.body.material.young_modulus}, {"nu", problem.body.material.poisson_ratio}}},
           {"threads", omp_get_max_threads()}};
@@ -66,7 +75,15 @@ json mesh_json(const geometry::BoundaryMesh& mesh) {
   int split = 0;
   for (const auto& v : mesh.vertices) split += v.split;
   return {{"nodes", mesh.node_count()}, {"elements", mesh.element_count()},
-          {"contours", mesh.contours.size()}, {"split_corners", split}};
+          {"contours", mesh.contours.size()}, {"split_corners", split},
+          {"graded_toward_vertices", io::mesh_transitions_json(mesh)}};
+}
+
+// One line per boundary the corner transition graded (geometry::MeshOptions).
+void append_transitions(std::string& report, const geometry::BoundaryMesh& mesh, const std::string& label) {
+  for (const auto& t : mesh.transitions)
+    append(report, "  %sboundary '%s' graded toward a finer neighbour: %d elements (%d asked)\n", label.c_str(),
+           t.name.c_str(), t.elements, t.elements_asked);
 }
 
 // Parses the text with `parse`, checks the resource limits before anything is solved, and
@@ -88,6 +105,8 @@ RunOutput run_decomposition(std::string_view text, const std::string& file_name,
   for (const auto& subdomain : file.problem.subdomains)
     add_geometry_warnings(output.warnings, subdomain.body, "subdomain '" + subdomain.body.name + "'");
   const auto result = dd::solve_decomposition(file.problem, options.progress);
+  for (const auto& subdomain : result.subdomains)
+    add_mesh_warnings(output.warnings, subdomain.mesh, "subdomain '" + subdomain.name + "'");
   json summary = {{"bemcontact_version", BEMCONTACT_VERSION},
                   {"input", file_name},
                   {"title", file.problem.title},
@@ -114,6 +133,8 @@ RunOutput run_decomposition(std::string_view text, const std::string& file_name,
   double jump_u = 0.0, jump_p = 0.0;
   for (const auto& j : result.jumps) jump_u = std::max(jump_u, j.jump_u), jump_p = std::max(jump_p, j.jump_p);
   append(report, "  max interface jumps: [u] = %.3g, [p] = %.3g\n", jump_u, jump_p);
+  for (const auto& subdomain : result.subdomains)
+    append_transitions(report, subdomain.mesh, "subdomain '" + subdomain.name + "': ");
   append(report, "  time %.3f s\n", seconds_since(started));
   return output;
 }
@@ -125,10 +146,14 @@ RunOutput run_contact(std::string_view text, const std::string& file_name, const
   const auto file = read_checked(io::parse_contact_problem, text, file_name, options, output);
   for (const auto& body : file.problem.bodies) add_geometry_warnings(output.warnings, body, "body '" + body.name + "'");
   const auto result = contact::solve_contact(file.problem, options.progress);
+  for (std::size_t b = 0; b < 2; ++b)
+    add_mesh_warnings(output.warnings, result.meshes[b], "body '" + file.problem.bodies[b].name + "'");
   for (const auto& [name, content] :
        io::contact_output_files(file.problem, result, file.vtk, file.parameters, output.warnings))
     output.files.add(name, content);
   output.report = io::contact_report_text(file.problem, result);
+  for (std::size_t b = 0; b < 2; ++b)
+    append_transitions(output.report, result.meshes[b], "body '" + file.problem.bodies[b].name + "': ");
   append(output.report, "  time %.3f s\n", seconds_since(started));
   return output;
 }
@@ -140,6 +165,7 @@ RunOutput run_body(std::string_view text, const std::string& file_name, const Ru
   const double read_seconds = seconds_since(started);
   add_geometry_warnings(output.warnings, file.problem.body, "");
   const auto result = bem::solve_body(file.problem, options.progress);
+  add_mesh_warnings(output.warnings, result.mesh, "");
 
   const auto write_started = Clock::now();
   io::OutputDirectory& out = output.files;
@@ -193,6 +219,7 @@ RunOutput run_body(std::string_view text, const std::string& file_name, const Ru
   append(report, "  %s, %s elements: %ld nodes, %ld elements, %ld unknowns\n", to_string(file.problem.analysis),
          to_string(file.problem.mesh.interpolation), static_cast<long>(result.mesh.node_count()),
          static_cast<long>(result.mesh.element_count()), static_cast<long>(result.report.unknowns));
+  append_transitions(report, result.mesh, "");
   append(report, "  condition estimate 1/rcond = %.3g, relative residual = %.3g\n",
          1.0 / result.report.reciprocal_condition, result.report.relative_residual);
   append(report, "  max |u| on the boundary = %.6g, max von Mises = %.6g at (%.6g, %.6g)\n", max_u, max_vm,

@@ -226,6 +226,67 @@ std::vector<double> element_breakpoints(const BoundaryPiece& piece) {
   return s;
 }
 
+std::vector<double> transition_breakpoints(const BoundaryPiece& piece, double cap_start, double cap_end,
+                                           double growth) {
+  const std::vector<double> nominal = element_breakpoints(piece);
+  const double length = piece_length(piece);
+  const int n = static_cast<int>(nominal.size()) - 1;
+  // Linear size function kappa (cap + (growth - 1) x): with kappa = ln(growth)/(growth - 1)
+  // unit steps of its integral of dx / h give the geometric sequence cap, cap growth, ...
+  const double kappa = growth > 1.0 ? std::log(growth) / (growth - 1.0) : 1.0;
+  cap_start *= kappa;
+  cap_end *= kappa;
+  const double slope = kappa * (growth - 1.0);
+  if (!(slope > 0.0) || (!(cap_start / kappa < (nominal[1] - nominal[0]) * length) &&
+                         !(cap_end / kappa < (nominal[n] - nominal[n - 1]) * length)))
+    return nominal;
+  // Pieces of the size function on which one expression holds: the piece's element
+  // length H, cap_start + slope x, or cap_end + slope (length - x). Cut at the nominal
+  // breakpoints and where the expressions cross, then integrate 1/h exactly on each.
+  std::vector<double> cuts;
+  for (double s : nominal) cuts.push_back(s * length);
+  for (int k = 0; k < n; ++k) {
+    const double h = (nominal[k + 1] - nominal[k]) * length;
+    if (std::isfinite(cap_start)) cuts.push_back((h - cap_start) / slope);
+    if (std::isfinite(cap_end)) cuts.push_back(length - (h - cap_end) / slope);
+  }
+  if (std::isfinite(cap_start) && std::isfinite(cap_end)) cuts.push_back(0.5 * (length + (cap_end - cap_start) / slope));
+  std::erase_if(cuts, [&](double x) { return !(x > 0.0 && x < length); });
+  cuts.push_back(0.0);
+  cuts.push_back(length);
+  std::sort(cuts.begin(), cuts.end());
+  cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
+  struct Segment {
+    double x0, x1, phi0;  // phi0 = integral of 1/h up to x0
+    double c, a;          // h(x) = c + a (x - x0) on the segment
+    double phi(double x) const { return a == 0.0 ? (x - x0) / c : std::log1p(a * (x - x0) / c) / a; }
+    double inverse(double p) const { return a == 0.0 ? x0 + p * c : x0 + c * std::expm1(a * p) / a; }
+  };
+  std::vector<Segment> segments;
+  double phi = 0.0;
+  for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
+    const double x0 = cuts[k], x1 = cuts[k + 1], mid = 0.5 * (x0 + x1);
+    const auto it = std::upper_bound(nominal.begin(), nominal.end(), mid / length);
+    const int e = std::clamp(static_cast<int>(it - nominal.begin()) - 1, 0, n - 1);
+    Segment seg{x0, x1, phi, (nominal[e + 1] - nominal[e]) * length, 0.0};
+    const double from_start = cap_start + slope * mid, from_end = cap_end + slope * (length - mid);
+    if (from_start < seg.c && from_start <= from_end) seg = {x0, x1, phi, cap_start + slope * x0, slope};
+    else if (from_end < seg.c) seg = {x0, x1, phi, cap_end + slope * (length - x0), -slope};
+    phi += seg.phi(x1);
+    segments.push_back(seg);
+  }
+  const int count = std::max(1, static_cast<int>(std::ceil(phi - 1e-9)));
+  std::vector<double> s(count + 1, 0.0);
+  std::size_t j = 0;
+  for (int k = 1; k < count; ++k) {
+    const double target = phi * k / count;
+    while (j + 1 < segments.size() && segments[j + 1].phi0 <= target) ++j;
+    s[k] = std::clamp(segments[j].inverse(target - segments[j].phi0), segments[j].x0, segments[j].x1) / length;
+  }
+  s[count] = 1.0;
+  return s;
+}
+
 double geometry_scale(const std::vector<BoundaryPiece>& pieces) {
   if (pieces.empty()) return 1.0;
   Vec2 lo = pieces.front().start, hi = lo;

@@ -1,6 +1,7 @@
 #include "bemcontact/geometry/mesh.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 namespace bemcontact::geometry {
@@ -54,9 +55,56 @@ BoundaryMesh mesh_boundary(const std::vector<BoundaryPiece>& input_pieces, const
   mesh.piece_elements.assign(piece_count, {});
   mesh.piece_nodes.assign(piece_count, {});
   mesh.piece_skipped.assign(piece_count, false);
+  for (const auto& piece : pieces) mesh.piece_names.push_back(piece.name);
   for (int p = 0; p < piece_count; ++p)
     mesh.piece_skipped[p] = options.skip_axis_pieces && lies_on_axis(pieces[p], tol);
   const bool linear = options.interpolation == Interpolation::linear;
+
+  // Element end points of each piece, with the corner transition toward vertices where a
+  // much finer piece meets it (a coarse element next to a fine one spoils the nodes of the
+  // fine side near the vertex: measured in docs/corners.md).
+  std::vector<std::vector<double>> breakpoints(piece_count);
+  for (int p = 0; p < piece_count; ++p) breakpoints[p] = element_breakpoints(pieces[p]);
+  if (options.corner_transition > 1.0) {
+    const double growth = options.corner_transition;
+    const double trigger = std::max(2.0, growth);  // end elements differing by up to 2x are left alone
+    constexpr double none = std::numeric_limits<double>::infinity();
+    std::vector<double> cap_start(piece_count, none), cap_end(piece_count, none);
+    auto end_length = [&](int p, bool at_start) {
+      const auto& s = breakpoints[p];
+      return piece_length(pieces[p]) * (at_start ? s[1] - s[0] : s.back() - s[s.size() - 2]);
+    };
+    // A graded piece may in turn be much finer than its other neighbour: repeat until no
+    // cap changes (caps only shrink, toward the finest element, so this ends).
+    for (int pass = 0; pass < 4 * piece_count + 4; ++pass) {
+      bool changed = false;
+      for (const auto& contour : mesh.contours) {
+        const std::size_t m = contour.pieces.size();
+        for (std::size_t k = 0; k < m; ++k) {
+          const int in = contour.pieces[(k + m - 1) % m], out = contour.pieces[k];
+          if (mesh.piece_skipped[in] || mesh.piece_skipped[out] || in == out) continue;
+          const double h_in = end_length(in, false), h_out = end_length(out, true);
+          if (h_in > trigger * h_out && !pieces[in].fixed_mesh && h_out < cap_end[in]) {
+            cap_end[in] = h_out;
+            changed = true;
+          }
+          if (h_out > trigger * h_in && !pieces[out].fixed_mesh && h_in < cap_start[out]) {
+            cap_start[out] = h_in;
+            changed = true;
+          }
+        }
+      }
+      if (!changed) break;
+      for (int p = 0; p < piece_count; ++p)
+        if (cap_start[p] != none || cap_end[p] != none)
+          breakpoints[p] = transition_breakpoints(pieces[p], cap_start[p], cap_end[p], growth);
+    }
+    for (int p = 0; p < piece_count; ++p) {
+      if (cap_start[p] == none && cap_end[p] == none) continue;
+      mesh.transitions.push_back({p, pieces[p].name, pieces[p].elements,
+                                  static_cast<int>(breakpoints[p].size()) - 1});
+    }
+  }
 
   // Plan each vertex: the start of every piece, joined to the end of the previous one.
   std::vector<VertexPlan> start_vertex(piece_count);
@@ -88,8 +136,8 @@ BoundaryMesh mesh_boundary(const std::vector<BoundaryPiece>& input_pieces, const
     for (int p : contour.pieces) {
       if (mesh.piece_skipped[p]) continue;
       const BoundaryPiece& piece = pieces[p];
-      const auto s = element_breakpoints(piece);
-      const int n = piece.elements;
+      const auto& s = breakpoints[p];
+      const int n = static_cast<int>(s.size()) - 1;
       std::vector<PiecePoint> points(n + 1);
       for (int k = 0; k <= n; ++k) points[k] = point_on_piece(piece, s[k]);
       points[0].position = piece.start;
@@ -181,6 +229,57 @@ BoundaryMesh mesh_boundary(const std::vector<BoundaryPiece>& input_pieces, const
     mesh.vertices.push_back(vertex);
   }
   return mesh;
+}
+
+std::vector<std::string> mesh_quality_warnings(const BoundaryMesh& mesh, double ratio) {
+  // Worst ratio per piece (inside it) and per vertex (across it), in contour order.
+  struct Finding {
+    double ratio = 0.0;
+    Vec2 where = Vec2::Zero();
+    std::string text;
+  };
+  std::vector<Finding> findings;
+  auto note = [&](const std::string& text, double r, const Vec2& where) {
+    for (auto& f : findings)
+      if (f.text == text) {
+        if (r > f.ratio) f.ratio = r, f.where = where;
+        return;
+      }
+    findings.push_back({r, where, text});
+  };
+  for (const auto& contour : mesh.contours) {
+    const std::size_t m = contour.pieces.size();
+    for (std::size_t k = 0; k < m; ++k) {
+      const int p = contour.pieces[k];
+      const auto& elements = mesh.piece_elements[p];
+      for (std::size_t e = 0; e + 1 < elements.size(); ++e) {
+        const auto& a = mesh.elements[elements[e]];
+        const auto& b = mesh.elements[elements[e + 1]];
+        const double r = std::max(a.length, b.length) / std::min(a.length, b.length);
+        if (r > ratio) note("boundary '" + mesh.piece_names[p] + "'", r, a.end);
+      }
+      const int next = contour.pieces[(k + 1) % m];
+      if (next == p || elements.empty() || mesh.piece_elements[next].empty()) continue;
+      const auto& a = mesh.elements[elements.back()];
+      const auto& b = mesh.elements[mesh.piece_elements[next].front()];
+      const double r = std::max(a.length, b.length) / std::min(a.length, b.length);
+      if (r > ratio)
+        note("the vertex between boundaries '" + mesh.piece_names[p] + "' and '" + mesh.piece_names[next] + "'", r,
+             a.end);
+    }
+  }
+  std::vector<std::string> messages;
+  for (const auto& f : findings) {
+    char buffer[160];
+    std::snprintf(buffer, sizeof buffer, " at (%.6g, %.6g)", f.where.x(), f.where.y());
+    char r[32];
+    std::snprintf(r, sizeof r, "%.3g", f.ratio);
+    messages.push_back("mesh: neighbouring elements differ in length by a factor " + std::string(r) + " on " +
+                       f.text + buffer + " (above " + std::to_string(static_cast<int>(ratio)) +
+                       "; a coarse element next to fine ones spoils the results near it: grade the coarser "
+                       "boundary toward the finer one, as [mesh] corner_transition does at vertices)");
+  }
+  return messages;
 }
 
 Index find_node_at(const BoundaryMesh& mesh, const Vec2& point, double tolerance) {

@@ -584,4 +584,30 @@ std::vector<bem::InteriorPoint> read_interior_grid(const TableReader& grid, cons
   return points;
 }
 
+void read_mesh_options(const TableReader& root, FileContext& context, geometry::MeshOptions& options) {
+  const toml::table* table = root.optional_table("mesh", "[mesh]");
+  if (!table) return;
+  const TableReader mesh(*table, "mesh", context, root.line());
+  mesh.check_keys(schema::mesh_keys(), "the [mesh] table");
+  if (const auto shift = mesh.optional_number("corner_shift")) {
+    if (!(*shift > 0.0 && *shift < 0.5))
+      mesh.fail("corner_shift", "the corner shift (position of a split corner node, as a fraction of its "
+                                "element's length) must satisfy 0 < corner_shift < 0.5, found " +
+                                    format_number(*shift));
+    options.corner_shift = *shift;
+    if (options.interpolation == Interpolation::constant)
+      context.warnings.push_back(SourceLocation{context.file, mesh.line(), "mesh.corner_shift"}.describe() +
+                                 ": corner_shift has no effect with constant elements (their nodes are at "
+                                 "element middles)");
+  }
+  if (const auto growth = mesh.optional_number("corner_transition")) {
+    if (!(*growth == 0.0 || (*growth > 1.0 && *growth <= 4.0)))
+      mesh.fail("corner_transition", "the corner transition (growth factor of the element lengths away from a "
+                                     "vertex where finer elements meet) must satisfy 1 < corner_transition <= 4, "
+                                     "or be 0 to keep every boundary's elements as given; found " +
+                                         format_number(*growth));
+    options.corner_transition = *growth;
+  }
+}
+
 }  // namespace bemcontact::io

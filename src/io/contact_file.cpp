@@ -101,14 +101,7 @@ ContactFile parse_contact_problem(std::string_view text, const std::string& file
   if (problem.mesh.interpolation == Interpolation::constant)
     root.fail("interpolation", "contact problems need linear elements (nodes at the element ends face each other)");
   result.parameters = context.parameters;
-  if (const toml::table* mesh = root.optional_table("mesh", "[mesh]")) {
-    const TableReader reader(*mesh, "mesh", context, root.line());
-    reader.check_keys({"corner_shift"}, "the [mesh] table");
-    if (const auto shift = reader.optional_number("corner_shift")) {
-      if (!(*shift > 0.0 && *shift < 0.5)) reader.fail("corner_shift", "must satisfy 0 < corner_shift < 0.5");
-      problem.mesh.corner_shift = *shift;
-    }
-  }
+  read_mesh_options(root, context, problem.mesh);
   if (const toml::table* output = root.optional_table("output", "[output]")) {
     const TableReader reader(*output, "output", context, root.line());
     reader.check_keys({"vtk"}, "the [output] table");

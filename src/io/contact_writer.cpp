@@ -159,6 +159,8 @@ std::vector<std::pair<std::string, std::string>> contact_output_files(const cont
   summary["analysis"] = to_string(problem.analysis);
   summary["parameters"] = parameters;
   summary["contact"] = contact_summary_json(problem, result);
+  summary["graded_toward_vertices"] = {{problem.bodies[0].name, mesh_transitions_json(result.meshes[0])},
+                                       {problem.bodies[1].name, mesh_transitions_json(result.meshes[1])}};
   summary["warnings"] = warnings;
   files.emplace_back("summary.json", write_json_string(summary));
   return files;

@@ -148,15 +148,7 @@ DecompositionFile parse_decomposition(std::string_view text, const std::string& 
   read_file_header(root, context, file_name, problem.analysis, problem.title, problem.mesh.interpolation);
   result.parameters = context.parameters;
   read_options(root, context, problem.options);
-  if (const toml::table* table = root.optional_table("mesh", "[mesh]")) {
-    const TableReader mesh(*table, "mesh", context, root.line());
-    mesh.check_keys(schema::mesh_keys(), "the [mesh] table");
-    if (const auto shift = mesh.optional_number("corner_shift")) {
-      if (!(*shift > 0.0 && *shift < 0.5))
-        mesh.fail("corner_shift", "the corner shift must satisfy 0 < corner_shift < 0.5, found " + format_number(*shift));
-      problem.mesh.corner_shift = *shift;
-    }
-  }
+  read_mesh_options(root, context, problem.mesh);
   if (const toml::table* table = root.optional_table("output", "[output]")) {
     const TableReader output(*table, "output", context, root.line());
     output.check_keys(schema::output_keys(), "the [output] table");

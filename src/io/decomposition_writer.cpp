@@ -116,6 +116,7 @@ nlohmann::json decomposition_summary_json(const dd::DecompositionProblem& proble
     subs.push_back({{"name", sub.name},
                     {"nodes", sub.mesh.node_count()},
                     {"elements", sub.mesh.element_count()},
+                    {"graded_toward_vertices", mesh_transitions_json(sub.mesh)},
                     {"material", {{"E", material.young_modulus}, {"nu", material.poisson_ratio}}},
                     {"reciprocal_condition", sub.reciprocal_condition}});
   }

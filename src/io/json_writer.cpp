@@ -77,7 +77,7 @@ nlohmann::json problem_echo_json(const ProblemFile& file) {
           {"source_file", problem.source_file},
           {"analysis", to_string(problem.analysis)},
           {"interpolation", to_string(problem.mesh.interpolation)},
-          {"mesh", {{"corner_shift", problem.mesh.corner_shift}}},
+          {"mesh", {{"corner_shift", problem.mesh.corner_shift}, {"corner_transition", problem.mesh.corner_transition}}},
           {"material",
            {{"E", problem.body.material.young_modulus}, {"nu", problem.body.material.poisson_ratio}}},
           {"parameters", parameters},
@@ -85,6 +85,13 @@ nlohmann::json problem_echo_json(const ProblemFile& file) {
           {"constraints", constraints},
           {"interior_points", problem.interior_points.size()},
           {"output", {{"vtk", file.output.vtk}}}};
+}
+
+nlohmann::json mesh_transitions_json(const geometry::BoundaryMesh& mesh) {
+  nlohmann::json graded = nlohmann::json::array();
+  for (const auto& t : mesh.transitions)
+    graded.push_back({{"boundary", t.name}, {"elements_asked", t.elements_asked}, {"elements", t.elements}});
+  return graded;
 }
 
 }  // namespace bemcontact::io

@@ -82,27 +82,12 @@ ProblemFile parse_problem(std::string_view text, const std::string& file_name, c
   problem.body = parse_body(root_table, BodyContext{&context, "", schema::file_keys(), 1});
   problem.interior_points = read_interior(root, context);
 
-  if (const toml::table* table = root.optional_table("mesh", "[mesh]")) {
-    const TableReader mesh(*table, "mesh", context, root.line());
-    mesh.check_keys(schema::mesh_keys(), "the [mesh] table");
-    if (const auto shift = mesh.optional_number("corner_shift")) {
-      if (!(*shift > 0.0 && *shift < 0.5))
-        mesh.fail("corner_shift", "the corner shift (position of a split corner node, as a fraction "
-                                  "of its element's length) must satisfy 0 < corner_shift < 0.5, "
-                                  "found " + format_number(*shift));
-      problem.mesh.corner_shift = *shift;
-    }
-  }
+  read_mesh_options(root, context, problem.mesh);
   if (const toml::table* table = root.optional_table("output", "[output]")) {
     const TableReader output(*table, "output", context, root.line());
     output.check_keys(schema::output_keys(), "the [output] table");
     result.output.vtk = output.boolean_or("vtk", true);
   }
-  if (problem.mesh.interpolation == Interpolation::constant && root.find("mesh") &&
-      root.find("mesh")->as_table() && root.find("mesh")->as_table()->contains("corner_shift"))
-    context.warnings.push_back(SourceLocation{file_name, root.line(), "mesh.corner_shift"}.describe() +
-                               ": corner_shift has no effect with constant elements (their nodes are at "
-                               "element middles)");
   result.warnings = context.warnings;
   return result;
 }

@@ -28,6 +28,9 @@ struct BoundaryPiece {
   // Pieces whose conditions differ may carry different tractions at a shared vertex,
   // so the mesher splits the node there (section II.4.4.2).
   std::string condition_signature;
+  // Meshed exactly as given (contact zones, interfaces: their nodes are matched with
+  // another mesh), never regraded toward a vertex.
+  bool fixed_mesh = false;
   SourceLocation where;
 };
 
@@ -42,6 +45,12 @@ double piece_length(const BoundaryPiece& piece);
 PiecePoint point_on_piece(const BoundaryPiece& piece, double s);
 // Fractions 0 = s_0 < s_1 < ... < s_n = 1 of the element end points, graded as asked.
 std::vector<double> element_breakpoints(const BoundaryPiece& piece);
+// The same with the end elements no longer than `cap_start` / `cap_end` (lengths; infinity
+// for none): the element length grows from the cap by the factor `growth` per element until
+// it meets the piece's own grading (size function min(h_piece(x), cap + (growth - 1) x),
+// elements placed at equal steps of its integral of dx / h).
+std::vector<double> transition_breakpoints(const BoundaryPiece& piece, double cap_start, double cap_end,
+                                           double growth);
 
 // Closed contours found by chaining pieces end to start: indices into the piece list, in
 // order of travel. Throws GeometryError (naming pieces and vertices) for an open contour,

@@ -6,6 +6,7 @@
 // Every node then has its own collocation point at a smooth point of the boundary, so
 // any pair of conditions on the two sides gives a regular system.
 #include <array>
+#include <string>
 #include <vector>
 
 #include "bemcontact/geometry/boundary.hpp"
@@ -15,6 +16,11 @@ namespace bemcontact::geometry {
 struct MeshOptions {
   Interpolation interpolation = Interpolation::linear;
   double corner_shift = 0.2;          // fraction of the element length
+  // Corner-adapted grading: where the end elements of two pieces meeting at a vertex differ
+  // in length by more than a factor max(2, corner_transition), the coarser piece is graded
+  // toward the vertex, its elements growing by this factor from the finer one's length
+  // (0: off). The pieces' own element counts are then minimums.
+  double corner_transition = 1.2;
   double split_angle_radians = 1e-6;  // smaller turns count as smooth
   // Axisymmetry: straight pieces lying on the axis r = 0 close the meridian section but
   // are not part of the boundary; they carry no elements.
@@ -63,6 +69,14 @@ struct BoundaryMesh {
   std::vector<std::vector<Index>> piece_elements;  // elements of each piece, in order
   std::vector<std::vector<Index>> piece_nodes;     // nodes of each piece, in order
   std::vector<bool> piece_skipped;                 // axis pieces without elements
+  std::vector<std::string> piece_names;            // for messages
+  // Pieces graded toward a vertex by the corner transition.
+  struct GradedPiece {
+    int piece = -1;
+    std::string name;
+    int elements_asked = 0, elements = 0;
+  };
+  std::vector<GradedPiece> transitions;
   double scale = 1.0;                              // geometry length scale
 
   Index node_count() const { return static_cast<Index>(nodes.size()); }
@@ -70,6 +84,11 @@ struct BoundaryMesh {
 };
 
 BoundaryMesh mesh_boundary(const std::vector<BoundaryPiece>& pieces, const MeshOptions& options);
+
+// Neighbouring elements (along a piece or across a vertex) whose lengths differ by more
+// than `ratio`: one message per boundary or vertex, naming it, with the worst ratio and
+// where. A coarse element next to a fine one spoils the fine side's nodes near it.
+std::vector<std::string> mesh_quality_warnings(const BoundaryMesh& mesh, double ratio = 3.0);
 
 // Node at `point` within `tolerance`, or -1.
 Index find_node_at(const BoundaryMesh& mesh, const Vec2& point, double tolerance);

@@ -45,4 +45,10 @@ void read_parameters(const TableReader& root, FileContext& context);
 void read_file_header(const TableReader& root, FileContext& context, const std::string& file_name,
                       AnalysisType& analysis, std::string& title, Interpolation& interpolation);
 
+// The optional [mesh] table: corner_shift (split corner nodes' position, 0 < s < 0.5) and
+// corner_transition (growth factor of the grading toward a vertex where a finer piece
+// meets a coarser one, 1 < g <= 4, or 0 for none). Keys with no effect for the file's
+// interpolation get a warning.
+void read_mesh_options(const TableReader& root, FileContext& context, geometry::MeshOptions& options);
+
 }  // namespace bemcontact::io

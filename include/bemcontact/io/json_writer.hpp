@@ -22,4 +22,8 @@ nlohmann::json solve_report_json(const bem::SolveReport& report);
 // interior point count, outputs.
 nlohmann::json problem_echo_json(const ProblemFile& file);
 
+// Boundaries the corner transition graded (geometry::MeshOptions): name, elements asked
+// and made.
+nlohmann::json mesh_transitions_json(const geometry::BoundaryMesh& mesh);
+
 }  // namespace bemcontact::io

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "bemcontact/geometry/mesh.hpp"
@@ -221,4 +222,103 @@ TEST(GeometryChecks, WarningsNameAWideArcAndATinyBoundary) {
   const auto found = geometry_warnings(tiny);
   ASSERT_FALSE(found.empty());
   EXPECT_NE(found[0].find("'right'"), std::string::npos) << found[0];
+}
+
+namespace {
+
+std::vector<double> element_lengths(const std::vector<double>& s, double length) {
+  std::vector<double> h;
+  for (std::size_t k = 0; k + 1 < s.size(); ++k) h.push_back((s[k + 1] - s[k]) * length);
+  return h;
+}
+
+}  // namespace
+
+TEST(GeometryTransition, WithoutACapTheBreakpointsAreThePieceOwn) {
+  BoundaryPiece piece = line("p", {0, 0}, {2, 0}, 5);
+  piece.grading = 4.0;
+  const double none = std::numeric_limits<double>::infinity();
+  EXPECT_EQ(transition_breakpoints(piece, none, none, 1.2), element_breakpoints(piece));
+  // A cap larger than the end element changes nothing either.
+  EXPECT_EQ(transition_breakpoints(piece, 10.0, 10.0, 1.2), element_breakpoints(piece));
+}
+
+TEST(GeometryTransition, ElementsGrowFromTheCapByTheFactorUntilThePieceSize) {
+  const BoundaryPiece piece = line("p", {0, 0}, {1, 0}, 4);  // elements of 0.25
+  const double none = std::numeric_limits<double>::infinity();
+  const auto s = transition_breakpoints(piece, 1e-3, none, 1.2);
+  ASSERT_EQ(s.front(), 0.0);
+  ASSERT_EQ(s.back(), 1.0);
+  const auto h = element_lengths(s, 1.0);
+  // The first element is about the cap (a little less: the count is rounded up), every
+  // neighbour ratio at most the growth factor (and the rounding), none above the piece's.
+  EXPECT_GT(h.front(), 0.8e-3);
+  EXPECT_LE(h.front(), 1.2e-3);
+  for (std::size_t k = 0; k + 1 < h.size(); ++k) {
+    EXPECT_GT(h[k + 1], 0.0);
+    EXPECT_LE(h[k + 1] / h[k], 1.2 * 1.05) << "element " << k;
+  }
+  for (double x : h) EXPECT_LE(x, 0.25 * (1.0 + 1e-12));
+  // Geometric growth from 1e-3 to 0.25 by 1.2 takes about ln(250)/ln(1.2) = 30 elements.
+  EXPECT_GE(h.size(), 25u);
+  EXPECT_LE(h.size(), 40u);
+}
+
+TEST(GeometryTransition, CapsAtBothEndsOfAShortPieceMeetInTheMiddle) {
+  const BoundaryPiece piece = line("p", {0, 0}, {1, 0}, 1);
+  const auto s = transition_breakpoints(piece, 0.01, 0.02, 1.5);
+  const auto h = element_lengths(s, 1.0);
+  EXPECT_LE(h.front(), 0.0105);
+  EXPECT_LE(h.back(), 0.021);
+  for (std::size_t k = 0; k + 1 < h.size(); ++k) {
+    const double r = std::max(h[k + 1], h[k]) / std::min(h[k + 1], h[k]);
+    EXPECT_LE(r, 1.5 * 1.1) << "element " << k;
+  }
+}
+
+TEST(GeometryTransition, TheCoarsePieceIsGradedTowardTheFineOneButNotAFixedPiece) {
+  // Bottom side with 64 elements, the others with 1: the right and left sides get graded
+  // toward the bottom corners, and then the top toward their ends, finer than its one
+  // element: no neighbour ratio above 2 remains anywhere.
+  auto pieces = unit_square(1);
+  pieces[0].elements = 64;
+  const BoundaryMesh graded = mesh_boundary(pieces, MeshOptions{});
+  ASSERT_EQ(graded.transitions.size(), 3u);
+  EXPECT_EQ(graded.transitions[0].name, "right");
+  EXPECT_EQ(graded.transitions[1].name, "top");
+  EXPECT_EQ(graded.transitions[2].name, "left");
+  EXPECT_EQ(graded.transitions[0].elements_asked, 1);
+  EXPECT_EQ(graded.transitions[0].elements, static_cast<int>(graded.piece_elements[1].size()));
+  const auto& first_right = graded.elements[graded.piece_elements[1].front()];
+  EXPECT_LE(first_right.length, 1.0 / 64.0 * (1.0 + 1e-9));
+  EXPECT_TRUE(mesh_quality_warnings(graded, 2.0 * 1.05).empty());
+
+  MeshOptions off;
+  off.corner_transition = 0.0;
+  const BoundaryMesh plain = mesh_boundary(pieces, off);
+  EXPECT_TRUE(plain.transitions.empty());
+  EXPECT_EQ(plain.element_count(), 67);
+  const auto warnings = mesh_quality_warnings(plain);
+  ASSERT_EQ(warnings.size(), 2u);
+  EXPECT_NE(warnings[0].find("'bottom' and 'right'"), std::string::npos) << warnings[0];
+  EXPECT_NE(warnings[0].find("factor 64"), std::string::npos) << warnings[0];
+
+  pieces[1].fixed_mesh = true;  // e.g. a contact zone: its nodes are paired, keep them
+  const BoundaryMesh fixed = mesh_boundary(pieces, MeshOptions{});
+  for (const auto& t : fixed.transitions) EXPECT_NE(t.name, "right");
+  EXPECT_EQ(fixed.piece_elements[1].size(), 1u);
+  // The fixed coarse side stays next to the fine bottom (and to the graded top): reported.
+  const auto left = mesh_quality_warnings(fixed);
+  ASSERT_FALSE(left.empty());
+  EXPECT_NE(left[0].find("'bottom' and 'right'"), std::string::npos) << left[0];
+  for (const auto& w : left) EXPECT_EQ(w.find("'left'"), std::string::npos) << w;
+}
+
+TEST(GeometryTransition, AStrongGradingInsideABoundaryIsReported) {
+  auto pieces = unit_square(8);
+  pieces[2].elements = 3;
+  pieces[2].grading = 100.0;  // neighbour ratio 10
+  const auto warnings = mesh_quality_warnings(mesh_boundary(pieces, MeshOptions{}));
+  ASSERT_FALSE(warnings.empty());
+  EXPECT_NE(warnings[0].find("boundary 'top'"), std::string::npos) << warnings[0];
 }
