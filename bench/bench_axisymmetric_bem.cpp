@@ -43,6 +43,13 @@ void assembly(benchmark::State& state, AnalysisType type) {
 
 void BM_AssemblyPlane(benchmark::State& state) { assembly(state, AnalysisType::plane_strain); }
 void BM_AssemblyAxisymmetric(benchmark::State& state) { assembly(state, AnalysisType::axisymmetric); }
+// Quadratic elements: half as many for the same number of nodes.
+void BM_AssemblyAxisymmetricQuadratic(benchmark::State& state) {
+  auto problem = hollow_section(static_cast<int>(state.range(0)), AnalysisType::axisymmetric);
+  problem.mesh.interpolation = Interpolation::quadratic;
+  bench::measure_assembly(state, problem);
+}
+BENCHMARK(BM_AssemblyAxisymmetricQuadratic)->Arg(124)->Arg(248)->Arg(500)->Arg(1000)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_AssemblyPlane)->Arg(250)->Arg(500)->Arg(1000)->Arg(2000)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_AssemblyAxisymmetric)->Arg(250)->Arg(500)->Arg(1000)->Arg(2000)->Unit(benchmark::kMillisecond)->UseRealTime();
 

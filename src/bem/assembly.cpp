@@ -164,7 +164,10 @@ InfluenceMatrices assemble_influence_matrices(const geometry::BoundaryMesh& mesh
               const Index j = element.nodes[a];
               m.G.block<2, 2>(2 * i, 2 * j) += influence.G[a];
               if (a != source_node) m.H.block<2, 2>(2 * i, 2 * j) += influence.H[a];
-              traction_term += influence.G[a] * element_traction;
+              // On a curved element the expansion's traction follows the normal; through its
+              // nodal values (O(h^3), as the interpolation of the element).
+              traction_term += influence.G[a] * (element.arc ? Vec2(sigma * element.normal_at(element.node_fraction[a]))
+                                                             : element_traction);
             }
             if (axisymmetric) contributions.block<2, 1>(2 * i, static_cast<Index>(k)) = traction_term;
           }

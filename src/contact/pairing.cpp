@@ -22,18 +22,6 @@ std::string boundary_text(const bem::BodyDefinition& body, const geometry::Bound
   return "boundary '" + piece.name + "' of body '" + body.name + "'";
 }
 
-double arc_sweep(const geometry::BoundaryPiece& piece) {
-  const Vec2 a = piece.start - piece.center, b = piece.end - piece.center;
-  double sweep = std::atan2(b.y(), b.x()) - std::atan2(a.y(), a.x());
-  const double two_pi = 2.0 * std::numbers::pi;
-  if (piece.counterclockwise) {
-    while (sweep <= 0.0) sweep += two_pi;
-  } else {
-    while (sweep >= 0.0) sweep -= two_pi;
-  }
-  return sweep;
-}
-
 // Fraction along the piece of a point on (or near) it.
 double fraction_on_piece(const geometry::BoundaryPiece& piece, const Vec2& point) {
   if (piece.shape == geometry::PieceShape::line) {
@@ -42,7 +30,7 @@ double fraction_on_piece(const geometry::BoundaryPiece& piece, const Vec2& point
   }
   const Vec2 a = piece.start - piece.center, p = point - piece.center;
   double angle = std::atan2(p.y(), p.x()) - std::atan2(a.y(), a.x());
-  const double sweep = arc_sweep(piece);
+  const double sweep = geometry::arc_sweep(piece);
   const double two_pi = 2.0 * std::numbers::pi;
   // Bring the angle to the side of the sweep, allowing a little beyond both ends.
   while (sweep > 0.0 && angle < -0.5 * (two_pi - sweep)) angle += two_pi;

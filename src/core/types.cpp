@@ -12,7 +12,12 @@ const char* to_string(AnalysisType type) {
 }
 
 const char* to_string(Interpolation interpolation) {
-  return interpolation == Interpolation::constant ? "constant" : "linear";
+  switch (interpolation) {
+    case Interpolation::constant: return "constant";
+    case Interpolation::linear: return "linear";
+    case Interpolation::quadratic: return "quadratic";
+  }
+  return "?";
 }
 
 double kernel_poisson_ratio(AnalysisType type, const Material& material) {

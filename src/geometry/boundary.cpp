@@ -24,20 +24,6 @@ std::string piece_text(const BoundaryPiece& piece) {
 }
 
 // Signed sweep of an arc from start to end, in (0, 2 pi] or [-2 pi, 0).
-double arc_sweep(const BoundaryPiece& piece) {
-  const Vec2 a = piece.start - piece.center;
-  const Vec2 b = piece.end - piece.center;
-  double sweep = std::atan2(a.x() * b.y() - a.y() * b.x(), a.dot(b));
-  if (piece.counterclockwise) {
-    if (sweep <= 1e-14) sweep += two_pi;
-  } else {
-    if (sweep >= -1e-14) sweep -= two_pi;
-  }
-  return sweep;
-}
-
-double arc_radius(const BoundaryPiece& piece) { return (piece.start - piece.center).norm(); }
-
 bool segments_cross(const Vec2& p1, const Vec2& p2, const Vec2& q1, const Vec2& q2, double tol) {
   auto cross = [](const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); };
   const Vec2 r = p2 - p1, s = q2 - q1;
@@ -189,6 +175,21 @@ void check_holes_inside(const std::vector<BoundaryPiece>& pieces, const std::vec
 }
 
 }  // namespace
+
+double arc_sweep(const BoundaryPiece& piece) {
+  const Vec2 a = piece.start - piece.center;
+  const Vec2 b = piece.end - piece.center;
+  double sweep = std::atan2(a.x() * b.y() - a.y() * b.x(), a.dot(b));
+  if (piece.counterclockwise) {
+    if (sweep <= 1e-14) sweep += two_pi;
+  } else {
+    if (sweep >= -1e-14) sweep -= two_pi;
+  }
+  return sweep;
+}
+
+double arc_radius(const BoundaryPiece& piece) { return (piece.start - piece.center).norm(); }
+
 
 double piece_length(const BoundaryPiece& piece) {
   if (piece.shape == PieceShape::line) return (piece.end - piece.start).norm();

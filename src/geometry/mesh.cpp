@@ -6,10 +6,43 @@
 
 namespace bemcontact::geometry {
 
-double BoundaryElement::shape(int a, double f) const {
-  if (node_count == 1) return 1.0;
-  const double f0 = node_fraction[0], f1 = node_fraction[1];
-  return a == 0 ? (f1 - f) / (f1 - f0) : (f - f0) / (f1 - f0);
+BoundaryElement straight_element(const Vec2& start, const Vec2& end) {
+  BoundaryElement e;
+  e.start = start;
+  e.end = end;
+  const Vec2 d = end - start;
+  e.length = d.norm();
+  e.tangent = d / e.length;
+  e.normal = Vec2(e.tangent.y(), -e.tangent.x());
+  return e;
+}
+
+double BoundaryElement::shape_derivative(int a, double f) const {
+  if (node_count == 1) return 0.0;
+  double sum = 0.0;
+  for (int c = 0; c < node_count; ++c) {
+    if (c == a) continue;
+    double term = 1.0 / (node_fraction[a] - node_fraction[c]);
+    for (int b = 0; b < node_count; ++b)
+      if (b != a && b != c) term *= (f - node_fraction[b]) / (node_fraction[a] - node_fraction[b]);
+    sum += term;
+  }
+  return sum;
+}
+
+Vec2 BoundaryElement::point(double f) const {
+  if (!arc) return start + f * (end - start);
+  const double angle = angle_start + f * angle_span;
+  return center + radius * Vec2(std::cos(angle), std::sin(angle));
+}
+
+Vec2 BoundaryElement::normal_at(double f) const {
+  if (!arc) return normal;
+  // Travel along +angle (ccw) has the domain on the left, so the outward normal is the
+  // radial direction; clockwise travel points it to the centre.
+  const double angle = angle_start + f * angle_span;
+  const Vec2 radial(std::cos(angle), std::sin(angle));
+  return angle_span > 0.0 ? radial : Vec2(-radial);
 }
 
 bool lies_on_axis(const BoundaryPiece& piece, double tolerance) {
@@ -58,7 +91,9 @@ BoundaryMesh mesh_boundary(const std::vector<BoundaryPiece>& input_pieces, const
   for (const auto& piece : pieces) mesh.piece_names.push_back(piece.name);
   for (int p = 0; p < piece_count; ++p)
     mesh.piece_skipped[p] = options.skip_axis_pieces && lies_on_axis(pieces[p], tol);
-  const bool linear = options.interpolation == Interpolation::linear;
+  // Linear and quadratic elements have nodes at their ends (split at corners).
+  const bool end_nodes = options.interpolation != Interpolation::constant;
+  const bool quadratic = options.interpolation == Interpolation::quadratic;
 
   // Element end points of each piece, with the corner transition toward vertices where a
   // much finer piece meets it (a coarse element next to a fine one spoils the nodes of the
@@ -117,7 +152,7 @@ BoundaryMesh mesh_boundary(const std::vector<BoundaryPiece>& input_pieces, const
       plan.piece_out = out;
       plan.in_meshed = !mesh.piece_skipped[in];
       plan.out_meshed = !mesh.piece_skipped[out];
-      if (plan.in_meshed && plan.out_meshed && linear) {
+      if (plan.in_meshed && plan.out_meshed && end_nodes) {
         const Vec2 t_in = tangent_of(point_on_piece(pieces[in], 1.0).outward_normal);
         const Vec2 t_out = tangent_of(point_on_piece(pieces[out], 0.0).outward_normal);
         const double turn = std::atan2(t_in.x() * t_out.y() - t_in.y() * t_out.x(), t_in.dot(t_out));
@@ -158,28 +193,38 @@ BoundaryMesh mesh_boundary(const std::vector<BoundaryPiece>& input_pieces, const
       };
       Index previous_end = -1;
       for (int k = 0; k < n; ++k) {
-        BoundaryElement element;
-        element.start = points[k].position;
-        element.end = points[k + 1].position;
+        BoundaryElement element = straight_element(points[k].position, points[k + 1].position);
         const Vec2 d = element.end - element.start;
-        element.length = d.norm();
-        element.tangent = d / element.length;
-        element.normal = Vec2(element.tangent.y(), -element.tangent.x());
         element.piece = p;
+        if (quadratic && piece.shape == PieceShape::arc) {
+          // The exact arc: the element's parameter runs linearly in angle, as the piece's.
+          const Vec2 a = piece.start - piece.center;
+          const double sweep = arc_sweep(piece);
+          element.arc = true;
+          element.center = piece.center;
+          element.radius = arc_radius(piece);
+          element.angle_start = std::atan2(a.y(), a.x()) + s[k] * sweep;
+          element.angle_span = (s[k + 1] - s[k]) * sweep;
+        }
         const Index e = static_cast<Index>(mesh.elements.size());
-        if (!linear) {
+        // A shifted node of a quadratic element lies on the true geometry; of a linear one,
+        // on the chord (with the true normal, above).
+        auto shifted_position = [&](double fraction) {
+          return quadratic ? element.point(fraction) : Vec2(element.start + fraction * d);
+        };
+        if (!end_nodes) {
           element.node_count = 1;
-          element.node_fraction = {0.5, 0.5};
+          element.node_fraction = {0.5, 0.5, 0.5};
           element.nodes[0] = add_node(0.5 * (element.start + element.end), element.normal, p, false);
           mesh.piece_nodes[p].push_back(element.nodes[0]);
         } else {
-          element.node_count = 2;
+          element.node_count = quadratic ? 3 : 2;
           // Start node.
           if (k > 0) {
             element.nodes[0] = previous_end;
           } else if (first.split) {
             element.node_fraction[0] = options.corner_shift;
-            element.nodes[0] = add_node(element.start + options.corner_shift * d,
+            element.nodes[0] = add_node(shifted_position(options.corner_shift),
                                         shifted_normal(k, options.corner_shift), p, true);
             mesh.piece_nodes[p].push_back(element.nodes[0]);
           } else if (first.in_meshed && first.shared_node >= 0) {
@@ -190,12 +235,16 @@ BoundaryMesh mesh_boundary(const std::vector<BoundaryPiece>& input_pieces, const
             if (first.in_meshed) first.shared_node = element.nodes[0];
             mesh.piece_nodes[p].push_back(element.nodes[0]);
           }
+          if (quadratic) {  // middle node, on the true geometry
+            element.nodes[2] = add_node(element.point(0.5), element.normal_at(0.5), p, false);
+            mesh.piece_nodes[p].push_back(element.nodes[2]);
+          }
           // End node.
           if (k + 1 < n) {
             element.nodes[1] = add_node(element.end, points[k + 1].outward_normal, p, false);
           } else if (last.split) {
             element.node_fraction[1] = 1.0 - options.corner_shift;
-            element.nodes[1] = add_node(element.start + (1.0 - options.corner_shift) * d,
+            element.nodes[1] = add_node(shifted_position(1.0 - options.corner_shift),
                                         shifted_normal(k, 1.0 - options.corner_shift), p, true);
           } else if (last.out_meshed && last.shared_node >= 0) {
             element.nodes[1] = last.shared_node;

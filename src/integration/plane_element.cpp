@@ -106,6 +106,8 @@ inline double log_primitive1(double x) {
 ElementInfluence integrate_plane_element(const kernels::KelvinPlane& kelvin, const Vec2& source,
                                          const geometry::BoundaryElement& element,
                                          int source_node) {
+  if (element.node_count > 2 || element.arc)
+    return integrate_plane_element_by_quadrature(kelvin, source, element, source_node);
   BEMCONTACT_ASSERT(source_node < element.node_count);
   const double nu = kelvin.poisson_ratio;
   const double kappa = 0.5 * (3.0 - 4.0 * nu);  // ln(1/r) = -ln(rho^2) / 2
@@ -166,6 +168,8 @@ ElementInfluence integrate_plane_element(const kernels::KelvinPlane& kelvin, con
 ElementStressInfluence integrate_plane_element_stress(const kernels::KelvinPlane& kelvin,
                                                       const Vec2& point,
                                                       const geometry::BoundaryElement& element) {
+  if (element.node_count > 2 || element.arc)
+    return integrate_plane_element_stress_by_quadrature(kelvin, point, element);
   const double nu = kelvin.poisson_ratio;
   const double a = 1.0 - 2.0 * nu;
   const double scale_d = 1.0 / (4.0 * pi * (1.0 - nu));

@@ -530,8 +530,10 @@ void read_file_header(const TableReader& root, FileContext& context, const std::
                                       : AnalysisType::plane_strain;
   context.analysis = analysis;
   title = root.optional_string("title").value_or(std::filesystem::path(file_name).stem().string());
-  interpolation = root.choice("interpolation", {"linear", "constant"}, "linear") == "constant" ? Interpolation::constant
-                                                                                          : Interpolation::linear;
+  const std::string order = root.choice("interpolation", {"linear", "quadratic", "constant"}, "linear");
+  interpolation = order == "constant"    ? Interpolation::constant
+                  : order == "quadratic" ? Interpolation::quadratic
+                                         : Interpolation::linear;
   read_parameters(root, context);
 }
 

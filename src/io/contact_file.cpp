@@ -98,8 +98,10 @@ ContactFile parse_contact_problem(std::string_view text, const std::string& file
   auto& problem = result.problem;
   problem.source_file = file_name;
   read_file_header(root, context, file_name, problem.analysis, problem.title, problem.mesh.interpolation);
-  if (problem.mesh.interpolation == Interpolation::constant)
-    root.fail("interpolation", "contact problems need linear elements (nodes at the element ends face each other)");
+  if (problem.mesh.interpolation != Interpolation::linear)
+    root.fail("interpolation", "contact problems need linear elements: the pairs are formed from nodes at the "
+                               "element ends facing each other (quadratic elements work in one-body and "
+                               "decomposition files)");
   result.parameters = context.parameters;
   read_mesh_options(root, context, problem.mesh);
   if (const toml::table* output = root.optional_table("output", "[output]")) {

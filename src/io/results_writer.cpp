@@ -135,8 +135,12 @@ void append_nodes(const geometry::BoundaryMesh& mesh, const std::vector<Index>& 
                   std::vector<Index>& line) {
   for (const Index e : elements) {
     const auto& element = mesh.elements[e];
-    for (int a = 0; a < element.node_count; ++a) {
-      const Index node = element.nodes[a];
+    // Along the element: by fraction (a quadratic element stores start, end, middle).
+    std::array<int, geometry::kMaxElementNodes> order{0, 1, 2};
+    std::sort(order.begin(), order.begin() + element.node_count,
+              [&](int a, int b) { return element.node_fraction[a] < element.node_fraction[b]; });
+    for (int k = 0; k < element.node_count; ++k) {
+      const Index node = element.nodes[order[k]];
       if (node < 0) continue;
       if (line.empty() || line.back() != node) line.push_back(node);
     }
@@ -239,14 +243,15 @@ std::string mesh_nodes_csv(const geometry::BoundaryMesh& mesh) {
 
 std::string mesh_elements_csv(const geometry::BoundaryMesh& mesh) {
   Text out;
-  out << "element,node0,node1,x_start,y_start,x_end,y_end,nx,ny,piece\n";
+  out << "element,node0,node1,x_start,y_start,x_end,y_end,nx,ny,piece,node_middle\n";
   for (std::size_t e = 0; e < mesh.elements.size(); ++e) {
     const auto& element = mesh.elements[e];
     const Index node1 = element.node_count > 1 ? element.nodes[1] : Index{-1};
+    const Index middle = element.node_count > 2 ? element.nodes[2] : Index{-1};
     out << static_cast<Index>(e) << ',' << element.nodes[0] << ',' << node1 << ','
         << element.start.x() << ',' << element.start.y() << ',' << element.end.x() << ','
         << element.end.y() << ',' << element.normal.x() << ',' << element.normal.y() << ','
-        << element.piece << '\n';
+        << element.piece << ',' << middle << '\n';
   }
   return std::move(out).str();
 }

@@ -234,8 +234,10 @@ std::vector<Record> run_two_layer_ring(const Context& context) {
   std::vector<Record> records;
   const auto file = io::read_decomposition_file(context.examples_dir + "/dd_two_layer_ring.toml");
   const auto exact = two_layer_reference(file, file.problem.analysis);
+  for (Interpolation interpolation : {Interpolation::linear, Interpolation::quadratic})
   for (const auto method : {dd::InterfaceMethod::mixed, dd::InterfaceMethod::conforming, dd::InterfaceMethod::hybrid}) {
     auto problem = file.problem;
+    problem.mesh.interpolation = interpolation;
     problem.options.method = method;
     const auto result = dd::solve_decomposition(problem, context.progress);
     double u_error = 0, u_scale = 0;
@@ -266,8 +268,8 @@ std::vector<Record> run_two_layer_ring(const Context& context) {
     records.push_back(compare_scaled("monolithic_difference_u", du, 0.0, 1.0, 1e-7));
     records.push_back(compare_scaled("monolithic_difference_p", dp, 0.0, 1.0, 1e-7));
     tag(records, first, "dd-two-layer-ring",
-        {{"method", dd::to_string(method)}, {"iterations", std::to_string(result.gmres.iterations)},
-         {"elements_per_arc", "24"}});
+        {{"interpolation", to_string(interpolation)}, {"method", dd::to_string(method)},
+         {"iterations", std::to_string(result.gmres.iterations)}, {"elements_per_arc", "24"}});
   }
   return records;
 }
@@ -281,8 +283,10 @@ std::vector<Record> run_two_layer_tube(const Context& context) {
   std::vector<Record> records;
   const auto file = io::read_decomposition_file(context.examples_dir + "/dd_two_layer_tube_axisymmetric.toml");
   const auto exact = two_layer_reference(file, AnalysisType::plane_strain);
+  for (Interpolation interpolation : {Interpolation::linear, Interpolation::quadratic})
   for (const auto method : {dd::InterfaceMethod::mixed, dd::InterfaceMethod::conforming, dd::InterfaceMethod::hybrid}) {
     auto problem = file.problem;
+    problem.mesh.interpolation = interpolation;
     problem.options.method = method;
     const auto result = dd::solve_decomposition(problem, context.progress);
     double u_error = 0, u_scale = 0, hoop_error = 0;
@@ -305,7 +309,8 @@ std::vector<Record> run_two_layer_tube(const Context& context) {
     records.push_back(compare_scaled("monolithic_difference_u", du, 0.0, 1.0, 1e-7));
     records.push_back(compare_scaled("monolithic_difference_p", dp, 0.0, 1.0, 1e-7));
     tag(records, first, "dd-two-layer-tube-axisymmetric",
-        {{"method", dd::to_string(method)}, {"iterations", std::to_string(result.gmres.iterations)}});
+        {{"interpolation", to_string(interpolation)}, {"method", dd::to_string(method)},
+         {"iterations", std::to_string(result.gmres.iterations)}});
   }
   return records;
 }

@@ -29,8 +29,8 @@ Mat2 in_plane(const bem::StressTensor& s) {
 
 }  // namespace
 
-// Plate in uniaxial tension (II.7.1). Linear elements reproduce the linear field exactly
-// (analytic integrals, straight boundary), so the tolerance is round-off: 1e-10.
+// Plate in uniaxial tension (II.7.1). Linear and quadratic elements reproduce the linear
+// field exactly (straight boundary), so the tolerance is round-off: 1e-10.
 // Constant elements approximate u by a piecewise constant: first order, O(h). The
 // thesis reports < 0.5 % on u and < 1 % on p with 16 constant elements; we measure 2.2 %
 // there (max norm over the nodes), so the thesis' bounds are checked on refined meshes
@@ -71,13 +71,18 @@ std::vector<Record> run_plate_tension(const Context& context) {
     }
     return e;
   };
-  const auto linear = measure(Interpolation::linear, 4);
-  records.push_back(compare_scaled("u_boundary_max_error", linear.u_max, 0.0, 1.0, 1e-10));
-  records.push_back(compare_scaled("p_boundary_rms_error", linear.p_rms, 0.0, 1.0, 1e-10));
-  records.push_back(compare_scaled("s_boundary_max_error", linear.s_max, 0.0, 1.0, 1e-10));
-  records.push_back(compare_scaled("u_interior_max_error", linear.ui_max, 0.0, 1.0, 1e-10));
-  records.push_back(compare_scaled("s_interior_max_error", linear.si_max, 0.0, 1.0, 1e-10));
-  tag(records, 0, "plate-tension", {{"interpolation", "linear"}, {"elements", "16"}});
+  // Linear and quadratic elements hold the linear field exactly (quadratic: Gauss
+  // quadrature to ~1e-15): round-off.
+  for (Interpolation interpolation : {Interpolation::linear, Interpolation::quadratic}) {
+    const auto exact_field = measure(interpolation, 4);
+    const std::size_t first = records.size();
+    records.push_back(compare_scaled("u_boundary_max_error", exact_field.u_max, 0.0, 1.0, 1e-10));
+    records.push_back(compare_scaled("p_boundary_rms_error", exact_field.p_rms, 0.0, 1.0, 1e-10));
+    records.push_back(compare_scaled("s_boundary_max_error", exact_field.s_max, 0.0, 1.0, 1e-10));
+    records.push_back(compare_scaled("u_interior_max_error", exact_field.ui_max, 0.0, 1.0, 1e-10));
+    records.push_back(compare_scaled("s_interior_max_error", exact_field.si_max, 0.0, 1.0, 1e-10));
+    tag(records, first, "plate-tension", {{"interpolation", to_string(interpolation)}, {"elements", "16"}});
+  }
   Errors previous{};
   for (int per_side : {4, 16, 64}) {
     const auto e = measure(Interpolation::constant, per_side);
@@ -107,12 +112,11 @@ std::vector<Record> run_plate_tension(const Context& context) {
 std::vector<Record> run_cantilever(const Context& context) {
   std::vector<Record> records;
   const auto file = load_example(context, "cantilever.toml");
-  auto problem = file.problem;
   const double L = file.parameters.at("L"), H = file.parameters.at("H");
   reference::CantileverParabolicShear exact;
   exact.length = L;
   exact.height = H;
-  exact.material = problem.body.material;
+  exact.material = file.problem.body.material;
   const Vec2 B(L, H / 2), C(0, H / 2), O(0, 0);
   const double u1_B = exact.displacement(B).x(), u2_B = exact.displacement(B).y();
   const double s11_C = exact.stress(C).s11, s12_O = exact.stress(O).s12;
@@ -122,48 +126,67 @@ std::vector<Record> run_cantilever(const Context& context) {
                                {-1.99, 4.48, -3.92, 1.01}};
   const double refs[4] = {u1_B, u2_B, s11_C, s12_O};
   const char* names[4] = {"u1_B", "u2_B", "s11_C", "s12_O"};
-  double errors[5][4] = {};
-  double stress_errors[5] = {};
-  for (int m = 0; m < 5; ++m) {
-    const double h = L / std::pow(2.0, m + 1);
-    for (auto& piece : problem.body.pieces)
-      piece.elements = std::max(1, static_cast<int>(std::lround(geometry::piece_length(piece) / h)));
-    const auto result = bem::solve_body(problem, context.progress);
-    const Vec2 uB = bem::vector_at_vertex(result.mesh, vertex_at(result.mesh, B), result.boundary.displacement);
-    const auto sC = bem::stress_at_vertex(result.mesh, problem.body, problem.analysis, vertex_at(result.mesh, C), result.boundary.stress);
-    const auto sO = bem::stress_at_vertex(result.mesh, problem.body, problem.analysis, vertex_at(result.mesh, O), result.boundary.stress);
-    const double computed[4] = {uB.x(), uB.y(), sC.s11, sO.s12};
-    // Nodal boundary stresses over the whole boundary, relative to the peak |s11| = 4.
-    double s_max = 0.0;
-    for (Index i = 0; i < result.mesh.node_count(); ++i)
-      s_max = std::max(s_max, max_abs_difference(in_plane(result.boundary.stress[i]),
-                                                 exact.stress(result.mesh.nodes[i].position).in_plane()));
-    stress_errors[m] = s_max / std::abs(s11_C);
-    const std::size_t first = records.size();
-    for (int q = 0; q < 4; ++q) {
-      const double thesis_error = std::abs(thesis[m][q] - refs[q]) / std::abs(refs[q]) + 0.005 / std::abs(refs[q]);
-      const double tolerance = m == 4 ? std::min(0.01, thesis_error) : thesis_error;
-      records.push_back(compare_relative(names[q], computed[q], refs[q], tolerance));
-      errors[m][q] = records.back().error;
+  for (Interpolation interpolation : {Interpolation::linear, Interpolation::quadratic}) {
+    auto problem = file.problem;
+    problem.mesh.interpolation = interpolation;
+    const std::string order_name = to_string(interpolation);
+    double errors[5][4] = {};
+    double stress_errors[5] = {};
+    for (int m = 0; m < 5; ++m) {
+      const double h = L / std::pow(2.0, m + 1);
+      for (auto& piece : problem.body.pieces)
+        piece.elements = std::max(1, static_cast<int>(std::lround(geometry::piece_length(piece) / h)));
+      const auto result = bem::solve_body(problem, context.progress);
+      const Vec2 uB = bem::vector_at_vertex(result.mesh, vertex_at(result.mesh, B), result.boundary.displacement);
+      const auto sC = bem::stress_at_vertex(result.mesh, problem.body, problem.analysis, vertex_at(result.mesh, C), result.boundary.stress);
+      const auto sO = bem::stress_at_vertex(result.mesh, problem.body, problem.analysis, vertex_at(result.mesh, O), result.boundary.stress);
+      const double computed[4] = {uB.x(), uB.y(), sC.s11, sO.s12};
+      // Nodal boundary stresses over the whole boundary, relative to the peak |s11| = 4.
+      double s_max = 0.0;
+      for (Index i = 0; i < result.mesh.node_count(); ++i)
+        s_max = std::max(s_max, max_abs_difference(in_plane(result.boundary.stress[i]),
+                                                   exact.stress(result.mesh.nodes[i].position).in_plane()));
+      stress_errors[m] = s_max / std::abs(s11_C);
+      const std::size_t first = records.size();
+      for (int q = 0; q < 4; ++q) {
+        const double thesis_error = std::abs(thesis[m][q] - refs[q]) / std::abs(refs[q]) + 0.005 / std::abs(refs[q]);
+        const double tolerance = m == 4 ? std::min(0.01, thesis_error) : thesis_error;
+        records.push_back(compare_relative(names[q], computed[q], refs[q], tolerance));
+        errors[m][q] = records.back().error;
+      }
+      // First order near the corners (one-sided derivatives at shifted nodes): bounded by
+      // the thesis' own stress error at C on that mesh.
+      records.push_back(compare_scaled("s_boundary_max_error", stress_errors[m], 0.0, 1.0,
+                                       std::abs(thesis[m][2] - s11_C) / std::abs(s11_C) + 0.005));
+      tag(records, first, "cantilever",
+          {{"interpolation", order_name}, {"mesh", "M" + std::to_string(m + 1)},
+           {"h", "L/" + std::to_string(1 << (m + 1))}, {"elements", std::to_string(result.mesh.element_count())}});
     }
-    // First order near the corners (one-sided derivatives at shifted nodes): bounded by
-    // the thesis' own stress error at C on that mesh.
-    records.push_back(compare_scaled("s_boundary_max_error", stress_errors[m], 0.0, 1.0,
-                                     std::abs(thesis[m][2] - s11_C) / std::abs(s11_C) + 0.005));
-    tag(records, first, "cantilever",
-        {{"mesh", "M" + std::to_string(m + 1)}, {"h", "L/" + std::to_string(1 << (m + 1))},
-         {"elements", std::to_string(result.mesh.element_count())}});
+    // Observed orders. Linear elements: second order is nominal for the displacements; we
+    // measure 1.55 / 1.57 between M4 and M5 (the nodes next to the corners have a
+    // first-order traction error, docs/corners.md), so 1.4 is required; boundary
+    // stresses first order (0.8). Quadratic elements: third order for the displacements
+    // (2.8 required, M3-M4 and M4-M5), second for the boundary stresses (from the
+    // tangential strain of three neighbouring nodes; 1.8). The corner stresses s11(C) and
+    // s12(O) follow from the prescribed tractions alone (stress_at_vertex): no order.
+    const bool quadratic = interpolation == Interpolation::quadratic;
+    for (int m = quadratic ? 2 : 3; m < 4; ++m) {
+      const std::size_t from = records.size();
+      for (int q = 0; q < 2; ++q) {
+        // An error at round-off on both meshes has no order (quadratic elements give u1(B)
+        // to 1e-15): then the error itself is held to 1e-9.
+        if (errors[m][q] < 1e-9)
+          records.push_back(compare_scaled(std::string(names[q]) + "_error", errors[m + 1][q], 0.0, 1.0, 1e-9));
+        else
+          records.push_back(require_at_least(std::string("order_") + names[q],
+                                             observed_order(errors[m][q], errors[m + 1][q], 2.0), quadratic ? 2.8 : 1.4));
+      }
+      records.push_back(require_at_least("order_s_boundary", observed_order(stress_errors[m], stress_errors[m + 1], 2.0),
+                                         quadratic ? 1.8 : 0.8));
+      tag(records, from, "cantilever",
+          {{"interpolation", order_name}, {"mesh", "M" + std::to_string(m + 1) + "-M" + std::to_string(m + 2)}});
+    }
   }
-  // Observed order between M4 and M5. Displacements: second order is nominal for linear
-  // elements; we measure 1.48, 1.53, 1.56 from M4-M5 to M6-M7 (the split corners limit it),
-  // so 1.4 is required. Boundary stresses: first order (one-sided at the corners). The
-  // corner stresses s11(C) and s12(O) follow from the prescribed tractions alone
-  // (stress_at_vertex), so they have no order to measure.
-  const std::size_t first = records.size();
-  records.push_back(require_at_least("order_u1_B", observed_order(errors[3][0], errors[4][0], 2.0), 1.4));
-  records.push_back(require_at_least("order_u2_B", observed_order(errors[3][1], errors[4][1], 2.0), 1.4));
-  records.push_back(require_at_least("order_s_boundary", observed_order(stress_errors[3], stress_errors[4], 2.0), 0.8));
-  tag(records, first, "cantilever", {{"mesh", "M4-M5"}});
   return records;
 }
 
@@ -227,8 +250,9 @@ std::vector<Record> run_corner_refinement(const Context& context) {
 
 // Curved bar under end couples (Timoshenko & Goodier 29), examples/curved_beam.toml:
 // s_tt at every boundary node within 1 % of the peak |s_tt| with linear elements. The
-// worst node is the one next to an inner corner, where the error is first order (5.6, 2.6,
-// 1.2, 0.61 % for n = 8, 16, 32, 64): n = 64 is the mesh for the 1 %.
+// worst node is the one next to an inner corner, where the error of linear elements is
+// first order (5.6, 2.6, 1.2, 0.61 % for n = 8, 16, 32, 64): n = 64 is their mesh for the
+// 1 %; quadratic elements meet it from n = 4.
 std::vector<Record> run_curved_beam(const Context& context) {
   std::vector<Record> records;
   const auto file = load_example(context, "curved_beam.toml");
@@ -240,23 +264,36 @@ std::vector<Record> run_curved_beam(const Context& context) {
   exact.type = file.problem.analysis;
   const double peak = std::max(std::abs(exact.polar_stress(exact.inner_radius).tt),
                                std::abs(exact.polar_stress(exact.outer_radius).tt));
-  for (int n : {16, 64}) {
+  struct Variant { Interpolation interpolation; int n; double tolerance; };
+  // Linear: 1 % at n = 64; n = 16 held to the first-order bound 4 %. Quadratic: 1 % at
+  // n = 4 (measured 0.68 %), and its displacement order from n = 4 to 8 to 16 (3.66, 3.51).
+  double previous_u = 0.0;
+  for (const Variant v : {Variant{Interpolation::linear, 16, 0.04}, Variant{Interpolation::linear, 64, 0.01},
+                          Variant{Interpolation::quadratic, 4, 0.01}, Variant{Interpolation::quadratic, 8, 0.01},
+                          Variant{Interpolation::quadratic, 16, 0.01}}) {
+    const int n = v.n;
     auto problem = file.problem;
+    problem.mesh.interpolation = v.interpolation;
     const std::map<std::string, int> per_n{{"end0", 1}, {"outer", 4}, {"end90", 1}, {"inner", 2}};
     for (auto& piece : problem.body.pieces) piece.elements = per_n.at(piece.name) * n;
     const auto result = bem::solve_body(problem, context.progress);
-    double worst = 0.0;
+    double worst = 0.0, u_error = 0.0, u_scale = 0.0;
     for (Index i = 0; i < result.mesh.node_count(); ++i) {
       const Vec2& x = result.mesh.nodes[i].position;
       const Vec2 e_theta = Vec2(-x.y(), x.x()).normalized();
       const double computed = e_theta.dot(in_plane(result.boundary.stress[i]) * e_theta);
       worst = std::max(worst, std::abs(computed - exact.polar_stress(x.norm()).tt) / peak);
+      u_error = std::max(u_error, (result.boundary.displacement[i] - exact.displacement(x)).norm());
+      u_scale = std::max(u_scale, exact.displacement(x).norm());
     }
     const std::size_t first = records.size();
-    // n = 16: the first-order bound from the 1 % at n = 64, 4 %.
-    records.push_back(compare_scaled("max_stt_error", worst, 0.0, 1.0, n == 64 ? 0.01 : 0.04));
+    records.push_back(compare_scaled("max_stt_error", worst, 0.0, 1.0, v.tolerance));
+    const bool quadratic = v.interpolation == Interpolation::quadratic;
+    if (quadratic && previous_u > 0.0)
+      records.push_back(require_at_least("order_u_boundary", observed_order(previous_u, u_error / u_scale, 2.0), 2.8));
+    previous_u = quadratic ? u_error / u_scale : 0.0;
     tag(records, first, "curved-beam",
-        {{"interpolation", "linear"}, {"n", std::to_string(n)},
+        {{"interpolation", to_string(v.interpolation)}, {"n", std::to_string(n)},
          {"elements", std::to_string(result.mesh.element_count())}});
   }
   return records;
@@ -270,38 +307,38 @@ std::vector<Record> run_plate_hole(const Context& context) {
   auto problem = file.problem;
   const double P = file.parameters.at("P"), a = file.parameters.at("a");
   problem.interior_points.clear();
-  const auto result = bem::solve_body(problem, context.progress);
-  std::vector<Record> records;
-  const auto sA = bem::stress_at_vertex(result.mesh, problem.body, problem.analysis, vertex_at(result.mesh, Vec2(a, 0)), result.boundary.stress);
-  records.push_back(compare_relative("stt_hole_90", sA.s22, 3.0 * P, 0.02));
-  double srr_max = 0.0, srt_max = 0.0, stt_error = 0.0;
-  reference::KirschPlate kirsch;
-  kirsch.hole_radius = a;
-  kirsch.applied_stress = P;
-  kirsch.material = problem.body.material;
-  int hole_piece = -1;
-  for (std::size_t p = 0; p < problem.body.pieces.size(); ++p)
-    if (problem.body.pieces[p].name == "hole") hole_piece = static_cast<int>(p);
-  const auto& hole_nodes = result.mesh.piece_nodes.at(hole_piece);
-  for (std::size_t k = 0; k < hole_nodes.size(); ++k) {
-    const Index i = hole_nodes[k];
-    const Vec2 x = result.mesh.nodes[i].position;
-    // The shifted corner nodes and their neighbours carry the first-order corner error
-    // (1-2.5 % of 3P here, for corner shifts 0.1-0.4); they are covered by stt_hole_90.
-    const bool corner_node = k < 2 || k + 2 >= hole_nodes.size();
-    const double theta = std::atan2(x.y(), x.x());
-    const Vec2 er(std::cos(theta), std::sin(theta)), et(-std::sin(theta), std::cos(theta));
-    const Mat2 s = in_plane(result.boundary.stress[i]);
-    srr_max = std::max(srr_max, std::abs(er.dot(s * er)));
-    srt_max = std::max(srt_max, std::abs(er.dot(s * et)));
-    const auto exact = kirsch.polar_stress(x.norm(), theta);
-    if (!corner_node) stt_error = std::max(stt_error, std::abs(et.dot(s * et) - exact.tt));
-  }
-  records.push_back(compare_scaled("srr_hole_max", srr_max, 0.0, P, 0.01));
-  records.push_back(compare_scaled("srt_hole_max", srt_max, 0.0, P, 0.01));
-  records.push_back(compare_scaled("stt_hole_max_error", stt_error, 0.0, 3.0 * P, 0.01));
-  tag(records, 0, "plate-hole", {{"elements", std::to_string(result.mesh.element_count())}});
-  return records;
+  return for_each_interpolation("plate-hole", problem, [&](const bem::ProblemDefinition& variant, std::vector<Record>& records) {
+    const auto result = bem::solve_body(variant, context.progress);
+    const auto sA = bem::stress_at_vertex(result.mesh, problem.body, problem.analysis, vertex_at(result.mesh, Vec2(a, 0)), result.boundary.stress);
+    records.push_back(compare_relative("stt_hole_90", sA.s22, 3.0 * P, 0.02));
+    double srr_max = 0.0, srt_max = 0.0, stt_error = 0.0;
+    reference::KirschPlate kirsch;
+    kirsch.hole_radius = a;
+    kirsch.applied_stress = P;
+    kirsch.material = problem.body.material;
+    int hole_piece = -1;
+    for (std::size_t p = 0; p < problem.body.pieces.size(); ++p)
+      if (problem.body.pieces[p].name == "hole") hole_piece = static_cast<int>(p);
+    const auto& hole_nodes = result.mesh.piece_nodes.at(hole_piece);
+    for (std::size_t k = 0; k < hole_nodes.size(); ++k) {
+      const Index i = hole_nodes[k];
+      const Vec2 x = result.mesh.nodes[i].position;
+      // The shifted corner nodes and their neighbours carry the first-order corner error
+      // (1-2.5 % of 3P here, for corner shifts 0.1-0.4); they are covered by stt_hole_90.
+      const bool corner_node = k < 2 || k + 2 >= hole_nodes.size();
+      const double theta = std::atan2(x.y(), x.x());
+      const Vec2 er(std::cos(theta), std::sin(theta)), et(-std::sin(theta), std::cos(theta));
+      const Mat2 s = in_plane(result.boundary.stress[i]);
+      srr_max = std::max(srr_max, std::abs(er.dot(s * er)));
+      srt_max = std::max(srt_max, std::abs(er.dot(s * et)));
+      const auto exact = kirsch.polar_stress(x.norm(), theta);
+      if (!corner_node) stt_error = std::max(stt_error, std::abs(et.dot(s * et) - exact.tt));
+    }
+    records.push_back(compare_scaled("srr_hole_max", srr_max, 0.0, P, 0.01));
+    records.push_back(compare_scaled("srt_hole_max", srt_max, 0.0, P, 0.01));
+    records.push_back(compare_scaled("stt_hole_max_error", stt_error, 0.0, 3.0 * P, 0.01));
+    return result.mesh.element_count();
+  });
 }
 
 // Thick tube under internal pressure in plane strain (Lame), quarter model with arcs.
@@ -312,25 +349,25 @@ std::vector<Record> run_thick_ring_plane_strain(const Context& context) {
   auto problem = file.problem;
   const double a = file.parameters.at("a"), b = file.parameters.at("b"), p = file.parameters.at("p");
   const reference::ThickCylinder exact{a, b, p, 0.0, problem.body.material, reference::CylinderEnds::plane_strain};
-  const auto result = bem::solve_body(problem, context.progress);
-  const double c = std::sqrt(0.5);
-  const Index ia = node_at(result.mesh, Vec2(a * c, a * c)), ib = node_at(result.mesh, Vec2(b * c, b * c));
-  const Vec2 er(c, c), et(-c, c);
-  std::vector<Record> records;
-  records.push_back(compare_relative("ur_a", result.boundary.displacement[ia].dot(er), exact.radial_displacement(a), 5e-3));
-  records.push_back(compare_relative("ur_b", result.boundary.displacement[ib].dot(er), exact.radial_displacement(b), 5e-3));
-  records.push_back(compare_relative("stt_a", et.dot(in_plane(result.boundary.stress[ia]) * et), exact.polar_stress(a).tt, 5e-3));
-  records.push_back(compare_relative("stt_b", et.dot(in_plane(result.boundary.stress[ib]) * et), exact.polar_stress(b).tt, 5e-3));
-  // s_zz = nu (s_rr + s_tt) is a small difference of large terms: compare against p.
-  records.push_back(compare_scaled("szz_a", result.boundary.stress[ia].s33, exact.polar_stress(a).zz, p, 5e-3));
-  double s_error = 0.0;
-  for (std::size_t k = 0; k < result.interior.points.size(); ++k) {
-    const Vec2& x = result.interior.points[k];
-    s_error = std::max(s_error, max_abs_difference(in_plane(result.interior.stress[k]), exact.stress(x).in_plane()));
-  }
-  records.push_back(compare_scaled("s_interior_max_error", s_error, 0.0, p, 5e-3));
-  tag(records, 0, "thick-ring-plane-strain", {{"elements", std::to_string(result.mesh.element_count())}});
-  return records;
+  return for_each_interpolation("thick-ring-plane-strain", problem, [&](const bem::ProblemDefinition& variant, std::vector<Record>& records) {
+    const auto result = bem::solve_body(variant, context.progress);
+    const double c = std::sqrt(0.5);
+    const Index ia = node_at(result.mesh, Vec2(a * c, a * c)), ib = node_at(result.mesh, Vec2(b * c, b * c));
+    const Vec2 er(c, c), et(-c, c);
+    records.push_back(compare_relative("ur_a", result.boundary.displacement[ia].dot(er), exact.radial_displacement(a), 5e-3));
+    records.push_back(compare_relative("ur_b", result.boundary.displacement[ib].dot(er), exact.radial_displacement(b), 5e-3));
+    records.push_back(compare_relative("stt_a", et.dot(in_plane(result.boundary.stress[ia]) * et), exact.polar_stress(a).tt, 5e-3));
+    records.push_back(compare_relative("stt_b", et.dot(in_plane(result.boundary.stress[ib]) * et), exact.polar_stress(b).tt, 5e-3));
+    // s_zz = nu (s_rr + s_tt) is a small difference of large terms: compare against p.
+    records.push_back(compare_scaled("szz_a", result.boundary.stress[ia].s33, exact.polar_stress(a).zz, p, 5e-3));
+    double s_error = 0.0;
+    for (std::size_t k = 0; k < result.interior.points.size(); ++k) {
+      const Vec2& x = result.interior.points[k];
+      s_error = std::max(s_error, max_abs_difference(in_plane(result.interior.stress[k]), exact.stress(x).in_plane()));
+    }
+    records.push_back(compare_scaled("s_interior_max_error", s_error, 0.0, p, 5e-3));
+    return result.mesh.element_count();
+  });
 }
 
 }  // namespace bemcontact::validation

@@ -198,8 +198,8 @@ TEST(IoProblemFileErrors, InvalidValues) {
                  {"0 < corner_shift < 0.5"});
   expect_changed("analysis = \"plane_stress\"", "analysis = \"plane_stres\"", "analysis", "analysis",
                  {"invalid value 'plane_stres'", "Did you mean 'plane_stress'?", "'axisymmetric'"});
-  expect_changed("title = \"Plate\"", "interpolation = \"quadratic\"", "interpolation", "interpolation",
-                 {"'linear', 'constant'"});
+  expect_changed("title = \"Plate\"", "interpolation = \"cubic\"", "interpolation", "interpolation",
+                 {"'linear', 'quadratic', 'constant'"});
   expect_changed("name = \"top\"", "name = \"top\"\nshape = \"circle\"", "circle", "boundary[3].shape",
                  {"'line', 'arc'"});
   expect_changed("name = \"right\"", "name = \"right\"\nrefine = \"middle\"", "middle", "boundary[2].refine",

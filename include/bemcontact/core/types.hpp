@@ -15,7 +15,8 @@ using Matrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::ColM
 enum class AnalysisType { plane_strain, plane_stress, axisymmetric };
 
 // Interpolation of u and p on an element (section II.5.2.1): same order for both.
-enum class Interpolation { constant, linear };
+// Quadratic elements (3 nodes) follow the exact geometry of their piece (line or arc).
+enum class Interpolation { constant, linear, quadratic };
 
 const char* to_string(AnalysisType type);
 const char* to_string(Interpolation interpolation);

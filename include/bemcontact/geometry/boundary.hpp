@@ -41,6 +41,9 @@ struct PiecePoint {
 };
 
 double piece_length(const BoundaryPiece& piece);
+// Arcs: signed angle swept from start to end (> 0 counterclockwise), and the radius.
+double arc_sweep(const BoundaryPiece& piece);
+double arc_radius(const BoundaryPiece& piece);
 // Point at fraction s in [0, 1] of the piece's length.
 PiecePoint point_on_piece(const BoundaryPiece& piece, double s);
 // Fractions 0 = s_0 < s_1 < ... < s_n = 1 of the element end points, graded as asked.

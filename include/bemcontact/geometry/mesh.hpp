@@ -6,6 +6,7 @@
 // Every node then has its own collocation point at a smooth point of the boundary, so
 // any pair of conditions on the two sides gives a regular system.
 #include <array>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -37,20 +38,45 @@ struct BoundaryNode {
   bool shifted = false;  // a split-corner node moved into its element
 };
 
-struct BoundaryElement {
-  Vec2 start, end;   // straight element from start to end
-  double length = 0.0;
-  Vec2 tangent;      // (end - start) / length
-  Vec2 normal;       // outward: tangent rotated clockwise
-  int piece = -1;
-  int node_count = 2;                 // 1 (constant) or 2 (linear)
-  std::array<Index, 2> nodes{-1, -1};
-  std::array<double, 2> node_fraction{0.0, 1.0};  // node positions along the element in [0, 1]
+inline constexpr int kMaxElementNodes = 3;
 
-  // Shape function a at fraction f in [0, 1] (linear through the element's nodes,
-  // extrapolated beyond shifted nodes; 1 for constant elements).
-  double shape(int a, double f) const;
+struct BoundaryElement {
+  Vec2 start, end;   // end points; the chord from start to end
+  double length = 0.0;  // of the chord
+  Vec2 tangent;      // (end - start) / length
+  Vec2 normal;       // outward normal of the chord: tangent rotated clockwise
+  // Quadratic elements follow their piece exactly: on an arc, the circle of `radius`
+  // about `center` from angle `angle_start` through `angle_span` (signed: > 0 ccw).
+  // Constant and linear elements are the straight chords (arc = false).
+  bool arc = false;
+  Vec2 center = Vec2::Zero();
+  double radius = 0.0, angle_start = 0.0, angle_span = 0.0;
+  int piece = -1;
+  int node_count = 2;  // 1 (constant), 2 (linear) or 3 (quadratic: start, end, middle)
+  std::array<Index, kMaxElementNodes> nodes{-1, -1, -1};
+  // Node positions along the element as fractions f in [0, 1] of its parameter.
+  std::array<double, kMaxElementNodes> node_fraction{0.0, 1.0, 0.5};
+
+  // Shape function a at fraction f (Lagrange through the element's nodes, extrapolated
+  // beyond shifted nodes; 1 for constant elements), and its derivative d/df.
+  double shape(int a, double f) const {
+    if (node_count == 1) return 1.0;
+    double value = 1.0;
+    for (int b = 0; b < node_count; ++b)
+      if (b != a) value *= (f - node_fraction[b]) / (node_fraction[a] - node_fraction[b]);
+    return value;
+  }
+  double shape_derivative(int a, double f) const;
+  // Geometry at fraction f: the point, the outward unit normal, and |dy/df| (constant:
+  // the arc length of the element).
+  Vec2 point(double f) const;
+  Vec2 normal_at(double f) const;
+  double jacobian() const { return arc ? radius * std::abs(angle_span) : length; }
 };
+
+// A straight element from start to end (chord, tangent and normal filled; two nodes at
+// fractions 0 and 1, no node indices).
+BoundaryElement straight_element(const Vec2& start, const Vec2& end);
 
 // A geometric vertex where two pieces meet.
 struct MeshVertex {

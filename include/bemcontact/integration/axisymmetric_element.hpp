@@ -35,8 +35,8 @@ ElementInfluence integrate_axisymmetric_element(const AxisymmetricKelvin& kelvin
 // the per-component arrays below.
 struct AxisymmetricStressInfluence {
   ElementStressInfluence in_plane;                 // (rr, rz; rz, zz)
-  std::array<std::array<double, 2>, 2> hoop_D{};   // [a][k]: sigma_thetatheta from p_k(a)
-  std::array<std::array<double, 2>, 2> hoop_S{};   // [a][k]: sigma_thetatheta from u_k(a)
+  std::array<std::array<double, 2>, geometry::kMaxElementNodes> hoop_D{};  // [a][k]: sigma_tt from p_k(a)
+  std::array<std::array<double, 2>, geometry::kMaxElementNodes> hoop_S{};  // [a][k]: sigma_tt from u_k(a)
 };
 AxisymmetricStressInfluence integrate_axisymmetric_element_stress(
     const AxisymmetricKelvin& kelvin, const Vec2& point, const geometry::BoundaryElement& element);

@@ -15,17 +15,19 @@ namespace bemcontact::integration {
 // When the source x coincides with node a of the element (source_node = a), H[a] is not
 // computed and is returned as zero: the caller builds the diagonal block from rigid-body
 // motion (section I.4.2, remark). G[a] is then the weakly singular integral, exact.
+inline constexpr int kMaxInfluenceNodes = 3;  // = geometry::kMaxElementNodes
+
 struct ElementInfluence {
-  std::array<Mat2, 2> G{Mat2::Zero(), Mat2::Zero()};
-  std::array<Mat2, 2> H{Mat2::Zero(), Mat2::Zero()};
+  std::array<Mat2, kMaxInfluenceNodes> G{Mat2::Zero(), Mat2::Zero(), Mat2::Zero()};
+  std::array<Mat2, kMaxInfluenceNodes> H{Mat2::Zero(), Mat2::Zero(), Mat2::Zero()};
 };
 
 // For an interior point x (not on the element):
 //   D[a] = int D(x, y) N_a dGamma,  S[a] = int S(x, y, n) N_a dGamma
 // so sigma_ij(x) = sum_a D[a][k](i,j) p_k(node a) - S[a][k](i,j) u_k(node a).
 struct ElementStressInfluence {
-  std::array<kernels::StressKernel, 2> D{};
-  std::array<kernels::StressKernel, 2> S{};
+  std::array<kernels::StressKernel, kMaxInfluenceNodes> D{};
+  std::array<kernels::StressKernel, kMaxInfluenceNodes> S{};
 };
 
 }  // namespace bemcontact::integration

@@ -3,6 +3,7 @@
 // vertex or interior point that a case reports on.
 #include <string>
 
+#include "bemcontact/bem/problem.hpp"
 #include "bemcontact/bem/solution.hpp"
 #include "bemcontact/geometry/mesh.hpp"
 #include "bemcontact/io/problem_file.hpp"
@@ -15,5 +16,22 @@ io::ProblemFile load_example(const Context& context, const std::string& file);
 Index node_at(const geometry::BoundaryMesh& mesh, const Vec2& point);
 Index vertex_at(const geometry::BoundaryMesh& mesh, const Vec2& point);
 Index interior_point_at(const bem::InteriorSolution& interior, const Vec2& point);
+
+// Runs a case with linear and with quadratic elements: measure(problem, records) appends
+// the records of one variant and returns its element count; each variant's records are
+// tagged with its interpolation and element count.
+template <class Measure>
+std::vector<Record> for_each_interpolation(const std::string& case_name, const bem::ProblemDefinition& base,
+                                           Measure measure) {
+  std::vector<Record> records;
+  for (Interpolation interpolation : {Interpolation::linear, Interpolation::quadratic}) {
+    bem::ProblemDefinition problem = base;
+    problem.mesh.interpolation = interpolation;
+    const std::size_t first = records.size();
+    const Index elements = measure(static_cast<const bem::ProblemDefinition&>(problem), records);
+    tag(records, first, case_name, {{"interpolation", to_string(interpolation)}, {"elements", std::to_string(elements)}});
+  }
+  return records;
+}
 
 }  // namespace bemcontact::validation

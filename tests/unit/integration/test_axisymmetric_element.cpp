@@ -28,14 +28,10 @@ constexpr double pi = std::numbers::pi;
 
 BoundaryElement make_element(const Vec2& start, const Vec2& end, int node_count = 2,
                              std::array<double, 2> fractions = {0.0, 1.0}) {
-  BoundaryElement e;
-  e.start = start;
-  e.end = end;
-  e.length = (end - start).norm();
-  e.tangent = (end - start) / e.length;
-  e.normal = Vec2(e.tangent.y(), -e.tangent.x());
+  BoundaryElement e = geometry::straight_element(start, end);
   e.node_count = node_count;
-  e.node_fraction = node_count == 1 ? std::array<double, 2>{0.5, 0.5} : fractions;
+  if (node_count == 1) e.node_fraction = {0.5, 0.5, 0.5};
+  else e.node_fraction = {fractions[0], fractions[1], 0.5};
   e.nodes = {0, 1};
   return e;
 }

@@ -141,14 +141,10 @@ double shape(const BoundaryElement& e, int a, double f) {
 
 BoundaryElement make_element(const Vec2& start, const Vec2& end, int node_count, double f0,
                              double f1) {
-  BoundaryElement e;
-  e.start = start;
-  e.end = end;
-  e.length = (end - start).norm();
-  e.tangent = (end - start) / e.length;
-  e.normal = Vec2(e.tangent.y(), -e.tangent.x());
+  BoundaryElement e = geometry::straight_element(start, end);
   e.node_count = node_count;
-  e.node_fraction = node_count == 1 ? std::array<double, 2>{0.5, 0.5} : std::array<double, 2>{f0, f1};
+  if (node_count == 1) e.node_fraction = {0.5, 0.5, 0.5};
+  else e.node_fraction = {f0, f1, 0.5};
   return e;
 }
 
@@ -243,7 +239,7 @@ ElementStressInfluence reference_stress(const KelvinPlane& c, const Vec2& x, con
 }
 
 // Largest entry error over the element's nodes, relative to the largest reference entry.
-double relative_error(const std::array<Mat2, 2>& value, const std::array<Mat2, 2>& reference,
+double relative_error(const std::array<Mat2, kMaxInfluenceNodes>& value, const std::array<Mat2, kMaxInfluenceNodes>& reference,
                       int nodes) {
   double err = 0.0, scale = 0.0;
   for (int a = 0; a < nodes; ++a) {
@@ -253,8 +249,8 @@ double relative_error(const std::array<Mat2, 2>& value, const std::array<Mat2, 2
   return err / scale;
 }
 
-double relative_error(const std::array<kernels::StressKernel, 2>& value,
-                      const std::array<kernels::StressKernel, 2>& reference, int nodes) {
+double relative_error(const std::array<kernels::StressKernel, kMaxInfluenceNodes>& value,
+                      const std::array<kernels::StressKernel, kMaxInfluenceNodes>& reference, int nodes) {
   double err = 0.0, scale = 0.0;
   for (int a = 0; a < nodes; ++a)
     for (int k = 0; k < 2; ++k) {

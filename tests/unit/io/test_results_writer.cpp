@@ -30,16 +30,12 @@ std::vector<double> numbers_of(const std::string& line, char separator) {
 }
 
 BoundaryElement element(const Vec2& a, const Vec2& b, int piece, std::array<Index, 2> nodes, int count) {
-  BoundaryElement e;
-  e.start = a;
-  e.end = b;
-  e.length = (b - a).norm();
-  e.tangent = (b - a) / e.length;
-  e.normal = Vec2(e.tangent.y(), -e.tangent.x());
+  BoundaryElement e = geometry::straight_element(a, b);
   e.piece = piece;
-  e.nodes = nodes;
+  e.nodes = {nodes[0], nodes[1], -1};
   e.node_count = count;
-  e.node_fraction = count == 1 ? std::array<double, 2>{0.5, 0.5} : std::array<double, 2>{0.0, 1.0};
+  if (count == 1) e.node_fraction = {0.5, 0.5, 0.5};
+  else e.node_fraction = {0.0, 1.0, 0.5};
   return e;
 }
 
@@ -129,9 +125,9 @@ TEST(IoResultsWriter, MeshCsvFiles) {
   EXPECT_EQ(nodes[3], "2,1,1,0.3333333333333333,-0.2,2,1");
   const auto elements = lines_of(mesh_elements_csv(mesh));
   ASSERT_EQ(elements.size(), 5u);
-  EXPECT_EQ(elements[0], "element,node0,node1,x_start,y_start,x_end,y_end,nx,ny,piece");
-  EXPECT_EQ(elements[1], "0,0,1,0,0,1,0,0,-1,0");
-  EXPECT_EQ(elements[4], "3,3,-1,0,1,0,0,-1,0,3");
+  EXPECT_EQ(elements[0], "element,node0,node1,x_start,y_start,x_end,y_end,nx,ny,piece,node_middle");
+  EXPECT_EQ(elements[1], "0,0,1,0,0,1,0,0,-1,0,-1");
+  EXPECT_EQ(elements[4], "3,3,-1,0,1,0,0,-1,0,3,-1");
 }
 
 TEST(IoResultsWriter, BoundaryVtkIsAPolylineWithPointData) {
