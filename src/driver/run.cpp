@@ -133,8 +133,13 @@ RunOutput run_decomposition(std::string_view text, const std::string& file_name,
   double jump_u = 0.0, jump_p = 0.0;
   for (const auto& j : result.jumps) jump_u = std::max(jump_u, j.jump_u), jump_p = std::max(jump_p, j.jump_p);
   append(report, "  max interface jumps: [u] = %.3g, [p] = %.3g\n", jump_u, jump_p);
-  for (const auto& subdomain : result.subdomains)
+  for (std::size_t s = 0; s < result.subdomains.size(); ++s) {
+    const auto& subdomain = result.subdomains[s];
     append_transitions(report, subdomain.mesh, "subdomain '" + subdomain.name + "': ");
+    if (result.converged())
+      report += io::reactions_text(subdomain.mesh, subdomain.boundary, file.problem.subdomains[s].body,
+                                   file.problem.analysis, "subdomain '" + subdomain.name + "': ");
+  }
   append(report, "  time %.3f s\n", seconds_since(started));
   return output;
 }
@@ -152,8 +157,12 @@ RunOutput run_contact(std::string_view text, const std::string& file_name, const
        io::contact_output_files(file.problem, result, file.vtk, file.parameters, output.warnings))
     output.files.add(name, content);
   output.report = io::contact_report_text(file.problem, result);
-  for (std::size_t b = 0; b < 2; ++b)
-    append_transitions(output.report, result.meshes[b], "body '" + file.problem.bodies[b].name + "': ");
+  for (std::size_t b = 0; b < 2; ++b) {
+    const std::string label = "body '" + file.problem.bodies[b].name + "': ";
+    append_transitions(output.report, result.meshes[b], label);
+    output.report +=
+        io::reactions_text(result.meshes[b], result.boundary[b], file.problem.bodies[b], file.problem.analysis, label);
+  }
   append(output.report, "  time %.3f s\n", seconds_since(started));
   return output;
 }
@@ -209,6 +218,7 @@ RunOutput run_body(std::string_view text, const std::string& file_name, const Ru
                    {"interior_points", result.interior.points.size()},
                    {"interior_points_dropped_outside", result.interior.dropped_points.size()},
                    {"max_interior_von_mises", interior_max_vm}}},
+      {"boundary_resultants", io::resultants_json(result.mesh, result.boundary, file.problem.body, file.problem.analysis)},
       {"timings_seconds", timings},
       {"outputs", out.names()},
       {"warnings", output.warnings}};
@@ -224,6 +234,7 @@ RunOutput run_body(std::string_view text, const std::string& file_name, const Ru
          1.0 / result.report.reciprocal_condition, result.report.relative_residual);
   append(report, "  max |u| on the boundary = %.6g, max von Mises = %.6g at (%.6g, %.6g)\n", max_u, max_vm,
          peak.x(), peak.y());
+  report += io::reactions_text(result.mesh, result.boundary, file.problem.body, file.problem.analysis, "");
   if (!result.interior.points.empty())
     append(report, "  %zu interior points (%zu outside dropped), max von Mises = %.6g\n",
            result.interior.points.size(), result.interior.dropped_points.size(), interior_max_vm);

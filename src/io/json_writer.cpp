@@ -1,7 +1,9 @@
 #include "bemcontact/io/json_writer.hpp"
 
 #include <cmath>
+#include <cstdio>
 
+#include "bemcontact/bem/resultants.hpp"
 #include "bemcontact/core/error.hpp"
 
 namespace bemcontact::io {
@@ -92,6 +94,36 @@ nlohmann::json mesh_transitions_json(const geometry::BoundaryMesh& mesh) {
   for (const auto& t : mesh.transitions)
     graded.push_back({{"boundary", t.name}, {"elements_asked", t.elements_asked}, {"elements", t.elements}});
   return graded;
+}
+
+nlohmann::json resultants_json(const geometry::BoundaryMesh& mesh, const bem::BoundarySolution& solution,
+                               const bem::BodyDefinition& body, AnalysisType type) {
+  nlohmann::json list = nlohmann::json::array();
+  for (const auto& r : bem::boundary_resultants(mesh, solution, body, type)) {
+    nlohmann::json entry = {{"boundary", r.boundary},
+                            {"prescribed_displacement", r.prescribed_displacement},
+                            {"force", {r.force.x(), r.force.y()}}};
+    if (type != AnalysisType::axisymmetric) entry["moment"] = r.moment;
+    list.push_back(entry);
+  }
+  return list;
+}
+
+std::string reactions_text(const geometry::BoundaryMesh& mesh, const bem::BoundarySolution& solution,
+                           const bem::BodyDefinition& body, AnalysisType type, const std::string& label) {
+  std::string text;
+  char line[512];
+  for (const auto& r : bem::boundary_resultants(mesh, solution, body, type)) {
+    if (!r.prescribed_displacement) continue;
+    if (type == AnalysisType::axisymmetric)
+      std::snprintf(line, sizeof line, "  %sreaction on '%s': F_z = %.6g (whole ring)\n", label.c_str(),
+                    r.boundary.c_str(), r.force.y());
+    else
+      std::snprintf(line, sizeof line, "  %sreaction on '%s': F = (%.6g, %.6g), M = %.6g (about the origin)\n",
+                    label.c_str(), r.boundary.c_str(), r.force.x(), r.force.y(), r.moment);
+    text += line;
+  }
+  return text;
 }
 
 }  // namespace bemcontact::io

@@ -201,7 +201,7 @@ std::vector<std::vector<Index>> boundary_polylines(const geometry::BoundaryMesh&
 std::string boundary_csv(const geometry::BoundaryMesh& mesh, const bem::BoundarySolution& solution) {
   check_boundary(mesh, solution);
   Text out;
-  out << "node,x,y,nx,ny,u1,u2,t1,t2,s11,s22,s12,s33,von_mises\n";
+  out << "node,x,y,nx,ny,u1,u2,t1,t2,s11,s22,s12,s33,von_mises,boundary\n";
   for (std::size_t i = 0; i < mesh.nodes.size(); ++i) {
     const auto& node = mesh.nodes[i];
     const Vec2& u = solution.displacement[i];
@@ -210,7 +210,8 @@ std::string boundary_csv(const geometry::BoundaryMesh& mesh, const bem::Boundary
         << node.normal.x() << ',' << node.normal.y() << ',' << u.x() << ',' << u.y() << ',' << t.x()
         << ',' << t.y() << ',';
     stress_columns(out, solution.stress[i]);
-    out << '\n';
+    const bool named = node.piece >= 0 && static_cast<std::size_t>(node.piece) < mesh.piece_names.size();
+    out << ',' << csv_field(named ? mesh.piece_names[node.piece] : std::string()) << '\n';
   }
   return std::move(out).str();
 }

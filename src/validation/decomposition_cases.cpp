@@ -146,6 +146,18 @@ std::vector<Record> run_strips(const Context& context) {
     records.insert(records.end(), r.begin(), r.end());
     tag(records, first, "dd-strips", strips_params(problem, strips, 6, file));
   }
+  // Quadratic elements hold the linear field exactly too (middle nodes on the interfaces).
+  for (const int strips : {2, 4}) {
+    const std::string file = "dd_strips_" + std::to_string(strips) + ".toml";
+    auto problem = io::read_decomposition_file(context.examples_dir + "/" + file).problem;
+    problem.mesh.interpolation = Interpolation::quadratic;
+    const std::size_t first = records.size();
+    auto r = strips_records(problem, context, true);
+    records.insert(records.end(), r.begin(), r.end());
+    auto params = strips_params(problem, strips, 6, file);
+    params.insert(params.begin(), {"interpolation", "quadratic"});
+    tag(records, first, "dd-strips", params);
+  }
   for (const int per_unit : {9, 12}) {
     auto problem = dd::plate_strips({2, per_unit});
     problem.options = dd::DecompositionOptions{};

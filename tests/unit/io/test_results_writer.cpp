@@ -78,11 +78,17 @@ std::vector<std::string> block_after(const std::vector<std::string>& lines, cons
 TEST(IoResultsWriter, BoundaryCsvRoundTrips) {
   const BoundaryMesh mesh = square_mesh();
   const bem::BoundarySolution solution = solution_for(mesh.nodes.size());
-  const auto lines = lines_of(boundary_csv(mesh, solution));
+  BoundaryMesh named = mesh;  // the last column names each node's boundary (CSV-quoted when needed)
+  named.piece_names = {"bottom", "right, east", "top", "left"};
+  const auto lines = lines_of(boundary_csv(named, solution));
   ASSERT_EQ(lines.size(), 1 + mesh.nodes.size());
-  EXPECT_EQ(lines[0], "node,x,y,nx,ny,u1,u2,t1,t2,s11,s22,s12,s33,von_mises");
+  EXPECT_EQ(lines[0], "node,x,y,nx,ny,u1,u2,t1,t2,s11,s22,s12,s33,von_mises,boundary");
   for (std::size_t i = 0; i < mesh.nodes.size(); ++i) {
-    const auto values = numbers_of(lines[1 + i], ',');
+    const std::string& name = named.piece_names[mesh.nodes[i].piece];
+    const std::string field = name.find(',') != std::string::npos ? "\"" + name + "\"" : name;
+    ASSERT_GE(lines[1 + i].size(), field.size());
+    EXPECT_EQ(lines[1 + i].substr(lines[1 + i].size() - field.size()), field);
+    const auto values = numbers_of(lines[1 + i].substr(0, lines[1 + i].size() - field.size() - 1), ',');
     ASSERT_EQ(values.size(), 14u);
     const auto& s = solution.stress[i];
     const std::vector<double> expected{static_cast<double>(i),
