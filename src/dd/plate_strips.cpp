@@ -8,11 +8,7 @@ namespace bemcontact::dd {
 namespace {
 
 geometry::BoundaryPiece line(const std::string& name, Vec2 from, Vec2 to, int elements) {
-  geometry::BoundaryPiece piece;
-  piece.name = name;
-  piece.start = from;
-  piece.end = to;
-  piece.elements = elements;
+  geometry::BoundaryPiece piece = geometry::line_piece(name, from, to, elements);
   piece.where.key = name;
   return piece;
 }

@@ -176,6 +176,15 @@ void check_holes_inside(const std::vector<BoundaryPiece>& pieces, const std::vec
 
 }  // namespace
 
+BoundaryPiece line_piece(const std::string& name, const Vec2& start, const Vec2& end, int elements) {
+  BoundaryPiece piece;
+  piece.name = name;
+  piece.start = start;
+  piece.end = end;
+  piece.elements = elements;
+  return piece;
+}
+
 double arc_sweep(const BoundaryPiece& piece) {
   const Vec2 a = piece.start - piece.center;
   const Vec2 b = piece.end - piece.center;

@@ -34,6 +34,9 @@ struct BoundaryPiece {
   SourceLocation where;
 };
 
+// A straight piece with `elements` uniform elements (for pieces built by code).
+BoundaryPiece line_piece(const std::string& name, const Vec2& start, const Vec2& end, int elements);
+
 // Arc-length parameter, position and outward normal of a point on a piece.
 struct PiecePoint {
   Vec2 position;

@@ -13,11 +13,7 @@ using namespace bemcontact::bem;
 namespace {
 
 geometry::BoundaryPiece side(const std::string& name, Vec2 a, Vec2 b, int elements) {
-  geometry::BoundaryPiece p;
-  p.name = name;
-  p.start = a;
-  p.end = b;
-  p.elements = elements;
+  geometry::BoundaryPiece p = geometry::line_piece(name, a, b, elements);
   p.condition_signature = name;
   return p;
 }

@@ -9,11 +9,7 @@ namespace bemcontact::contact::testing {
 
 inline geometry::BoundaryPiece line(const std::string& name, Vec2 a, Vec2 b, int elements, double grading = 1.0,
                                     geometry::RefineToward toward = geometry::RefineToward::start) {
-  geometry::BoundaryPiece piece;
-  piece.name = name;
-  piece.start = a;
-  piece.end = b;
-  piece.elements = elements;
+  geometry::BoundaryPiece piece = geometry::line_piece(name, a, b, elements);
   piece.grading = grading;
   piece.refine_toward = toward;
   return piece;

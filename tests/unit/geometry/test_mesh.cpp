@@ -14,11 +14,7 @@ namespace {
 
 BoundaryPiece line(const std::string& name, Vec2 a, Vec2 b, int elements,
                    const std::string& signature = "free") {
-  BoundaryPiece piece;
-  piece.name = name;
-  piece.start = a;
-  piece.end = b;
-  piece.elements = elements;
+  BoundaryPiece piece = line_piece(name, a, b, elements);
   piece.condition_signature = signature;
   return piece;
 }
