@@ -18,11 +18,18 @@ ContactModel::ContactModel(const ContactProblem& problem, const bem::ProgressCal
   const int force_body = has_force ? problem.force->body : -1;
   const int component = has_force ? problem.force->component : 0;
 
+  // Body 1's variable nodes are the pairs' nodes; body 2's the nodes of its zone.
+  const auto& zone2 = prepared_.zone_nodes2;
+  const Index m = static_cast<Index>(zone2.size());
+  contact_dofs_ = {2 * n, 2 * m};
   std::array<Matrix, 2> flexibility;
   std::array<Vector, 2> fixed_response;
   for (int b = 0; b < 2; ++b) {
     std::vector<bem::VariableNode> variable;
-    for (const auto& pair : pairs) variable.push_back({b == 0 ? pair.node1 : pair.node2, bem::ConditionKind::traction});
+    if (b == 0)
+      for (const auto& pair : pairs) variable.push_back({pair.node1, bem::ConditionKind::traction});
+    else
+      for (const Index node : zone2) variable.push_back({node, bem::ConditionKind::traction});
     if (b == force_body)
       for (const Index node : prepared_.loaded_nodes) variable.push_back({node, bem::ConditionKind::displacement});
     bem::ProgressCallback body_progress;
@@ -53,13 +60,24 @@ ContactModel::ContactModel(const ContactProblem& problem, const bem::ProgressCal
     R.block<2, 1>(2 * i, 2 * i) = -pairs[i].normal;
     R.block<2, 1>(2 * i, 2 * i + 1) = pairs[i].tangent;
   }
-  // B' = 1S^-1 + 2S^-1 (Pb V.5): body 2 carries -p, and [u] = 1u - 2u.
-  const Matrix Bprime = flexibility[0].topLeftCorner(2 * n, 2 * n) + flexibility[1].topLeftCorner(2 * n, 2 * n);
+  // Body 2 at the pairs: u2(pair i) = sum_a N_a(xi_i) u2(node a) = P u2. Its nodal tractions
+  // from the pairs': t2 = -T p (the consistent transfer of pairing.hpp).
+  interpolation_ = Matrix::Zero(2 * n, 2 * m);
+  transfer_ = Matrix::Zero(2 * m, 2 * n);
+  for (Index i = 0; i < n; ++i)
+    for (int a = 0; a < pairs[i].count2; ++a)
+      interpolation_.block<2, 2>(2 * i, 2 * pairs[i].zone2[a]) += pairs[i].shape2[a] * Mat2::Identity();
+  for (Index k = 0; k < m; ++k)
+    for (Index i = 0; i < n; ++i)
+      if (prepared_.transfer(k, i) != 0.0) transfer_.block<2, 2>(2 * k, 2 * i) = prepared_.transfer(k, i) * Mat2::Identity();
+  // B' = 1S^-1 + P 2S^-1 T (Pb V.5): body 2 carries -T p, and [u] = 1u - P 2u.
+  const Matrix Bprime = flexibility[0].topLeftCorner(2 * n, 2 * n) +
+                        interpolation_ * flexibility[1].topLeftCorner(2 * m, 2 * m) * transfer_;
   auto& c = condensed_;
   c.pairs = n;
   c.M = Q * Bprime * R;
   if (!problem.tangential_coupling) drop_tangential_coupling(c);
-  c.a = Q * (fixed_response[0].head(2 * n) - fixed_response[1].head(2 * n));
+  c.a = Q * (fixed_response[0].head(2 * n) - interpolation_ * fixed_response[1].head(2 * m));
   c.gap.resize(n);
   c.on_axis.resize(n);
   for (Index i = 0; i < n; ++i) {
@@ -71,19 +89,21 @@ ContactModel::ContactModel(const ContactProblem& problem, const bem::ProgressCal
   c.f = Vector::Zero(2 * n);
   if (has_force) {
     const Matrix& C = flexibility[force_body];
-    const double sign = force_body == 0 ? 1.0 : -1.0;
+    const Index offset = contact_dofs_[force_body];
     const Index loaded = static_cast<Index>(prepared_.loaded_nodes.size());
     Vector unit_delta = Vector::Zero(C.cols());
-    for (Index l = 0; l < loaded; ++l) unit_delta[2 * n + 2 * l + component] = 1.0;
+    for (Index l = 0; l < loaded; ++l) unit_delta[offset + 2 * l + component] = 1.0;
     const Vector response = C * unit_delta;
-    c.b = sign * (Q * response.head(2 * n));
     Eigen::RowVectorXd force_row = Eigen::RowVectorXd::Zero(C.cols());
-    for (Index l = 0; l < loaded; ++l) force_row[2 * n + 2 * l + component] = prepared_.loaded_weights[l];
-    c.f = sign * (R.transpose() * (force_row * C.leftCols(2 * n)).transpose());
+    for (Index l = 0; l < loaded; ++l) force_row[offset + 2 * l + component] = prepared_.loaded_weights[l];
+    // Contact tractions of the force body per unit x: R (body 1) or -T R (body 2).
+    const Matrix contact_tractions = force_body == 0 ? R : Matrix(-transfer_ * R);
+    const Matrix pair_jump = force_body == 0 ? Matrix::Identity(2 * n, 2 * n) : Matrix(-interpolation_);
+    c.b = Q * (pair_jump * response.head(offset));
+    c.f = contact_tractions.transpose() * (force_row * C.leftCols(offset)).transpose();
     c.f_delta = force_row.dot(response);
     c.F0 = force_row.dot(fixed_response[force_body]);
     c.force = problem.force->force;
-    contact_offset_[force_body] = 2 * n;
   }
 }
 
@@ -94,10 +114,12 @@ Vec2 ContactModel::traction(Index pair, const Vector& x) const {
 
 Vector ContactModel::variable_data(int b, const Vector& x, double delta) const {
   const Index n = condensed_.pairs;
+  Vector p(2 * n);
+  for (Index i = 0; i < n; ++i) p.segment<2>(2 * i) = traction(i, x);
   Vector data = Vector::Zero(factored_[b]->variable_dofs());
-  for (Index i = 0; i < n; ++i) data.segment<2>(2 * i) = (b == 0 ? 1.0 : -1.0) * traction(i, x);
+  data.head(contact_dofs_[b]) = b == 0 ? p : Vector(-transfer_ * p);
   if (problem_.force && problem_.force->body == b)
-    for (Index l = 2 * n; l < data.size(); l += 2) data[l + problem_.force->component] = delta;
+    for (Index l = contact_dofs_[b]; l < data.size(); l += 2) data[l + problem_.force->component] = delta;
   return data;
 }
 

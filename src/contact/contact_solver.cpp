@@ -218,6 +218,7 @@ ContactResult solve_contact(const ContactProblem& problem, const bem::ProgressCa
     const auto& body = model.prepared().bodies[b];
     result.body_names[b] = body.name;
     result.meshes[b] = model.prepared().meshes[b];
+    result.warnings = model.prepared().warnings;
     result.boundary[b] = model.body(b).solve(model.variable_data(b, history.x, history.delta), true);
     if (result.boundary[b].stress.empty())
       result.boundary[b].stress = bem::boundary_stresses(result.meshes[b], problem.analysis, body.material, result.boundary[b]);

@@ -77,10 +77,15 @@ StepOutput solve_step_newton(const StepInput& in, const SolverOptions& options) 
       any_active = any_active || active;
     }
     if (!any_active && p.has_force) {  // a force needs a contact to go through
-      Index closest = 0;
-      for (Index i = 1; i < n; ++i)
-        if (p.gap[i] - w[2 * i] < p.gap[closest] - w[2 * closest]) closest = i;
-      state[2 * closest] = 1;
+      // ... at a pair that carries force: the node on the axis of a quadratic element has
+      // zero weight (its shape function times r integrates to 0).
+      const double carrying = 1e-3 * p.f.cwiseAbs().maxCoeff();
+      Index closest = -1;
+      for (Index i = 0; i < n; ++i)
+        if (std::abs(p.f[2 * i]) > carrying &&
+            (closest < 0 || p.gap[i] - w[2 * i] < p.gap[closest] - w[2 * closest]))
+          closest = i;
+      state[2 * std::max<Index>(closest, 0)] = 1;
     }
     for (Index i = 0; i < n; ++i) {
       const double lambda = x[2 * i], tau = x[2 * i + 1];

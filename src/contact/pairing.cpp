@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <sstream>
 
 #include "bemcontact/bem/analysis.hpp"
 #include "bemcontact/bem/assembly.hpp"
+#include "bemcontact/quadrature/gauss_legendre.hpp"
 
 namespace bemcontact::contact {
 namespace {
@@ -79,46 +81,25 @@ bool facing_point(const geometry::BoundaryPiece& piece2, const Vec2& x1, const V
   return true;
 }
 
-geometry::BoundaryPiece sub_piece(const geometry::BoundaryPiece& piece, double s0, double s1) {
-  geometry::BoundaryPiece sub = piece;
-  sub.start = s0 == 0.0 ? piece.start : geometry::point_on_piece(piece, s0).position;
-  sub.end = s1 == 1.0 ? piece.end : geometry::point_on_piece(piece, s1).position;
-  sub.elements = 1;
-  sub.grading = 1.0;
-  return sub;
-}
-
-// Replaces piece k of the body by pieces cut at the fractions s (s.front() = 0, s.back() = 1);
-// returns the indices of the new pieces.
-std::vector<int> cut_piece(bem::BodyDefinition& body, int k, const std::vector<double>& s) {
-  const geometry::BoundaryPiece piece = body.pieces[k];
-  bem::BoundaryCondition condition = body.conditions[k];
-  condition.signature = "contact zone";  // split the node where the zone meets other boundaries
-  std::vector<geometry::BoundaryPiece> pieces;
-  for (std::size_t i = 0; i + 1 < s.size(); ++i) {
-    auto sub = sub_piece(piece, s[i], s[i + 1]);
-    sub.condition_signature = condition.signature;
-    sub.fixed_mesh = true;  // one element, paired with the other body's
-    pieces.push_back(sub);
+// Where the point y of the zone's piece lies on the mesh: the element of the piece whose
+// chord (or arc) holds it, and the fraction there.
+bool locate_on_mesh(const geometry::BoundaryMesh& mesh, int piece, const Vec2& y, Index& element, double& fraction) {
+  double best = std::numeric_limits<double>::infinity();
+  for (const Index e : mesh.piece_elements[piece]) {
+    const auto& el = mesh.elements[e];
+    double f;
+    if (el.arc) {
+      const Vec2 q = y - el.center;
+      f = 0.5 + std::remainder(std::atan2(q.y(), q.x()) - (el.angle_start + 0.5 * el.angle_span),
+                               2.0 * std::numbers::pi) / el.angle_span;
+    } else {
+      f = (y - el.start).dot(el.end - el.start) / (el.end - el.start).squaredNorm();
+    }
+    const double outside = std::max({0.0, -f, f - 1.0});  // how far beyond the element, in its lengths
+    const double distance = (el.point(std::clamp(f, 0.0, 1.0)) - y).norm() + outside * el.length;
+    if (distance < best) best = distance, element = e, fraction = std::clamp(f, 0.0, 1.0);
   }
-  body.pieces.erase(body.pieces.begin() + k);
-  body.conditions.erase(body.conditions.begin() + k);
-  body.pieces.insert(body.pieces.begin() + k, pieces.begin(), pieces.end());
-  body.conditions.insert(body.conditions.begin() + k, pieces.size(), condition);
-  std::vector<int> indices;
-  for (std::size_t i = 0; i < pieces.size(); ++i) indices.push_back(k + static_cast<int>(i));
-  return indices;
-}
-
-std::vector<Index> nodes_of(const geometry::BoundaryMesh& mesh, const std::vector<int>& pieces) {
-  std::vector<Index> nodes;
-  for (const int piece : pieces)
-    for (const Index element : mesh.piece_elements[piece])
-      for (int a = 0; a < mesh.elements[element].node_count; ++a) {
-        const Index node = mesh.elements[element].nodes[a];
-        if (std::find(nodes.begin(), nodes.end(), node) == nodes.end()) nodes.push_back(node);
-      }
-  return nodes;
+  return std::isfinite(best);
 }
 
 geometry::BoundaryMesh mesh_of(const ContactProblem& problem, const bem::BodyDefinition& body) {
@@ -144,11 +125,11 @@ std::vector<double> node_weights(const geometry::BoundaryMesh& mesh, const std::
         if (it == nodes.end()) continue;
         double sum = 0.0;
         for (int q = 0; q < 4; ++q) {
-          const Vec2 x = element.start + gx[q] * (element.end - element.start);
+          const Vec2 x = element.point(gx[q]);
           const double jacobian = type == AnalysisType::axisymmetric ? 2.0 * std::numbers::pi * x.x() : 1.0;
           sum += gw[q] * element.shape(a, gx[q]) * jacobian;
         }
-        weights[it - nodes.begin()] += sum * element.length;
+        weights[it - nodes.begin()] += sum * element.jacobian();
       }
     }
   return weights;
@@ -161,52 +142,17 @@ PreparedContact prepare_contact(const ContactProblem& problem) {
     const int k = problem.contact_piece[b];
     if (k < 0 || k >= static_cast<int>(problem.bodies[b].pieces.size()))
       throw Error("contact: no contact boundary given for body '" + problem.bodies[b].name + "'");
+    prepared.contact_pieces[b] = k;
+    // The zone's tractions jump at its ends: split the nodes there.
+    auto& zone = prepared.bodies[b];
+    zone.conditions[k].signature = "contact zone";
+    zone.pieces[k].condition_signature = "contact zone";
   }
-  const auto& body1 = problem.bodies[0];
-  const auto& body2 = problem.bodies[1];
-  const auto& piece1 = body1.pieces[problem.contact_piece[0]];
-  const auto& piece2 = body2.pieces[problem.contact_piece[1]];
-  const std::string zone1 = boundary_text(body1, piece1), zone2 = boundary_text(body2, piece2);
+  const auto& piece2 = problem.bodies[1].pieces[problem.contact_piece[1]];
+  const std::string zone1 = boundary_text(problem.bodies[0], problem.bodies[0].pieces[problem.contact_piece[0]]);
+  const std::string zone2 = boundary_text(problem.bodies[1], piece2);
 
-  // Facing points on piece 2 of body 1's element ends.
-  const auto s1 = geometry::element_breakpoints(piece1);
-  std::vector<double> f(s1.size());
-  for (std::size_t j = 0; j < s1.size(); ++j) {
-    const auto point = geometry::point_on_piece(piece1, s1[j]);
-    if (!facing_point(piece2, point.position, point.outward_normal, f[j], problem.pair_normal))
-      throw GeometryError("contact: the common normal through " + point_text(point.position) + " on " + zone1 +
-                          " does not meet " + zone2 + ": the contact boundaries do not face each other");
-  }
-  // Piece 2 runs the other way round (both domains on the left): f decreases.
-  const double end_tolerance0 = 0.3 * (s1[1] - s1[0]), end_tolerance1 = 0.3 * (s1.back() - s1[s1.size() - 2]);
-  const double length_ratio = geometry::piece_length(piece1) / geometry::piece_length(piece2);
-  const auto report_end = [&](std::size_t j, double expected) {
-    const Vec2 met = geometry::point_on_piece(piece2, std::clamp(f[j], -1.0, 2.0)).position;
-    const Vec2 end = expected == 0.0 ? piece2.start : piece2.end;
-    throw GeometryError("contact: the contact boundaries do not face each other: the common normal through " +
-                        point_text(geometry::point_on_piece(piece1, s1[j]).position) + " (an end of " + zone1 +
-                        ") meets the line of " + zone2 + " at " + point_text(met) + ", not at its end " +
-                        point_text(end) + "; make the two contact boundaries end on common normals");
-  };
-  if (std::abs(f.front() - 1.0) > end_tolerance0 * length_ratio) report_end(0, 1.0);
-  if (std::abs(f.back()) > end_tolerance1 * length_ratio) report_end(s1.size() - 1, 0.0);
-  f.front() = 1.0;
-  f.back() = 0.0;
-  std::vector<double> s2(f.rbegin(), f.rend());
-  for (std::size_t j = 0; j + 1 < s2.size(); ++j)
-    if (!(s2[j + 1] > s2[j]))
-      throw GeometryError("contact: " + zone1 + " and " + zone2 +
-                          " do not face each other (the common normals cross before reaching " + zone2 + ")");
-
-  // Cut both zones into one-element pieces.
   prepared.force_piece = problem.force ? problem.force->piece : -1;
-  for (int b = 0; b < 2; ++b) {
-    const int k = problem.contact_piece[b];
-    const auto cuts = b == 0 ? s1 : s2;
-    prepared.contact_pieces[b] = cut_piece(prepared.bodies[b], k, cuts);
-    if (problem.force && problem.force->body == b && problem.force->piece > k)
-      prepared.force_piece += static_cast<int>(cuts.size()) - 2;
-  }
   if (problem.force) {
     auto& loaded = prepared.bodies[problem.force->body];
     auto& condition = loaded.conditions[prepared.force_piece];
@@ -217,71 +163,124 @@ PreparedContact prepare_contact(const ContactProblem& problem) {
   }
   for (int b = 0; b < 2; ++b) prepared.meshes[b] = mesh_of(problem, prepared.bodies[b]);
 
-  // Pair the nodes.
+  // Pair each node of body 1's zone with the point it faces on body 2's zone.
   const auto& mesh1 = prepared.meshes[0];
   const auto& mesh2 = prepared.meshes[1];
-  const auto nodes1 = nodes_of(mesh1, prepared.contact_pieces[0]);
-  const auto nodes2 = nodes_of(mesh2, prepared.contact_pieces[1]);
-  if (nodes1.size() != nodes2.size())
-    throw GeometryError("contact: " + zone1 + " holds " + std::to_string(nodes1.size()) + " nodes but " + zone2 +
-                        " holds " + std::to_string(nodes2.size()) + "; the zone cannot be paired");
-  std::vector<double> local_length2(nodes2.size(), std::numeric_limits<double>::infinity());
-  for (const int piece : prepared.contact_pieces[1])
-    for (const Index e : mesh2.piece_elements[piece])
-      for (int a = 0; a < mesh2.elements[e].node_count; ++a) {
-        const auto it = std::find(nodes2.begin(), nodes2.end(), mesh2.elements[e].nodes[a]);
-        auto& length = local_length2[it - nodes2.begin()];
-        length = std::min(length, mesh2.elements[e].length);
-      }
-  const auto weights = node_weights(mesh1, prepared.contact_pieces[0], nodes1, problem.analysis);
-  std::vector<bool> used(nodes2.size(), false);
+  const std::vector<Index>& nodes1 = mesh1.piece_nodes[prepared.contact_pieces[0]];
+  prepared.zone_nodes2 = mesh2.piece_nodes[prepared.contact_pieces[1]];
+  const auto& nodes2 = prepared.zone_nodes2;
+  prepared.zone_weights2 = node_weights(mesh2, {prepared.contact_pieces[1]}, nodes2, problem.analysis);
+  const auto weights = node_weights(mesh1, {prepared.contact_pieces[0]}, nodes1, problem.analysis);
   const double scale = std::max(mesh1.scale, mesh2.scale);
+  const double end_tolerance = 1e-9;  // a node facing the very end of the zone still pairs
   for (std::size_t i = 0; i < nodes1.size(); ++i) {
     const auto& node1 = mesh1.nodes[nodes1[i]];
-    double fraction = 0.0;
-    if (!facing_point(piece2, node1.position, node1.normal, fraction, problem.pair_normal))
-      throw GeometryError("contact: node " + point_text(node1.position) + " of " + zone1 + " has no facing point on " +
-                          zone2 + "; the zone cannot be paired");
-    const Vec2 target = geometry::point_on_piece(piece2, std::clamp(fraction, 0.0, 1.0)).position;
-    std::size_t best = 0;
-    double best_distance = std::numeric_limits<double>::infinity();
-    for (std::size_t j = 0; j < nodes2.size(); ++j) {
-      const double distance = (mesh2.nodes[nodes2[j]].position - target).norm();
-      if (distance < best_distance) best_distance = distance, best = j;
+    double f = 0.0;
+    if (!facing_point(piece2, node1.position, node1.normal, f, problem.pair_normal) || f < -end_tolerance ||
+        f > 1.0 + end_tolerance) {
+      ++prepared.unpaired_nodes1;
+      continue;
     }
-    if (used[best] || best_distance > 0.3 * local_length2[best])
-      throw GeometryError("contact: node " + point_text(node1.position) + " of " + zone1 +
-                          " has no facing node on " + zone2 + " (nearest at distance " +
-                          std::to_string(best_distance) + " from the facing point " + point_text(target) +
-                          "); the zone cannot be paired");
-    used[best] = true;
-    const auto& node2 = mesh2.nodes[nodes2[best]];
-    if (node1.normal.dot(node2.normal) > -0.5)
-      throw GeometryError("contact: the normals of " + zone1 + " at " + point_text(node1.position) + " and of " + zone2 +
-                          " at " + point_text(node2.position) +
-                          " are not opposite: the contact boundaries do not face each other");
+    f = std::clamp(f, 0.0, 1.0);
+    const auto facing = geometry::point_on_piece(piece2, f);
+    if (node1.normal.dot(facing.outward_normal) > -0.5) {  // not facing each other there
+      ++prepared.unpaired_nodes1;
+      continue;
+    }
+    Index element = -1;
+    double xi = 0.0;
+    if (!locate_on_mesh(mesh2, prepared.contact_pieces[1], facing.position, element, xi))
+      throw GeometryError("contact: " + zone2 + " carries no elements; the zone cannot be paired");
+    const auto& el = mesh2.elements[element];
     ContactPair pair;
     pair.node1 = nodes1[i];
-    pair.node2 = nodes2[best];
+    pair.count2 = el.node_count;
+    for (int a = 0; a < el.node_count; ++a) {
+      pair.zone2[a] = std::find(nodes2.begin(), nodes2.end(), el.nodes[a]) - nodes2.begin();
+      pair.shape2[a] = el.shape(a, xi);
+    }
     pair.position1 = node1.position;
-    pair.position2 = node2.position;
-    pair.normal = problem.pair_normal == PairNormal::common ? Vec2((node1.normal - node2.normal).normalized())  // (V.2)
+    pair.position2 = facing.position;
+    pair.normal = problem.pair_normal == PairNormal::common ? Vec2((node1.normal - facing.outward_normal).normalized())  // (V.2)
                   : problem.pair_normal == PairNormal::body1 ? node1.normal
-                                                             : Vec2(-node2.normal);
+                                                             : Vec2(-facing.outward_normal);
     pair.tangent = Vec2(-pair.normal.y(), pair.normal.x());
-    pair.gap = (node2.position - node1.position).dot(pair.normal);  // (V.3)
+    pair.gap = (facing.position - node1.position).dot(pair.normal);  // (V.3)
     pair.weight = weights[i];
     pair.on_axis = problem.analysis == AnalysisType::axisymmetric && bem::node_on_axis(mesh1, pair.node1);
     if (pair.gap < -1e-7 * scale)
-      throw GeometryError("contact: the bodies overlap at " + point_text(node1.position) + " on " + zone1 +
-                          ": its facing node " + point_text(node2.position) + " lies " + std::to_string(-pair.gap) +
-                          " inside; the bodies must not overlap initially");
+      throw GeometryError("contact: the bodies overlap at " + point_text(node1.position) + " on " + zone1 + ": " +
+                          zone2 + " lies " + std::to_string(-pair.gap) + " inside at " +
+                          point_text(facing.position) + "; the bodies must not overlap initially");
     pair.gap = std::max(pair.gap, 0.0);
     prepared.pairs.push_back(pair);
   }
+  if (prepared.pairs.empty())
+    throw GeometryError("contact: no node of " + zone1 + " faces " + zone2 +
+                        " along the pair normal: the contact boundaries do not face each other");
+
+  // Force transfer: Gauss points of body 1's zone elements, each projected like a node.
+  std::vector<Index> pair_of_node(mesh1.node_count(), -1);
+  for (std::size_t i = 0; i < prepared.pairs.size(); ++i) pair_of_node[prepared.pairs[i].node1] = static_cast<Index>(i);
+  Matrix coupling = Matrix::Zero(static_cast<Index>(nodes2.size()), static_cast<Index>(prepared.pairs.size()));
+  const quadrature::Rule& rule = quadrature::gauss_legendre(6);
+  for (const Index e1 : mesh1.piece_elements[prepared.contact_pieces[0]]) {
+    const auto& el1 = mesh1.elements[e1];
+    for (int g = 0; g < rule.size(); ++g) {
+      const double f1 = 0.5 * (1.0 + rule.nodes[g]);
+      const Vec2 y = el1.point(f1);
+      double w = 0.5 * rule.weights[g] * el1.jacobian();
+      if (problem.analysis == AnalysisType::axisymmetric) w *= 2.0 * std::numbers::pi * y.x();
+      double f = 0.0;
+      if (!facing_point(piece2, y, el1.normal_at(f1), f, problem.pair_normal) || f < -end_tolerance ||
+          f > 1.0 + end_tolerance)
+        continue;
+      const auto facing = geometry::point_on_piece(piece2, std::clamp(f, 0.0, 1.0));
+      if (el1.normal_at(f1).dot(facing.outward_normal) > -0.5) continue;
+      Index e2 = -1;
+      double xi = 0.0;
+      if (!locate_on_mesh(mesh2, prepared.contact_pieces[1], facing.position, e2, xi)) continue;
+      const auto& el2 = mesh2.elements[e2];
+      for (int b = 0; b < el1.node_count; ++b) {
+        const Index i = pair_of_node[el1.nodes[b]];
+        if (i < 0) continue;
+        for (int a = 0; a < el2.node_count; ++a) {
+          const Index k = std::find(nodes2.begin(), nodes2.end(), el2.nodes[a]) - nodes2.begin();
+          coupling(k, i) += w * el1.shape(b, f1) * el2.shape(a, xi);
+        }
+      }
+    }
+  }
+  // Body 2's zone mass matrix, then transfer = M22^-1 M21.
+  const Index m = static_cast<Index>(nodes2.size());
+  Matrix mass = Matrix::Zero(m, m);
+  for (const Index e2 : mesh2.piece_elements[prepared.contact_pieces[1]]) {
+    const auto& el = mesh2.elements[e2];
+    std::array<Index, geometry::kMaxElementNodes> k{};
+    for (int a = 0; a < el.node_count; ++a) k[a] = std::find(nodes2.begin(), nodes2.end(), el.nodes[a]) - nodes2.begin();
+    for (int g = 0; g < rule.size(); ++g) {
+      const double f = 0.5 * (1.0 + rule.nodes[g]);
+      double w = 0.5 * rule.weights[g] * el.jacobian();
+      if (problem.analysis == AnalysisType::axisymmetric) w *= 2.0 * std::numbers::pi * el.point(f).x();
+      for (int a = 0; a < el.node_count; ++a)
+        for (int b = 0; b < el.node_count; ++b) mass(k[a], k[b]) += w * el.shape(a, f) * el.shape(b, f);
+    }
+  }
+  // A node on the axis has no area (2 pi r = 0): keep the matrix regular there.
+  for (Index a = 0; a < m; ++a)
+    if (mass(a, a) <= 1e-14 * mass.diagonal().maxCoeff()) mass(a, a) = 1.0;
+  prepared.transfer = mass.ldlt().solve(coupling);
+
+  Index carrying = 0;  // body 2's zone nodes that receive some force
+  for (Index k = 0; k < coupling.rows(); ++k) carrying += coupling.row(k).cwiseAbs().sum() > 0.0;
+  if (static_cast<double>(prepared.pairs.size()) > 1.1 * static_cast<double>(carrying))
+    prepared.warnings.push_back("contact: " + zone1 + " has " + std::to_string(prepared.pairs.size()) +
+                                " nodes facing only " + std::to_string(carrying) + " nodes of " + zone2 +
+                                ": with the finer mesh on body 1's side the contact pressures may oscillate; give " +
+                                "body 1 the coarser contact zone (swap the bodies) or refine body 2's");
   if (problem.force) {
     const auto& mesh = prepared.meshes[problem.force->body];
-    prepared.loaded_nodes = nodes_of(mesh, {prepared.force_piece});
+    prepared.loaded_nodes = mesh.piece_nodes[prepared.force_piece];
     prepared.loaded_weights = node_weights(mesh, {prepared.force_piece}, prepared.loaded_nodes, problem.analysis);
   }
   return prepared;

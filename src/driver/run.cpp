@@ -151,6 +151,7 @@ RunOutput run_contact(std::string_view text, const std::string& file_name, const
   const auto file = read_checked(io::parse_contact_problem, text, file_name, options, output);
   for (const auto& body : file.problem.bodies) add_geometry_warnings(output.warnings, body, "body '" + body.name + "'");
   const auto result = contact::solve_contact(file.problem, options.progress);
+  output.warnings.insert(output.warnings.end(), result.warnings.begin(), result.warnings.end());
   for (std::size_t b = 0; b < 2; ++b)
     add_mesh_warnings(output.warnings, result.meshes[b], "body '" + file.problem.bodies[b].name + "'");
   for (const auto& [name, content] :

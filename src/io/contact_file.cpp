@@ -44,22 +44,6 @@ int piece_named(const bem::BodyDefinition& body, const std::string& name, const 
   reader.fail(key, "body '" + body.name + "' has no boundary named '" + name + "'; its boundaries are " + names);
 }
 
-// The [[boundary]] table of `body` named `name` (a reader over it), to point at its keys.
-std::optional<TableReader> boundary_table(const toml::table& body, const std::string& path, const std::string& name,
-                                          const FileContext& context) {
-  const toml::array* boundaries = body.get_as<toml::array>("boundary");
-  if (!boundaries) return std::nullopt;
-  for (std::size_t k = 0; k < boundaries->size(); ++k) {
-    const toml::table* table = boundaries->get(k)->as_table();
-    if (!table) continue;
-    const auto* table_name = table->get_as<std::string>("name");
-    if (table_name && table_name->get() == name)
-      return TableReader(*table, path + ".boundary[" + std::to_string(k + 1) + "]", context,
-                         line_of(*boundaries->get(k)) > 0 ? line_of(*boundaries->get(k)) : 1);
-  }
-  return std::nullopt;
-}
-
 }  // namespace
 
 bool is_contact_text(std::string_view text) {
@@ -98,10 +82,9 @@ ContactFile parse_contact_problem(std::string_view text, const std::string& file
   auto& problem = result.problem;
   problem.source_file = file_name;
   read_file_header(root, context, file_name, problem.analysis, problem.title, problem.mesh.interpolation);
-  if (problem.mesh.interpolation != Interpolation::linear)
-    root.fail("interpolation", "contact problems need linear elements: the pairs are formed from nodes at the "
-                               "element ends facing each other (quadratic elements work in one-body and "
-                               "decomposition files)");
+  if (problem.mesh.interpolation == Interpolation::constant)
+    root.fail("interpolation", "contact problems need linear or quadratic elements (the pairs are formed at "
+                               "body 1's nodes, projected on body 2's elements)");
   result.parameters = context.parameters;
   read_mesh_options(root, context, problem.mesh);
   if (const toml::table* output = root.optional_table("output", "[output]")) {
@@ -127,7 +110,6 @@ ContactFile parse_contact_problem(std::string_view text, const std::string& file
   }
   // Body 2's nodes on the zone are placed on body 1's common normals, so mesh keys there
   // would have no effect.
-  std::array<const toml::table*, 2> body_tables{bodies->get(0)->as_table(), bodies->get(1)->as_table()};
   if (problem.bodies[0].name == problem.bodies[1].name)
     root.fail("body", "the two bodies have the same name '" + problem.bodies[0].name + "'");
 
@@ -144,14 +126,6 @@ ContactFile parse_contact_problem(std::string_view text, const std::string& file
     const auto name = contact.optional_string(key);
     if (!name) contact.fail(key, "missing: name the boundary of body '" + problem.bodies[b].name + "' in contact");
     problem.contact_piece[b] = piece_named(problem.bodies[b], *name, contact, key);
-    if (b == 1)
-      if (const auto zone = boundary_table(*body_tables[1], "body[2]", *name, context))
-        for (const char* mesh_key : {"elements", "grading", "refine"})
-          if (zone->has(mesh_key))
-            zone->fail(mesh_key, "body 2's contact boundary is meshed from body 1's (its nodes lie on the common "
-                                 "normals through body 1's nodes), so '" + std::string(mesh_key) +
-                                 "' has no effect here; set the mesh on body 1's contact boundary '" +
-                                 problem.bodies[0].pieces[problem.contact_piece[0]].name + "'");
     const auto& condition = problem.bodies[b].conditions[problem.contact_piece[b]];
     if (condition.kind[0] == bem::ConditionKind::displacement || condition.kind[1] == bem::ConditionKind::displacement ||
         condition.value[0] || condition.value[1])

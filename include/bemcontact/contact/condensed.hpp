@@ -1,7 +1,9 @@
 #pragma once
 // The condensed contact problem (Pb V.5) formed explicitly: each body is assembled and
 // factored once (bem::FactoredBody), and its flexibility on the contact nodes S^-1 is
-// obtained by unit traction solves, so that B' = 1S^-1 + 2S^-1 is a small dense matrix.
+// obtained by unit traction solves, so that B' = 1S^-1 + P 2S^-1 T is a small dense
+// matrix (P interpolates body 2 at the points the pairs face, T carries the pairs' forces
+// to body 2's nodes; pairing.hpp).
 //
 // Unknowns per pair i, in the pair's frame (common normal n out of body 1, tangent t):
 //   x_i = (lambda_n, tau): the traction on body 1 is p = -lambda_n n + tau t (lambda_n >= 0
@@ -57,7 +59,9 @@ class ContactModel {
   PreparedContact prepared_;
   CondensedProblem condensed_;
   std::array<std::unique_ptr<bem::FactoredBody>, 2> factored_;
-  std::array<Index, 2> contact_offset_{0, 0};  // variable dofs: contact nodes first, then platen nodes
+  std::array<Index, 2> contact_dofs_{0, 0};  // variable dofs: contact nodes first, then platen nodes
+  Matrix interpolation_;  // P: body 2's zone nodes -> the points the pairs face (2N x 2M)
+  Matrix transfer_;       // T: pair tractions -> body 2's nodal tractions, with a minus sign (2M x 2N)
 };
 
 }  // namespace bemcontact::contact

@@ -57,6 +57,7 @@ struct ContactResult {
   std::array<bem::BoundarySolution, 2> boundary;
   std::array<bem::InteriorSolution, 2> interior;
   std::array<std::string, 2> body_names;
+  std::vector<std::string> warnings;  // from the pairing (PreparedContact::warnings)
   bem::PhaseTimings timings;
   Index unknowns = 0;  // condensed unknowns
 };

@@ -95,6 +95,7 @@ refine = "end"
 name = "contact"
 from = "D"
 to = "F"
+elements = "ne"
 [[body.boundary]]
 name = "axis"
 from = "F"
