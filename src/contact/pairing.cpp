@@ -148,6 +148,7 @@ PreparedContact prepare_contact(const ContactProblem& problem) {
     zone.conditions[k].signature = "contact zone";
     zone.pieces[k].condition_signature = "contact zone";
   }
+  const auto& piece1 = problem.bodies[0].pieces[problem.contact_piece[0]];
   const auto& piece2 = problem.bodies[1].pieces[problem.contact_piece[1]];
   const std::string zone1 = boundary_text(problem.bodies[0], problem.bodies[0].pieces[problem.contact_piece[0]]);
   const std::string zone2 = boundary_text(problem.bodies[1], piece2);
@@ -175,8 +176,15 @@ PreparedContact prepare_contact(const ContactProblem& problem) {
   const double end_tolerance = 1e-9;  // a node facing the very end of the zone still pairs
   for (std::size_t i = 0; i < nodes1.size(); ++i) {
     const auto& node1 = mesh1.nodes[nodes1[i]];
+    // A node on an arc's chord (a split-corner node of a linear element) stands for the arc
+    // point at the same parameter: the gap is taken from there, so that two concentric
+    // surfaces have the same gap everywhere (the chord's sag would open a shrink fit).
+    // (The arc point whose outward normal is the node's.)
+    const Vec2 x1 = piece1.shape == geometry::PieceShape::arc
+                        ? Vec2(piece1.center + (piece1.counterclockwise ? 1.0 : -1.0) * geometry::arc_radius(piece1) * node1.normal)
+                        : node1.position;
     double f = 0.0;
-    if (!facing_point(piece2, node1.position, node1.normal, f, problem.pair_normal) || f < -end_tolerance ||
+    if (!facing_point(piece2, x1, node1.normal, f, problem.pair_normal) || f < -end_tolerance ||
         f > 1.0 + end_tolerance) {
       ++prepared.unpaired_nodes1;
       continue;
@@ -199,20 +207,22 @@ PreparedContact prepare_contact(const ContactProblem& problem) {
       pair.zone2[a] = std::find(nodes2.begin(), nodes2.end(), el.nodes[a]) - nodes2.begin();
       pair.shape2[a] = el.shape(a, xi);
     }
-    pair.position1 = node1.position;
+    pair.position1 = x1;
     pair.position2 = facing.position;
     pair.normal = problem.pair_normal == PairNormal::common ? Vec2((node1.normal - facing.outward_normal).normalized())  // (V.2)
                   : problem.pair_normal == PairNormal::body1 ? node1.normal
                                                              : Vec2(-facing.outward_normal);
     pair.tangent = Vec2(-pair.normal.y(), pair.normal.x());
-    pair.gap = (facing.position - node1.position).dot(pair.normal);  // (V.3)
+    pair.gap = (facing.position - x1).dot(pair.normal);  // (V.3)
     pair.weight = weights[i];
     pair.on_axis = problem.analysis == AnalysisType::axisymmetric && bem::node_on_axis(mesh1, pair.node1);
     if (pair.gap < -1e-7 * scale)
       throw GeometryError("contact: the bodies overlap at " + point_text(node1.position) + " on " + zone1 + ": " +
                           zone2 + " lies " + std::to_string(-pair.gap) + " inside at " +
-                          point_text(facing.position) + "; the bodies must not overlap initially");
-    pair.gap = std::max(pair.gap, 0.0);
+                          point_text(facing.position) +
+                          "; draw the bodies without overlap (for an interference fit, at their common nominal "
+                          "surface with [contact] interference = the overlap)");
+    pair.gap = std::max(pair.gap, 0.0) - problem.interference;
     prepared.pairs.push_back(pair);
   }
   if (prepared.pairs.empty())

@@ -1,6 +1,7 @@
 #include "bemcontact/io/contact_file.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <optional>
 #include <fstream>
 #include <sstream>
@@ -9,6 +10,7 @@
 
 #include "bemcontact/contact/pairing.hpp"
 #include "bemcontact/io/body_parser.hpp"
+#include "bemcontact/io/expression.hpp"
 #include "bemcontact/io/toml_reader.hpp"
 
 namespace bemcontact::io {
@@ -119,7 +121,7 @@ ContactFile parse_contact_problem(std::string_view text, const std::string& file
   const TableReader contact(*contact_table, "contact", context, root.line());
   contact.check_keys({"boundary1", "boundary2", "kind", "friction", "coupling", "increments", "algorithm",
                       "gmres_restart", "max_gmres_cycles", "xi", "tolerance", "max_iterations", "record_steps", "load",
-                      "normal"},
+                      "normal", "interference"},
                      "the [contact] table");
   for (int b = 0; b < 2; ++b) {
     const std::string key = "boundary" + std::to_string(b + 1);
@@ -141,6 +143,11 @@ ContactFile parse_contact_problem(std::string_view text, const std::string& file
   if (contact.has("coupling") && problem.friction == 0.0)
     contact.fail("coupling", "'coupling' acts on the tangential tractions of friction; with friction = 0 it has "
                              "no effect (remove it, or give a friction coefficient)");
+  problem.interference = contact.optional_number("interference").value_or(0.0);
+  if (!(problem.interference >= 0.0 && std::isfinite(problem.interference)))
+    contact.fail("interference", "the interference (initial overlap of the contact zones along the pair normal, "
+                                 "e.g. the radial interference of a shrink fit) must be a finite number >= 0, found " +
+                                     format_number(problem.interference));
   const std::string normal = contact.choice("normal", {"common", "body1", "body2"}, "common");
   problem.pair_normal = normal == "body1"   ? contact::PairNormal::body1
                         : normal == "body2" ? contact::PairNormal::body2

@@ -335,6 +335,55 @@ std::vector<Record> run_non_matching(const Context& context) {
   return records;
 }
 
+// Interface pressure of a shrink fit (shaft of radii a, b in a hub of radii b, c, radial
+// interference delta, frictionless) against Lame for free ends:
+//   p = delta / { b [ (1/E_o)((c^2 + b^2)/(c^2 - b^2) + nu_o) + (1/E_i)((b^2 + a^2)/(b^2 - a^2) - nu_i) ] },
+// with E / (1 - nu^2) and nu / (1 - nu) in plane strain.
+double shrink_fit_pressure(double a, double b, double c, double delta, const Material& shaft, const Material& hub,
+                           AnalysisType type) {
+  auto effective = [type](const Material& m) {
+    if (type != AnalysisType::plane_strain) return m;
+    const double nu = m.poisson_ratio;
+    return Material{m.young_modulus / (1.0 - nu * nu), nu / (1.0 - nu)};
+  };
+  const Material i = effective(shaft), o = effective(hub);
+  const double hub_term = ((c * c + b * b) / (c * c - b * b) + o.poisson_ratio) / o.young_modulus;
+  const double shaft_term = ((b * b + a * a) / (b * b - a * a) - i.poisson_ratio) / i.young_modulus;
+  return delta / (b * (hub_term + shaft_term));
+}
+
+// Shrink fit (examples/contact_shrink_fit*.toml): the interference declared on the
+// contact, the pressure of every pair within 0.5 % of Lame in plane stress and plane strain
+// (quarter model); in axisymmetry, long tubes with free ends, the mean pressure over the
+// first wall thickness from the mid-plane (the open-ended state, plane-stress formula).
+std::vector<Record> run_shrink_fit(const Context& context) {
+  std::vector<Record> records;
+  for (const AnalysisType type : {AnalysisType::plane_stress, AnalysisType::plane_strain, AnalysisType::axisymmetric}) {
+    const bool axisymmetric = type == AnalysisType::axisymmetric;
+    auto file = load(context, axisymmetric ? "contact_shrink_fit_axisymmetric.toml" : "contact_shrink_fit.toml");
+    auto problem = file.problem;
+    problem.analysis = type;
+    const double a = file.parameters.at("a"), b = file.parameters.at("b"), c = file.parameters.at("c");
+    const double expected = shrink_fit_pressure(a, b, c, file.parameters.at("delta"), problem.bodies[0].material,
+                                                problem.bodies[1].material,
+                                                axisymmetric ? AnalysisType::plane_stress : type);
+    const auto result = contact::solve_contact(problem, context.progress);
+    double worst = 0.0, sum = 0.0;
+    int count = 0;
+    for (const auto& pair : result.pairs) {
+      if (axisymmetric && pair.position.y() > b - a) continue;
+      worst = std::max(worst, std::abs(-pair.p_n / expected - 1.0));
+      sum += -pair.p_n;
+      ++count;
+    }
+    const std::size_t first = records.size();
+    records.push_back(compare_relative("interface_pressure", sum / count, expected, 5e-3));
+    if (!axisymmetric) records.push_back(compare_scaled("pressure_max_deviation", worst, 0.0, 1.0, 5e-3));
+    tag(records, first, "shrink-fit", {{"analysis", to_string(type)}});
+  }
+  return records;
+}
+
 // Quadratic elements in contact (both zones, every boundary): the Hertz ball (a, p0, delta
 // within 2 %, the profile 3 % of p0), Spence's c/a (beta = 0.1) within 0.03 of 0.513, and the
 // plane-strain cylinder half model (every pair within 1 % for |x| <= 0.8a).
@@ -412,6 +461,8 @@ std::vector<Case> contact_cases() {
        run_spence_halfspace},
       {"non-matching-zones", "V.2.2", "Hertz and Spence balls with 30 elements on the ball's zone and 47 or 36 on the support's",
        run_non_matching},
+      {"shrink-fit", "-", "shaft in a hub with radial interference, frictionless: interface pressure against Lame",
+       run_shrink_fit},
       {"contact-quadratic", "V.5.2", "Hertz, Spence and the cylinder half model with quadratic elements",
        run_contact_quadratic},
       {"hertz-cylinder-half", "-", "cylinder on a block, plane-strain half model with coarse symmetry lines, 2D Hertz",

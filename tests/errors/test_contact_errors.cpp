@@ -54,6 +54,12 @@ TEST(ContactErrors, BoundariesThatDoNotFaceEachOther) {
   EXPECT_TRUE(contains(message, "boundary 'contact' of body 'support'")) << message;
 }
 
+TEST(ContactErrors, NegativeInterferenceNamesTheKey) {
+  const auto message = input_error(replaced(example_text(), "increments = 1", "increments = 1\ninterference = -0.01"));
+  EXPECT_TRUE(contains(message, "key 'contact.interference'")) << message;
+  EXPECT_TRUE(contains(message, ">= 0")) << message;
+}
+
 TEST(ContactErrors, InitiallyOverlappingBodies) {
   auto text = replaced(example_text(), "S = [0.0, 0.0]", "S = [0.0, -0.001]");
   text = replaced(text, "Q = [\"rc\", \"R - R*cos(theta)\"]", "Q = [\"rc\", \"R - R*cos(theta) - 0.001\"]");

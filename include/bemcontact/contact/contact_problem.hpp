@@ -74,6 +74,10 @@ struct ContactProblem {
   // approximation under which Spence's (E.1) holds (DESIGN.md section 6).
   bool tangential_coupling = true;
   PairNormal pair_normal = PairNormal::common;
+  // Interference fit: the zones, drawn at their common nominal surface, overlap by this much
+  // along the pair normal (e.g. the radial interference of a shrink fit): every pair's gap
+  // is d - interference from the first load step on.
+  double interference = 0.0;
   int increments = 1;  // quasi-static load steps, equal load factors k / N
   bool record_steps = false;
   std::optional<ForceLoad> force;
