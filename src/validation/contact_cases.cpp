@@ -428,8 +428,8 @@ std::vector<Record> run_contact_quadratic(const Context& context) {
 // Cylinder on a block in plane strain, half model with coarse symmetry lines
 // (examples/contact_hertz_cylinder_half.toml): every pair's pressure for |x| <= 0.8a within
 // 1 % of 2D Hertz at that x, for 25, 50 and 100 contact elements. The corner transition
-// grades the symmetry lines toward the contact zone; measured 0.67, 0.43, 0.31 % (without
-// it the pair next to the symmetry line is off by +200 to +500 %).
+// grades the symmetry lines toward the contact zone; measured 0.24, 0.27, 0.41 % (without
+// it the pair next to the symmetry line is off by +202, +340, +587 %).
 std::vector<Record> run_hertz_cylinder_half(const Context& context) {
   std::vector<Record> records;
   for (int elements : {25, 50, 100}) {
