@@ -7,6 +7,7 @@
 #include <chrono>
 
 #include "bemcontact/bem/boundary_system.hpp"
+#include "bemcontact/bem/resultants.hpp"
 #include "bemcontact/bem/rigid_modes.hpp"
 #include "bemcontact/core/error.hpp"
 #include "bemcontact/operators/dense_lu.hpp"
@@ -109,6 +110,7 @@ BodyResult solve_body(const ProblemDefinition& problem, const ProgressCallback& 
   result.boundary = recover_boundary_values(y, conditions, rigid_only ? std::vector<ConstraintEquation>{} : constraints);
   result.report.relative_residual = boundary_equation_residual(matrices, conditions, result.boundary);
   result.boundary.stress = boundary_stresses(result.mesh, problem.analysis, body.material, result.boundary);
+  result.boundary.resultants = boundary_resultants(result.mesh, result.boundary, body, problem.analysis);
   clock.lap("boundary stress");
 
   if (!problem.interior_points.empty()) {

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "bemcontact/bem/postprocess.hpp"
+#include "bemcontact/bem/resultants.hpp"
 #include "bemcontact/contact/step_solvers.hpp"
 #include "bemcontact/core/error.hpp"
 
@@ -214,14 +215,17 @@ ContactResult solve_contact(const ContactProblem& problem, const bem::ProgressCa
   result.step_pairs = std::move(history.step_pairs);
 
   start = Clock::now();
+  result.warnings = model.prepared().warnings;
   for (int b = 0; b < 2; ++b) {
     const auto& body = model.prepared().bodies[b];
     result.body_names[b] = body.name;
     result.meshes[b] = model.prepared().meshes[b];
-    result.warnings = model.prepared().warnings;
     result.boundary[b] = model.body(b).solve(model.variable_data(b, history.x, history.delta), true);
     if (result.boundary[b].stress.empty())
       result.boundary[b].stress = bem::boundary_stresses(result.meshes[b], problem.analysis, body.material, result.boundary[b]);
+    // Conditions as the user gave them (the platen's are the solver's own).
+    result.boundary[b].resultants =
+        bem::boundary_resultants(result.meshes[b], result.boundary[b], problem.bodies[b], problem.analysis);
   }
   result.timings.add("boundary stresses", seconds_since(start));
   start = Clock::now();

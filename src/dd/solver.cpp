@@ -2,6 +2,7 @@
 
 #include <chrono>
 
+#include "bemcontact/bem/resultants.hpp"
 #include "bemcontact/bem/assembly.hpp"
 #include "bemcontact/bem/postprocess.hpp"
 #include "bemcontact/core/error.hpp"
@@ -104,6 +105,8 @@ DecompositionResult solve_decomposition(const DecompositionProblem& problem, con
     sub.reciprocal_condition = K.body(s).reciprocal_condition();
     sub.boundary.stress = bem::boundary_stresses(sub.mesh, problem.analysis, problem.subdomains[s].body.material,
                                                  sub.boundary);
+    sub.boundary.resultants =
+        bem::boundary_resultants(sub.mesh, sub.boundary, problem.subdomains[s].body, problem.analysis);
     result.subdomains.push_back(std::move(sub));
   }
   result.jumps = interface_jumps(result.connectivity, result.subdomains);

@@ -137,8 +137,8 @@ RunOutput run_decomposition(std::string_view text, const std::string& file_name,
     const auto& subdomain = result.subdomains[s];
     append_transitions(report, subdomain.mesh, "subdomain '" + subdomain.name + "': ");
     if (result.converged())
-      report += io::reactions_text(subdomain.mesh, subdomain.boundary, file.problem.subdomains[s].body,
-                                   file.problem.analysis, "subdomain '" + subdomain.name + "': ");
+      report += io::reactions_text(subdomain.boundary.resultants, file.problem.analysis,
+                                   "subdomain '" + subdomain.name + "': ");
   }
   append(report, "  time %.3f s\n", seconds_since(started));
   return output;
@@ -162,7 +162,7 @@ RunOutput run_contact(std::string_view text, const std::string& file_name, const
     const std::string label = "body '" + file.problem.bodies[b].name + "': ";
     append_transitions(output.report, result.meshes[b], label);
     output.report +=
-        io::reactions_text(result.meshes[b], result.boundary[b], file.problem.bodies[b], file.problem.analysis, label);
+        io::reactions_text(result.boundary[b].resultants, file.problem.analysis, label);
   }
   append(output.report, "  time %.3f s\n", seconds_since(started));
   return output;
@@ -219,7 +219,7 @@ RunOutput run_body(std::string_view text, const std::string& file_name, const Ru
                    {"interior_points", result.interior.points.size()},
                    {"interior_points_dropped_outside", result.interior.dropped_points.size()},
                    {"max_interior_von_mises", interior_max_vm}}},
-      {"boundary_resultants", io::resultants_json(result.mesh, result.boundary, file.problem.body, file.problem.analysis)},
+      {"boundary_resultants", io::resultants_json(result.boundary.resultants, file.problem.analysis)},
       {"timings_seconds", timings},
       {"outputs", out.names()},
       {"warnings", output.warnings}};
@@ -235,7 +235,7 @@ RunOutput run_body(std::string_view text, const std::string& file_name, const Ru
          1.0 / result.report.reciprocal_condition, result.report.relative_residual);
   append(report, "  max |u| on the boundary = %.6g, max von Mises = %.6g at (%.6g, %.6g)\n", max_u, max_vm,
          peak.x(), peak.y());
-  report += io::reactions_text(result.mesh, result.boundary, file.problem.body, file.problem.analysis, "");
+  report += io::reactions_text(result.boundary.resultants, file.problem.analysis, "");
   if (!result.interior.points.empty())
     append(report, "  %zu interior points (%zu outside dropped), max von Mises = %.6g\n",
            result.interior.points.size(), result.interior.dropped_points.size(), interior_max_vm);

@@ -163,8 +163,8 @@ std::vector<std::pair<std::string, std::string>> contact_output_files(const cont
                                        {problem.bodies[1].name, mesh_transitions_json(result.meshes[1])}};
   // Per body, the contact zone included (the resultant of the contact tractions).
   summary["boundary_resultants"] = {
-      {problem.bodies[0].name, resultants_json(result.meshes[0], result.boundary[0], problem.bodies[0], problem.analysis)},
-      {problem.bodies[1].name, resultants_json(result.meshes[1], result.boundary[1], problem.bodies[1], problem.analysis)}};
+      {problem.bodies[0].name, resultants_json(result.boundary[0].resultants, problem.analysis)},
+      {problem.bodies[1].name, resultants_json(result.boundary[1].resultants, problem.analysis)}};
   summary["warnings"] = warnings;
   files.emplace_back("summary.json", write_json_string(summary));
   return files;

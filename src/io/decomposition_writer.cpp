@@ -117,8 +117,7 @@ nlohmann::json decomposition_summary_json(const dd::DecompositionProblem& proble
                     {"nodes", sub.mesh.node_count()},
                     {"elements", sub.mesh.element_count()},
                     {"graded_toward_vertices", mesh_transitions_json(sub.mesh)},
-                    {"boundary_resultants", resultants_json(sub.mesh, sub.boundary, problem.subdomains[s].body,
-                                                            problem.analysis)},
+                    {"boundary_resultants", resultants_json(sub.boundary.resultants, problem.analysis)},
                     {"material", {{"E", material.young_modulus}, {"nu", material.poisson_ratio}}},
                     {"reciprocal_condition", sub.reciprocal_condition}});
   }

@@ -3,7 +3,6 @@
 #include <cmath>
 #include <cstdio>
 
-#include "bemcontact/bem/resultants.hpp"
 #include "bemcontact/core/error.hpp"
 
 namespace bemcontact::io {
@@ -96,10 +95,9 @@ nlohmann::json mesh_transitions_json(const geometry::BoundaryMesh& mesh) {
   return graded;
 }
 
-nlohmann::json resultants_json(const geometry::BoundaryMesh& mesh, const bem::BoundarySolution& solution,
-                               const bem::BodyDefinition& body, AnalysisType type) {
+nlohmann::json resultants_json(const std::vector<bem::BoundaryResultant>& resultants, AnalysisType type) {
   nlohmann::json list = nlohmann::json::array();
-  for (const auto& r : bem::boundary_resultants(mesh, solution, body, type)) {
+  for (const auto& r : resultants) {
     nlohmann::json entry = {{"boundary", r.boundary},
                             {"prescribed_displacement", r.prescribed_displacement},
                             {"force", {r.force.x(), r.force.y()}}};
@@ -109,11 +107,11 @@ nlohmann::json resultants_json(const geometry::BoundaryMesh& mesh, const bem::Bo
   return list;
 }
 
-std::string reactions_text(const geometry::BoundaryMesh& mesh, const bem::BoundarySolution& solution,
-                           const bem::BodyDefinition& body, AnalysisType type, const std::string& label) {
+std::string reactions_text(const std::vector<bem::BoundaryResultant>& resultants, AnalysisType type,
+                           const std::string& label) {
   std::string text;
   char line[512];
-  for (const auto& r : bem::boundary_resultants(mesh, solution, body, type)) {
+  for (const auto& r : resultants) {
     if (!r.prescribed_displacement) continue;
     if (type == AnalysisType::axisymmetric)
       std::snprintf(line, sizeof line, "  %sreaction on '%s': F_z = %.6g (whole ring)\n", label.c_str(),

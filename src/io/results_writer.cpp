@@ -135,10 +135,9 @@ void append_nodes(const geometry::BoundaryMesh& mesh, const std::vector<Index>& 
                   std::vector<Index>& line) {
   for (const Index e : elements) {
     const auto& element = mesh.elements[e];
-    // Along the element: by fraction (a quadratic element stores start, end, middle).
-    std::array<int, geometry::kMaxElementNodes> order{0, 1, 2};
-    std::sort(order.begin(), order.begin() + element.node_count,
-              [&](int a, int b) { return element.node_fraction[a] < element.node_fraction[b]; });
+    // Along the element: a quadratic element stores start, end, middle.
+    const std::array<int, geometry::kMaxElementNodes> order =
+        element.node_count == 3 ? std::array<int, 3>{0, 2, 1} : std::array<int, 3>{0, 1, 2};
     for (int k = 0; k < element.node_count; ++k) {
       const Index node = element.nodes[order[k]];
       if (node < 0) continue;

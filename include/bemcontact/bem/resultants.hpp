@@ -1,7 +1,8 @@
 #pragma once
 // Resultants of the boundary tractions, boundary by boundary: the reactions of the
 // boundaries with prescribed displacements (point-constraint reactions are part of their
-// node's traction), and a check of the applied loads elsewhere.
+// node's traction), and a check of the applied loads elsewhere. Computed with the boundary
+// stresses (BoundarySolution::resultants); io/ only formats them.
 #include <string>
 #include <vector>
 
@@ -10,16 +11,6 @@
 
 namespace bemcontact::bem {
 
-struct BoundaryResultant {
-  std::string boundary;
-  bool prescribed_displacement = false;  // some component of u is prescribed there
-  // Plane problems: force per unit thickness, and its moment about the origin
-  // (counterclockwise positive). Axisymmetry: the force on the whole surface of
-  // revolution (2 pi r dGamma); its radial component vanishes by symmetry and is 0, and
-  // there is no moment (0).
-  Vec2 force = Vec2::Zero();
-  double moment = 0.0;
-};
 
 // One entry per boundary name, in order of first appearance on the mesh (pieces of one
 // name add up, e.g. a contact zone cut into pairs). The conditions are looked up in

@@ -15,10 +15,23 @@ struct StressTensor {
   double von_mises() const;
 };
 
+// Resultant of the tractions on one boundary (bem/resultants.hpp).
+struct BoundaryResultant {
+  std::string boundary;
+  bool prescribed_displacement = false;  // some component of u is prescribed there: a reaction
+  // Plane problems: force per unit thickness, and its moment about the origin
+  // (counterclockwise positive). Axisymmetry: the force on the whole surface of
+  // revolution (2 pi r dGamma); its radial component vanishes by symmetry and is 0, and
+  // there is no moment (0).
+  Vec2 force = Vec2::Zero();
+  double moment = 0.0;
+};
+
 struct BoundarySolution {
   std::vector<Vec2> displacement;  // per node, global components
   std::vector<Vec2> traction;      // per node, global components (p = sigma n)
   std::vector<StressTensor> stress;
+  std::vector<BoundaryResultant> resultants;  // per boundary, with the stresses
 };
 
 struct InteriorSolution {

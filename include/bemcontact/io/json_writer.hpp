@@ -27,12 +27,11 @@ nlohmann::json problem_echo_json(const ProblemFile& file);
 nlohmann::json mesh_transitions_json(const geometry::BoundaryMesh& mesh);
 
 // Resultant force (and moment in plane problems) of the tractions on each boundary
-// (bem/resultants.hpp): [{"boundary", "prescribed_displacement", "force": [f1, f2], "moment"}].
-nlohmann::json resultants_json(const geometry::BoundaryMesh& mesh, const bem::BoundarySolution& solution,
-                               const bem::BodyDefinition& body, AnalysisType type);
+// (BoundarySolution::resultants): [{"boundary", "prescribed_displacement", "force": [f1, f2], "moment"}].
+nlohmann::json resultants_json(const std::vector<bem::BoundaryResultant>& resultants, AnalysisType type);
 
 // Terminal lines for the boundaries with prescribed displacements: their reactions.
-std::string reactions_text(const geometry::BoundaryMesh& mesh, const bem::BoundarySolution& solution,
-                           const bem::BodyDefinition& body, AnalysisType type, const std::string& label);
+std::string reactions_text(const std::vector<bem::BoundaryResultant>& resultants, AnalysisType type,
+                           const std::string& label);
 
 }  // namespace bemcontact::io
