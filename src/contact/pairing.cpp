@@ -4,10 +4,12 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <optional>
 #include <sstream>
 
 #include "bemcontact/bem/analysis.hpp"
 #include "bemcontact/bem/assembly.hpp"
+#include "bemcontact/integration/element_quadrature.hpp"
 #include "bemcontact/quadrature/gauss_legendre.hpp"
 
 namespace bemcontact::contact {
@@ -81,25 +83,48 @@ bool facing_point(const geometry::BoundaryPiece& piece2, const Vec2& x1, const V
   return true;
 }
 
-// Where the point y of the zone's piece lies on the mesh: the element of the piece whose
-// chord (or arc) holds it, and the fraction there.
-bool locate_on_mesh(const geometry::BoundaryMesh& mesh, int piece, const Vec2& y, Index& element, double& fraction) {
-  double best = std::numeric_limits<double>::infinity();
-  for (const Index e : mesh.piece_elements[piece]) {
-    const auto& el = mesh.elements[e];
-    double f;
-    if (el.arc) {
-      const Vec2 q = y - el.center;
-      f = 0.5 + std::remainder(std::atan2(q.y(), q.x()) - (el.angle_start + 0.5 * el.angle_span),
-                               2.0 * std::numbers::pi) / el.angle_span;
-    } else {
-      f = (y - el.start).dot(el.end - el.start) / (el.end - el.start).squaredNorm();
-    }
-    const double outside = std::max({0.0, -f, f - 1.0});  // how far beyond the element, in its lengths
-    const double distance = (el.point(std::clamp(f, 0.0, 1.0)) - y).norm() + outside * el.length;
-    if (distance < best) best = distance, element = e, fraction = std::clamp(f, 0.0, 1.0);
+// Calls add(f, w) at the Gauss points of an element: f its fraction, w the weight of the
+// surface element there (times 2 pi r in axisymmetry).
+template <class Add>
+void for_each_gauss_point(const geometry::BoundaryElement& element, int points, AnalysisType type, Add&& add) {
+  const quadrature::Rule& rule = quadrature::gauss_legendre(points);
+  for (int g = 0; g < rule.size(); ++g) {
+    const double f = 0.5 * (1.0 + rule.nodes[g]);
+    double w = 0.5 * rule.weights[g] * element.jacobian();
+    if (type == AnalysisType::axisymmetric) w *= 2.0 * std::numbers::pi * element.point(f).x();
+    add(f, w);
   }
-  return std::isfinite(best);
+}
+
+// The point of body 2's zone that a point y of body 1 (outward normal n1) faces, and where
+// it lies on body 2's mesh.
+struct Projection {
+  geometry::PiecePoint facing;  // on the true surface of body 2
+  Index element = -1;           // body 2's element that holds it
+  double xi = 0.0;              // its fraction on that element
+};
+
+// None when the pair normal through y misses the zone, or meets it with a normal that is
+// not opposite to n1 (the surfaces do not face each other there).
+std::optional<Projection> project_on_zone(const geometry::BoundaryPiece& piece2, const geometry::BoundaryMesh& mesh2,
+                                          int zone2, const Vec2& y, const Vec2& n1, PairNormal choice) {
+  constexpr double end_tolerance = 1e-9;  // a point facing the very end of the zone still pairs
+  double f = 0.0;
+  if (!facing_point(piece2, y, n1, f, choice) || f < -end_tolerance || f > 1.0 + end_tolerance) return std::nullopt;
+  Projection p;
+  p.facing = geometry::point_on_piece(piece2, std::clamp(f, 0.0, 1.0));
+  if (n1.dot(p.facing.outward_normal) > -0.5) return std::nullopt;
+  // The element whose chord (or arc) holds the facing point.
+  double best = std::numeric_limits<double>::infinity();
+  for (const Index e : mesh2.piece_elements[zone2]) {
+    const auto& el = mesh2.elements[e];
+    const double fraction = integration::ElementCurve(el).fraction_of(p.facing.position);
+    const double outside = std::max({0.0, -fraction, fraction - 1.0});  // beyond the element, in its lengths
+    const double distance = (el.point(std::clamp(fraction, 0.0, 1.0)) - p.facing.position).norm() + outside * el.length;
+    if (distance < best) best = distance, p.element = e, p.xi = std::clamp(fraction, 0.0, 1.0);
+  }
+  if (p.element < 0) return std::nullopt;
+  return p;
 }
 
 geometry::BoundaryMesh mesh_of(const ContactProblem& problem, const bem::BodyDefinition& body) {
@@ -114,23 +139,16 @@ geometry::BoundaryMesh mesh_of(const ContactProblem& problem, const bem::BodyDef
 
 std::vector<double> node_weights(const geometry::BoundaryMesh& mesh, const std::vector<int>& pieces,
                                  const std::vector<Index>& nodes, AnalysisType type) {
-  static const double gx[4] = {0.0694318442029737, 0.3300094782075719, 0.6699905217924281, 0.9305681557970263};
-  static const double gw[4] = {0.1739274225687269, 0.3260725774312731, 0.3260725774312731, 0.1739274225687269};
+  std::vector<Index> index(mesh.node_count(), -1);
+  for (std::size_t k = 0; k < nodes.size(); ++k) index[nodes[k]] = static_cast<Index>(k);
   std::vector<double> weights(nodes.size(), 0.0);
   for (const int piece : pieces)
     for (const Index e : mesh.piece_elements[piece]) {
       const auto& element = mesh.elements[e];
-      for (int a = 0; a < element.node_count; ++a) {
-        const auto it = std::find(nodes.begin(), nodes.end(), element.nodes[a]);
-        if (it == nodes.end()) continue;
-        double sum = 0.0;
-        for (int q = 0; q < 4; ++q) {
-          const Vec2 x = element.point(gx[q]);
-          const double jacobian = type == AnalysisType::axisymmetric ? 2.0 * std::numbers::pi * x.x() : 1.0;
-          sum += gw[q] * element.shape(a, gx[q]) * jacobian;
-        }
-        weights[it - nodes.begin()] += sum * element.jacobian();
-      }
+      for_each_gauss_point(element, 4, type, [&](double f, double w) {
+        for (int a = 0; a < element.node_count; ++a)
+          if (index[element.nodes[a]] >= 0) weights[index[element.nodes[a]]] += w * element.shape(a, f);
+      });
     }
   return weights;
 }
@@ -150,7 +168,7 @@ PreparedContact prepare_contact(const ContactProblem& problem) {
   }
   const auto& piece1 = problem.bodies[0].pieces[problem.contact_piece[0]];
   const auto& piece2 = problem.bodies[1].pieces[problem.contact_piece[1]];
-  const std::string zone1 = boundary_text(problem.bodies[0], problem.bodies[0].pieces[problem.contact_piece[0]]);
+  const std::string zone1 = boundary_text(problem.bodies[0], piece1);
   const std::string zone2 = boundary_text(problem.bodies[1], piece2);
 
   prepared.force_piece = problem.force ? problem.force->piece : -1;
@@ -170,10 +188,12 @@ PreparedContact prepare_contact(const ContactProblem& problem) {
   const std::vector<Index>& nodes1 = mesh1.piece_nodes[prepared.contact_pieces[0]];
   prepared.zone_nodes2 = mesh2.piece_nodes[prepared.contact_pieces[1]];
   const auto& nodes2 = prepared.zone_nodes2;
+  const int zone_piece2 = prepared.contact_pieces[1];
+  std::vector<Index> zone_index2(mesh2.node_count(), -1);  // mesh node -> index in zone_nodes2
+  for (std::size_t k = 0; k < nodes2.size(); ++k) zone_index2[nodes2[k]] = static_cast<Index>(k);
   prepared.zone_weights2 = node_weights(mesh2, {prepared.contact_pieces[1]}, nodes2, problem.analysis);
   const auto weights = node_weights(mesh1, {prepared.contact_pieces[0]}, nodes1, problem.analysis);
   const double scale = std::max(mesh1.scale, mesh2.scale);
-  const double end_tolerance = 1e-9;  // a node facing the very end of the zone still pairs
   for (std::size_t i = 0; i < nodes1.size(); ++i) {
     const auto& node1 = mesh1.nodes[nodes1[i]];
     // A node on an arc's chord (a split-corner node of a linear element) stands for the arc
@@ -183,29 +203,19 @@ PreparedContact prepare_contact(const ContactProblem& problem) {
     const Vec2 x1 = piece1.shape == geometry::PieceShape::arc
                         ? Vec2(piece1.center + (piece1.counterclockwise ? 1.0 : -1.0) * geometry::arc_radius(piece1) * node1.normal)
                         : node1.position;
-    double f = 0.0;
-    if (!facing_point(piece2, x1, node1.normal, f, problem.pair_normal) || f < -end_tolerance ||
-        f > 1.0 + end_tolerance) {
+    const auto projection = project_on_zone(piece2, mesh2, zone_piece2, x1, node1.normal, problem.pair_normal);
+    if (!projection) {
       ++prepared.unpaired_nodes1;
       continue;
     }
-    f = std::clamp(f, 0.0, 1.0);
-    const auto facing = geometry::point_on_piece(piece2, f);
-    if (node1.normal.dot(facing.outward_normal) > -0.5) {  // not facing each other there
-      ++prepared.unpaired_nodes1;
-      continue;
-    }
-    Index element = -1;
-    double xi = 0.0;
-    if (!locate_on_mesh(mesh2, prepared.contact_pieces[1], facing.position, element, xi))
-      throw GeometryError("contact: " + zone2 + " carries no elements; the zone cannot be paired");
-    const auto& el = mesh2.elements[element];
+    const auto& facing = projection->facing;
+    const auto& el = mesh2.elements[projection->element];
     ContactPair pair;
     pair.node1 = nodes1[i];
     pair.count2 = el.node_count;
     for (int a = 0; a < el.node_count; ++a) {
-      pair.zone2[a] = std::find(nodes2.begin(), nodes2.end(), el.nodes[a]) - nodes2.begin();
-      pair.shape2[a] = el.shape(a, xi);
+      pair.zone2[a] = zone_index2[el.nodes[a]];
+      pair.shape2[a] = el.shape(a, projection->xi);
     }
     pair.position1 = x1;
     pair.position2 = facing.position;
@@ -233,48 +243,32 @@ PreparedContact prepare_contact(const ContactProblem& problem) {
   std::vector<Index> pair_of_node(mesh1.node_count(), -1);
   for (std::size_t i = 0; i < prepared.pairs.size(); ++i) pair_of_node[prepared.pairs[i].node1] = static_cast<Index>(i);
   Matrix coupling = Matrix::Zero(static_cast<Index>(nodes2.size()), static_cast<Index>(prepared.pairs.size()));
-  const quadrature::Rule& rule = quadrature::gauss_legendre(6);
+  constexpr int kTransferPoints = 6;
   for (const Index e1 : mesh1.piece_elements[prepared.contact_pieces[0]]) {
     const auto& el1 = mesh1.elements[e1];
-    for (int g = 0; g < rule.size(); ++g) {
-      const double f1 = 0.5 * (1.0 + rule.nodes[g]);
-      const Vec2 y = el1.point(f1);
-      double w = 0.5 * rule.weights[g] * el1.jacobian();
-      if (problem.analysis == AnalysisType::axisymmetric) w *= 2.0 * std::numbers::pi * y.x();
-      double f = 0.0;
-      if (!facing_point(piece2, y, el1.normal_at(f1), f, problem.pair_normal) || f < -end_tolerance ||
-          f > 1.0 + end_tolerance)
-        continue;
-      const auto facing = geometry::point_on_piece(piece2, std::clamp(f, 0.0, 1.0));
-      if (el1.normal_at(f1).dot(facing.outward_normal) > -0.5) continue;
-      Index e2 = -1;
-      double xi = 0.0;
-      if (!locate_on_mesh(mesh2, prepared.contact_pieces[1], facing.position, e2, xi)) continue;
-      const auto& el2 = mesh2.elements[e2];
+    for_each_gauss_point(el1, kTransferPoints, problem.analysis, [&](double f1, double w) {
+      const auto projection =
+          project_on_zone(piece2, mesh2, zone_piece2, el1.point(f1), el1.normal_at(f1), problem.pair_normal);
+      if (!projection) return;
+      const auto& el2 = mesh2.elements[projection->element];
       for (int b = 0; b < el1.node_count; ++b) {
         const Index i = pair_of_node[el1.nodes[b]];
         if (i < 0) continue;
-        for (int a = 0; a < el2.node_count; ++a) {
-          const Index k = std::find(nodes2.begin(), nodes2.end(), el2.nodes[a]) - nodes2.begin();
-          coupling(k, i) += w * el1.shape(b, f1) * el2.shape(a, xi);
-        }
+        for (int a = 0; a < el2.node_count; ++a)
+          coupling(zone_index2[el2.nodes[a]], i) += w * el1.shape(b, f1) * el2.shape(a, projection->xi);
       }
-    }
+    });
   }
   // Body 2's zone mass matrix, then transfer = M22^-1 M21.
   const Index m = static_cast<Index>(nodes2.size());
   Matrix mass = Matrix::Zero(m, m);
-  for (const Index e2 : mesh2.piece_elements[prepared.contact_pieces[1]]) {
+  for (const Index e2 : mesh2.piece_elements[zone_piece2]) {
     const auto& el = mesh2.elements[e2];
-    std::array<Index, geometry::kMaxElementNodes> k{};
-    for (int a = 0; a < el.node_count; ++a) k[a] = std::find(nodes2.begin(), nodes2.end(), el.nodes[a]) - nodes2.begin();
-    for (int g = 0; g < rule.size(); ++g) {
-      const double f = 0.5 * (1.0 + rule.nodes[g]);
-      double w = 0.5 * rule.weights[g] * el.jacobian();
-      if (problem.analysis == AnalysisType::axisymmetric) w *= 2.0 * std::numbers::pi * el.point(f).x();
+    for_each_gauss_point(el, kTransferPoints, problem.analysis, [&](double f, double w) {
       for (int a = 0; a < el.node_count; ++a)
-        for (int b = 0; b < el.node_count; ++b) mass(k[a], k[b]) += w * el.shape(a, f) * el.shape(b, f);
-    }
+        for (int b = 0; b < el.node_count; ++b)
+          mass(zone_index2[el.nodes[a]], zone_index2[el.nodes[b]]) += w * el.shape(a, f) * el.shape(b, f);
+    });
   }
   // A node on the axis has no area (2 pi r = 0): keep the matrix regular there.
   for (Index a = 0; a < m; ++a)

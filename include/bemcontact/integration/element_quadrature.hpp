@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <numbers>
 
 #include "bemcontact/geometry/mesh.hpp"
 #include "bemcontact/quadrature/gauss_legendre.hpp"
@@ -38,7 +39,7 @@ struct ElementCurve {
     }
     const Vec2 q = p - element.center;
     double delta = std::atan2(q.y(), q.x()) - (element.angle_start + 0.5 * element.angle_span);
-    delta = std::remainder(delta, 2.0 * 3.14159265358979323846);
+    delta = std::remainder(delta, 2.0 * std::numbers::pi);
     return 0.5 + delta / element.angle_span;
   }
   double distance_to(const Vec2& p) const {
