@@ -3,6 +3,7 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cmath>
 #include <vector>
@@ -153,7 +154,12 @@ InfluenceMatrices assemble_influence_matrices(const geometry::BoundaryMesh& mesh
         if (errors.failed()) continue;
         errors.run([&] {
           const auto& element = mesh.elements[group[first + k]];
-          const Vec2 element_traction = sigma * element.normal;
+          // The radial expansion's traction at the element's nodes: sigma n_e on a straight
+          // element; on a curved one it follows the normal, through its nodal values (O(h^3),
+          // as the interpolation of the element).
+          std::array<Vec2, geometry::kMaxElementNodes> nodal_traction;
+          for (int a = 0; a < element.node_count; ++a)
+            nodal_traction[a] = sigma * (element.arc ? element.normal_at(element.node_fraction[a]) : element.normal);
           for (Index i = 0; i < n; ++i) {
             int source_node = -1;
             for (int a = 0; a < element.node_count; ++a)
@@ -164,10 +170,7 @@ InfluenceMatrices assemble_influence_matrices(const geometry::BoundaryMesh& mesh
               const Index j = element.nodes[a];
               m.G.block<2, 2>(2 * i, 2 * j) += influence.G[a];
               if (a != source_node) m.H.block<2, 2>(2 * i, 2 * j) += influence.H[a];
-              // On a curved element the expansion's traction follows the normal; through its
-              // nodal values (O(h^3), as the interpolation of the element).
-              traction_term += influence.G[a] * (element.arc ? Vec2(sigma * element.normal_at(element.node_fraction[a]))
-                                                             : element_traction);
+              traction_term += influence.G[a] * nodal_traction[a];
             }
             if (axisymmetric) contributions.block<2, 1>(2 * i, static_cast<Index>(k)) = traction_term;
           }
