@@ -20,7 +20,8 @@ using namespace bemcontact;
 contact::ContactProblem ball(int elements, bool thesis, bool friction) {
   auto file = io::read_contact_file(std::string(BEMCONTACT_EXAMPLES_DIR) + "/contact_hertz_sphere.toml");
   auto& problem = file.problem;
-  for (int b = 0; b < 2; ++b) problem.bodies[b].pieces[problem.contact_piece[b]].elements = elements;
+  const auto& contact = problem.contacts.front();
+  for (const auto* side : {&contact.side1, &contact.side2}) problem.region(*side).body.pieces[side->piece].elements = elements;
   problem.solver.algorithm = thesis ? contact::Algorithm::thesis : contact::Algorithm::newton;
   if (friction) {
     problem.friction = 0.1;

@@ -1,6 +1,8 @@
 #include "bemcontact/contact/condensed.hpp"
 
 #include "bemcontact/core/error.hpp"
+#include "bemcontact/dd/interface.hpp"
+#include "bemcontact/operators/dense_lu.hpp"
 
 namespace bemcontact::contact {
 
@@ -9,118 +11,271 @@ void drop_tangential_coupling(CondensedProblem& problem) {
     for (Index j = 0; j < problem.pairs; ++j) problem.M(2 * i, 2 * j + 1) = 0.0;
 }
 
+namespace {
+
+// Where a region's variable dofs come from.
+enum class BlockKind { side1, side2, platen };
+struct Block {
+  BlockKind kind = BlockKind::side1;
+  std::size_t contact = 0;
+  Index offset = 0;  // first variable dof of the block in the region
+};
+
+struct RegionVariables {
+  std::vector<bem::VariableNode> nodes;
+  std::vector<Block> blocks;
+  Index bond_dofs = 0;
+  std::vector<Index> bond_unknown;  // per bond dof: the body's bond unknown
+};
+
+Index block_offset(const RegionVariables& variables, BlockKind kind, std::size_t contact) {
+  for (const auto& block : variables.blocks)
+    if (block.kind == kind && (kind == BlockKind::platen || block.contact == contact)) return block.offset;
+  return -1;
+}
+
+}  // namespace
+
 ContactModel::ContactModel(const ContactProblem& problem, const bem::ProgressCallback& progress)
     : problem_(problem), prepared_(prepare_contact(problem)) {
-  const auto& pairs = prepared_.pairs;
-  const Index n = static_cast<Index>(pairs.size());
-  if (n == 0) throw GeometryError("contact: the contact zone holds no node pair");
-  const bool has_force = problem.force.has_value();
-  const int force_body = has_force ? problem.force->body : -1;
-  const int component = has_force ? problem.force->component : 0;
+  // The pairs of every contact, one after the other.
+  pair_offsets_.push_back(0);
+  for (const auto& contact : prepared_.contacts) {
+    pairs_.insert(pairs_.end(), contact.pairs.begin(), contact.pairs.end());
+    pair_offsets_.push_back(static_cast<Index>(pairs_.size()));
+  }
+  const Index n = static_cast<Index>(pairs_.size());
+  if (n == 0) throw GeometryError("contact: the contact zones hold no node pair");
+  const Index nq = 2 * n + 1;  // q = (x, delta)
+  const Index delta_column = 2 * n;
+  const auto& regions = prepared_.regions;
+  const std::size_t region_count = regions.size();
 
-  // Body 1's variable nodes are the pairs' nodes; body 2's the nodes of its zone.
-  const auto& zone2 = prepared_.zone_nodes2;
-  const Index m = static_cast<Index>(zone2.size());
-  contact_dofs_ = {2 * n, 2 * m};
-  std::array<Matrix, 2> flexibility;
-  std::array<Vector, 2> fixed_response;
-  for (int b = 0; b < 2; ++b) {
-    std::vector<bem::VariableNode> variable;
-    if (b == 0)
-      for (const auto& pair : pairs) variable.push_back({pair.node1, bem::ConditionKind::traction});
-    else
-      for (const Index node : zone2) variable.push_back({node, bem::ConditionKind::traction});
-    if (b == force_body)
-      for (const Index node : prepared_.loaded_nodes) variable.push_back({node, bem::ConditionKind::displacement});
-    bem::ProgressCallback body_progress;
+  // Frames of the pairs: w = Q [u] (rows n, t), p = R x (columns -n, t).
+  auto Q = [&](Index g) {
+    Mat2 q;
+    q.row(0) = pairs_[g].normal.transpose();
+    q.row(1) = pairs_[g].tangent.transpose();
+    return q;
+  };
+  auto R = [&](Index g) {
+    Mat2 r;
+    r.col(0) = -pairs_[g].normal;
+    r.col(1) = pairs_[g].tangent;
+    return r;
+  };
+
+  // Variable nodes of every region: bond nodes, contact zone nodes, platen nodes.
+  std::vector<RegionVariables> variables(region_count);
+  std::vector<dd::Connectivity> bonds(problem.bodies.size());
+  for (std::size_t b = 0; b < problem.bodies.size(); ++b) {
+    const auto& members = prepared_.body_regions[b];
+    if (members.size() < 2) continue;
+    dd::DecompositionProblem decomposition;
+    decomposition.analysis = problem.analysis;
+    decomposition.mesh = problem.mesh;
+    decomposition.options.method = dd::InterfaceMethod::conforming;
+    std::vector<geometry::BoundaryMesh> meshes;
+    for (std::size_t k = 0; k < members.size(); ++k) {
+      dd::Subdomain sub = problem.bodies[b].regions[k];
+      sub.body = regions[members[k]].definition;
+      decomposition.subdomains.push_back(sub);
+      meshes.push_back(regions[members[k]].mesh);
+    }
+    bonds[b] = dd::build_connectivity(decomposition, meshes);
+    for (std::size_t k = 0; k < members.size(); ++k) {
+      auto& v = variables[members[k]];
+      v.nodes = bonds[b].variable_nodes[k];
+      v.bond_dofs = 2 * static_cast<Index>(v.nodes.size());
+      for (const auto& slot : bonds[b].slots[k])
+        for (int j = 0; j < 2; ++j) v.bond_unknown.push_back(bonds[b].unknown_of(slot) + j);
+    }
+  }
+  for (std::size_t c = 0; c < prepared_.contacts.size(); ++c) {
+    const auto& contact = prepared_.contacts[c];
+    auto& v1 = variables[contact.region1];
+    v1.blocks.push_back({BlockKind::side1, c, 2 * static_cast<Index>(v1.nodes.size())});
+    for (const auto& pair : contact.pairs) v1.nodes.push_back({pair.node1, bem::ConditionKind::traction});
+    if (contact.region2 < 0) continue;
+    auto& v2 = variables[contact.region2];
+    v2.blocks.push_back({BlockKind::side2, c, 2 * static_cast<Index>(v2.nodes.size())});
+    for (const Index node : contact.zone_nodes2) v2.nodes.push_back({node, bem::ConditionKind::traction});
+  }
+  if (prepared_.force_region >= 0) {
+    auto& v = variables[prepared_.force_region];
+    v.blocks.push_back({BlockKind::platen, 0, 2 * static_cast<Index>(v.nodes.size())});
+    for (const Index node : prepared_.loaded_nodes) v.nodes.push_back({node, bem::ConditionKind::displacement});
+  }
+  const int component = problem.force ? problem.force->component : 0;
+
+  // Factor every region; its data from the contact unknowns before the bonds: G_r q.
+  factored_.resize(region_count);
+  std::vector<Matrix> flexibility(region_count), G(region_count);
+  std::vector<Vector> own_response(region_count);
+  for (std::size_t r = 0; r < region_count; ++r) {
+    bem::ProgressCallback region_progress;
     if (progress)
-      body_progress = [&, b](const std::string& phase, double fraction) {
-        progress("body " + prepared_.bodies[b].name + ": " + phase, fraction);
+      region_progress = [&, r](const std::string& phase, double fraction) {
+        progress(regions[r].label + ": " + phase, fraction);
       };
     try {
-      factored_[b] = std::make_unique<bem::FactoredBody>(prepared_.meshes[b], prepared_.bodies[b], problem.analysis,
-                                                         std::move(variable), body_progress);
+      factored_[r] = std::make_unique<bem::FactoredBody>(regions[r].mesh, regions[r].definition, problem.analysis,
+                                                         variables[r].nodes, region_progress);
     } catch (const SolverError& error) {
-      // The hint is for a singular body; a matrix that is not finite has another cause.
+      // The hint is for a singular region; a matrix that is not finite has another cause.
       if (std::string(error.what()).find("is singular") == std::string::npos) throw;
-      throw SolverError(std::string(error.what()) + " In a contact problem each body must be held without the "
-                        "contact zone (which carries tractions only): prescribe displacements on body '" +
-                        prepared_.bodies[b].name + "', or press it with a [contact.load] force (a rigid platen).");
+      throw SolverError(std::string(error.what()) + " In a contact problem each body must be held without its "
+                        "contact zones (which carry tractions only): " + regions[r].label +
+                        " is free to move; prescribe displacements on it, bond it to a held region, or press it "
+                        "with a force load (a rigid platen).");
     }
-    const Index dofs = factored_[b]->variable_dofs();
-    flexibility[b] = factored_[b]->complementary_columns(Matrix::Identity(dofs, dofs), false);
-    fixed_response[b] = factored_[b]->complementary(Vector::Zero(dofs), true);
+    const Index dofs = factored_[r]->variable_dofs();
+    flexibility[r] = factored_[r]->complementary_columns(Matrix::Identity(dofs, dofs), false);
+    own_response[r] = factored_[r]->complementary(Vector::Zero(dofs), true);
+    G[r] = Matrix::Zero(dofs, nq);
+    for (const auto& block : variables[r].blocks) {
+      if (block.kind == BlockKind::platen) {
+        for (Index l = 0; l < static_cast<Index>(prepared_.loaded_nodes.size()); ++l)
+          G[r](block.offset + 2 * l + component, delta_column) = 1.0;
+        continue;
+      }
+      const auto& contact = prepared_.contacts[block.contact];
+      const Index first = pair_offsets_[block.contact];
+      for (Index i = 0; i < static_cast<Index>(contact.pairs.size()); ++i) {
+        const Mat2 Ri = R(first + i);
+        if (block.kind == BlockKind::side1) {
+          G[r].block<2, 2>(block.offset + 2 * i, 2 * (first + i)) = Ri;
+        } else {
+          // Side 2 carries -T p (the consistent transfer of pairing.hpp).
+          for (Index k = 0; k < static_cast<Index>(contact.zone_nodes2.size()); ++k)
+            if (contact.transfer(k, i) != 0.0)
+              G[r].block<2, 2>(block.offset + 2 * k, 2 * (first + i)) -= contact.transfer(k, i) * Ri;
+        }
+      }
+    }
   }
 
-  // Frames: w = Q [u] (rows n, t), p = R x (columns -n, t).
-  Matrix Q = Matrix::Zero(2 * n, 2 * n), R = Matrix::Zero(2 * n, 2 * n);
-  for (Index i = 0; i < n; ++i) {
-    Q.block<1, 2>(2 * i, 2 * i) = pairs[i].normal.transpose();
-    Q.block<1, 2>(2 * i + 1, 2 * i) = pairs[i].tangent.transpose();
-    R.block<2, 1>(2 * i, 2 * i) = -pairs[i].normal;
-    R.block<2, 1>(2 * i, 2 * i + 1) = pairs[i].tangent;
+  // Bonds: equilibrium of the nodal tractions at every bond pair, K U + L q + l0 = 0.
+  data_map_ = G;
+  data_offset_.assign(region_count, Vector());
+  for (std::size_t r = 0; r < region_count; ++r) data_offset_[r] = Vector::Zero(G[r].rows());
+  for (std::size_t b = 0; b < problem.bodies.size(); ++b) {
+    const Index nb = bonds[b].unknowns;
+    if (nb == 0) continue;
+    Matrix K = Matrix::Zero(nb, nb), L = Matrix::Zero(nb, nq);
+    Vector l0 = Vector::Zero(nb);
+    for (const int r : prepared_.body_regions[b]) {
+      const auto& v = variables[r];
+      const Matrix bond_rows = flexibility[r].topRows(v.bond_dofs);
+      for (Index i = 0; i < v.bond_dofs; ++i) {
+        for (Index j = 0; j < v.bond_dofs; ++j) K(v.bond_unknown[i], v.bond_unknown[j]) += bond_rows(i, j);
+        L.row(v.bond_unknown[i]) += bond_rows.row(i) * G[r];
+        l0[v.bond_unknown[i]] += own_response[r][i];
+      }
+    }
+    std::unique_ptr<operators::DenseLU> lu;
+    try {
+      lu = std::make_unique<operators::DenseLU>(K, "the bond equations of body '" + problem.bodies[b].name + "'");
+    } catch (const SolverError& error) {
+      throw SolverError(std::string(error.what()) + ": body '" + problem.bodies[b].name +
+                        "' is free to move as a whole; prescribe displacements on one of its regions or press it "
+                        "with a force load.");
+    }
+    Matrix Uq = -L;
+    lu->solve_in_place(Uq);
+    const Vector U0 = -lu->solve(l0);
+    for (const int r : prepared_.body_regions[b]) {
+      const auto& v = variables[r];
+      for (Index i = 0; i < v.bond_dofs; ++i) {
+        data_map_[r].row(i) += Uq.row(v.bond_unknown[i]);
+        data_offset_[r][i] = U0[v.bond_unknown[i]];
+      }
+    }
   }
-  // Body 2 at the pairs: u2(pair i) = sum_a N_a(xi_i) u2(node a) = P u2. Its nodal tractions
-  // from the pairs': t2 = -T p (the consistent transfer of pairing.hpp).
-  interpolation_ = Matrix::Zero(2 * n, 2 * m);
-  transfer_ = Matrix::Zero(2 * m, 2 * n);
-  for (Index i = 0; i < n; ++i)
-    for (int a = 0; a < pairs[i].count2; ++a)
-      interpolation_.block<2, 2>(2 * i, 2 * pairs[i].zone2[a]) += pairs[i].shape2[a] * Mat2::Identity();
-  for (Index k = 0; k < m; ++k)
-    for (Index i = 0; i < n; ++i)
-      if (prepared_.transfer(k, i) != 0.0) transfer_.block<2, 2>(2 * k, 2 * i) = prepared_.transfer(k, i) * Mat2::Identity();
-  // B' = 1S^-1 + P 2S^-1 T (Pb V.5): body 2 carries -T p, and [u] = 1u - P 2u.
-  const Matrix Bprime = flexibility[0].topLeftCorner(2 * n, 2 * n) +
-                        interpolation_ * flexibility[1].topLeftCorner(2 * m, 2 * m) * transfer_;
-  auto& c = condensed_;
-  c.pairs = n;
-  c.M = Q * Bprime * R;
-  if (!problem.tangential_coupling) drop_tangential_coupling(c);
-  c.a = Q * (fixed_response[0].head(2 * n) - interpolation_ * fixed_response[1].head(2 * m));
-  c.gap.resize(n);
-  c.on_axis.resize(n);
-  for (Index i = 0; i < n; ++i) {
-    c.gap[i] = pairs[i].gap;
-    c.on_axis[i] = pairs[i].on_axis;
+
+  // Complementary fields as affine maps of q: C_r (D_r q + d0_r) + c0_r.
+  std::vector<Matrix> response(region_count);
+  std::vector<Vector> response0(region_count);
+  for (std::size_t r = 0; r < region_count; ++r) {
+    response[r] = flexibility[r] * data_map_[r];
+    response0[r] = flexibility[r] * data_offset_[r] + own_response[r];
   }
-  c.has_force = has_force;
-  c.b = Vector::Zero(2 * n);
-  c.f = Vector::Zero(2 * n);
-  if (has_force) {
-    const Matrix& C = flexibility[force_body];
-    const Index offset = contact_dofs_[force_body];
-    const Index loaded = static_cast<Index>(prepared_.loaded_nodes.size());
-    Vector unit_delta = Vector::Zero(C.cols());
-    for (Index l = 0; l < loaded; ++l) unit_delta[offset + 2 * l + component] = 1.0;
-    const Vector response = C * unit_delta;
-    Eigen::RowVectorXd force_row = Eigen::RowVectorXd::Zero(C.cols());
-    for (Index l = 0; l < loaded; ++l) force_row[offset + 2 * l + component] = prepared_.loaded_weights[l];
-    // Contact tractions of the force body per unit x: R (body 1) or -T R (body 2).
-    const Matrix contact_tractions = force_body == 0 ? R : Matrix(-transfer_ * R);
-    const Matrix pair_jump = force_body == 0 ? Matrix::Identity(2 * n, 2 * n) : Matrix(-interpolation_);
-    c.b = Q * (pair_jump * response.head(offset));
-    c.f = contact_tractions.transpose() * (force_row * C.leftCols(offset)).transpose();
-    c.f_delta = force_row.dot(response);
-    c.F0 = force_row.dot(fixed_response[force_body]);
-    c.force = problem.force->force;
+
+  // Jumps w = Q (u1 - u2) per pair.
+  auto& cp = condensed_;
+  cp.pairs = n;
+  Matrix W = Matrix::Zero(2 * n, nq);
+  Vector w0 = Vector::Zero(2 * n);
+  const bool rigid_force = problem.force && problem.bodies[problem.force->body].rigid.has_value();
+  for (std::size_t c = 0; c < prepared_.contacts.size(); ++c) {
+    const auto& contact = prepared_.contacts[c];
+    const Index first = pair_offsets_[c];
+    const Index o1 = block_offset(variables[contact.region1], BlockKind::side1, c);
+    const Index o2 = contact.region2 >= 0 ? block_offset(variables[contact.region2], BlockKind::side2, c) : -1;
+    for (Index i = 0; i < static_cast<Index>(contact.pairs.size()); ++i) {
+      const auto& pair = contact.pairs[i];
+      Matrix u = response[contact.region1].middleRows(o1 + 2 * i, 2);
+      Vec2 u0 = response0[contact.region1].segment<2>(o1 + 2 * i);
+      if (contact.region2 >= 0) {
+        for (int a = 0; a < pair.count2; ++a) {
+          u -= pair.shape2[a] * response[contact.region2].middleRows(o2 + 2 * pair.zone2[a], 2);
+          u0 -= pair.shape2[a] * response0[contact.region2].segment<2>(o2 + 2 * pair.zone2[a]);
+        }
+      } else if (rigid_force && problem.force->body == contact.rigid_body) {
+        u(component, delta_column) -= 1.0;  // the rigid body translates by delta
+      } else {
+        u0 -= problem.bodies[contact.rigid_body].rigid->displacement.value_or(Vec2::Zero());
+      }
+      const Mat2 Qg = Q(first + i);
+      W.middleRows(2 * (first + i), 2) = Qg * u;
+      w0.segment<2>(2 * (first + i)) = Qg * u0;
+    }
   }
+  cp.M = W.leftCols(2 * n);
+  if (!problem.tangential_coupling) drop_tangential_coupling(cp);
+  cp.a = w0;
+  cp.gap.resize(n);
+  cp.on_axis.resize(n);
+  for (Index g = 0; g < n; ++g) {
+    cp.gap[g] = pairs_[g].gap;
+    cp.on_axis[g] = pairs_[g].on_axis;
+  }
+  cp.has_force = problem.force.has_value();
+  cp.b = cp.has_force ? Vector(W.col(delta_column)) : Vector::Zero(2 * n);
+  cp.f = Vector::Zero(2 * n);
+  if (!cp.has_force) return;
+  cp.force = problem.force->force;
+  if (rigid_force) {
+    // The force on the rigid body is the integral of the traction its contacts apply to side 1.
+    for (std::size_t c = 0; c < prepared_.contacts.size(); ++c) {
+      if (prepared_.contacts[c].rigid_body != problem.force->body) continue;
+      for (Index g = pair_offsets_[c]; g < pair_offsets_[c + 1]; ++g) {
+        const Mat2 Rg = R(g);
+        cp.f.segment<2>(2 * g) = pairs_[g].weight * Rg.row(component).transpose();
+      }
+    }
+    return;
+  }
+  const int rf = prepared_.force_region;
+  const Index of = block_offset(variables[rf], BlockKind::platen, 0);
+  Eigen::RowVectorXd force_row = Eigen::RowVectorXd::Zero(nq);
+  for (Index l = 0; l < static_cast<Index>(prepared_.loaded_nodes.size()); ++l) {
+    force_row += prepared_.loaded_weights[l] * response[rf].row(of + 2 * l + component);
+    cp.F0 += prepared_.loaded_weights[l] * response0[rf][of + 2 * l + component];
+  }
+  cp.f = force_row.head(2 * n).transpose();
+  cp.f_delta = force_row[delta_column];
 }
 
 Vec2 ContactModel::traction(Index pair, const Vector& x) const {
-  const auto& p = prepared_.pairs[pair];
+  const auto& p = pairs_[pair];
   return -x[2 * pair] * p.normal + x[2 * pair + 1] * p.tangent;
 }
 
-Vector ContactModel::variable_data(int b, const Vector& x, double delta) const {
-  const Index n = condensed_.pairs;
-  Vector p(2 * n);
-  for (Index i = 0; i < n; ++i) p.segment<2>(2 * i) = traction(i, x);
-  Vector data = Vector::Zero(factored_[b]->variable_dofs());
-  data.head(contact_dofs_[b]) = b == 0 ? p : Vector(-transfer_ * p);
-  if (problem_.force && problem_.force->body == b)
-    for (Index l = contact_dofs_[b]; l < data.size(); l += 2) data[l + problem_.force->component] = delta;
-  return data;
+Vector ContactModel::variable_data(int r, const Vector& x, double delta) const {
+  Vector q(x.size() + 1);
+  q << x, delta;
+  return data_map_[r] * q + data_offset_[r];
 }
 
 }  // namespace bemcontact::contact

@@ -155,11 +155,44 @@ std::string format_residual(double value) {
 
 }  // namespace
 
+namespace {
+
+void add_iterations(ContactSummary& totals, const StepOutput& step) {
+  totals.newton_iterations += step.newton_iterations;
+  totals.kalker_iterations += step.kalker_iterations;
+  totals.threshold_iterations += step.threshold_iterations;
+  totals.gmres_cycles += step.gmres_cycles;
+}
+
+// Records one step in a result of pairs [first, last).
+void record_step(ContactInterfaceResult& out, const std::vector<ContactPair>& pairs, const StepOutput& step,
+                 const ContactProblem& problem, double load, Index first, Index last) {
+  const std::vector<ContactPair> group(pairs.begin() + first, pairs.begin() + last);
+  StepOutput part = step;
+  part.x = step.x.segment(2 * first, 2 * (last - first));
+  part.w = step.w.segment(2 * first, 2 * (last - first));
+  out.pairs = pair_results(group, part, problem);
+  out.steps.push_back(summarise(group, out.pairs, part, load));
+  if (problem.record_steps) out.step_pairs.push_back(out.pairs);
+}
+
+void finish(ContactInterfaceResult& out, const ContactSummary& totals) {
+  out.summary = out.steps.back();
+  out.summary.newton_iterations = totals.newton_iterations;
+  out.summary.kalker_iterations = totals.kalker_iterations;
+  out.summary.threshold_iterations = totals.threshold_iterations;
+  out.summary.gmres_cycles = totals.gmres_cycles;
+}
+
+}  // namespace
+
 LoadHistory solve_load_history(const CondensedProblem& condensed, const std::vector<ContactPair>& pairs,
-                               const ContactProblem& problem, const bem::ProgressCallback& progress) {
+                               const ContactProblem& problem, const bem::ProgressCallback& progress,
+                               const std::vector<Index>& groups) {
   check_history_options(problem);
   const Index n = condensed.pairs;
   LoadHistory history;
+  if (groups.size() > 1) history.contacts.resize(groups.size() - 1);
   StepInput input;
   input.problem = &condensed;
   input.kind = problem.kind;
@@ -176,23 +209,17 @@ LoadHistory solve_load_history(const CondensedProblem& condensed, const std::vec
       throw SolverError("contact (" + std::string(to_string(problem.solver.algorithm)) + " algorithm): load step " +
                         std::to_string(k) + " of " + std::to_string(problem.increments) + ": " + step.failure +
                         "; complementarity residual " + format_residual(step.residual) + " (relative)");
-    history.pairs = pair_results(pairs, step, problem);
-    history.steps.push_back(summarise(pairs, history.pairs, step, input.load));
-    if (problem.record_steps) history.step_pairs.push_back(history.pairs);
-    totals.newton_iterations += step.newton_iterations;
-    totals.kalker_iterations += step.kalker_iterations;
-    totals.threshold_iterations += step.threshold_iterations;
-    totals.gmres_cycles += step.gmres_cycles;
+    record_step(history, pairs, step, problem, input.load, 0, n);
+    for (std::size_t c = 0; c < history.contacts.size(); ++c)
+      record_step(history.contacts[c], pairs, step, problem, input.load, groups[c], groups[c + 1]);
+    add_iterations(totals, step);
     for (Index i = 0; i < n; ++i) input.previous_tangential_jump[i] = step.w[2 * i + 1];
     input.x_start = step.x;
     input.delta_start = step.delta;
     if (progress) progress("contact load steps", static_cast<double>(k) / problem.increments);
   }
-  history.summary = history.steps.back();  // history.pairs: the last step's
-  history.summary.newton_iterations = totals.newton_iterations;
-  history.summary.kalker_iterations = totals.kalker_iterations;
-  history.summary.threshold_iterations = totals.threshold_iterations;
-  history.summary.gmres_cycles = totals.gmres_cycles;
+  finish(history, totals);
+  for (auto& contact : history.contacts) finish(contact, totals);
   history.x = step.x;
   history.delta = step.delta;
   return history;
@@ -207,41 +234,49 @@ ContactResult solve_contact(const ContactProblem& problem, const bem::ProgressCa
   result.unknowns = 2 * model.condensed().pairs + (model.condensed().has_force ? 1 : 0);
 
   start = Clock::now();
-  auto history = solve_load_history(model.condensed(), model.prepared().pairs, problem, progress);
+  std::vector<Index> groups;
+  for (std::size_t c = 0; c <= problem.contacts.size(); ++c) groups.push_back(model.pair_offset(c));
+  auto history = solve_load_history(model.condensed(), model.pairs(), problem, progress, groups);
   result.timings.add("contact iterations", seconds_since(start));
-  result.pairs = std::move(history.pairs);
-  result.summary = history.summary;
-  result.steps = std::move(history.steps);
-  result.step_pairs = std::move(history.step_pairs);
+  result.contacts = std::move(history.contacts);
+  for (std::size_t c = 0; c < result.contacts.size(); ++c) result.contacts[c].name = problem.contacts[c].name;
+  static_cast<ContactInterfaceResult&>(result) = result.contacts.front();
 
   start = Clock::now();
   result.warnings = model.prepared().warnings;
-  for (int b = 0; b < 2; ++b) {
-    const auto& body = model.prepared().bodies[b];
-    result.body_names[b] = body.name;
-    result.meshes[b] = model.prepared().meshes[b];
-    result.boundary[b] = model.body(b).solve(model.variable_data(b, history.x, history.delta), true);
-    if (result.boundary[b].stress.empty())
-      result.boundary[b].stress = bem::boundary_stresses(result.meshes[b], problem.analysis, body.material, result.boundary[b]);
+  const auto& regions = model.prepared().regions;
+  for (std::size_t r = 0; r < regions.size(); ++r) {
+    const auto& region = regions[r];
+    const auto& body = problem.bodies[region.body];
+    const auto& material = region.definition.material;
+    result.body_names.push_back(body.regions.size() == 1 ? body.name : region.definition.name);
+    result.region_labels.push_back(region.label);
+    result.meshes.push_back(region.mesh);
+    auto boundary = model.region(static_cast<int>(r)).solve(model.variable_data(static_cast<int>(r), history.x, history.delta), true);
+    if (boundary.stress.empty())
+      boundary.stress = bem::boundary_stresses(region.mesh, problem.analysis, material, boundary);
     // Conditions as the user gave them (the platen's are the solver's own).
-    result.boundary[b].resultants =
-        bem::boundary_resultants(result.meshes[b], result.boundary[b], problem.bodies[b], problem.analysis);
+    boundary.resultants =
+        bem::boundary_resultants(region.mesh, boundary, body.regions[region.region].body, problem.analysis);
+    result.boundary.push_back(std::move(boundary));
   }
   result.timings.add("boundary stresses", seconds_since(start));
   start = Clock::now();
   bool any_interior = false;
-  for (int b = 0; b < 2; ++b) {
-    if (problem.interior_points[b].empty()) continue;
+  result.interior.resize(regions.size());
+  for (std::size_t r = 0; r < regions.size(); ++r) {
+    const auto& region = regions[r];
+    const auto& points = problem.bodies[region.body].regions[region.region].interior_points;
+    if (points.empty()) continue;
     any_interior = true;
-    const auto& body = model.prepared().bodies[b];
-    const bem::ElementIntegrator integrator(problem.analysis, body.material);
+    const bem::ElementIntegrator integrator(problem.analysis, region.definition.material);
     std::vector<Vec2> inside;
-    for (const auto& point : problem.interior_points[b])
-      if (bem::point_inside(result.meshes[b], point, 1e-9 * result.meshes[b].scale)) inside.push_back(point);
-      else result.interior[b].dropped_points.push_back(point);
-    auto dropped = result.interior[b].dropped_points;
-    result.interior[b] = bem::interior_values(result.meshes[b], integrator, result.boundary[b], inside, progress);
-    result.interior[b].dropped_points = dropped;
+    std::vector<Vec2> dropped;
+    for (const auto& point : points)
+      if (bem::point_inside(result.meshes[r], point.position, 1e-9 * result.meshes[r].scale)) inside.push_back(point.position);
+      else dropped.push_back(point.position);
+    result.interior[r] = bem::interior_values(result.meshes[r], integrator, result.boundary[r], inside, progress);
+    result.interior[r].dropped_points = dropped;
   }
   if (any_interior) result.timings.add("interior points", seconds_since(start));
   return result;

@@ -9,6 +9,8 @@
 
 #include "bemcontact/bem/analysis.hpp"
 #include "bemcontact/bem/assembly.hpp"
+#include "bemcontact/core/error.hpp"
+#include "bemcontact/dd/interface.hpp"
 #include "bemcontact/integration/element_quadrature.hpp"
 #include "bemcontact/quadrature/gauss_legendre.hpp"
 
@@ -20,10 +22,6 @@ std::string point_text(const Vec2& p) {
   out.precision(6);
   out << "(" << p.x() << ", " << p.y() << ")";
   return out.str();
-}
-
-std::string boundary_text(const bem::BodyDefinition& body, const geometry::BoundaryPiece& piece) {
-  return "boundary '" + piece.name + "' of body '" + body.name + "'";
 }
 
 // Fraction along the piece of a point on (or near) it.
@@ -127,12 +125,90 @@ std::optional<Projection> project_on_zone(const geometry::BoundaryPiece& piece2,
   return p;
 }
 
-geometry::BoundaryMesh mesh_of(const ContactProblem& problem, const bem::BodyDefinition& body) {
-  bem::ProblemDefinition definition;
-  definition.analysis = problem.analysis;
-  definition.mesh = problem.mesh;
-  definition.body = body;
-  return bem::mesh_body(definition);
+// The point of a rigid contour that y (outward normal n1) faces: the nearest along the
+// pair normal of the pieces it meets with an opposite normal.
+std::optional<geometry::PiecePoint> project_on_contour(const std::vector<geometry::BoundaryPiece>& contour, const Vec2& y,
+                                                       const Vec2& n1, PairNormal choice) {
+  constexpr double end_tolerance = 1e-9;
+  std::optional<geometry::PiecePoint> best;
+  double best_distance = std::numeric_limits<double>::infinity();
+  for (const auto& piece : contour) {
+    double f = 0.0;
+    if (!facing_point(piece, y, n1, f, choice) || f < -end_tolerance || f > 1.0 + end_tolerance) continue;
+    const auto facing = geometry::point_on_piece(piece, std::clamp(f, 0.0, 1.0));
+    if (n1.dot(facing.outward_normal) > -0.5) continue;
+    const double distance = (facing.position - y).norm();
+    if (distance < best_distance) best_distance = distance, best = facing;
+  }
+  return best;
+}
+
+std::string region_label(const ContactProblem& problem, int body, int region) {
+  const auto& b = problem.bodies[body];
+  if (b.regions.size() == 1) return "body '" + b.name + "'";
+  return "region '" + b.regions[region].body.name + "' of body '" + b.name + "'";
+}
+
+// The regions of every elastic body, their contact zones and platen marked, meshed as the
+// body's decomposition (bond pieces shared node for node).
+void mesh_regions(const ContactProblem& problem, PreparedContact& prepared) {
+  for (std::size_t b = 0; b < problem.bodies.size(); ++b) {
+    const auto& body = problem.bodies[b];
+    prepared.body_regions.emplace_back();
+    if (body.rigid) continue;
+    dd::DecompositionProblem decomposition;
+    decomposition.analysis = problem.analysis;
+    decomposition.mesh = problem.mesh;
+    decomposition.subdomains = body.regions;
+    for (const auto& contact : problem.contacts)
+      for (const BoundaryRef* side : {&contact.side1, &contact.side2}) {
+        if (side->body != static_cast<int>(b) || side->piece < 0) continue;
+        // The zone's tractions jump at its ends: split the nodes there.
+        auto& zone = decomposition.subdomains[side->region].body;
+        zone.conditions[side->piece].signature = "contact zone";
+        zone.pieces[side->piece].condition_signature = "contact zone";
+      }
+    if (problem.force && problem.force->body == static_cast<int>(b)) {
+      auto& loaded = decomposition.subdomains[problem.force->region].body;
+      auto& condition = loaded.conditions[problem.force->piece];
+      condition = bem::BoundaryCondition{};
+      condition.kind = {bem::ConditionKind::displacement, bem::ConditionKind::displacement};
+      condition.signature = "rigid platen";
+      loaded.pieces[problem.force->piece].condition_signature = condition.signature;
+    }
+    std::vector<geometry::BoundaryMesh> meshes;
+    try {
+      meshes = dd::mesh_subdomains(decomposition);
+    } catch (const GeometryError& error) {
+      throw GeometryError("body '" + body.name + "': " + error.what());
+    }
+    for (std::size_t r = 0; r < meshes.size(); ++r) {
+      prepared.body_regions.back().push_back(static_cast<int>(prepared.regions.size()));
+      PreparedRegion region;
+      region.body = static_cast<int>(b);
+      region.region = static_cast<int>(r);
+      region.label = region_label(problem, region.body, region.region);
+      region.definition = dd::subdomain_problem(decomposition, r).body;
+      region.mesh = std::move(meshes[r]);
+      prepared.regions.push_back(std::move(region));
+    }
+  }
+}
+
+void check_reference(const ContactProblem& problem, const BoundaryRef& ref, bool rigid_allowed, const std::string& what) {
+  if (ref.body < 0 || ref.body >= static_cast<int>(problem.bodies.size()))
+    throw InputError(SourceLocation{problem.source_file, 0, ""}, what + ": no such body");
+  const auto& body = problem.bodies[ref.body];
+  if (body.rigid) {
+    if (!rigid_allowed)
+      throw InputError(SourceLocation{problem.source_file, 0, ""},
+                       what + ": body '" + body.name + "' is rigid; a rigid body can only be the second side");
+    return;
+  }
+  if (ref.region < 0 || ref.region >= static_cast<int>(body.regions.size()) || ref.piece < 0 ||
+      ref.piece >= static_cast<int>(body.regions[ref.region].body.pieces.size()))
+    throw InputError(SourceLocation{problem.source_file, 0, ""},
+                     what + ": no such boundary in body '" + body.name + "'");
 }
 
 }  // namespace
@@ -153,102 +229,29 @@ std::vector<double> node_weights(const geometry::BoundaryMesh& mesh, const std::
   return weights;
 }
 
-PreparedContact prepare_contact(const ContactProblem& problem) {
-  PreparedContact prepared;
-  prepared.bodies = problem.bodies;
-  for (int b = 0; b < 2; ++b) {
-    const int k = problem.contact_piece[b];
-    if (k < 0 || k >= static_cast<int>(problem.bodies[b].pieces.size()))
-      throw Error("contact: no contact boundary given for body '" + problem.bodies[b].name + "'");
-    prepared.contact_pieces[b] = k;
-    // The zone's tractions jump at its ends: split the nodes there.
-    auto& zone = prepared.bodies[b];
-    zone.conditions[k].signature = "contact zone";
-    zone.pieces[k].condition_signature = "contact zone";
-  }
-  const auto& piece1 = problem.bodies[0].pieces[problem.contact_piece[0]];
-  const auto& piece2 = problem.bodies[1].pieces[problem.contact_piece[1]];
-  const std::string zone1 = boundary_text(problem.bodies[0], piece1);
-  const std::string zone2 = boundary_text(problem.bodies[1], piece2);
+namespace {
 
-  prepared.force_piece = problem.force ? problem.force->piece : -1;
-  if (problem.force) {
-    auto& loaded = prepared.bodies[problem.force->body];
-    auto& condition = loaded.conditions[prepared.force_piece];
-    condition = bem::BoundaryCondition{};
-    condition.kind = {bem::ConditionKind::displacement, bem::ConditionKind::displacement};
-    condition.signature = "rigid platen";
-    loaded.pieces[prepared.force_piece].condition_signature = condition.signature;
-  }
-  for (int b = 0; b < 2; ++b) prepared.meshes[b] = mesh_of(problem, prepared.bodies[b]);
+std::string zone_text(const PreparedRegion& region, int piece) {
+  return "boundary '" + region.definition.pieces[piece].name + "' of " + region.label;
+}
 
-  // Pair each node of body 1's zone with the point it faces on body 2's zone.
-  const auto& mesh1 = prepared.meshes[0];
-  const auto& mesh2 = prepared.meshes[1];
-  const std::vector<Index>& nodes1 = mesh1.piece_nodes[prepared.contact_pieces[0]];
-  prepared.zone_nodes2 = mesh2.piece_nodes[prepared.contact_pieces[1]];
-  const auto& nodes2 = prepared.zone_nodes2;
-  const int zone_piece2 = prepared.contact_pieces[1];
-  std::vector<Index> zone_index2(mesh2.node_count(), -1);  // mesh node -> index in zone_nodes2
-  for (std::size_t k = 0; k < nodes2.size(); ++k) zone_index2[nodes2[k]] = static_cast<Index>(k);
-  prepared.zone_weights2 = node_weights(mesh2, {prepared.contact_pieces[1]}, nodes2, problem.analysis);
-  const auto weights = node_weights(mesh1, {prepared.contact_pieces[0]}, nodes1, problem.analysis);
-  const double scale = std::max(mesh1.scale, mesh2.scale);
-  for (std::size_t i = 0; i < nodes1.size(); ++i) {
-    const auto& node1 = mesh1.nodes[nodes1[i]];
-    // A node on an arc's chord (a split-corner node of a linear element) stands for the arc
-    // point at the same parameter: the gap is taken from there, so that two concentric
-    // surfaces have the same gap everywhere (the chord's sag would open a shrink fit).
-    // (The arc point whose outward normal is the node's.)
-    const Vec2 x1 = piece1.shape == geometry::PieceShape::arc
-                        ? Vec2(piece1.center + (piece1.counterclockwise ? 1.0 : -1.0) * geometry::arc_radius(piece1) * node1.normal)
-                        : node1.position;
-    const auto projection = project_on_zone(piece2, mesh2, zone_piece2, x1, node1.normal, problem.pair_normal);
-    if (!projection) {
-      ++prepared.unpaired_nodes1;
-      continue;
-    }
-    const auto& facing = projection->facing;
-    const auto& el = mesh2.elements[projection->element];
-    ContactPair pair;
-    pair.node1 = nodes1[i];
-    pair.count2 = el.node_count;
-    for (int a = 0; a < el.node_count; ++a) {
-      pair.zone2[a] = zone_index2[el.nodes[a]];
-      pair.shape2[a] = el.shape(a, projection->xi);
-    }
-    pair.position1 = x1;
-    pair.position2 = facing.position;
-    pair.normal = problem.pair_normal == PairNormal::common ? Vec2((node1.normal - facing.outward_normal).normalized())  // (V.2)
-                  : problem.pair_normal == PairNormal::body1 ? node1.normal
-                                                             : Vec2(-facing.outward_normal);
-    pair.tangent = Vec2(-pair.normal.y(), pair.normal.x());
-    pair.gap = (facing.position - x1).dot(pair.normal);  // (V.3)
-    pair.weight = weights[i];
-    pair.on_axis = problem.analysis == AnalysisType::axisymmetric && bem::node_on_axis(mesh1, pair.node1);
-    if (pair.gap < -1e-7 * scale)
-      throw GeometryError("contact: the bodies overlap at " + point_text(node1.position) + " on " + zone1 + ": " +
-                          zone2 + " lies " + std::to_string(-pair.gap) + " inside at " +
-                          point_text(facing.position) +
-                          "; draw the bodies without overlap (for an interference fit, at their common nominal "
-                          "surface with [contact] interference = the overlap)");
-    pair.gap = std::max(pair.gap, 0.0) - problem.interference;
-    prepared.pairs.push_back(pair);
-  }
-  if (prepared.pairs.empty())
-    throw GeometryError("contact: no node of " + zone1 + " faces " + zone2 +
-                        " along the pair normal: the contact boundaries do not face each other");
-
-  // Force transfer: Gauss points of body 1's zone elements, each projected like a node.
+// Body 2's nodal forces from the pairs' tractions: the L2 projection (transfer, pairing.hpp).
+void build_transfer(const PreparedRegion& side1, const PreparedRegion& side2, const ContactInterface& contact,
+                    AnalysisType type, const std::vector<Index>& zone_index2, PreparedInterface& out,
+                    std::vector<std::string>& warnings) {
+  const auto& mesh1 = side1.mesh;
+  const auto& mesh2 = side2.mesh;
+  const auto& piece2 = side2.definition.pieces[out.piece2];
   std::vector<Index> pair_of_node(mesh1.node_count(), -1);
-  for (std::size_t i = 0; i < prepared.pairs.size(); ++i) pair_of_node[prepared.pairs[i].node1] = static_cast<Index>(i);
-  Matrix coupling = Matrix::Zero(static_cast<Index>(nodes2.size()), static_cast<Index>(prepared.pairs.size()));
+  for (std::size_t i = 0; i < out.pairs.size(); ++i) pair_of_node[out.pairs[i].node1] = static_cast<Index>(i);
+  const Index m = static_cast<Index>(out.zone_nodes2.size());
+  Matrix coupling = Matrix::Zero(m, static_cast<Index>(out.pairs.size()));
   constexpr int kTransferPoints = 6;
-  for (const Index e1 : mesh1.piece_elements[prepared.contact_pieces[0]]) {
+  for (const Index e1 : mesh1.piece_elements[out.piece1]) {
     const auto& el1 = mesh1.elements[e1];
-    for_each_gauss_point(el1, kTransferPoints, problem.analysis, [&](double f1, double w) {
+    for_each_gauss_point(el1, kTransferPoints, type, [&](double f1, double w) {
       const auto projection =
-          project_on_zone(piece2, mesh2, zone_piece2, el1.point(f1), el1.normal_at(f1), problem.pair_normal);
+          project_on_zone(piece2, mesh2, out.piece2, el1.point(f1), el1.normal_at(f1), contact.pair_normal);
       if (!projection) return;
       const auto& el2 = mesh2.elements[projection->element];
       for (int b = 0; b < el1.node_count; ++b) {
@@ -260,11 +263,10 @@ PreparedContact prepare_contact(const ContactProblem& problem) {
     });
   }
   // Body 2's zone mass matrix, then transfer = M22^-1 M21.
-  const Index m = static_cast<Index>(nodes2.size());
   Matrix mass = Matrix::Zero(m, m);
-  for (const Index e2 : mesh2.piece_elements[zone_piece2]) {
+  for (const Index e2 : mesh2.piece_elements[out.piece2]) {
     const auto& el = mesh2.elements[e2];
-    for_each_gauss_point(el, kTransferPoints, problem.analysis, [&](double f, double w) {
+    for_each_gauss_point(el, kTransferPoints, type, [&](double f, double w) {
       for (int a = 0; a < el.node_count; ++a)
         for (int b = 0; b < el.node_count; ++b)
           mass(zone_index2[el.nodes[a]], zone_index2[el.nodes[b]]) += w * el.shape(a, f) * el.shape(b, f);
@@ -273,21 +275,142 @@ PreparedContact prepare_contact(const ContactProblem& problem) {
   // A node on the axis has no area (2 pi r = 0): keep the matrix regular there.
   for (Index a = 0; a < m; ++a)
     if (mass(a, a) <= 1e-14 * mass.diagonal().maxCoeff()) mass(a, a) = 1.0;
-  prepared.transfer = mass.ldlt().solve(coupling);
+  out.transfer = mass.ldlt().solve(coupling);
 
   Index carrying = 0;  // body 2's zone nodes that receive some force
   for (Index k = 0; k < coupling.rows(); ++k) carrying += coupling.row(k).cwiseAbs().sum() > 0.0;
-  if (static_cast<double>(prepared.pairs.size()) > 1.1 * static_cast<double>(carrying))
-    prepared.warnings.push_back("contact: " + zone1 + " has " + std::to_string(prepared.pairs.size()) +
-                                " nodes facing only " + std::to_string(carrying) + " nodes of " + zone2 +
-                                ": with the finer mesh on body 1's side the contact pressures may oscillate; give " +
-                                "body 1 the coarser contact zone (swap the bodies) or refine body 2's");
-  if (problem.force) {
-    const auto& mesh = prepared.meshes[problem.force->body];
+  if (static_cast<double>(out.pairs.size()) > 1.1 * static_cast<double>(carrying))
+    warnings.push_back("contact '" + contact.name + "': " + zone_text(side1, out.piece1) + " has " +
+                       std::to_string(out.pairs.size()) + " nodes facing only " + std::to_string(carrying) +
+                       " nodes of " + zone_text(side2, out.piece2) +
+                       ": with the finer mesh on body 1's side the contact pressures may oscillate; give " +
+                       "body 1 the coarser contact zone (swap the bodies) or refine body 2's");
+}
+
+PreparedInterface pair_interface(const ContactProblem& problem, const ContactInterface& contact,
+                                 const PreparedContact& prepared, std::vector<std::string>& warnings) {
+  PreparedInterface out;
+  out.region1 = prepared.body_regions[contact.side1.body][contact.side1.region];
+  out.piece1 = contact.side1.piece;
+  const auto& side1 = prepared.regions[out.region1];
+  const bool rigid = problem.bodies[contact.side2.body].rigid.has_value();
+  const PreparedRegion* side2 = nullptr;
+  std::string zone2;
+  std::vector<Index> zone_index2;
+  if (rigid) {
+    out.rigid_body = contact.side2.body;
+    zone2 = "rigid body '" + problem.bodies[out.rigid_body].name + "'";
+  } else {
+    out.region2 = prepared.body_regions[contact.side2.body][contact.side2.region];
+    out.piece2 = contact.side2.piece;
+    side2 = &prepared.regions[out.region2];
+    zone2 = zone_text(*side2, out.piece2);
+    out.zone_nodes2 = side2->mesh.piece_nodes[out.piece2];
+    zone_index2.assign(side2->mesh.node_count(), -1);  // mesh node -> index in zone_nodes2
+    for (std::size_t k = 0; k < out.zone_nodes2.size(); ++k) zone_index2[out.zone_nodes2[k]] = static_cast<Index>(k);
+    out.zone_weights2 = node_weights(side2->mesh, {out.piece2}, out.zone_nodes2, problem.analysis);
+  }
+  const std::string zone1 = zone_text(side1, out.piece1);
+  const auto& mesh1 = side1.mesh;
+  const auto& piece1 = side1.definition.pieces[out.piece1];
+  const std::vector<Index>& nodes1 = mesh1.piece_nodes[out.piece1];
+  const auto weights = node_weights(mesh1, {out.piece1}, nodes1, problem.analysis);
+  const double scale = std::max(mesh1.scale, side2 ? side2->mesh.scale : 0.0);
+  for (std::size_t i = 0; i < nodes1.size(); ++i) {
+    const auto& node1 = mesh1.nodes[nodes1[i]];
+    // A node on an arc's chord (a split-corner node of a linear element) stands for the arc
+    // point at the same parameter: the gap is taken from there, so that two concentric
+    // surfaces have the same gap everywhere (the chord's sag would open a shrink fit).
+    // (The arc point whose outward normal is the node's.)
+    const Vec2 x1 = piece1.shape == geometry::PieceShape::arc
+                        ? Vec2(piece1.center + (piece1.counterclockwise ? 1.0 : -1.0) * geometry::arc_radius(piece1) * node1.normal)
+                        : node1.position;
+    ContactPair pair;
+    geometry::PiecePoint facing;
+    if (rigid) {
+      const auto point = project_on_contour(problem.bodies[out.rigid_body].rigid->contour, x1, node1.normal,
+                                            contact.pair_normal);
+      if (!point) {
+        ++out.unpaired_nodes1;
+        continue;
+      }
+      facing = *point;
+    } else {
+      const auto projection =
+          project_on_zone(side2->definition.pieces[out.piece2], side2->mesh, out.piece2, x1, node1.normal, contact.pair_normal);
+      if (!projection) {
+        ++out.unpaired_nodes1;
+        continue;
+      }
+      facing = projection->facing;
+      const auto& el = side2->mesh.elements[projection->element];
+      pair.count2 = el.node_count;
+      for (int a = 0; a < el.node_count; ++a) {
+        pair.zone2[a] = zone_index2[el.nodes[a]];
+        pair.shape2[a] = el.shape(a, projection->xi);
+      }
+    }
+    pair.node1 = nodes1[i];
+    pair.position1 = x1;
+    pair.position2 = facing.position;
+    pair.normal = contact.pair_normal == PairNormal::common ? Vec2((node1.normal - facing.outward_normal).normalized())  // (V.2)
+                  : contact.pair_normal == PairNormal::body1 ? node1.normal
+                                                             : Vec2(-facing.outward_normal);
+    pair.tangent = Vec2(-pair.normal.y(), pair.normal.x());
+    pair.gap = (facing.position - x1).dot(pair.normal);  // (V.3)
+    pair.weight = weights[i];
+    pair.on_axis = problem.analysis == AnalysisType::axisymmetric && bem::node_on_axis(mesh1, pair.node1);
+    if (pair.gap < -1e-7 * scale)
+      throw GeometryError("contact '" + contact.name + "': the bodies overlap at " + point_text(node1.position) + " on " +
+                          zone1 + ": " + zone2 + " lies " + std::to_string(-pair.gap) + " inside at " +
+                          point_text(facing.position) +
+                          "; draw the bodies without overlap (for an interference fit, at their common nominal "
+                          "surface with interference = the overlap)");
+    pair.gap = std::max(pair.gap, 0.0) - contact.interference;
+    out.pairs.push_back(pair);
+  }
+  if (out.pairs.empty())
+    throw GeometryError("contact '" + contact.name + "': no node of " + zone1 + " faces " + zone2 +
+                        " along the pair normal: the contact boundaries do not face each other");
+  if (side2) build_transfer(side1, *side2, contact, problem.analysis, zone_index2, out, warnings);
+  return out;
+}
+
+}  // namespace
+
+PreparedContact prepare_contact(const ContactProblem& problem) {
+  if (problem.contacts.empty()) throw InputError(SourceLocation{problem.source_file, 0, ""}, "contact: no contact given");
+  for (const auto& contact : problem.contacts) {
+    check_reference(problem, contact.side1, false, "contact '" + contact.name + "', side 1");
+    check_reference(problem, contact.side2, true, "contact '" + contact.name + "', side 2");
+  }
+  PreparedContact prepared;
+  mesh_regions(problem, prepared);
+  for (const auto& contact : problem.contacts)
+    prepared.contacts.push_back(pair_interface(problem, contact, prepared, prepared.warnings));
+  if (problem.force && !problem.bodies[problem.force->body].rigid) {
+    prepared.force_region = prepared.body_regions[problem.force->body][problem.force->region];
+    prepared.force_piece = problem.force->piece;
+    const auto& mesh = prepared.regions[prepared.force_region].mesh;
     prepared.loaded_nodes = mesh.piece_nodes[prepared.force_piece];
     prepared.loaded_weights = node_weights(mesh, {prepared.force_piece}, prepared.loaded_nodes, problem.analysis);
   }
   return prepared;
+}
+
+ContactProblem two_body_problem(int piece1, int piece2) {
+  ContactProblem problem;
+  problem.bodies.resize(2);
+  for (int b = 0; b < 2; ++b) {
+    problem.bodies[b].name = "body" + std::to_string(b + 1);
+    problem.bodies[b].regions.resize(1);
+    problem.bodies[b].regions[0].body.name = problem.bodies[b].name;
+  }
+  ContactInterface contact;
+  contact.side1 = {0, 0, piece1};
+  contact.side2 = {1, 0, piece2};
+  problem.contacts.push_back(contact);
+  return problem;
 }
 
 }  // namespace bemcontact::contact

@@ -85,11 +85,12 @@ ResourceEstimate estimate_resources(const dd::DecompositionProblem& problem) {
 
 ResourceEstimate estimate_resources(const contact::ContactProblem& problem) {
   ResourceEstimate estimate;
-  for (const auto& body : problem.bodies) {
-    const std::int64_t n = body_unknowns(body);
-    estimate.unknowns = std::max(estimate.unknowns, n);
-    estimate.bytes += dense_body_bytes(n);
-  }
+  for (const auto& body : problem.bodies)
+    for (const auto& region : body.regions) {
+      const std::int64_t n = body_unknowns(region.body);
+      estimate.unknowns = std::max(estimate.unknowns, n);
+      estimate.bytes += dense_body_bytes(n);
+    }
   return estimate;
 }
 
@@ -110,9 +111,13 @@ void check_resources(const dd::DecompositionProblem& problem, const ResourceLimi
 }
 
 void check_resources(const contact::ContactProblem& problem, const ResourceLimits& limits) {
+  std::size_t points = 0;
   for (const auto& body : problem.bodies)
-    check_body(body, "body '" + body.name + "'", limits, problem.source_file);
-  check_points(problem.interior_points[0].size() + problem.interior_points[1].size(), limits, problem.source_file);
+    for (const auto& region : body.regions) {
+      check_body(region.body, "region '" + region.body.name + "' of body '" + body.name + "'", limits, problem.source_file);
+      points += region.interior_points.size();
+    }
+  check_points(points, limits, problem.source_file);
   check_memory(estimate_resources(problem), limits, problem.source_file);
 }
 

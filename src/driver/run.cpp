@@ -144,25 +144,28 @@ RunOutput run_decomposition(std::string_view text, const std::string& file_name,
   return output;
 }
 
-// Two elastic bodies in contact (chapter V).
+// Bodies in contact (chapter V): elastic bodies of one or more regions, rigid indenters.
 RunOutput run_contact(std::string_view text, const std::string& file_name, const RunOptions& options) {
   const auto started = Clock::now();
   RunOutput output;
   const auto file = read_checked(io::parse_contact_problem, text, file_name, options, output);
-  for (const auto& body : file.problem.bodies) add_geometry_warnings(output.warnings, body, "body '" + body.name + "'");
+  for (const auto& body : file.problem.bodies)
+    for (const auto& region : body.regions)
+      add_geometry_warnings(output.warnings, region.body,
+                            body.regions.size() == 1 ? "body '" + body.name + "'"
+                                                     : "region '" + region.body.name + "' of body '" + body.name + "'");
   const auto result = contact::solve_contact(file.problem, options.progress);
   output.warnings.insert(output.warnings.end(), result.warnings.begin(), result.warnings.end());
-  for (std::size_t b = 0; b < 2; ++b)
-    add_mesh_warnings(output.warnings, result.meshes[b], "body '" + file.problem.bodies[b].name + "'");
+  for (std::size_t r = 0; r < result.meshes.size(); ++r)
+    add_mesh_warnings(output.warnings, result.meshes[r], result.region_labels[r]);
   for (const auto& [name, content] :
        io::contact_output_files(file.problem, result, file.vtk, file.parameters, output.warnings))
     output.files.add(name, content);
   output.report = io::contact_report_text(file.problem, result);
-  for (std::size_t b = 0; b < 2; ++b) {
-    const std::string label = "body '" + file.problem.bodies[b].name + "': ";
-    append_transitions(output.report, result.meshes[b], label);
-    output.report +=
-        io::reactions_text(result.boundary[b].resultants, file.problem.analysis, label);
+  for (std::size_t r = 0; r < result.meshes.size(); ++r) {
+    const std::string label = result.region_labels[r] + ": ";
+    append_transitions(output.report, result.meshes[r], label);
+    output.report += io::reactions_text(result.boundary[r].resultants, file.problem.analysis, label);
   }
   append(output.report, "  time %.3f s\n", seconds_since(started));
   return output;

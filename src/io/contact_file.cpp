@@ -4,46 +4,351 @@
 #include <cmath>
 #include <optional>
 #include <fstream>
+#include <limits>
+#include <map>
 #include <sstream>
 
 #include <toml++/toml.h>
 
 #include "bemcontact/contact/pairing.hpp"
+#include "bemcontact/contact/rigid_profile.hpp"
 #include "bemcontact/io/body_parser.hpp"
+#include "bemcontact/io/decomposition_file.hpp"
+#include "bemcontact/io/problem_schema.hpp"
 #include "bemcontact/io/expression.hpp"
 #include "bemcontact/io/toml_reader.hpp"
 
 namespace bemcontact::io {
 namespace {
 
+constexpr double kPi = 3.141592653589793;
 
+const std::vector<std::string>& solver_keys() {
+  static const std::vector<std::string> keys{"increments", "algorithm", "gmres_restart", "max_gmres_cycles", "xi",
+                                             "tolerance", "max_iterations", "record_steps"};
+  return keys;
+}
+const std::vector<std::string>& law_keys() {
+  static const std::vector<std::string> keys{"kind", "friction", "coupling"};
+  return keys;
+}
+const std::vector<std::string>& pairing_keys() {
+  static const std::vector<std::string> keys{"normal", "interference"};
+  return keys;
+}
+std::vector<std::string> joined(std::initializer_list<const std::vector<std::string>*> lists,
+                                std::vector<std::string> extra) {
+  for (const auto* list : lists) extra.insert(extra.end(), list->begin(), list->end());
+  return extra;
+}
 
-std::vector<Vec2> read_points(const TableReader& body, const FileContext& context) {
-  std::vector<Vec2> points;
-  const toml::table* table = body.optional_table("interior", "[body.interior]");
-  if (!table) return points;
-  const TableReader interior(*table, body.key_path("interior"), context, body.line());
-  interior.check_keys({"points", "grid"}, "the [body.interior] table");
-  if (const toml::node* node = interior.find("points")) {
-    const toml::array* list = node->as_array();
-    if (!list) interior.fail("points", "must be a list of points " + context.point_form() + ", found " + describe_node(*node));
-    for (const toml::node& point : *list) points.push_back(read_point(point, interior.where("points"), context));
+// A boundary of an elastic body by name, searched in all its regions.
+contact::BoundaryRef boundary_named(const contact::ContactProblem& problem, int body, const std::string& name,
+                                    const TableReader& reader, std::string_view key) {
+  const auto& b = problem.bodies[body];
+  contact::BoundaryRef found;
+  std::string names;
+  for (std::size_t r = 0; r < b.regions.size(); ++r)
+    for (std::size_t k = 0; k < b.regions[r].body.pieces.size(); ++k) {
+      const auto& piece = b.regions[r].body.pieces[k];
+      if (piece.name == name) {
+        if (found.piece >= 0)
+          reader.fail(key, "body '" + b.name + "' has two boundaries named '" + name + "' (regions '" +
+                               b.regions[found.region].body.name + "' and '" + b.regions[r].body.name +
+                               "'); rename one");
+        found = {body, static_cast<int>(r), static_cast<int>(k)};
+      }
+      names += (names.empty() ? "'" : ", '") + piece.name + "'";
+    }
+  if (found.piece < 0) reader.fail(key, "body '" + b.name + "' has no boundary named '" + name + "'; its boundaries are " + names);
+  return found;
+}
+
+int body_named(const contact::ContactProblem& problem, const std::string& name, const TableReader& reader,
+               std::string_view key) {
+  std::string names;
+  for (std::size_t b = 0; b < problem.bodies.size(); ++b) {
+    if (problem.bodies[b].name == name) return static_cast<int>(b);
+    names += (b ? ", '" : "'") + problem.bodies[b].name + "'";
   }
-  if (const toml::table* grid = interior.optional_table("grid", "grid"))
-    for (const auto& point : read_interior_grid(TableReader(*grid, interior.key_path("grid"), context, interior.line()),
-                                                context))
-      points.push_back(point.position);
+  reader.fail(key, "no body named '" + name + "'; the bodies are " + names);
+}
+
+// The size of the elastic bodies (for the extent of rigid profiles' sides).
+double elastic_extent(const contact::ContactProblem& problem) {
+  Vec2 lo = Vec2::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+  for (const auto& body : problem.bodies)
+    for (const auto& region : body.regions)
+      for (const auto& piece : region.body.pieces)
+        for (const Vec2& p : {piece.start, piece.end}) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  return std::isfinite(lo.x()) ? (hi - lo).maxCoeff() : 1.0;
+}
+
+contact::RigidBody read_rigid(const TableReader& rigid, const FileContext& context, double extent) {
+  rigid.check_keys({"profile", "center", "apex", "radius", "half_width", "edge_radius", "half_angle", "height",
+                    "points", "displacement"},
+                   "a [body.rigid] table");
+  contact::ProfileShape shape;
+  shape.profile = rigid.choice("profile", {"sphere", "cylinder", "flat", "cone", "contour"}, "");
+  if (shape.profile.empty()) rigid.fail("profile", "missing: sphere, cylinder, flat, cone or contour");
+  const bool round = shape.profile == "sphere" || shape.profile == "cylinder";
+  auto only_for = [&](const char* key, bool allowed, const std::string& which) {
+    if (rigid.has(key) && !allowed)
+      rigid.fail(key, "'" + std::string(key) + "' applies to the " + which + " profile only; it has no effect on a " +
+                          shape.profile);
+  };
+  only_for("radius", round, "sphere and cylinder");
+  only_for("half_width", shape.profile == "flat", "flat");
+  only_for("edge_radius", shape.profile == "flat", "flat");
+  only_for("half_angle", shape.profile == "cone", "cone");
+  only_for("apex", shape.profile == "cone", "cone");
+  only_for("center", shape.profile != "cone" && shape.profile != "contour", "sphere, cylinder and flat");
+  only_for("height", shape.profile == "flat" || shape.profile == "cone", "flat and cone");
+  only_for("points", shape.profile == "contour", "contour");
+  const char* position_key = shape.profile == "cone" ? "apex" : "center";
+  if (shape.profile != "contour")
+    shape.center = read_point(rigid.require(position_key, "a point " + context.point_form()), rigid.where(position_key),
+                              context);
+  if (round) shape.radius = rigid.number("radius");
+  if (shape.profile == "flat") {
+    shape.half_width = rigid.number("half_width");
+    shape.edge_radius = rigid.optional_number("edge_radius").value_or(0.0);
+  }
+  if (shape.profile == "cone") {
+    const double degrees = rigid.number("half_angle");
+    if (!(degrees > 0.0 && degrees < 90.0)) rigid.fail("half_angle", "the cone's half-angle must be in (0, 90) degrees");
+    shape.half_angle = degrees * kPi / 180.0;
+  }
+  shape.height = rigid.optional_number("height").value_or(2.0 * extent + 2.0 * shape.half_width + shape.edge_radius);
+  if (shape.profile == "contour") {
+    const toml::node& node = rigid.require("points", "a list of points");
+    const toml::array* list = node.as_array();
+    if (!list) rigid.fail("points", "must be a list of points [" + context.point_form() + ", ...]");
+    for (const toml::node& point : *list) shape.points.push_back(read_point(point, rigid.where("points"), context));
+  }
+  contact::RigidBody body;
+  body.profile = shape.profile;
+  try {
+    body.contour = contact::rigid_contour(shape);
+  } catch (const GeometryError& error) {
+    rigid.fail("profile", error.what());
+  }
+  if (const toml::node* node = rigid.find("displacement"))
+    body.displacement = read_point(*node, rigid.where("displacement"), context);
+  return body;
+}
+
+std::vector<bem::InteriorPoint> as_grid_points(std::vector<bem::InteriorPoint> points) {
+  // Stress points of a contact body outside it are dropped and listed (not errors).
+  for (auto& point : points) point.from_grid = true;
   return points;
 }
 
-int piece_named(const bem::BodyDefinition& body, const std::string& name, const TableReader& reader,
-                std::string_view key) {
-  std::string names;
-  for (std::size_t k = 0; k < body.pieces.size(); ++k) {
-    if (body.pieces[k].name == name) return static_cast<int>(k);
-    names += (k ? ", '" : "'") + body.pieces[k].name + "'";
+void read_bodies(toml::table& root_table, const TableReader& root, FileContext& context,
+                 contact::ContactProblem& problem) {
+  toml::node* bodies_node = root_table.get("body");
+  toml::array* bodies = bodies_node ? bodies_node->as_array() : nullptr;
+  if (!bodies || !bodies->is_array_of_tables() || bodies->size() < 2)
+    root.fail("body", "a contact file needs at least two [[body]] tables (found " +
+                          (bodies_node ? describe_node(*bodies_node) : std::string("none")) + ")");
+  std::map<std::string, int> body_lines, region_lines;
+  std::vector<const TableReader*> rigid_readers;
+  int index = 0;
+  for (toml::node& node : *bodies) {
+    ++index;
+    toml::table& table = *node.as_table();
+    const std::string path = "body[" + std::to_string(index) + "]";
+    const int line = line_of(node) > 0 ? line_of(node) : root.line();
+    const TableReader reader(table, path, context, line);
+    contact::Body body;
+    body.name = reader.optional_string("name").value_or(path);
+    if (body.name.empty()) reader.fail("name", "the name must not be empty");
+    if (const auto [existing, inserted] = body_lines.emplace(body.name, reader.line()); !inserted)
+      reader.fail("name", "the body name '" + body.name + "' is already used at line " +
+                              std::to_string(existing->second) + "; body names must be unique");
+    auto add_region_name = [&](const std::string& name, const TableReader& where) {
+      if (const auto [existing, inserted] = region_lines.emplace(name, where.line()); !inserted && existing->second != where.line())
+        where.fail("name", "the name '" + name + "' is already used at line " + std::to_string(existing->second) +
+                               " (the output files are named after bodies and regions)");
+    };
+    if (reader.has("rigid")) {
+      reader.check_keys({"name", "rigid"}, "a rigid [[body]] table (a rigid body has a profile, no material or boundary)");
+      body.regions.clear();
+      problem.bodies.push_back(std::move(body));  // the profile is read once every elastic body is known
+      continue;
+    }
+    if (reader.has("region")) {
+      reader.check_keys({"name", "region"}, "a [[body]] table with [[body.region]] tables (the body-level keys go in "
+                                            "each region)");
+      toml::array* regions = table.get("region")->as_array();
+      if (!regions || !regions->is_array_of_tables() || regions->empty())
+        reader.fail("region", "must be one or more [[body.region]] tables");
+      int r = 0;
+      for (toml::node& region_node : *regions) {
+        ++r;
+        toml::table& region_table = *region_node.as_table();
+        const std::string region_path = path + ".region[" + std::to_string(r) + "]";
+        const TableReader region_reader(region_table, region_path,
+                                        context, line_of(region_node) > 0 ? line_of(region_node) : line);
+        region_reader.check_keys(joined({&schema::body_keys()}, {"name", "interior"}), "a [[body.region]] table");
+        const std::string name = region_reader.optional_string("name").value_or(body.name + "_" + std::to_string(r));
+        add_region_name(name, region_reader);
+        auto region = parse_region(region_table, region_path, context, region_reader.line(), name);
+        if (regions->size() > 1 && std::none_of(region.piece_interface.begin(), region.piece_interface.end(),
+                                                [](const std::string& s) { return !s.empty(); }))
+          region_reader.fail("boundary", "region '" + name + "' of body '" + body.name +
+                                             "' has no boundary with interface = \"...\"; the regions of a body are "
+                                             "bonded along shared interfaces");
+        region.interior_points = as_grid_points(std::move(region.interior_points));
+        body.regions.push_back(std::move(region));
+      }
+    } else {
+      reader.check_keys(joined({&schema::body_keys()}, {"name", "interior"}), "a [[body]] table");
+      add_region_name(body.name, reader);
+      auto region = parse_region(table, path, context, line, body.name);
+      for (std::size_t k = 0; k < region.piece_interface.size(); ++k)
+        if (!region.piece_interface[k].empty())
+          throw InputError(region.body.pieces[k].where,
+                           "interface = \"" + region.piece_interface[k] + "\" bonds regions of one body; body '" +
+                               body.name + "' has one region (write its regions as [[body.region]] tables)");
+      region.interior_points = as_grid_points(std::move(region.interior_points));
+      body.regions.push_back(std::move(region));
+    }
+    problem.bodies.push_back(std::move(body));
   }
-  reader.fail(key, "body '" + body.name + "' has no boundary named '" + name + "'; its boundaries are " + names);
+  const double extent = elastic_extent(problem);
+  index = 0;
+  for (toml::node& node : *bodies) {
+    auto& body = problem.bodies[index++];
+    const toml::table& table = *node.as_table();
+    if (!table.contains("rigid")) continue;
+    const std::string path = "body[" + std::to_string(index) + "]";
+    const TableReader reader(table, path, context, line_of(node) > 0 ? line_of(node) : root.line());
+    const toml::table* rigid = reader.optional_table("rigid", "[" + path + ".rigid]");
+    if (!rigid) reader.fail("rigid", "must be a table: [body.rigid] with profile = ...");
+    body.rigid = read_rigid(TableReader(*rigid, reader.key_path("rigid"), context, reader.line()), context, extent);
+  }
+  if (std::none_of(problem.bodies.begin(), problem.bodies.end(), [](const contact::Body& b) { return !b.rigid; }))
+    root.fail("body", "every body is rigid; a contact problem needs at least one elastic body");
+}
+
+void read_law(const TableReader& reader, contact::ContactProblem& problem) {
+  problem.kind = reader.choice("kind", {"unilateral", "bilateral"}, "unilateral") == "bilateral"
+                     ? contact::ContactKind::bilateral
+                     : contact::ContactKind::unilateral;
+  problem.friction = reader.optional_number("friction").value_or(0.0);
+  if (!(problem.friction >= 0.0)) reader.fail("friction", "the friction coefficient must be >= 0");
+  problem.tangential_coupling = reader.boolean_or("coupling", true);
+  if (reader.has("coupling") && problem.friction == 0.0)
+    reader.fail("coupling", "'coupling' acts on the tangential tractions of friction; with friction = 0 it has "
+                            "no effect (remove it, or give a friction coefficient)");
+}
+
+void read_pairing(const TableReader& reader, contact::ContactInterface& contact) {
+  contact.interference = reader.optional_number("interference").value_or(0.0);
+  if (!(contact.interference >= 0.0 && std::isfinite(contact.interference)))
+    reader.fail("interference", "the interference (initial overlap of the contact zones along the pair normal, "
+                                "e.g. the radial interference of a shrink fit) must be a finite number >= 0, found " +
+                                    format_number(contact.interference));
+  const std::string normal = reader.choice("normal", {"common", "body1", "body2"}, "common");
+  contact.pair_normal = normal == "body1"   ? contact::PairNormal::body1
+                        : normal == "body2" ? contact::PairNormal::body2
+                                            : contact::PairNormal::common;
+}
+
+void read_solver(const TableReader& reader, contact::ContactProblem& problem) {
+  problem.increments = reader.integer_or("increments", problem.friction > 0.0 ? 16 : 1);
+  if (problem.increments < 1) reader.fail("increments", "the number of load increments must be >= 1");
+  if (problem.increments > 100000)
+    reader.fail("increments", std::to_string(problem.increments) +
+                                  " load increments is over the limit of 100000 (each one is a contact solve)");
+  problem.record_steps = reader.boolean_or("record_steps", false);
+  problem.solver.algorithm = reader.choice("algorithm", {"newton", "thesis"}, "newton") == "thesis"
+                                 ? contact::Algorithm::thesis
+                                 : contact::Algorithm::newton;
+  problem.solver.gmres_restart = reader.integer_or("gmres_restart", problem.solver.gmres_restart);
+  if (problem.solver.gmres_restart < 1) reader.fail("gmres_restart", "m of GMRES(m) must be >= 1");
+  problem.solver.max_gmres_cycles = reader.integer_or("max_gmres_cycles", problem.solver.max_gmres_cycles);
+  if (problem.solver.max_gmres_cycles < 1) reader.fail("max_gmres_cycles", "must be >= 1");
+  if (const auto xi = reader.optional_number("xi")) {
+    if (!(*xi > 0.0 && *xi < 1.0)) reader.fail("xi", "must satisfy 0 < xi < 1");
+    problem.solver.xi = *xi;
+  }
+  if (const auto tolerance = reader.optional_number("tolerance")) {
+    if (!(*tolerance > 0.0 && *tolerance < 1.0)) reader.fail("tolerance", "must satisfy 0 < tolerance < 1");
+    problem.solver.tolerance = *tolerance;
+  }
+  if (problem.solver.algorithm != contact::Algorithm::thesis)
+    for (const char* thesis_key : {"gmres_restart", "max_gmres_cycles", "xi"})
+      if (reader.has(thesis_key))
+        reader.fail(thesis_key, "'" + std::string(thesis_key) +
+                                    "' tunes the thesis algorithm only; it has no effect with algorithm = \"newton\" "
+                                    "(remove it, or set algorithm = \"thesis\")");
+  if (problem.solver.algorithm == contact::Algorithm::thesis && reader.has("tolerance"))
+    reader.fail("tolerance", "'tolerance' is the Newton algorithm's; the thesis algorithm stops on xi (give xi "
+                             "instead, or set algorithm = \"newton\")");
+  problem.solver.max_iterations = reader.integer_or("max_iterations", problem.solver.max_iterations);
+  if (problem.solver.max_iterations < 1) reader.fail("max_iterations", "must be >= 1");
+}
+
+// A total force on a boundary of an elastic body (a rigid platen) or on a rigid body.
+void read_force_load(const TableReader& load, contact::ContactProblem& problem) {
+  load.check_keys({"body", "boundary", "component", "force"}, "the load table");
+  contact::ForceLoad force;
+  const auto body_name = load.optional_string("body");
+  if (!body_name) load.fail("body", "missing: the body that carries the force");
+  force.body = body_named(problem, *body_name, load, "body");
+  const auto& body = problem.bodies[force.body];
+  if (body.rigid) {
+    if (load.has("boundary"))
+      load.fail("boundary", "body '" + *body_name + "' is rigid: the force acts on the whole body; remove 'boundary'");
+    if (body.rigid->displacement)
+      load.fail("body", "rigid body '" + *body_name + "' has both a prescribed displacement and a force; give one");
+  } else {
+    const auto boundary = load.optional_string("boundary");
+    if (!boundary) load.fail("boundary", "missing: the boundary that carries the force");
+    const auto ref = boundary_named(problem, force.body, *boundary, load, "boundary");
+    force.region = ref.region;
+    force.piece = ref.piece;
+    for (const auto& contact : problem.contacts)
+      for (const auto* side : {&contact.side1, &contact.side2})
+        if (side->body == ref.body && side->region == ref.region && side->piece == ref.piece)
+          load.fail("boundary", "the force cannot act on a contact boundary itself");
+    if (problem.region(ref).body.conditions[force.piece].signature != "free")
+      load.fail("boundary", "boundary '" + *boundary + "' of body '" + *body_name +
+                                "' carries conditions, but a boundary under a force load moves as a rigid platen "
+                                "(its displacement along the force is the unknown approach, the other component is "
+                                "held at 0), so they would have no effect; remove them");
+  }
+  const int component = load.integer_or("component", 2);
+  if (component != 1 && component != 2) load.fail("component", "must be 1 or 2");
+  force.component = component - 1;
+  force.force = load.number("force");
+  if (force.force == 0.0) load.fail("force", "the total force must not be zero");
+  problem.force = force;
+}
+
+// Side `side` (1 or 2) of a contact from its body and boundary names.
+contact::BoundaryRef read_side(const TableReader& reader, const contact::ContactProblem& problem, int body, int side) {
+  const std::string key = "boundary" + std::to_string(side);
+  const auto& b = problem.bodies[body];
+  if (b.rigid) {
+    if (side == 1)
+      reader.fail("body1", "body '" + b.name + "' is rigid; a rigid body must be the second side of a contact "
+                                               "(body2), the elastic zone the first");
+    if (reader.has(key))
+      reader.fail(key, "body '" + b.name + "' is rigid: its whole profile is the contact surface; remove '" + key + "'");
+    return {body, 0, -1};
+  }
+  const auto name = reader.optional_string(key);
+  if (!name) reader.fail(key, "missing: name the boundary of body '" + b.name + "' in contact");
+  const auto ref = boundary_named(problem, body, *name, reader, key);
+  const auto& condition = problem.region(ref).body.conditions[ref.piece];
+  if (condition.kind[0] == bem::ConditionKind::displacement || condition.kind[1] == bem::ConditionKind::displacement ||
+      condition.value[0] || condition.value[1] || !problem.region(ref).piece_interface[ref.piece].empty())
+    reader.fail(key, "boundary '" + *name + "' of body '" + b.name +
+                         "' carries conditions; a contact boundary must have none (the contact sets them)");
+  return ref;
 }
 
 }  // namespace
@@ -70,16 +375,16 @@ ContactFile read_contact_file(const std::filesystem::path& path, const Parameter
 }
 
 ContactFile parse_contact_problem(std::string_view text, const std::string& file_name,
-                                  const ParameterOverrides& overrides,
-    const ResourceLimits& limits) {
-  const toml::table root_table = parse_toml_text(text, file_name);
+                                  const ParameterOverrides& overrides, const ResourceLimits& limits) {
+  toml::table root_table = parse_toml_text(text, file_name);
   ContactFile result;
   FileContext context;
   context.overrides = overrides;
   context.limits = limits;
   context.file = file_name;
   const TableReader root(root_table, "", context, 1);
-  root.check_keys({"title", "analysis", "interpolation", "parameters", "mesh", "output", "body", "contact"},
+  root.check_keys({"title", "analysis", "interpolation", "parameters", "mesh", "output", "body", "contact", "solver",
+                   "load"},
                   "the top level of a contact file");
   auto& problem = result.problem;
   problem.source_file = file_name;
@@ -94,132 +399,104 @@ ContactFile parse_contact_problem(std::string_view text, const std::string& file
     reader.check_keys({"vtk"}, "the [output] table");
     result.vtk = reader.boolean_or("vtk", true);
   }
+  read_bodies(root_table, root, context, problem);
 
-  // The two bodies.
-  const toml::node* bodies_node = root.find("body");
-  const toml::array* bodies = bodies_node ? bodies_node->as_array() : nullptr;
-  if (!bodies || !bodies->is_array_of_tables() || bodies->size() != 2)
-    root.fail("body", "a contact file needs exactly two [[body]] tables (found " +
-                          (bodies_node ? describe_node(*bodies_node) : std::string("none")) + ")");
-  for (int b = 0; b < 2; ++b) {
-    const toml::table& table = *bodies->get(static_cast<std::size_t>(b))->as_table();
-    const std::string path = "body[" + std::to_string(b + 1) + "]";
-    const int line = line_of(*bodies->get(static_cast<std::size_t>(b))) > 0 ? line_of(*bodies->get(static_cast<std::size_t>(b))) : 1;
-    problem.bodies[b] = parse_body(table, BodyContext{&context, path, {"name", "interior"}, line});
-    const TableReader reader(table, path, context, line);
-    problem.bodies[b].name = reader.optional_string("name").value_or(path);
-    problem.interior_points[b] = read_points(reader, context);
+  const toml::node* contact_node = root.find("contact");
+  if (!contact_node) root.fail("contact", "missing: a [contact] table or [[contact]] tables");
+  std::string pairing_key = "contact";
+  const TableReader* anchor = &root;
+  std::optional<TableReader> single;
+  if (const toml::table* table = contact_node->as_table()) {
+    // One contact between the two bodies: pairing, law, solver and load in one table.
+    single.emplace(*table, "contact", context, root.line());
+    const TableReader& contact = *single;
+    contact.check_keys(joined({&law_keys(), &pairing_keys(), &solver_keys()}, {"boundary1", "boundary2", "load"}),
+                       "the [contact] table");
+    for (const char* key : {"solver", "load"})
+      if (root.has(key))
+        root.fail(key, "[" + std::string(key) + "] goes with [[contact]] tables; with a single [contact] table put " +
+                           (std::string(key) == "load" ? "[contact.load]" : "the solver keys in [contact]"));
+    if (problem.bodies.size() != 2)
+      contact.fail("boundary1", "a [contact] table joins exactly two bodies; with " +
+                                    std::to_string(problem.bodies.size()) +
+                                    " bodies write one [[contact]] table per contact, with body1 and body2");
+    contact::ContactInterface interface;
+    interface.side1 = read_side(contact, problem, 0, 1);
+    interface.side2 = read_side(contact, problem, 1, 2);
+    read_pairing(contact, interface);
+    problem.contacts.push_back(interface);
+    read_law(contact, problem);
+    read_solver(contact, problem);
+    if (const toml::table* load = contact.optional_table("load", "[contact.load]"))
+      read_force_load(TableReader(*load, "contact.load", context, contact.line()), problem);
+    anchor = &contact;
+    pairing_key = "boundary1";
+  } else {
+    const toml::array* contacts = contact_node->as_array();
+    if (!contacts || !contacts->is_array_of_tables() || contacts->empty())
+      root.fail("contact", "must be a [contact] table or one or more [[contact]] tables");
+    int index = 0;
+    std::optional<TableReader> first_law;
+    for (const toml::node& node : *contacts) {
+      ++index;
+      const std::string path = "contact[" + std::to_string(index) + "]";
+      const TableReader contact(*node.as_table(), path, context, line_of(node) > 0 ? line_of(node) : root.line());
+      contact.check_keys(joined({&law_keys(), &pairing_keys()}, {"name", "body1", "boundary1", "body2", "boundary2"}),
+                         "a [[contact]] table (solver keys go in [solver], a force in [load])");
+      contact::ContactInterface interface;
+      interface.name = contact.optional_string("name").value_or(contacts->size() == 1 ? "contact" : "contact" + std::to_string(index));
+      for (const auto& other : problem.contacts)
+        if (other.name == interface.name) contact.fail("name", "two contacts are named '" + interface.name + "'");
+      for (const char* key : {"body1", "body2"})
+        if (!contact.has(key)) contact.fail(key, "missing: the name of the body on this side of the contact");
+      const int body1 = body_named(problem, *contact.optional_string("body1"), contact, "body1");
+      const int body2 = body_named(problem, *contact.optional_string("body2"), contact, "body2");
+      if (body1 == body2) contact.fail("body2", "a contact joins two different bodies");
+      interface.side1 = read_side(contact, problem, body1, 1);
+      interface.side2 = read_side(contact, problem, body2, 2);
+      read_pairing(contact, interface);
+      for (const auto& other : problem.contacts)
+        for (const auto* side : {&other.side1, &other.side2})
+          for (const auto* mine : {&interface.side1, &interface.side2})
+            if (mine->piece >= 0 && side->body == mine->body && side->region == mine->region && side->piece == mine->piece)
+              contact.fail("boundary1", "a boundary is in two contacts ('" + other.name + "' and '" + interface.name +
+                                            "'); split it into two boundaries");
+      problem.contacts.push_back(interface);
+      // One contact law for every contact.
+      const auto kind = problem.kind;
+      const double friction = problem.friction;
+      const bool coupling = problem.tangential_coupling;
+      read_law(contact, problem);
+      if (index > 1 && (kind != problem.kind || friction != problem.friction || coupling != problem.tangential_coupling))
+        contact.fail(contact.has("friction") ? "friction" : "kind",
+                     "every contact must have the same law (kind, friction, coupling) as the first; different laws "
+                     "per contact are not supported yet");
+    }
+    static const toml::table empty;
+    const toml::table* solver = root.optional_table("solver", "[solver]");
+    const TableReader solver_keys_reader(solver ? *solver : empty, "solver", context, root.line());
+    solver_keys_reader.check_keys(solver_keys(), "the [solver] table");
+    read_solver(solver_keys_reader, problem);
+    if (const toml::table* load = root.optional_table("load", "[load]"))
+      read_force_load(TableReader(*load, "load", context, root.line()), problem);
   }
-  // Body 2's nodes on the zone are placed on body 1's common normals, so mesh keys there
-  // would have no effect.
-  if (problem.bodies[0].name == problem.bodies[1].name)
-    root.fail("body", "the two bodies have the same name '" + problem.bodies[0].name + "'");
-
-  // [contact]
-  const toml::table* contact_table = root.optional_table("contact", "[contact]");
-  if (!contact_table) root.fail("contact", "missing [contact] table");
-  const TableReader contact(*contact_table, "contact", context, root.line());
-  contact.check_keys({"boundary1", "boundary2", "kind", "friction", "coupling", "increments", "algorithm",
-                      "gmres_restart", "max_gmres_cycles", "xi", "tolerance", "max_iterations", "record_steps", "load",
-                      "normal", "interference"},
-                     "the [contact] table");
-  for (int b = 0; b < 2; ++b) {
-    const std::string key = "boundary" + std::to_string(b + 1);
-    const auto name = contact.optional_string(key);
-    if (!name) contact.fail(key, "missing: name the boundary of body '" + problem.bodies[b].name + "' in contact");
-    problem.contact_piece[b] = piece_named(problem.bodies[b], *name, contact, key);
-    const auto& condition = problem.bodies[b].conditions[problem.contact_piece[b]];
-    if (condition.kind[0] == bem::ConditionKind::displacement || condition.kind[1] == bem::ConditionKind::displacement ||
-        condition.value[0] || condition.value[1])
-      contact.fail(key, "boundary '" + *name + "' of body '" + problem.bodies[b].name +
-                            "' carries conditions; a contact boundary must have none (the contact sets them)");
+  for (std::size_t b = 0; b < problem.bodies.size(); ++b) {
+    const auto& body = problem.bodies[b];
+    if (!body.rigid) continue;
+    const bool loaded = problem.force && problem.force->body == static_cast<int>(b);
+    if (!loaded && !body.rigid->displacement)
+      root.fail("body", "rigid body '" + body.name + "' has no load and no displacement: give its displacement in "
+                        "[body.rigid] (displacement = [u1, u2]) or press it with a force ([load] body = \"" + body.name +
+                        "\")");
+    bool in_contact = false;
+    for (const auto& contact : problem.contacts) in_contact = in_contact || contact.side2.body == static_cast<int>(b);
+    if (!in_contact) root.fail("body", "rigid body '" + body.name + "' is in no contact: it would have no effect");
   }
-  problem.kind = contact.choice("kind", {"unilateral", "bilateral"}, "unilateral") == "bilateral"
-                     ? contact::ContactKind::bilateral
-                     : contact::ContactKind::unilateral;
-  problem.friction = contact.optional_number("friction").value_or(0.0);
-  if (!(problem.friction >= 0.0)) contact.fail("friction", "the friction coefficient must be >= 0");
-  problem.tangential_coupling = contact.boolean_or("coupling", true);
-  if (contact.has("coupling") && problem.friction == 0.0)
-    contact.fail("coupling", "'coupling' acts on the tangential tractions of friction; with friction = 0 it has "
-                             "no effect (remove it, or give a friction coefficient)");
-  problem.interference = contact.optional_number("interference").value_or(0.0);
-  if (!(problem.interference >= 0.0 && std::isfinite(problem.interference)))
-    contact.fail("interference", "the interference (initial overlap of the contact zones along the pair normal, "
-                                 "e.g. the radial interference of a shrink fit) must be a finite number >= 0, found " +
-                                     format_number(problem.interference));
-  const std::string normal = contact.choice("normal", {"common", "body1", "body2"}, "common");
-  problem.pair_normal = normal == "body1"   ? contact::PairNormal::body1
-                        : normal == "body2" ? contact::PairNormal::body2
-                                            : contact::PairNormal::common;
-  problem.increments = contact.integer_or("increments", problem.friction > 0.0 ? 16 : 1);
-  if (problem.increments < 1) contact.fail("increments", "the number of load increments must be >= 1");
-  if (problem.increments > 100000)
-    contact.fail("increments", std::to_string(problem.increments) +
-                                   " load increments is over the limit of 100000 (each one is a contact solve)");
-  problem.record_steps = contact.boolean_or("record_steps", false);
-  problem.solver.algorithm = contact.choice("algorithm", {"newton", "thesis"}, "newton") == "thesis"
-                                 ? contact::Algorithm::thesis
-                                 : contact::Algorithm::newton;
-  problem.solver.gmres_restart = contact.integer_or("gmres_restart", problem.solver.gmres_restart);
-  if (problem.solver.gmres_restart < 1) contact.fail("gmres_restart", "m of GMRES(m) must be >= 1");
-  problem.solver.max_gmres_cycles = contact.integer_or("max_gmres_cycles", problem.solver.max_gmres_cycles);
-  if (problem.solver.max_gmres_cycles < 1) contact.fail("max_gmres_cycles", "must be >= 1");
-  if (const auto xi = contact.optional_number("xi")) {
-    if (!(*xi > 0.0 && *xi < 1.0)) contact.fail("xi", "must satisfy 0 < xi < 1");
-    problem.solver.xi = *xi;
-  }
-  if (const auto tolerance = contact.optional_number("tolerance")) {
-    if (!(*tolerance > 0.0 && *tolerance < 1.0)) contact.fail("tolerance", "must satisfy 0 < tolerance < 1");
-    problem.solver.tolerance = *tolerance;
-  }
-  if (problem.solver.algorithm != contact::Algorithm::thesis)
-    for (const char* thesis_key : {"gmres_restart", "max_gmres_cycles", "xi"})
-      if (contact.has(thesis_key))
-        contact.fail(thesis_key, "'" + std::string(thesis_key) +
-                                     "' tunes the thesis algorithm only; it has no effect with algorithm = \"newton\" "
-                                     "(remove it, or set algorithm = \"thesis\")");
-  if (problem.solver.algorithm == contact::Algorithm::thesis && contact.has("tolerance"))
-    contact.fail("tolerance", "'tolerance' is the Newton algorithm's; the thesis algorithm stops on xi (give xi "
-                              "instead, or set algorithm = \"newton\")");
-  problem.solver.max_iterations = contact.integer_or("max_iterations", problem.solver.max_iterations);
-  if (problem.solver.max_iterations < 1) contact.fail("max_iterations", "must be >= 1");
-
-  if (const toml::table* load_table = contact.optional_table("load", "[contact.load]")) {
-    const TableReader load(*load_table, "contact.load", context, contact.line());
-    load.check_keys({"body", "boundary", "component", "force"}, "the [contact.load] table");
-    contact::ForceLoad force;
-    const auto body_name = load.optional_string("body");
-    if (!body_name) load.fail("body", "missing: the body that carries the force");
-    force.body = -1;
-    for (int b = 0; b < 2; ++b)
-      if (problem.bodies[b].name == *body_name) force.body = b;
-    if (force.body < 0)
-      load.fail("body", "no body named '" + *body_name + "'; the bodies are '" + problem.bodies[0].name + "' and '" +
-                            problem.bodies[1].name + "'");
-    const auto boundary = load.optional_string("boundary");
-    if (!boundary) load.fail("boundary", "missing: the boundary that carries the force");
-    force.piece = piece_named(problem.bodies[force.body], *boundary, load, "boundary");
-    if (force.piece == problem.contact_piece[force.body])
-      load.fail("boundary", "the force cannot act on the contact boundary itself");
-    if (problem.bodies[force.body].conditions[force.piece].signature != "free")
-      load.fail("boundary", "boundary '" + *boundary + "' of body '" + *body_name +
-                                "' carries conditions, but a boundary under [contact.load] moves as a rigid platen "
-                                "(its displacement along the force is the unknown approach, the other component is "
-                                "held at 0), so they would have no effect; remove them");
-    const int component = load.integer_or("component", 2);
-    if (component != 1 && component != 2) load.fail("component", "must be 1 or 2");
-    force.component = component - 1;
-    force.force = load.number("force");
-    if (force.force == 0.0) load.fail("force", "the total force must not be zero");
-    problem.force = force;
-  }
-
-  // Pair the zone now, so that geometric errors point at the [contact] table.
+  // Pair the zones now, so that geometric errors point at the contact tables.
   try {
     (void)contact::prepare_contact(problem);
   } catch (const GeometryError& error) {
-    throw InputError(contact.where("boundary1"), error.what());
+    throw InputError(anchor->where(pairing_key), error.what());
   }
   result.warnings = context.warnings;
   return result;

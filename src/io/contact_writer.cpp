@@ -58,7 +58,7 @@ std::string contact_csv(const std::vector<contact::PairResult>& pairs) {
   return out;
 }
 
-std::string contact_steps_csv(const contact::ContactResult& result) {
+std::string contact_steps_csv(const contact::ContactInterfaceResult& result) {
   std::string out =
       "step,load_factor,a,c,peak_pressure,centre_pressure,normal_force,approach,pairs_in_contact,"
       "newton_iterations,kalker_iterations,threshold_iterations,gmres_cycles,residual\n";
@@ -74,8 +74,62 @@ std::string contact_steps_csv(const contact::ContactResult& result) {
   return out;
 }
 
-nlohmann::json contact_summary_json(const contact::ContactProblem& problem, const contact::ContactResult& result) {
+namespace {
+
+nlohmann::json interface_json(const contact::ContactInterfaceResult& result) {
   nlohmann::json j = summary_json(result.summary);
+  j["name"] = result.name;
+  j["pairs"] = result.pairs.size();
+  nlohmann::json steps = nlohmann::json::array();
+  for (const auto& s : result.steps) steps.push_back(summary_json(s));
+  j["steps"] = steps;
+  return j;
+}
+
+std::string body_label(const contact::ContactProblem& problem, const contact::BoundaryRef& side) {
+  return problem.bodies[side.body].name;
+}
+
+// Hertz's a, p0 and delta next to the computed ones, for an axisymmetric ball (an arc zone
+// on side 1 facing a straight elastic zone, or a flat zone facing a rigid sphere) pressed
+// by a force.
+std::string hertz_comparison(const contact::ContactProblem& problem, const contact::ContactSummary& s) {
+  if (problem.analysis != AnalysisType::axisymmetric || !problem.force || problem.contacts.size() != 1) return "";
+  const auto& contact = problem.contacts.front();
+  const auto& side1 = problem.region(contact.side1).body;
+  const auto& zone1 = side1.pieces[contact.side1.piece];
+  const auto& body2 = problem.bodies[contact.side2.body];
+  double R = 0.0;
+  Material material2{std::numeric_limits<double>::infinity(), 0.3};  // rigid: E* from side 1 alone
+  if (body2.rigid) {
+    if (body2.rigid->profile != "sphere" || zone1.shape != geometry::PieceShape::line) return "";
+    R = geometry::arc_radius(body2.rigid->contour.front());
+  } else {
+    const auto& zone2 = problem.region(contact.side2).body.pieces[contact.side2.piece];
+    if (zone1.shape != geometry::PieceShape::arc || zone2.shape != geometry::PieceShape::line) return "";
+    R = geometry::arc_radius(zone1);
+    material2 = problem.region(contact.side2).body.material;
+  }
+  const auto hertz = reference::hertz_point_contact(std::abs(problem.force->force), R, side1.material,
+                                                    std::numeric_limits<double>::infinity(), material2);
+  char line[256];
+  std::string out;
+  std::snprintf(line, sizeof line, "  Hertz (R = %.6g): a = %.6g (computed %.6g, %+.2f %%)\n", R,
+                hertz.contact_radius(), s.contact_radius, 100.0 * (s.contact_radius / hertz.contact_radius() - 1.0));
+  out += line;
+  std::snprintf(line, sizeof line, "                   p0 = %.6g (centre %.6g, %+.2f %%)\n", hertz.max_pressure(),
+                s.centre_pressure, 100.0 * (s.centre_pressure / hertz.max_pressure() - 1.0));
+  out += line;
+  std::snprintf(line, sizeof line, "                   delta = %.6g (computed %.6g, %+.2f %%)\n", hertz.approach(),
+                std::abs(s.approach), 100.0 * (std::abs(s.approach) / hertz.approach() - 1.0));
+  out += line;
+  return out;
+}
+
+}  // namespace
+
+nlohmann::json contact_summary_json(const contact::ContactProblem& problem, const contact::ContactResult& result) {
+  nlohmann::json j = interface_json(result);
   j["kind"] = contact::to_string(problem.kind);
   j["algorithm"] = contact::to_string(problem.solver.algorithm);
   if (problem.solver.algorithm == contact::Algorithm::thesis) {
@@ -88,49 +142,36 @@ nlohmann::json contact_summary_json(const contact::ContactProblem& problem, cons
   j["friction"] = problem.friction;
   j["tangential_coupling"] = problem.tangential_coupling;
   j["increments"] = problem.increments;
-  j["pairs"] = result.pairs.size();
   j["unknowns"] = result.unknowns;
-  j["bodies"] = {result.body_names[0], result.body_names[1]};
+  const auto& first = problem.contacts.front();
+  j["bodies"] = {body_label(problem, first.side1), body_label(problem, first.side2)};
   j["timings"] = timings_json(result.timings);
-  nlohmann::json steps = nlohmann::json::array();
-  for (const auto& s : result.steps) steps.push_back(summary_json(s));
-  j["steps"] = steps;
   return j;
 }
 
 std::string contact_report_text(const contact::ContactProblem& problem, const contact::ContactResult& result) {
-  const auto& s = result.summary;
   char line[256];
   std::string out;
-  std::snprintf(line, sizeof line, "contact: %zu pairs, %d in contact, a = %.6g, c = %.6g (c/a = %.4f)\n",
-                result.pairs.size(), s.pairs_in_contact, s.contact_radius, s.stick_radius,
-                s.stick_ratio());
-  out += line;
-  std::snprintf(line, sizeof line, "  peak pressure %.6g, centre pressure %.6g, normal force %.6g, approach %.6g\n",
-                s.peak_pressure, s.centre_pressure, s.normal_force, s.approach);
-  out += line;
+  for (std::size_t c = 0; c < result.contacts.size(); ++c) {
+    const auto& contact = result.contacts[c];
+    const auto& s = contact.summary;
+    const std::string label =
+        result.contacts.size() == 1 ? std::string("contact")
+                                    : "contact '" + contact.name + "' (" + body_label(problem, problem.contacts[c].side1) +
+                                          " / " + body_label(problem, problem.contacts[c].side2) + ")";
+    std::snprintf(line, sizeof line, "%s: %zu pairs, %d in contact, a = %.6g, c = %.6g (c/a = %.4f)\n", label.c_str(),
+                  contact.pairs.size(), s.pairs_in_contact, s.contact_radius, s.stick_radius, s.stick_ratio());
+    out += line;
+    std::snprintf(line, sizeof line, "  peak pressure %.6g, centre pressure %.6g, normal force %.6g, approach %.6g\n",
+                  s.peak_pressure, s.centre_pressure, s.normal_force, s.approach);
+    out += line;
+  }
+  const auto& s = result.summary;
   std::snprintf(line, sizeof line, "  %s algorithm, %d load steps: newton %d, kalker %d, threshold %d, gmres cycles %d\n",
                 contact::to_string(problem.solver.algorithm), problem.increments, s.newton_iterations,
                 s.kalker_iterations, s.threshold_iterations, s.gmres_cycles);
   out += line;
-  const auto& ball = problem.bodies[0].pieces[problem.contact_piece[0]];
-  const auto& flat = problem.bodies[1].pieces[problem.contact_piece[1]];
-  if (problem.analysis == AnalysisType::axisymmetric && problem.force && ball.shape == geometry::PieceShape::arc &&
-      flat.shape == geometry::PieceShape::line) {
-    const double R = (ball.start - ball.center).norm();
-    const auto hertz = reference::hertz_point_contact(std::abs(problem.force->force), R, problem.bodies[0].material,
-                                                      std::numeric_limits<double>::infinity(),
-                                                      problem.bodies[1].material);
-    std::snprintf(line, sizeof line, "  Hertz (R = %.6g): a = %.6g (computed %.6g, %+.2f %%)\n", R,
-                  hertz.contact_radius(), s.contact_radius, 100.0 * (s.contact_radius / hertz.contact_radius() - 1.0));
-    out += line;
-    std::snprintf(line, sizeof line, "                   p0 = %.6g (centre %.6g, %+.2f %%)\n", hertz.max_pressure(),
-                  s.centre_pressure, 100.0 * (s.centre_pressure / hertz.max_pressure() - 1.0));
-    out += line;
-    std::snprintf(line, sizeof line, "                   delta = %.6g (computed %.6g, %+.2f %%)\n", hertz.approach(),
-                  std::abs(s.approach), 100.0 * (std::abs(s.approach) / hertz.approach() - 1.0));
-    out += line;
-  }
+  out += hertz_comparison(problem, s);
   return out;
 }
 
@@ -139,18 +180,25 @@ std::vector<std::pair<std::string, std::string>> contact_output_files(const cont
                                                                       const std::map<std::string, double>& parameters,
                                                                       const std::vector<std::string>& warnings) {
   std::vector<std::pair<std::string, std::string>> files;
-  files.emplace_back("contact.csv", contact_csv(result.pairs));
-  files.emplace_back("contact_steps.csv", contact_steps_csv(result));
-  for (std::size_t k = 0; k < result.step_pairs.size(); ++k)
-    files.emplace_back("contact_step" + std::to_string(k + 1) + ".csv", contact_csv(result.step_pairs[k]));
-  for (int b = 0; b < 2; ++b) {
-    const std::string stem = file_stem(result.body_names[b]);
-    files.emplace_back(stem + "_boundary.csv", boundary_csv(result.meshes[b], result.boundary[b]));
-    if (vtk) files.emplace_back(stem + "_boundary.vtk", boundary_vtk(result.meshes[b], result.boundary[b], problem.title));
-    if (!result.interior[b].points.empty()) {
-      files.emplace_back(stem + "_interior.csv", interior_csv(result.interior[b]));
-      if (vtk) files.emplace_back(stem + "_interior.vtk", interior_vtk(result.interior[b], problem.title));
+  for (const auto& contact : result.contacts) {
+    const std::string stem = file_stem(contact.name);
+    files.emplace_back(stem + ".csv", contact_csv(contact.pairs));
+    files.emplace_back(stem + "_steps.csv", contact_steps_csv(contact));
+    for (std::size_t k = 0; k < contact.step_pairs.size(); ++k)
+      files.emplace_back(stem + "_step" + std::to_string(k + 1) + ".csv", contact_csv(contact.step_pairs[k]));
+  }
+  nlohmann::json transitions = nlohmann::json::object(), resultants = nlohmann::json::object();
+  for (std::size_t r = 0; r < result.meshes.size(); ++r) {
+    const std::string stem = file_stem(result.body_names[r]);
+    files.emplace_back(stem + "_boundary.csv", boundary_csv(result.meshes[r], result.boundary[r]));
+    if (vtk) files.emplace_back(stem + "_boundary.vtk", boundary_vtk(result.meshes[r], result.boundary[r], problem.title));
+    if (!result.interior[r].points.empty()) {
+      files.emplace_back(stem + "_interior.csv", interior_csv(result.interior[r]));
+      if (vtk) files.emplace_back(stem + "_interior.vtk", interior_vtk(result.interior[r], problem.title));
     }
+    transitions[result.body_names[r]] = mesh_transitions_json(result.meshes[r]);
+    // Per region, the contact zones included (the resultant of the contact tractions).
+    resultants[result.body_names[r]] = resultants_json(result.boundary[r].resultants, problem.analysis);
   }
   nlohmann::json summary;
   summary["bemcontact_version"] = BEMCONTACT_VERSION;
@@ -159,12 +207,11 @@ std::vector<std::pair<std::string, std::string>> contact_output_files(const cont
   summary["analysis"] = to_string(problem.analysis);
   summary["parameters"] = parameters;
   summary["contact"] = contact_summary_json(problem, result);
-  summary["graded_toward_vertices"] = {{problem.bodies[0].name, mesh_transitions_json(result.meshes[0])},
-                                       {problem.bodies[1].name, mesh_transitions_json(result.meshes[1])}};
-  // Per body, the contact zone included (the resultant of the contact tractions).
-  summary["boundary_resultants"] = {
-      {problem.bodies[0].name, resultants_json(result.boundary[0].resultants, problem.analysis)},
-      {problem.bodies[1].name, resultants_json(result.boundary[1].resultants, problem.analysis)}};
+  nlohmann::json contacts = nlohmann::json::array();
+  for (const auto& contact : result.contacts) contacts.push_back(interface_json(contact));
+  summary["contacts"] = contacts;
+  summary["graded_toward_vertices"] = transitions;
+  summary["boundary_resultants"] = resultants;
   summary["warnings"] = warnings;
   files.emplace_back("summary.json", write_json_string(summary));
   return files;

@@ -87,23 +87,72 @@ void read_options(const TableReader& root, const FileContext& context, dd::Decom
 
 std::vector<bem::InteriorPoint> read_points(const TableReader& sub, const FileContext& context) {
   std::vector<bem::InteriorPoint> points;
-  const toml::table* table = sub.optional_table("interior", "[subdomain.interior]");
+  const toml::table* table = sub.optional_table("interior", "[" + sub.key_path("interior") + "]");
   if (!table) return points;
   const TableReader interior(*table, sub.key_path("interior"), context, sub.line());
-  interior.check_keys({"points"}, "a [subdomain.interior] table");
-  const toml::node& node = interior.require("points", "a list of points " + context.point_form());
-  const toml::array* list = node.as_array();
-  if (!list) interior.fail("points", "must be a list of points [" + context.point_form() + ", ...], found " +
-                                         describe_node(node));
-  for (const toml::node& point : *list) {
-    SourceLocation where = interior.where("points");
-    if (line_of(point) > 0) where.line = line_of(point);
-    points.push_back(bem::InteriorPoint{read_point(point, where, context), false, where});
+  interior.check_keys({"points", "grid"}, "an interior table");
+  if (const toml::node* node = interior.find("points")) {
+    const toml::array* list = node->as_array();
+    if (!list) interior.fail("points", "must be a list of points [" + context.point_form() + ", ...], found " +
+                                           describe_node(*node));
+    for (const toml::node& point : *list) {
+      SourceLocation where = interior.where("points");
+      if (line_of(point) > 0) where.line = line_of(point);
+      points.push_back(bem::InteriorPoint{read_point(point, where, context), false, where});
+    }
+  }
+  if (const toml::table* grid = interior.optional_table("grid", "grid")) {
+    const auto grid_points = read_interior_grid(TableReader(*grid, interior.key_path("grid"), context, interior.line()), context);
+    points.insert(points.end(), grid_points.begin(), grid_points.end());
   }
   return points;
 }
 
 }  // namespace
+
+dd::Subdomain parse_region(toml::table& table, const std::string& path, FileContext& context, int line,
+                           const std::string& name, const toml::table* shared_vertices) {
+  const TableReader sub(table, path, context, line);
+  if (name.empty()) sub.fail("name", "the name must not be empty");
+  dd::Subdomain subdomain;
+  // interface = "<name>" is read here and removed, so parse_body sees a plain boundary.
+  std::vector<std::string> interfaces;
+  if (toml::array* boundaries = table.get("boundary") ? table.get("boundary")->as_array() : nullptr;
+      boundaries && boundaries->is_array_of_tables()) {
+    int b = 0;
+    for (toml::node& boundary_node : *boundaries) {
+      ++b;
+      toml::table& boundary = *boundary_node.as_table();
+      const TableReader reader(boundary, path + ".boundary[" + std::to_string(b) + "]", context, sub.line());
+      reader.check_keys(interface_boundary_keys(), "each boundary table");
+      std::string interface;
+      if (reader.has("interface")) {
+        const auto value = reader.optional_string("interface");
+        if (!value || value->empty()) reader.fail("interface", "the interface name must be a non-empty string");
+        interface = *value;
+        for (const char* key : {"u1", "u2", "t1", "t2", "un", "ut", "tn", "tt", "pressure"})
+          if (reader.has(key))
+            reader.fail(key, "boundary on interface '" + interface + "' takes no condition ('" + key +
+                                 "'): continuity with the region on the other side is its condition");
+        boundary.erase("interface");
+      }
+      interfaces.push_back(interface);
+    }
+  }
+  if (shared_vertices) {
+    if (!table.contains("vertices")) table.insert("vertices", toml::table{});
+    if (toml::table* own = table.get("vertices")->as_table())
+      for (const auto& [key, value] : *shared_vertices)
+        if (!own->contains(key.str())) own->insert(key, value);
+  }
+  subdomain.body = parse_body(table, BodyContext{&context, path, {"name", "interior"}, sub.line()});
+  subdomain.body.name = name;
+  subdomain.piece_interface.assign(subdomain.body.pieces.size(), "");
+  for (std::size_t p = 0; p < interfaces.size() && p < subdomain.body.pieces.size(); ++p)
+    if (!interfaces[p].empty()) dd::mark_interface(subdomain, p, interfaces[p]);
+  subdomain.interior_points = read_points(sub, context);
+  return subdomain;
+}
 
 bool is_decomposition_text(std::string_view text) {
   try {
@@ -184,53 +233,16 @@ DecompositionFile parse_decomposition(std::string_view text, const std::string& 
     const std::string path = "subdomain[" + std::to_string(index) + "]";
     const TableReader sub(table, path, context, root.where("subdomain").line);
     sub.check_keys(subdomain_keys(), "a [[subdomain]] table");
-    dd::Subdomain subdomain;
     const std::string name = sub.optional_string("name").value_or("subdomain" + std::to_string(index));
-    if (name.empty()) sub.fail("name", "the name must not be empty");
     const auto [existing, inserted] = name_lines.emplace(name, sub.line());
     if (!inserted)
       sub.fail("name", "the subdomain name '" + name + "' is already used at line " + std::to_string(existing->second) +
                            "; subdomain names must be unique");
-
-    // interface = "<name>" is read here and removed, so parse_body sees a plain boundary.
-    std::vector<std::string> interfaces;
-    if (toml::array* boundaries = table.get("boundary") ? table.get("boundary")->as_array() : nullptr;
-        boundaries && boundaries->is_array_of_tables()) {
-      int b = 0;
-      for (toml::node& boundary_node : *boundaries) {
-        ++b;
-        toml::table& boundary = *boundary_node.as_table();
-        const TableReader reader(boundary, path + ".boundary[" + std::to_string(b) + "]", context, sub.line());
-        reader.check_keys(interface_boundary_keys(), "each [[subdomain.boundary]] table");
-        std::string interface;
-        if (reader.has("interface")) {
-          const auto value = reader.optional_string("interface");
-          if (!value || value->empty()) reader.fail("interface", "the interface name must be a non-empty string");
-          interface = *value;
-          for (const char* key : {"u1", "u2", "t1", "t2", "un", "ut", "tn", "tt", "pressure"})
-            if (reader.has(key))
-              reader.fail(key, "boundary on interface '" + interface + "' takes no condition ('" + key +
-                                   "'): continuity with the subdomain on the other side is its condition");
-          boundary.erase("interface");
-        }
-        interfaces.push_back(interface);
-      }
-    }
-    if (shared) {
-      if (!table.contains("vertices")) table.insert("vertices", toml::table{});
-      if (toml::table* own = table.get("vertices")->as_table())
-        for (const auto& [key, value] : *shared)
-          if (!own->contains(key.str())) own->insert(key, value);
-    }
-    subdomain.body = parse_body(table, BodyContext{&context, path, {"name", "interior"}, sub.line()});
-    subdomain.body.name = name;
-    subdomain.piece_interface.assign(subdomain.body.pieces.size(), "");
-    for (std::size_t p = 0; p < interfaces.size() && p < subdomain.body.pieces.size(); ++p)
-      if (!interfaces[p].empty()) dd::mark_interface(subdomain, p, interfaces[p]);
-    if (std::none_of(interfaces.begin(), interfaces.end(), [](const std::string& s) { return !s.empty(); }))
+    dd::Subdomain subdomain = parse_region(table, path, context, sub.line(), name, shared);
+    if (std::none_of(subdomain.piece_interface.begin(), subdomain.piece_interface.end(),
+                     [](const std::string& s) { return !s.empty(); }))
       sub.fail("boundary", "subdomain '" + name + "' has no boundary with interface = \"...\"; every subdomain "
                            "must share at least one interface with another");
-    subdomain.interior_points = read_points(sub, context);
     problem.subdomains.push_back(std::move(subdomain));
   }
   result.warnings = context.warnings;

@@ -73,14 +73,14 @@ std::vector<Record> run_hertz_sphere(const Context& context) {
   struct Load { double E_ball, P; };
   for (const Load load : {Load{72000.0, 10.0}, Load{216000.0, 10.0}, Load{432000.0, 10.0}, Load{432000.0, 31.5}}) {
     auto problem = file.problem;
-    problem.bodies[0].material.young_modulus = load.E_ball;
+    problem.elastic(0).material.young_modulus = load.E_ball;
     problem.force->force = -load.P;
     const bool last = load.P == 31.5;
-    const auto hertz = reference::hertz_point_contact(load.P, R, problem.bodies[0].material,
-                                                      std::numeric_limits<double>::infinity(), problem.bodies[1].material);
+    const auto hertz = reference::hertz_point_contact(load.P, R, problem.elastic(0).material,
+                                                      std::numeric_limits<double>::infinity(), problem.elastic(1).material);
     const double a = hertz.contact_radius(), p0 = hertz.max_pressure();
     if (last)
-      for (int k = 1; k <= 16; ++k) problem.interior_points[1].push_back(Vec2(0.02 * a, -k * a / 8.0));
+      for (int k = 1; k <= 16; ++k) problem.bodies[1].regions[0].interior_points.push_back({Vec2(0.02 * a, -k * a / 8.0), true, {}});
     const auto result = contact::solve_contact(problem, context.progress);
     const std::size_t first = records.size();
     records.push_back(compare_relative("a", result.summary.contact_radius, a, 0.02));
@@ -98,7 +98,7 @@ std::vector<Record> run_hertz_sphere(const Context& context) {
     records.push_back(compare_scaled("pressure_profile_max_error", profile, 0.0, 1.0, 0.03));
     records.push_back(require_at_least("newton_iterations", result.summary.newton_iterations, 1));
     if (last) {
-      const double nu = problem.bodies[1].material.poisson_ratio;
+      const double nu = problem.elastic(1).material.poisson_ratio;
       double szz = 0.0, srr = 0.0, tau = 0.0, tau_max = 0.0, tau_depth = 0.0;
       const auto& interior = result.interior[1];
       for (std::size_t k = 0; k < interior.points.size(); ++k) {
@@ -121,7 +121,7 @@ std::vector<Record> run_hertz_sphere(const Context& context) {
       records.push_back(compare_scaled("tau_max_depth_over_a", tau_depth / a, huber.depth_over_a, 1.0, 0.0625));
       auto thesis = problem;
       thesis.solver.algorithm = contact::Algorithm::thesis;
-      thesis.interior_points = {};
+      thesis.drop_interior_points();
       const auto other = contact::solve_contact(thesis, context.progress);
       // xi = 1e-8 on relative changes: the algorithms agree to ~1e-6 of the peak pressure.
       records.push_back(compare_scaled("thesis_vs_newton_max_difference", algorithm_difference(result, other), 0.0, 1.0, 1e-4));
@@ -142,12 +142,12 @@ std::vector<Record> run_hertz_sphere(const Context& context) {
 std::vector<Record> run_spence_sphere(const Context& context) {
   std::vector<Record> records;
   auto file = load(context, "contact_spence_sphere.toml");
-  file.problem.interior_points = {};  // the stress grid is for plots, not checked here
+  file.problem.drop_interior_points();  // the stress grid is for plots, not checked here
   auto frictionless = file.problem;
   frictionless.friction = 0.0;
   frictionless.increments = 1;
   const auto reference_result = contact::solve_contact(frictionless, context.progress);
-  const double gamma = reference::spence_gamma(file.problem.bodies[0].material, file.problem.bodies[1].material);
+  const double gamma = reference::spence_gamma(file.problem.elastic(0).material, file.problem.elastic(1).material);
   for (const double beta : {0.1, 0.6}) {
     const std::size_t first = records.size();
     const double spence = reference::spence_stick_ratio(beta, std::abs(gamma));
@@ -181,7 +181,7 @@ std::vector<Record> run_spence_sphere(const Context& context) {
       // four times larger (P / 4) brings c/a to the half-space value (spence-halfspace).
       const double R = file.parameters.at("R"), P = file.parameters.at("P");
       auto flatter = load(context, "contact_spence_sphere.toml", {{"R", 4.0 * R}, {"P", P / 4.0}}).problem;
-      flatter.interior_points = {};
+      flatter.drop_interior_points();
       flatter.friction = beta;
       const auto f = contact::solve_contact(flatter, context.progress);
       records.push_back(compare_scaled("c_over_a_R4", f.summary.stick_ratio(), coupled, 1.0,
@@ -209,8 +209,8 @@ std::vector<Record> run_spence_halfspace(const Context& context) {
   std::vector<Record> records;
   const auto file = load(context, "contact_spence_sphere.toml");
   const double R = file.parameters.at("R"), P = file.parameters.at("P");
-  const auto& sphere = file.problem.bodies[0].material;
-  const auto& flat = file.problem.bodies[1].material;
+  const auto& sphere = file.problem.elastic(0).material;
+  const auto& flat = file.problem.elastic(1).material;
   const reference::HertzPointContact hertz{P, R, reference::contact_modulus(sphere, flat)};
   const double a = hertz.contact_radius();
   contact::HalfSpaceSphereContact spec{sphere, flat, R, P, {}, true};
@@ -298,8 +298,8 @@ std::vector<Record> run_flat_punch(const Context& context) {
 void hertz_ball_records(const Context& context, const io::ContactFile& file, const contact::ContactProblem& problem,
                         std::vector<Record>& records) {
   const double R = file.parameters.at("R"), P = file.parameters.at("P");
-  const auto hertz = reference::hertz_point_contact(P, R, problem.bodies[0].material,
-                                                    std::numeric_limits<double>::infinity(), problem.bodies[1].material);
+  const auto hertz = reference::hertz_point_contact(P, R, problem.elastic(0).material,
+                                                    std::numeric_limits<double>::infinity(), problem.elastic(1).material);
   const auto result = contact::solve_contact(problem, context.progress);
   records.push_back(compare_relative("a", result.summary.contact_radius, hertz.contact_radius(), 0.02));
   records.push_back(compare_relative("p0", fitted_p0(result.pairs, hertz.contact_radius()), hertz.max_pressure(), 0.02));
@@ -324,13 +324,13 @@ std::vector<Record> run_non_matching(const Context& context) {
     const io::ParameterOverrides overrides{{"contact_elements", 30}, {"contact_elements_2", support_elements}};
     auto hertz_file = load(context, "contact_hertz_sphere.toml", overrides);
     auto problem = hertz_file.problem;
-    problem.interior_points = {};
+    problem.drop_interior_points();
     const std::size_t first = records.size();
     hertz_ball_records(context, hertz_file, problem, records);
     tag(records, first, "hertz-sphere", {{"P", text(hertz_file.parameters.at("P"))},
                                          {"contact_elements", "30/" + std::to_string(support_elements)}});
     auto spence_file = load(context, "contact_spence_sphere.toml", overrides);
-    spence_file.problem.interior_points = {};
+    spence_file.problem.drop_interior_points();
     spence_file.problem.friction = 0.1;
     const auto spence = contact::solve_contact(spence_file.problem, context.progress);
     const std::size_t second = records.size();
@@ -370,8 +370,8 @@ std::vector<Record> run_shrink_fit(const Context& context) {
     auto problem = file.problem;
     problem.analysis = type;
     const double a = file.parameters.at("a"), b = file.parameters.at("b"), c = file.parameters.at("c");
-    const double expected = shrink_fit_pressure(a, b, c, file.parameters.at("delta"), problem.bodies[0].material,
-                                                problem.bodies[1].material,
+    const double expected = shrink_fit_pressure(a, b, c, file.parameters.at("delta"), problem.elastic(0).material,
+                                                problem.elastic(1).material,
                                                 axisymmetric ? AnalysisType::plane_stress : type);
     const auto result = contact::solve_contact(problem, context.progress);
     double worst = 0.0, sum = 0.0;
@@ -397,7 +397,7 @@ std::vector<Record> run_contact_quadratic(const Context& context) {
   std::vector<Record> records;
   auto hertz_file = load(context, "contact_hertz_sphere.toml");
   auto problem = hertz_file.problem;
-  problem.interior_points = {};
+  problem.drop_interior_points();
   problem.mesh.interpolation = Interpolation::quadratic;
   std::size_t first = records.size();
   hertz_ball_records(context, hertz_file, problem, records);
@@ -405,7 +405,7 @@ std::vector<Record> run_contact_quadratic(const Context& context) {
 
   auto spence_file = load(context, "contact_spence_sphere.toml");
   auto spence = spence_file.problem;
-  spence.interior_points = {};
+  spence.drop_interior_points();
   spence.mesh.interpolation = Interpolation::quadratic;
   spence.friction = 0.1;
   first = records.size();
@@ -415,10 +415,10 @@ std::vector<Record> run_contact_quadratic(const Context& context) {
 
   auto half_file = load(context, "contact_hertz_cylinder_half.toml");
   auto half = half_file.problem;
-  half.interior_points = {};
+  half.drop_interior_points();
   half.mesh.interpolation = Interpolation::quadratic;
   const reference::HertzLineContact line{half_file.parameters.at("P"), half_file.parameters.at("R"),
-                                         reference::contact_modulus(half.bodies[0].material, half.bodies[1].material,
+                                         reference::contact_modulus(half.elastic(0).material, half.elastic(1).material,
                                                                     half.analysis)};
   const auto half_result = contact::solve_contact(half, context.progress);
   double worst = 0.0;
@@ -444,7 +444,7 @@ std::vector<Record> run_hertz_cylinder_half(const Context& context) {
     // The half model carries P/2 of the cylinder's load P per unit length.
     const double P = file.parameters.at("P"), R = file.parameters.at("R");
     const reference::HertzLineContact hertz{
-        P, R, reference::contact_modulus(problem.bodies[0].material, problem.bodies[1].material, problem.analysis)};
+        P, R, reference::contact_modulus(problem.elastic(0).material, problem.elastic(1).material, problem.analysis)};
     const double a = hertz.half_width();
     const auto result = contact::solve_contact(problem, context.progress);
     double worst = 0.0;

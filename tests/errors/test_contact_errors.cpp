@@ -96,7 +96,7 @@ TEST(ContactErrors, FreeBodyNamesTheBody) {
   // Without the platen the ball is held by nothing but the contact zone.
   auto file = io::parse_contact_problem(example_text(), "ball.toml");
   file.problem.force.reset();
-  file.problem.bodies[0].conditions[2] = {};  // the top: free
+  file.problem.elastic(0).conditions[2] = {};  // the top: free
   try {
     contact::solve_contact(file.problem);
     FAIL() << "a free body was solved";

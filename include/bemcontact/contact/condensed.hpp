@@ -13,8 +13,8 @@
 // with M = Q^T B' R the condensed operator, a the jump due to the bodies' own data at full
 // load and b the jump per unit approach of a force-loaded platen. The platen's force is
 //   F = load * F0 + f . x + f_delta * delta.
-#include <array>
 #include <memory>
+#include <vector>
 
 #include "bemcontact/bem/factored_body.hpp"
 #include "bemcontact/contact/pairing.hpp"
@@ -39,6 +39,14 @@ struct CondensedProblem {
 // depend on the tangential tractions (M's w_n rows lose their tau columns).
 void drop_tangential_coupling(CondensedProblem& problem);
 
+// Every elastic region factored once (bem::FactoredBody) with its interface nodes as
+// variable nodes: bond nodes (displacement data: the decomposition's conforming method),
+// contact zone nodes (traction data) and platen nodes (displacement data). Its
+// complementary field is C_r d_r + c0_r, formed by unit solves. A body's bond unknowns U
+// are eliminated directly (equilibrium of the nodal tractions at every bond pair, a dense
+// solve of K U = -(L q + l0) with K the sum of the regions' Schur complements), so that
+// each region's data is an affine function of the contact unknowns q = (x, delta):
+// d_r = D_r q + d0_r. The jumps and the platen's (or rigid body's) force follow.
 class ContactModel {
  public:
   ContactModel(const ContactProblem& problem, const bem::ProgressCallback& progress = {});
@@ -46,22 +54,27 @@ class ContactModel {
   const ContactProblem& problem() const { return problem_; }
   const PreparedContact& prepared() const { return prepared_; }
   const CondensedProblem& condensed() const { return condensed_; }
-  const bem::FactoredBody& body(int b) const { return *factored_[b]; }
+  const bem::FactoredBody& region(int r) const { return *factored_[r]; }
+  // Contact c holds the condensed pairs [pair_offset(c), pair_offset(c + 1)).
+  Index pair_offset(std::size_t c) const { return pair_offsets_[c]; }
+  // The pairs of every contact, in the order of the condensed unknowns.
+  const std::vector<ContactPair>& pairs() const { return pairs_; }
 
-  // The variable data of body b (tractions of its contact nodes, the platen displacement)
-  // for a contact solution x (local frame) and approach delta.
-  Vector variable_data(int b, const Vector& x, double delta) const;
-  // Traction on body 1 at each pair in global components.
+  // The variable data of region r (prepared().regions) at full load for a contact
+  // solution x (local frame) and approach delta.
+  Vector variable_data(int r, const Vector& x, double delta) const;
+  // Traction on side 1 at each pair in global components.
   Vec2 traction(Index pair, const Vector& x) const;
 
  private:
   ContactProblem problem_;
   PreparedContact prepared_;
   CondensedProblem condensed_;
-  std::array<std::unique_ptr<bem::FactoredBody>, 2> factored_;
-  std::array<Index, 2> contact_dofs_{0, 0};  // variable dofs: contact nodes first, then platen nodes
-  Matrix interpolation_;  // P: body 2's zone nodes -> the points the pairs face (2N x 2M)
-  Matrix transfer_;       // T: pair tractions -> body 2's nodal tractions, with a minus sign (2M x 2N)
+  std::vector<Index> pair_offsets_;
+  std::vector<ContactPair> pairs_;
+  std::vector<std::unique_ptr<bem::FactoredBody>> factored_;
+  std::vector<Matrix> data_map_;     // D_r
+  std::vector<Vector> data_offset_;  // d0_r
 };
 
 }  // namespace bemcontact::contact

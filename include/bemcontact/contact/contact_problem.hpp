@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "bemcontact/bem/problem.hpp"
+#include "bemcontact/dd/decomposition.hpp"
 
 namespace bemcontact::contact {
 
@@ -25,14 +26,16 @@ enum class Algorithm {
            // Kalker-style active set for unilateral contact (Alg V.3)
 };
 
-// A total force on one boundary of one body (the ball pressed by P). The boundary moves
-// as a rigid platen: its displacement component `component` is the unknown approach
-// (reported as delta), the other component is held at 0. The force is the integral of
-// the traction component over the boundary (2 pi r dr in axisymmetry), e.g. -31.5 for a
-// downward push on the top of the ball.
+// A total force on one boundary of one elastic body, or on a rigid body. An elastic body's
+// boundary moves as a rigid platen: its displacement component `component` is the unknown
+// approach (reported as delta), the other component is held at 0; a rigid body translates
+// along `component` by delta. The force is the integral of the traction component over the
+// boundary (2 pi r dr in axisymmetry), e.g. -31.5 for a downward push on the top of the
+// ball; on a rigid body it is the force applied to it (-31.5 pushes it down).
 struct ForceLoad {
-  int body = 0;        // 0 or 1
-  int piece = -1;      // index into the body's pieces
+  int body = 0;        // index into ContactProblem::bodies
+  int region = 0;      // region of an elastic body
+  int piece = -1;      // index into the region's pieces; -1 for a rigid body
   int component = 1;   // 0: x (r), 1: y (z)
   double force = 0.0;
 };
@@ -60,29 +63,79 @@ struct SolverOptions {
   int max_threshold_iterations = 200;  // Alg V.2
 };
 
+// A rigid body: its surface is a contour of line and arc pieces traversed with the body on
+// the left (outward normal on the right), built from an analytic profile
+// (io/contact_file: sphere, cylinder, flat punch with edge radius, cone) or given as a
+// polyline. It translates: by a prescribed displacement (times the load factor), or along
+// the component of a ForceLoad with the force's equation as the extra unknown's (like a
+// platen). A rigid body is always the second side of its contacts.
+struct RigidBody {
+  std::string profile;                          // "sphere", "cylinder", "flat", "cone", "contour"
+  std::vector<geometry::BoundaryPiece> contour;
+  std::optional<Vec2> displacement;             // prescribed translation at full load (without a force load)
+};
+
+// A body: one or more elastic regions bonded along shared interfaces (each region a BEM
+// domain with its own material; bond pieces are named as the decomposition's interfaces,
+// dd::Subdomain::piece_interface), or a rigid body.
+struct Body {
+  std::string name;
+  std::vector<dd::Subdomain> regions;  // empty for a rigid body
+  std::optional<RigidBody> rigid;
+};
+
+struct BoundaryRef {
+  int body = -1;
+  int region = 0;
+  int piece = -1;  // -1: the whole contour of a rigid body
+};
+
+// One contact interface: body 1's zone nodes are paired with the points they face on
+// side 2 (pairing.hpp).
+struct ContactInterface {
+  std::string name = "contact";
+  BoundaryRef side1, side2;
+  PairNormal pair_normal = PairNormal::common;
+  // Interference fit: the zones, drawn at their common nominal surface, overlap by this much
+  // along the pair normal (e.g. the radial interference of a shrink fit): every pair's gap
+  // is d - interference from the first load step on.
+  double interference = 0.0;
+};
+
+// Bodies, contacts, one contact law and one load history. The law (kind, friction) and
+// the solver are shared by every contact.
 struct ContactProblem {
   std::string title;
   std::string source_file;
   AnalysisType analysis = AnalysisType::plane_strain;
   geometry::MeshOptions mesh;
-  std::array<bem::BodyDefinition, 2> bodies;
-  std::array<int, 2> contact_piece{-1, -1};  // the boundary of each body that forms Gamma_c
+  std::vector<Body> bodies;
+  std::vector<ContactInterface> contacts;
   ContactKind kind = ContactKind::unilateral;
   double friction = 0.0;  // beta (Coulomb)
   // false drops the normal displacements due to tangential tractions from the condensed
   // operator (the pressure then stays the frictionless one): the uncoupled (Goodman-type)
   // approximation under which Spence's (E.1) holds (DESIGN.md section 6).
   bool tangential_coupling = true;
-  PairNormal pair_normal = PairNormal::common;
-  // Interference fit: the zones, drawn at their common nominal surface, overlap by this much
-  // along the pair normal (e.g. the radial interference of a shrink fit): every pair's gap
-  // is d - interference from the first load step on.
-  double interference = 0.0;
   int increments = 1;  // quasi-static load steps, equal load factors k / N
   bool record_steps = false;
   std::optional<ForceLoad> force;
-  std::array<std::vector<Vec2>, 2> interior_points;  // stress points per body
   SolverOptions solver;
+
+  // The one region of elastic body b (the two-body problems of chapter V).
+  bem::BodyDefinition& elastic(int b) { return bodies.at(b).regions.at(0).body; }
+  const bem::BodyDefinition& elastic(int b) const { return bodies.at(b).regions.at(0).body; }
+  // No stress points (cases and tests that check the contact only).
+  void drop_interior_points() {
+    for (auto& body : bodies)
+      for (auto& r : body.regions) r.interior_points.clear();
+  }
+  dd::Subdomain& region(const BoundaryRef& ref) { return bodies.at(ref.body).regions.at(ref.region); }
+  const dd::Subdomain& region(const BoundaryRef& ref) const { return bodies.at(ref.body).regions.at(ref.region); }
 };
+
+// Two one-region elastic bodies named body1 and body2 and one contact between piece1 of
+// the first and piece2 of the second (pieces to be added by the caller when -1).
+ContactProblem two_body_problem(int piece1 = -1, int piece2 = -1);
 
 }  // namespace bemcontact::contact

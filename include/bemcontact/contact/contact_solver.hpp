@@ -48,34 +48,44 @@ struct ContactSummary {
   double stick_ratio() const { return contact_radius > 0.0 ? stick_radius / contact_radius : 0.0; }  // c/a
 };
 
-struct ContactResult {
-  std::vector<PairResult> pairs;
+// The results of one contact interface (or of a group of pairs).
+struct ContactInterfaceResult {
+  std::string name;
+  std::vector<PairResult> pairs;        // final state
   ContactSummary summary;               // final state, iterations summed over the steps
   std::vector<ContactSummary> steps;    // per load step
   std::vector<std::vector<PairResult>> step_pairs;  // per load step when record_steps
-  std::array<geometry::BoundaryMesh, 2> meshes;
-  std::array<bem::BoundarySolution, 2> boundary;
-  std::array<bem::InteriorSolution, 2> interior;
-  std::array<std::string, 2> body_names;
-  std::vector<std::string> warnings;  // from the pairing (PreparedContact::warnings)
+};
+
+// The base holds the first contact's results (the only one of a two-body problem);
+// `contacts` every contact's, in the problem's order.
+struct ContactResult : ContactInterfaceResult {
+  std::vector<ContactInterfaceResult> contacts;
+  // Per elastic region (ContactModel::prepared().regions): mesh, solution, output name.
+  std::vector<geometry::BoundaryMesh> meshes;
+  std::vector<bem::BoundarySolution> boundary;
+  std::vector<bem::InteriorSolution> interior;
+  std::vector<std::string> body_names;  // the body's name, or the region's in a body of several
+  std::vector<std::string> region_labels;  // "body 'b'" or "region 'r' of body 'b'", for messages
+  std::vector<std::string> warnings;    // from the pairing (PreparedContact::warnings)
   bem::PhaseTimings timings;
   Index unknowns = 0;  // condensed unknowns
 };
 
-// The load history on a condensed problem, whatever model gave it (the two BEM bodies, or
+// The load history on a condensed problem, whatever model gave it (the BEM bodies, or
 // the half-space model of contact/halfspace_model.hpp): equal load factors k / N, Coulomb's
 // law in incremental form. Uses the problem's kind, friction, increments, solver and
 // record_steps. Throws SolverError (with the load step and the residual) on non-convergence.
-struct LoadHistory {
-  std::vector<PairResult> pairs;        // final state
-  ContactSummary summary;               // final state, iterations summed over the steps
-  std::vector<ContactSummary> steps;
-  std::vector<std::vector<PairResult>> step_pairs;  // when record_steps
+// The base summarises all pairs together; `contacts` each group of pairs given by
+// `groups` (offsets: group c holds pairs [groups[c], groups[c + 1])), when given.
+struct LoadHistory : ContactInterfaceResult {
+  std::vector<ContactInterfaceResult> contacts;
   Vector x;                             // final (lambda_n, tau) per pair
   double delta = 0.0;                   // final approach
 };
 LoadHistory solve_load_history(const CondensedProblem& condensed, const std::vector<ContactPair>& pairs,
-                               const ContactProblem& problem, const bem::ProgressCallback& progress = {});
+                               const ContactProblem& problem, const bem::ProgressCallback& progress = {},
+                               const std::vector<Index>& groups = {});
 
 // Throws SolverError (with the load step and the residual) when a step does not converge,
 // GeometryError for a zone that cannot be paired, InputError for inconsistent options.

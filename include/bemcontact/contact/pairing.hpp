@@ -1,6 +1,6 @@
 #pragma once
-// Pairs on the potential contact zone (section V.2.2.1), between independently meshed
-// zones: each node of body 1's zone is projected along the pair normal (V.2) onto body 2's
+// Pairs on the potential contact zones (section V.2.2.1), between independently meshed
+// zones, or between a zone and a rigid body's contour: each node of body 1's zone is projected along the pair normal (V.2) onto body 2's
 // zone (node-to-segment); body 2's displacement there is interpolated from the nodes of
 // the element it meets, and the pair's force goes to those nodes with the same weights
 // (consistent force transfer). A body-1 node that faces no part of body 2's zone, or
@@ -32,13 +32,23 @@ struct ContactPair {
   bool on_axis = false; // axisymmetric pair on r = 0: no tangential traction by symmetry
 };
 
-struct PreparedContact {
-  std::array<bem::BodyDefinition, 2> bodies;         // the zones marked (nodes split at their ends)
-  std::array<geometry::BoundaryMesh, 2> meshes;
-  std::array<int, 2> contact_pieces{-1, -1};         // the zone of each body
+// One elastic region as meshed for the contact solve: its contact zones and any platen
+// marked (nodes split at their ends).
+struct PreparedRegion {
+  int body = 0, region = 0;       // in ContactProblem::bodies
+  std::string label;              // "body 'b'" or "region 'r' of body 'b'", for messages
+  bem::BodyDefinition definition;
+  geometry::BoundaryMesh mesh;
+};
+
+// The pairs of one contact interface.
+struct PreparedInterface {
+  int region1 = -1, piece1 = -1;  // side 1: index into PreparedContact::regions, its zone piece
+  int region2 = -1, piece2 = -1;  // side 2 when elastic
+  int rigid_body = -1;            // side 2 when rigid: index into ContactProblem::bodies
   std::vector<ContactPair> pairs;                    // in the order of body 1's zone
-  int unpaired_nodes1 = 0;                           // body-1 zone nodes facing no part of body 2's zone
-  std::vector<Index> zone_nodes2;                    // the nodes of body 2's zone, in order
+  int unpaired_nodes1 = 0;                           // side-1 zone nodes facing no part of side 2
+  std::vector<Index> zone_nodes2;                    // the nodes of side 2's zone, in order
   std::vector<double> zone_weights2;                 // their integration weights
   // Consistent (mortar-type) traction transfer: body 2's nodal tractions are the L2
   // projection of the pairs' tractions onto its zone, t2 = -transfer p with
@@ -46,19 +56,27 @@ struct PreparedContact {
   // point y faces on body 2) and M22(a, b) = int over body 2's zone of N2_a N2_b (2 pi r
   // in axisymmetry). Matching meshes give the identity; a constant pressure passes as a
   // constant traction whatever the meshes (collocating the forces at body 1's nodes would
-  // alias it).
+  // alias it). Empty for a rigid side 2.
   Matrix transfer;                                   // zone_nodes2 x pairs
+};
+
+struct PreparedContact {
+  std::vector<PreparedRegion> regions;               // every elastic region, body by body
+  std::vector<std::vector<int>> body_regions;        // per body: its indices in regions (none if rigid)
+  std::vector<PreparedInterface> contacts;           // as ContactProblem::contacts
   // Body 1's zone much finer than body 2's where they face: more pressure unknowns than
   // body 2's nodes can carry, and the pressures oscillate (Hertz ball, 30 elements against
   // 19: profile 7.7 %, axis pair -12 %; against 25: 0.8 %). Reported, with the remedy.
   std::vector<std::string> warnings;
-  int force_piece = -1;                              // piece of the force load after cutting
+  int force_region = -1;                             // region of a force-loaded platen
+  int force_piece = -1;
   std::vector<Index> loaded_nodes;                   // nodes of the force-loaded boundary
   std::vector<double> loaded_weights;                // their integration weights
 };
 
 // Meshes and pairs. Throws GeometryError naming the boundaries or the node when no node of
-// body 1's zone faces body 2's zone, or the bodies initially overlap.
+// a side-1 zone faces its side 2, or the bodies initially overlap; InputError for
+// references out of range.
 PreparedContact prepare_contact(const ContactProblem& problem);
 
 // Integral of each node's shape function over the given pieces' elements, times 2 pi r

@@ -2,6 +2,8 @@
 // Writers of a contact solution; each returns file contents, the command writes them
 // (with OutputDirectory, all or nothing).
 //
+// One set of pair files per contact, named after it (<name>.csv, <name>_steps.csv,
+// <name>_step<k>.csv; a single unnamed contact is "contact"):
 //   contact.csv        one row per node pair (final state):
 //                      pair,x,y,coordinate,nx,ny,gap,p_n,p_t,slip_ratio,jump_n,jump_t,status
 //                      (x, y: body 1's node; n: common normal out of body 1; p_n < 0 in
@@ -11,7 +13,8 @@
 //                      centre_pressure,normal_force,approach,pairs_in_contact,
 //                      newton_iterations,kalker_iterations,threshold_iterations,gmres_cycles,residual
 //   contact_step<k>.csv  the pairs at step k (when record_steps)
-//   <body>_boundary.csv, <body>_interior.csv (+ .vtk): each body's fields (formats of
+//   <body>_boundary.csv, <body>_interior.csv (+ .vtk): each elastic body's fields (each
+//                      region's, named after it, in a body of several regions) (formats of
 //                      io/results_writer.hpp), for stresses and von Mises iso-contours.
 #include <map>
 #include <string>
@@ -25,11 +28,12 @@
 namespace bemcontact::io {
 
 std::string contact_csv(const std::vector<contact::PairResult>& pairs);
-std::string contact_steps_csv(const contact::ContactResult& result);
+std::string contact_steps_csv(const contact::ContactInterfaceResult& result);
 
-// The "contact" fragment of summary.json: kind, algorithm, friction, increments, pairs,
-// unknowns, and the final a, c, c/a, peak and centre pressure, total normal force,
-// approach delta, iterations per loop, residual, time per phase, and c/a per step.
+// The "contact" fragment of summary.json: kind, algorithm, friction, increments, unknowns,
+// and the first contact's pairs, final a, c, c/a, peak and centre pressure, total normal
+// force, approach delta, iterations per loop, residual, time per phase, and values per
+// step. summary.json also holds "contacts": the same values per contact, with its name.
 nlohmann::json contact_summary_json(const contact::ContactProblem& problem, const contact::ContactResult& result);
 
 // A short text for the terminal: a, c, peak pressure, normal force, approach, iterations,

@@ -17,6 +17,9 @@
 #include "bemcontact/io/parameter_overrides.hpp"
 #include "bemcontact/dd/decomposition.hpp"
 #include "bemcontact/io/problem_file.hpp"
+#include "bemcontact/io/toml_reader.hpp"
+
+#include <toml++/toml.h>
 
 namespace bemcontact::io {
 
@@ -26,6 +29,12 @@ struct DecompositionFile {
   std::map<std::string, double> parameters;
   std::vector<std::string> warnings;  // documented warnings of the reader (file:line: key ...)
 };
+
+// One region (subdomain) table: the body-level keys of a one-body file, name and interior
+// handled by the caller's check of keys; a boundary with interface = "<name>" is a bond
+// (no condition). Vertices of shared_vertices not defined in the table are added to it.
+dd::Subdomain parse_region(toml::table& table, const std::string& path, FileContext& context, int line,
+                           const std::string& name, const toml::table* shared_vertices = nullptr);
 
 // True when the file (text) is valid TOML with [[subdomain]] tables; false otherwise
 // (a file that does not parse is left to read_problem_file to report).

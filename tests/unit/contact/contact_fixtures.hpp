@@ -3,7 +3,7 @@
 // depend on the axisymmetric integration).
 #include <cmath>
 
-#include "bemcontact/contact/contact_problem.hpp"
+#include "bemcontact/contact/pairing.hpp"
 
 namespace bemcontact::contact::testing {
 
@@ -34,9 +34,10 @@ inline void add(bem::BodyDefinition& body, geometry::BoundaryPiece piece, bem::B
 // Stiff flat punch [-a, a] x [0, h] on a support [-W, W] x [-H, 0] (plane strain), bottom
 // of the support clamped, punch top pressed by a force (platen) or a displacement.
 inline ContactProblem flat_punch(double a, double W, int contact_elements, double force, bool bilateral = false) {
-  ContactProblem problem;
+  ContactProblem problem = two_body_problem(0, 3);
   problem.analysis = AnalysisType::plane_strain;
-  auto& punch = problem.bodies[0];
+  problem.bodies[0].name = "punch";
+  auto& punch = problem.elastic(0);
   punch.name = "punch";
   punch.material = {1.0e5, 0.3};
   const double h = a;
@@ -44,7 +45,8 @@ inline ContactProblem flat_punch(double a, double W, int contact_elements, doubl
   add(punch, line("right", {a, 0.0}, {a, h}, 6), free_condition());
   add(punch, line("top", {a, h}, {-a, h}, 8), displacement(0.0, 0.0, "top"));
   add(punch, line("left", {-a, h}, {-a, 0.0}, 6), free_condition());
-  auto& support = problem.bodies[1];
+  problem.bodies[1].name = "support";
+  auto& support = problem.elastic(1);
   support.name = "support";
   support.material = {1.0, 0.3};
   const double H = W;
@@ -54,7 +56,6 @@ inline ContactProblem flat_punch(double a, double W, int contact_elements, doubl
   add(support, line("contact", {a, 0.0}, {-a, 0.0}, contact_elements), free_condition());
   add(support, line("top left", {-a, 0.0}, {-W, 0.0}, 16, W / a, geometry::RefineToward::start), free_condition());
   add(support, line("left", {-W, 0.0}, {-W, -H}, 10), free_condition());
-  problem.contact_piece = {0, 3};
   problem.kind = bilateral ? ContactKind::bilateral : ContactKind::unilateral;
   ForceLoad load;
   load.body = 0;
@@ -78,9 +79,10 @@ inline geometry::BoundaryPiece arc(const std::string& name, Vec2 a, Vec2 b, Vec2
 // segment ends where the common normals through the arc ends meet it: x = 2R tan(theta/2).
 inline ContactProblem cylinder_on_block(double R, double theta, int contact_elements, double force,
                                         const Material& cylinder, const Material& block, double W = 10.0) {
-  ContactProblem problem;
+  ContactProblem problem = two_body_problem(0, 3);
   problem.analysis = AnalysisType::plane_strain;
-  auto& ball = problem.bodies[0];
+  problem.bodies[0].name = "cylinder";
+  auto& ball = problem.elastic(0);
   ball.name = "cylinder";
   ball.material = cylinder;
   const Vec2 c(0.0, R);
@@ -89,7 +91,8 @@ inline ContactProblem cylinder_on_block(double R, double theta, int contact_elem
   add(ball, arc("right arc", right, {R, R}, c, 12), free_condition());
   add(ball, line("top", {R, R}, {-R, R}, 12), displacement(0.0, 0.0, "top"));
   add(ball, arc("left arc", {-R, R}, left, c, 12), free_condition());
-  auto& support = problem.bodies[1];
+  problem.bodies[1].name = "support";
+  auto& support = problem.elastic(1);
   support.name = "support";
   support.material = block;
   const double b = 2.0 * R * std::tan(0.5 * theta);
@@ -99,7 +102,6 @@ inline ContactProblem cylinder_on_block(double R, double theta, int contact_elem
   add(support, line("contact", {b, 0.0}, {-b, 0.0}, contact_elements), free_condition());
   add(support, line("top left", {-b, 0.0}, {-W, 0.0}, 16, W / b, geometry::RefineToward::start), free_condition());
   add(support, line("left", {-W, 0.0}, {-W, -W}, 10), free_condition());
-  problem.contact_piece = {0, 3};
   problem.kind = ContactKind::unilateral;
   ForceLoad load;
   load.body = 0;

@@ -18,12 +18,12 @@ TEST(ContactIo, ExamplesReadWithTheirSettings) {
   const auto hertz = io::read_contact_file(dir + "/contact_hertz_sphere.toml");
   EXPECT_EQ(hertz.problem.analysis, AnalysisType::axisymmetric);
   EXPECT_EQ(hertz.problem.kind, contact::ContactKind::unilateral);
-  EXPECT_EQ(hertz.problem.pair_normal, contact::PairNormal::body2);
+  EXPECT_EQ(hertz.problem.contacts.front().pair_normal, contact::PairNormal::body2);
   ASSERT_TRUE(hertz.problem.force.has_value());
   EXPECT_DOUBLE_EQ(hertz.problem.force->force, -31.5);
   EXPECT_EQ(hertz.problem.force->component, 1);
   EXPECT_EQ(hertz.problem.bodies[0].name, "ball");
-  EXPECT_DOUBLE_EQ(hertz.problem.bodies[0].material.young_modulus, 432000.0);
+  EXPECT_DOUBLE_EQ(hertz.problem.elastic(0).material.young_modulus, 432000.0);
   const auto spence = io::read_contact_file(dir + "/contact_spence_sphere.toml");
   EXPECT_DOUBLE_EQ(spence.problem.friction, 0.1);
   EXPECT_EQ(spence.problem.increments, 16);

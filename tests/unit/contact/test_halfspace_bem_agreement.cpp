@@ -123,11 +123,11 @@ TEST(HalfSpaceModel, FlatBemBodiesWithHertzGapMatchTheHalfSpaceModel) {
   auto condensed = bem.condensed();
   std::vector<double> radii;
   for (Index i = 0; i < condensed.pairs; ++i) {
-    const double r = bem.prepared().pairs[i].position2.x();
+    const double r = bem.pairs()[i].position2.x();
     condensed.gap[i] = r * r / (2.0 * R);
     radii.push_back(r);
   }
-  const HalfSpaceSphereContact spec{file.problem.bodies[0].material, file.problem.bodies[1].material, R, 31.5, radii,
+  const HalfSpaceSphereContact spec{file.problem.elastic(0).material, file.problem.elastic(1).material, R, 31.5, radii,
                                     true};
   const auto halfspace = halfspace_sphere_model(spec);
   for (const bool coupling : {true, false}) {
@@ -137,7 +137,7 @@ TEST(HalfSpaceModel, FlatBemBodiesWithHertzGapMatchTheHalfSpaceModel) {
       drop_tangential_coupling(bem_condensed);
       drop_tangential_coupling(halfspace_condensed);
     }
-    const auto from_bem = solve_load_history(bem_condensed, bem.prepared().pairs, file.problem);
+    const auto from_bem = solve_load_history(bem_condensed, bem.pairs(), file.problem);
     const auto from_halfspace = solve_load_history(halfspace_condensed, halfspace.pairs, file.problem);
     // Within a fifth of the pair spacing (0.0025 / 0.07 = 0.036 in c/a).
     EXPECT_NEAR(stick_ratio(from_bem), stick_ratio(from_halfspace), 0.007) << "coupling " << coupling;

@@ -14,7 +14,8 @@ namespace {
 
 ContactProblem coarse_ball() {
   auto file = io::read_contact_file(std::string(BEMCONTACT_EXAMPLES_DIR) + "/contact_hertz_sphere.toml");
-  for (int b = 0; b < 2; ++b) file.problem.bodies[b].pieces[file.problem.contact_piece[b]].elements = 15;
+  const auto& contact = file.problem.contacts.front();
+  for (const auto* side : {&contact.side1, &contact.side2}) file.problem.region(*side).body.pieces[side->piece].elements = 15;
   return file.problem;
 }
 
@@ -23,8 +24,8 @@ ContactProblem coarse_ball() {
 TEST(ContactHertzSphere, CoarseMeshMatchesHertz) {
   const auto problem = coarse_ball();
   const auto result = solve_contact(problem);
-  const auto hertz = reference::hertz_point_contact(31.5, 1.0, problem.bodies[0].material,
-                                                    std::numeric_limits<double>::infinity(), problem.bodies[1].material);
+  const auto hertz = reference::hertz_point_contact(31.5, 1.0, problem.elastic(0).material,
+                                                    std::numeric_limits<double>::infinity(), problem.elastic(1).material);
   // Contact elements of a/10: a and delta within 3 % (2 % at the example's resolution).
   EXPECT_NEAR(result.summary.contact_radius, hertz.contact_radius(), 0.03 * hertz.contact_radius());
   EXPECT_NEAR(-result.summary.approach, hertz.approach(), 0.03 * hertz.approach());

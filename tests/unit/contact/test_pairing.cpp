@@ -13,7 +13,8 @@ namespace bemcontact::contact {
 TEST(ContactPairing, CylinderOnBlockGapsFollowTheCircle) {
   const double R = 1.0, theta = 0.25;
   const auto problem = testing::cylinder_on_block(R, theta, 20, 1.0, {1.0, 0.3}, {1.0, 0.3});
-  const auto prepared = prepare_contact(problem);
+  const auto prepared_all = prepare_contact(problem);
+  const auto& prepared = prepared_all.contacts.front();
   // 20 elements on the cylinder's zone, 21 nodes (split ends), all facing the block's zone.
   ASSERT_EQ(prepared.pairs.size(), 21u);
   EXPECT_EQ(prepared.unpaired_nodes1, 0);
@@ -43,10 +44,11 @@ TEST(ContactPairing, CylinderOnBlockGapsFollowTheCircle) {
 
 TEST(ContactPairing, Body2NormalPairsVertically) {
   auto problem = testing::cylinder_on_block(1.0, 0.25, 10, 1.0, {1.0, 0.3}, {1.0, 0.3});
-  problem.pair_normal = PairNormal::body2;
-  problem.bodies[1].pieces[2].end.x() = problem.bodies[1].pieces[3].start.x() = std::sin(0.25);
-  problem.bodies[1].pieces[3].end.x() = problem.bodies[1].pieces[4].start.x() = -std::sin(0.25);
-  const auto prepared = prepare_contact(problem);
+  problem.contacts.front().pair_normal = PairNormal::body2;
+  problem.elastic(1).pieces[2].end.x() = problem.elastic(1).pieces[3].start.x() = std::sin(0.25);
+  problem.elastic(1).pieces[3].end.x() = problem.elastic(1).pieces[4].start.x() = -std::sin(0.25);
+  const auto prepared_all = prepare_contact(problem);
+  const auto& prepared = prepared_all.contacts.front();
   for (const auto& pair : prepared.pairs) {
     EXPECT_NEAR(pair.normal.y(), -1.0, 1e-14);
     EXPECT_NEAR(pair.gap, pair.position1.y() - pair.position2.y(), 1e-14);  // height above the block
@@ -56,8 +58,8 @@ TEST(ContactPairing, Body2NormalPairsVertically) {
 TEST(ContactPairing, ZonesThatDoNotFaceAreRejected) {
   // The block's zone moved entirely to the right of the cylinder's: no node faces it.
   auto problem = testing::cylinder_on_block(1.0, 0.25, 10, 1.0, {1.0, 0.3}, {1.0, 0.3});
-  problem.bodies[1].pieces[2].end.x() = problem.bodies[1].pieces[3].start.x() = 5.0;
-  problem.bodies[1].pieces[3].end.x() = problem.bodies[1].pieces[4].start.x() = 3.0;
+  problem.elastic(1).pieces[2].end.x() = problem.elastic(1).pieces[3].start.x() = 5.0;
+  problem.elastic(1).pieces[3].end.x() = problem.elastic(1).pieces[4].start.x() = 3.0;
   EXPECT_THROW(prepare_contact(problem), GeometryError);
 }
 
@@ -66,11 +68,12 @@ TEST(ContactPairing, NonMatchingZonesAndALargerZoneOnBody2) {
   // the block's zone inside an element, with its own interpolation; the gaps are the
   // circle's heights above the flat (body 2's normal).
   auto problem = testing::cylinder_on_block(1.0, 0.25, 13, 1.0, {1.0, 0.3}, {1.0, 0.3});
-  problem.pair_normal = PairNormal::body2;
-  problem.bodies[1].pieces[3].elements = 29;
-  problem.bodies[1].pieces[2].end.x() = problem.bodies[1].pieces[3].start.x() = 0.5;
-  problem.bodies[1].pieces[3].end.x() = problem.bodies[1].pieces[4].start.x() = -0.5;
-  const auto prepared = prepare_contact(problem);
+  problem.contacts.front().pair_normal = PairNormal::body2;
+  problem.elastic(1).pieces[3].elements = 29;
+  problem.elastic(1).pieces[2].end.x() = problem.elastic(1).pieces[3].start.x() = 0.5;
+  problem.elastic(1).pieces[3].end.x() = problem.elastic(1).pieces[4].start.x() = -0.5;
+  const auto prepared_all = prepare_contact(problem);
+  const auto& prepared = prepared_all.contacts.front();
   ASSERT_EQ(prepared.pairs.size(), 14u);
   EXPECT_EQ(prepared.zone_nodes2.size(), 30u);
   double weight1 = 0.0, weight2 = 0.0;
@@ -80,7 +83,7 @@ TEST(ContactPairing, NonMatchingZonesAndALargerZoneOnBody2) {
     // Linear interpolation on the block's element reproduces x.
     double x = 0.0;
     for (int a = 0; a < pair.count2; ++a)
-      x += pair.shape2[a] * prepared.meshes[1].nodes[prepared.zone_nodes2[pair.zone2[a]]].position.x();
+      x += pair.shape2[a] * prepared_all.regions[1].mesh.nodes[prepared.zone_nodes2[pair.zone2[a]]].position.x();
     EXPECT_NEAR(x, pair.position2.x(), 1e-12);
     weight1 += pair.weight;
   }

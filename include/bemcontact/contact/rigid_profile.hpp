@@ -1,0 +1,27 @@
+#pragma once
+// Contours of rigid indenters (ContactProblem's RigidBody): line and arc pieces with the
+// body on the left, so that their outward normal is the indenter's. Analytic profiles are
+// exact (the sphere's arcs are arcs); a polyline gives any other shape.
+#include <string>
+#include <vector>
+
+#include "bemcontact/geometry/boundary.hpp"
+
+namespace bemcontact::contact {
+
+struct ProfileShape {
+  std::string profile;           // "sphere" / "cylinder", "flat", "cone", "contour"
+  Vec2 center = Vec2::Zero();    // sphere, cylinder: centre; flat: middle of the face; cone: apex
+  double radius = 0.0;           // sphere, cylinder
+  double half_width = 0.0;       // flat: half-width a of the flat face
+  double edge_radius = 0.0;      // flat: radius of the rounded edges (0: sharp)
+  double half_angle = 0.0;       // cone: half-angle theta in radians (0 < theta < pi / 2)
+  double height = 1.0;           // flat, cone: how far the sides rise above the face or apex
+  std::vector<Vec2> points;      // contour: polyline, body on the left
+};
+
+// The pieces of the profile; the flat punch and the cone face down (-y), their sides rise
+// by `height`. Throws InputError-free GeometryError for a degenerate shape.
+std::vector<geometry::BoundaryPiece> rigid_contour(const ProfileShape& shape);
+
+}  // namespace bemcontact::contact
