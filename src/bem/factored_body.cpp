@@ -5,8 +5,9 @@
 namespace bemcontact::bem {
 
 FactoredBody::FactoredBody(const geometry::BoundaryMesh& mesh, const BodyDefinition& body, AnalysisType type,
-                           std::vector<VariableNode> variable_nodes, const ProgressCallback& progress)
-    : mesh_(mesh), variable_(std::move(variable_nodes)) {
+                           std::vector<VariableNode> variable_nodes, const ProgressCallback& progress,
+                           std::vector<PointConstraint> variable_constraints)
+    : mesh_(mesh), variable_(std::move(variable_nodes)), variable_constraints_(static_cast<Index>(variable_constraints.size())) {
   conditions_ = resolve_node_conditions(mesh_, body, type);
   for (const auto& v : variable_) {
     if (v.node < 0 || v.node >= mesh_.node_count()) throw Error("FactoredBody: variable node out of range");
@@ -19,7 +20,13 @@ FactoredBody::FactoredBody(const geometry::BoundaryMesh& mesh, const BodyDefinit
       c.kind[0] = ConditionKind::displacement;
     }
   }
-  constraints_ = resolve_point_constraints(mesh_, body, conditions_);
+  BodyDefinition constrained = body;
+  for (auto& constraint : variable_constraints) {
+    if (constraint.displacement[0].has_value() == constraint.displacement[1].has_value())
+      throw Error("FactoredBody: a variable constraint prescribes exactly one component");
+    constrained.constraints.push_back(std::move(constraint));
+  }
+  constraints_ = resolve_point_constraints(mesh_, constrained, conditions_);
   const ElementIntegrator integrator(type, body.material);
   auto matrices = assemble_influence_matrices(mesh_, integrator, progress);
   auto system = build_boundary_system(matrices, conditions_, constraints_);
@@ -38,6 +45,12 @@ FactoredBody::FactoredBody(const geometry::BoundaryMesh& mesh, const BodyDefinit
       else
         variable_rhs_.block(0, col, dofs, 1) = matrices.G.col(d);
     }
+  }
+  // A variable constraint's datum is the right-hand side of its equation (the last rows).
+  const Index first_variable = static_cast<Index>(constraints_.size()) - variable_constraints_;
+  for (Index q = 0; q < variable_constraints_; ++q) {
+    variable_rhs_(dofs + first_variable + q, 2 * static_cast<Index>(variable_.size()) + q) = 1.0;
+    fixed_rhs_[dofs + first_variable + q] = 0.0;
   }
   for (Index i = 0; i < mesh_.node_count(); ++i)
     if (conditions_[i].on_axis) variable_rhs_.row(2 * i).setZero();
@@ -58,7 +71,7 @@ BoundarySolution FactoredBody::recover(const Vector& y, const Vector& variable_d
   if (!with_fixed_data)
     for (auto& c : conditions) c.value = {0.0, 0.0};
   for (std::size_t k = 0; k < variable_.size(); ++k) {
-    auto& c = conditions[variable_[k].node];
+    auto& c = conditions[variable_[k].node];  // (variable constraints' values enter y only)
     for (int comp = 0; comp < 2; ++comp)
       if (!(c.on_axis && comp == 0)) c.value[comp] = variable_data[2 * static_cast<Index>(k) + comp];
   }
@@ -83,6 +96,10 @@ Matrix FactoredBody::complementary_columns(const Matrix& variable_data, bool wit
           conditions_[node].on_axis && c == 0 ? Eigen::RowVectorXd::Zero(variable_data.cols())
                                               : Eigen::RowVectorXd(y.row(2 * node + c));
     }
+  // Variable constraints: their reactions.
+  const Index n = mesh_.node_count(), first_variable = static_cast<Index>(constraints_.size()) - variable_constraints_;
+  for (Index q = 0; q < variable_constraints_; ++q)
+    out.row(2 * static_cast<Index>(variable_.size()) + q) = y.row(2 * n + first_variable + q);
   // Reactions of point constraints at variable nodes add to their tractions.
   for (std::size_t q = 0; q < constraints_.size(); ++q)
     for (std::size_t k = 0; k < variable_.size(); ++k)

@@ -1,5 +1,6 @@
 #include "bemcontact/contact/condensed.hpp"
 
+#include "bemcontact/contact/free_motions.hpp"
 #include "bemcontact/core/error.hpp"
 #include "bemcontact/dd/interface.hpp"
 #include "bemcontact/operators/dense_lu.hpp"
@@ -46,8 +47,13 @@ ContactModel::ContactModel(const ContactProblem& problem, const bem::ProgressCal
   }
   const Index n = static_cast<Index>(pairs_.size());
   if (n == 0) throw GeometryError("contact: the contact zones hold no node pair");
-  const Index nq = 2 * n + 1;  // q = (x, delta)
-  const Index delta_column = 2 * n;
+  // Motions: the force load's approach first, then the free motions of bodies held only by
+  // their contacts (free_motions.hpp).
+  const auto free_motions = free_motion_constraints(problem, prepared_, pairs_, pair_offsets_);
+  const Index force_motions = problem.force ? 1 : 0;
+  const Index K = force_motions + static_cast<Index>(free_motions.size());
+  const Index nq = 2 * n + K;  // q = (x, delta)
+  const Index delta_column = 2 * n;  // the force load's approach
   const auto& regions = prepared_.regions;
   const std::size_t region_count = regions.size();
 
@@ -106,6 +112,13 @@ ContactModel::ContactModel(const ContactProblem& problem, const bem::ProgressCal
     v.blocks.push_back({BlockKind::platen, 0, 2 * static_cast<Index>(v.nodes.size())});
     for (const Index node : prepared_.loaded_nodes) v.nodes.push_back({node, bem::ConditionKind::displacement});
   }
+  // Free motions: a variable point constraint each, its datum after the region's nodes.
+  std::vector<std::vector<bem::PointConstraint>> pins(region_count);
+  std::vector<std::pair<int, Index>> pin_of_motion;  // per free motion: region, index among its pins
+  for (const auto& motion : free_motions) {
+    pin_of_motion.emplace_back(motion.region, static_cast<Index>(pins[motion.region].size()));
+    pins[motion.region].push_back(motion.constraint);
+  }
   const int component = problem.force ? problem.force->component : 0;
 
   // Factor every region; its data from the contact unknowns before the bonds: G_r q.
@@ -120,7 +133,7 @@ ContactModel::ContactModel(const ContactProblem& problem, const bem::ProgressCal
       };
     try {
       factored_[r] = std::make_unique<bem::FactoredBody>(regions[r].mesh, regions[r].definition, problem.analysis,
-                                                         variables[r].nodes, region_progress);
+                                                         variables[r].nodes, region_progress, pins[r]);
     } catch (const SolverError& error) {
       // The hint is for a singular region; a matrix that is not finite has another cause.
       if (std::string(error.what()).find("is singular") == std::string::npos) throw;
@@ -133,6 +146,10 @@ ContactModel::ContactModel(const ContactProblem& problem, const bem::ProgressCal
     flexibility[r] = factored_[r]->complementary_columns(Matrix::Identity(dofs, dofs), false);
     own_response[r] = factored_[r]->complementary(Vector::Zero(dofs), true);
     G[r] = Matrix::Zero(dofs, nq);
+    for (std::size_t m = 0; m < pin_of_motion.size(); ++m)
+      if (pin_of_motion[m].first == static_cast<int>(r))
+        G[r](2 * static_cast<Index>(variables[r].nodes.size()) + pin_of_motion[m].second,
+             2 * n + force_motions + static_cast<Index>(m)) = 1.0;
     for (const auto& block : variables[r].blocks) {
       if (block.kind == BlockKind::platen) {
         for (Index l = 0; l < static_cast<Index>(prepared_.loaded_nodes.size()); ++l)
@@ -173,6 +190,10 @@ ContactModel::ContactModel(const ContactProblem& problem, const bem::ProgressCal
         l0[v.bond_unknown[i]] += own_response[r][i];
       }
     }
+    // A bond node on the axis of an axisymmetric body keeps u_r = 0 (its radial datum and
+    // traction are fixed by symmetry): its unknown appears in no equation.
+    for (Index i = 0; i < nb; ++i)
+      if (K.row(i).cwiseAbs().maxCoeff() == 0.0 && K.col(i).cwiseAbs().maxCoeff() == 0.0) K(i, i) = 1.0;
     std::unique_ptr<operators::DenseLU> lu;
     try {
       lu = std::make_unique<operators::DenseLU>(K, "the bond equations of body '" + problem.bodies[b].name + "'");
@@ -240,31 +261,39 @@ ContactModel::ContactModel(const ContactProblem& problem, const bem::ProgressCal
     cp.gap[g] = pairs_[g].gap;
     cp.on_axis[g] = pairs_[g].on_axis;
   }
-  cp.has_force = problem.force.has_value();
-  cp.b = cp.has_force ? Vector(W.col(delta_column)) : Vector::Zero(2 * n);
-  cp.f = Vector::Zero(2 * n);
-  if (!cp.has_force) return;
-  cp.force = problem.force->force;
-  if (rigid_force) {
-    // The force on the rigid body is the integral of the traction its contacts apply to side 1.
-    for (std::size_t c = 0; c < prepared_.contacts.size(); ++c) {
-      if (prepared_.contacts[c].rigid_body != problem.force->body) continue;
-      for (Index g = pair_offsets_[c]; g < pair_offsets_[c + 1]; ++g) {
-        const Mat2 Rg = R(g);
-        cp.f.segment<2>(2 * g) = pairs_[g].weight * Rg.row(component).transpose();
+  cp.groups = pair_offsets_;
+  cp.motions = K;
+  cp.b = W.rightCols(K);
+  Matrix F = Matrix::Zero(K, nq);
+  cp.F0 = Vector::Zero(K);
+  cp.force = Vector::Zero(K);
+  if (problem.force) {
+    cp.force[0] = problem.force->force;
+    if (rigid_force) {
+      // The force on the rigid body is the integral of the traction its contacts apply to side 1.
+      for (std::size_t c = 0; c < prepared_.contacts.size(); ++c) {
+        if (prepared_.contacts[c].rigid_body != problem.force->body) continue;
+        for (Index g = pair_offsets_[c]; g < pair_offsets_[c + 1]; ++g)
+          F.block<1, 2>(0, 2 * g) = pairs_[g].weight * R(g).row(component);
+      }
+    } else {
+      const int rf = prepared_.force_region;
+      const Index of = block_offset(variables[rf], BlockKind::platen, 0);
+      for (Index l = 0; l < static_cast<Index>(prepared_.loaded_nodes.size()); ++l) {
+        F.row(0) += prepared_.loaded_weights[l] * response[rf].row(of + 2 * l + component);
+        cp.F0[0] += prepared_.loaded_weights[l] * response0[rf][of + 2 * l + component];
       }
     }
-    return;
   }
-  const int rf = prepared_.force_region;
-  const Index of = block_offset(variables[rf], BlockKind::platen, 0);
-  Eigen::RowVectorXd force_row = Eigen::RowVectorXd::Zero(nq);
-  for (Index l = 0; l < static_cast<Index>(prepared_.loaded_nodes.size()); ++l) {
-    force_row += prepared_.loaded_weights[l] * response[rf].row(of + 2 * l + component);
-    cp.F0 += prepared_.loaded_weights[l] * response0[rf][of + 2 * l + component];
+  // A free motion's equation: its pin's reaction vanishes (the body's equilibrium).
+  for (std::size_t m = 0; m < pin_of_motion.size(); ++m) {
+    const auto [r, q] = pin_of_motion[m];
+    const Index row = 2 * static_cast<Index>(variables[r].nodes.size()) + q;
+    F.row(force_motions + static_cast<Index>(m)) = response[r].row(row);
+    cp.F0[force_motions + static_cast<Index>(m)] = response0[r][row];
   }
-  cp.f = force_row.head(2 * n).transpose();
-  cp.f_delta = force_row[delta_column];
+  cp.f = F.leftCols(2 * n);
+  cp.f_delta = F.rightCols(K);
 }
 
 Vec2 ContactModel::traction(Index pair, const Vector& x) const {
@@ -272,8 +301,8 @@ Vec2 ContactModel::traction(Index pair, const Vector& x) const {
   return -x[2 * pair] * p.normal + x[2 * pair + 1] * p.tangent;
 }
 
-Vector ContactModel::variable_data(int r, const Vector& x, double delta) const {
-  Vector q(x.size() + 1);
+Vector ContactModel::variable_data(int r, const Vector& x, const Vector& delta) const {
+  Vector q(x.size() + delta.size());
   q << x, delta;
   return data_map_[r] * q + data_offset_[r];
 }

@@ -66,7 +66,7 @@ ContactSummary summarise(const std::vector<ContactPair>& geometry, const std::ve
                          const StepOutput& step, double load) {
   ContactSummary s;
   s.load_factor = load;
-  s.approach = step.delta;
+  s.approach = 0.0;  // set by the caller (the force load's motion)
   s.residual = step.residual;
   s.newton_iterations = step.newton_iterations;
   s.kalker_iterations = step.kalker_iterations;
@@ -166,13 +166,14 @@ void add_iterations(ContactSummary& totals, const StepOutput& step) {
 
 // Records one step in a result of pairs [first, last).
 void record_step(ContactInterfaceResult& out, const std::vector<ContactPair>& pairs, const StepOutput& step,
-                 const ContactProblem& problem, double load, Index first, Index last) {
+                 const ContactProblem& problem, double load, double approach, Index first, Index last) {
   const std::vector<ContactPair> group(pairs.begin() + first, pairs.begin() + last);
   StepOutput part = step;
   part.x = step.x.segment(2 * first, 2 * (last - first));
   part.w = step.w.segment(2 * first, 2 * (last - first));
   out.pairs = pair_results(group, part, problem);
   out.steps.push_back(summarise(group, out.pairs, part, load));
+  out.steps.back().approach = approach;
   if (problem.record_steps) out.step_pairs.push_back(out.pairs);
 }
 
@@ -209,9 +210,11 @@ LoadHistory solve_load_history(const CondensedProblem& condensed, const std::vec
       throw SolverError("contact (" + std::string(to_string(problem.solver.algorithm)) + " algorithm): load step " +
                         std::to_string(k) + " of " + std::to_string(problem.increments) + ": " + step.failure +
                         "; complementarity residual " + format_residual(step.residual) + " (relative)");
-    record_step(history, pairs, step, problem, input.load, 0, n);
+    // The approach of the force load (the first motion when it has a force).
+    const double approach = condensed.motions > 0 && condensed.force[0] != 0.0 ? step.delta[0] : 0.0;
+    record_step(history, pairs, step, problem, input.load, approach, 0, n);
     for (std::size_t c = 0; c < history.contacts.size(); ++c)
-      record_step(history.contacts[c], pairs, step, problem, input.load, groups[c], groups[c + 1]);
+      record_step(history.contacts[c], pairs, step, problem, input.load, approach, groups[c], groups[c + 1]);
     add_iterations(totals, step);
     for (Index i = 0; i < n; ++i) input.previous_tangential_jump[i] = step.w[2 * i + 1];
     input.x_start = step.x;
@@ -231,7 +234,7 @@ ContactResult solve_contact(const ContactProblem& problem, const bem::ProgressCa
   auto start = Clock::now();
   const ContactModel model(problem, progress);
   result.timings.add("assembly, factorisation and condensation", seconds_since(start));
-  result.unknowns = 2 * model.condensed().pairs + (model.condensed().has_force ? 1 : 0);
+  result.unknowns = 2 * model.condensed().pairs + model.condensed().motions;
 
   start = Clock::now();
   std::vector<Index> groups;

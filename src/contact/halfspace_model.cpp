@@ -116,10 +116,12 @@ HalfSpaceModel halfspace_sphere_model(const HalfSpaceSphereContact& contact) {
   c.on_axis.assign(n, false);
   // The sphere's far field moves by delta along z: w_n = -delta. Its force balances the
   // contact: F_z = -sum weight_i lambda_i = -P.
-  c.has_force = true;
-  c.b = Vector::Zero(2 * n);
-  c.f = Vector::Zero(2 * n);
-  c.force = -contact.force;
+  c.motions = 1;
+  c.b = Matrix::Zero(2 * n, 1);
+  c.f = Matrix::Zero(1, 2 * n);
+  c.f_delta = Matrix::Zero(1, 1);
+  c.F0 = Vector::Zero(1);
+  c.force = Vector::Constant(1, -contact.force);
   const auto& rule = quadrature::gauss_legendre(2);
   for (Index i = 0; i < n; ++i) {
     ContactPair pair;
@@ -141,8 +143,8 @@ HalfSpaceModel halfspace_sphere_model(const HalfSpaceSphereContact& contact) {
         }
     c.gap[i] = pair.gap;
     c.on_axis[i] = pair.on_axis;
-    c.b[2 * i] = -1.0;
-    c.f[2 * i] = -pair.weight;
+    c.b(2 * i, 0) = -1.0;
+    c.f(0, 2 * i) = -pair.weight;
     model.pairs.push_back(pair);
   }
   return model;

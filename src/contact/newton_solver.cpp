@@ -22,14 +22,14 @@ double threshold(const StepInput& in, double lambda_n) {
 
 }  // namespace
 
-Vector relative_displacement(const StepInput& in, const Vector& x, double delta) {
+Vector relative_displacement(const StepInput& in, const Vector& x, const Vector& delta) {
   const auto& p = *in.problem;
   Vector w = in.load * p.a + p.M * x;
-  if (p.has_force) w += delta * p.b;
+  if (p.motions > 0) w += p.b * delta;
   return w;
 }
 
-double complementarity_residual(const StepInput& in, const Vector& x, double delta) {
+double complementarity_residual(const StepInput& in, const Vector& x, const Vector& delta) {
   const auto& p = *in.problem;
   const double c = penalty_scale(p);
   const Vector w = relative_displacement(in, x, delta);
@@ -46,10 +46,12 @@ double complementarity_residual(const StepInput& in, const Vector& x, double del
     const double ct = p.on_axis[i] ? tau : tau - std::clamp(tau - c * slip, -g, g);
     worst = std::max({worst, std::abs(cn) / scale, std::abs(ct) / scale});
   }
-  if (p.has_force) {
-    const double target = in.load * (p.force - p.F0);
-    const double mismatch = p.f.dot(x) + p.f_delta * delta - target;
-    worst = std::max(worst, std::abs(mismatch) / std::max(std::abs(in.load * p.force), 1e-300));
+  for (Index k = 0; k < p.motions; ++k) {
+    const double target = in.load * (p.force[k] - p.F0[k]);
+    const double mismatch = p.f.row(k).dot(x) + p.f_delta.row(k).dot(delta) - target;
+    // A free body's equilibrium (force 0): relative to the contact forces on it.
+    const double size = std::max({std::abs(in.load * p.force[k]), p.f.row(k).cwiseAbs().dot(x.cwiseAbs()), 1e-300});
+    worst = std::max(worst, std::abs(mismatch) / size);
   }
   return worst;
 }
@@ -60,7 +62,7 @@ StepOutput solve_step_newton(const StepInput& in, const SolverOptions& options) 
   const double c = penalty_scale(p);
   StepOutput out;
   Vector x = in.x_start.size() == 2 * n ? in.x_start : Vector::Zero(2 * n);
-  double delta = in.delta_start;
+  Vector delta = in.delta_start.size() == p.motions ? in.delta_start : Vector::Zero(p.motions);
   double residual = complementarity_residual(in, x, delta);
   std::set<std::vector<int>> seen;
   bool damped = false;
@@ -76,16 +78,21 @@ StepOutput solve_step_newton(const StepInput& in, const SolverOptions& options) 
       state[2 * i] = active ? 1 : 0;
       any_active = any_active || active;
     }
-    if (!any_active && p.has_force) {  // a force needs a contact to go through
-      // ... at a pair that carries force: the node on the axis of a quadratic element has
-      // zero weight (its shape function times r integrates to 0).
+    if (!any_active && p.motions > 0) {
+      // A force needs a contact to go through, and a free body a contact on each side: the
+      // closest pair of every contact, among the pairs that carry force (the node on the
+      // axis of a quadratic element has zero weight: its shape function times r integrates
+      // to 0).
       const double carrying = 1e-3 * p.f.cwiseAbs().maxCoeff();
-      Index closest = -1;
-      for (Index i = 0; i < n; ++i)
-        if (std::abs(p.f[2 * i]) > carrying &&
-            (closest < 0 || p.gap[i] - w[2 * i] < p.gap[closest] - w[2 * closest]))
-          closest = i;
-      state[2 * std::max<Index>(closest, 0)] = 1;
+      const auto groups = pair_groups(p);
+      for (std::size_t g = 0; g + 1 < groups.size(); ++g) {
+        Index closest = -1;
+        for (Index i = groups[g]; i < groups[g + 1]; ++i)
+          if (p.f.col(2 * i).cwiseAbs().maxCoeff() > carrying &&
+              (closest < 0 || p.gap[i] - w[2 * i] < p.gap[closest] - w[2 * closest]))
+            closest = i;
+        if (closest >= 0) state[2 * closest] = 1;
+      }
     }
     for (Index i = 0; i < n; ++i) {
       const double lambda = x[2 * i], tau = x[2 * i + 1];
@@ -117,7 +124,8 @@ StepOutput solve_step_newton(const StepInput& in, const SolverOptions& options) 
       }
     }
     const Index reduced = static_cast<Index>(free_dofs.size());
-    const Index system_size = reduced + (p.has_force ? 1 : 0);
+    const Index K = p.motions;
+    const Index system_size = reduced + K;
     // Entry of a row of (M | f) in the column of free unknown `dof`, with the slip column
     // tau = slip_factor lambda folded into lambda's.
     auto folded = [&](auto&& entry, Index dof) {
@@ -129,16 +137,16 @@ StepOutput solve_step_newton(const StepInput& in, const SolverOptions& options) 
     for (Index k = 0; k < reduced; ++k) {
       for (Index a = 0; a < reduced; ++a)
         J(a, k) = folded([&](Index c) { return p.M(free_dofs[a], c); }, free_dofs[k]);
-      if (p.has_force) J(reduced, k) = folded([&](Index c) { return p.f[c]; }, free_dofs[k]);
+      for (Index m = 0; m < K; ++m) J(reduced + m, k) = folded([&](Index c) { return p.f(m, c); }, free_dofs[k]);
     }
     for (Index a = 0; a < reduced; ++a) {
       const Index row = free_dofs[a], i = row / 2;
-      if (p.has_force) J(a, reduced) = p.b[row];
+      for (Index m = 0; m < K; ++m) J(a, reduced + m) = p.b(row, m);
       rhs[a] = (row % 2 == 0 ? p.gap[i] : in.previous_tangential_jump[i]) - in.load * p.a[row];
     }
-    if (p.has_force) {
-      J(reduced, reduced) = p.f_delta;
-      rhs[reduced] = in.load * (p.force - p.F0);
+    for (Index m = 0; m < K; ++m) {
+      for (Index l = 0; l < K; ++l) J(reduced + m, reduced + l) = p.f_delta(m, l);
+      rhs[reduced + m] = in.load * (p.force[m] - p.F0[m]);
     }
     // LAPACK through DenseLU: the dense solve is the cost of an iteration, at BLAS-3 speed.
     Vector z;
@@ -161,11 +169,11 @@ StepOutput solve_step_newton(const StepInput& in, const SolverOptions& options) 
     for (Index k = 0; k < reduced; ++k) x_new[free_dofs[k]] = z[k];
     for (Index i = 0; i < n; ++i)
       if (slip_factor[i] != 0.0) x_new[2 * i + 1] = slip_factor[i] * x_new[2 * i];
-    double delta_new = p.has_force ? z[reduced] : 0.0;
+    Vector delta_new = K > 0 ? Vector(z.tail(K)) : Vector::Zero(0);
     double new_residual = complementarity_residual(in, x_new, delta_new);
     if (damped && new_residual >= residual) {  // backtrack along the Newton direction
       const Vector dx = x_new - x;
-      const double dd = delta_new - delta;
+      const Vector dd = delta_new - delta;
       double alpha = 1.0;
       for (int k = 0; k < 30 && new_residual >= residual; ++k) {
         alpha *= 0.5;

@@ -20,10 +20,10 @@ namespace bemcontact::contact {
 namespace {
 
 struct Restricted {
-  std::vector<Index> dofs;  // condensed dofs of the pairs in contact (2 per pair), then delta
+  std::vector<Index> dofs;  // condensed dofs of the pairs in contact (2 per pair), then the motions
   Matrix A;
   Vector rhs;
-  double delta_scale = 1.0;  // the unknown is delta / delta_scale (equilibrated force row and column)
+  Vector delta_scale;  // the unknowns are delta_k / delta_scale_k (equilibrated force rows and columns)
 };
 
 Restricted restrict_to(const StepInput& in, const std::vector<bool>& in_contact) {
@@ -35,30 +35,38 @@ Restricted restrict_to(const StepInput& in, const std::vector<bool>& in_contact)
       r.dofs.push_back(2 * i + 1);
     }
   const Index m = static_cast<Index>(r.dofs.size());
-  const Index size = m + (p.has_force ? 1 : 0);
+  const Index K = p.motions;
+  const Index size = m + K;
   r.A = Matrix::Zero(size, size);
   r.rhs = Vector::Zero(size);
+  r.delta_scale = Vector::Ones(K);
   for (Index a = 0; a < m; ++a) {
     const Index row = r.dofs[a];
     for (Index b = 0; b < m; ++b) r.A(a, b) = p.M(row, r.dofs[b]);
-    if (p.has_force) r.A(a, m) = p.b[row];
+    for (Index k = 0; k < K; ++k) r.A(a, m + k) = p.b(row, k);
     const Index pair = row / 2;
     r.rhs[a] = row % 2 == 0 ? p.gap[pair] - in.load * p.a[row]  // [u_n] = d
                             : in.previous_tangential_jump[pair] - in.load * p.a[row];  // no slip increment
   }
-  if (p.has_force) {
-    for (Index b = 0; b < m; ++b) r.A(m, b) = p.f[r.dofs[b]];
-    r.A(m, m) = p.f_delta;
-    r.rhs[m] = in.load * (p.force - p.F0);
-    // Forces and displacements differ by orders of magnitude: scale the force row and the
-    // delta column to the mean row and column norms of B' so that GMRES sees a balanced system.
+  if (K > 0) {
     double row_norm = 0.0, col_norm = 0.0;
     for (Index a = 0; a < m; ++a) row_norm += r.A.row(a).head(m).norm() / m, col_norm += r.A.col(a).head(m).norm() / m;
-    const double row_scale = row_norm / std::max(r.A.row(m).head(m).norm(), 1e-300);
-    r.A.row(m) *= row_scale;
-    r.rhs[m] *= row_scale;
-    r.delta_scale = col_norm / std::max(r.A.col(m).norm(), 1e-300);
-    r.A.col(m) *= r.delta_scale;
+    for (Index k = 0; k < K; ++k) {
+      for (Index b = 0; b < m; ++b) r.A(m + k, b) = p.f(k, r.dofs[b]);
+      for (Index l = 0; l < K; ++l) r.A(m + k, m + l) = p.f_delta(k, l);
+      r.rhs[m + k] = in.load * (p.force[k] - p.F0[k]);
+    }
+    // Forces and displacements differ by orders of magnitude: scale the force rows and the
+    // motion columns to the mean row and column norms of B' so that GMRES sees a balanced system.
+    for (Index k = 0; k < K; ++k) {
+      const double row_scale = row_norm / std::max(r.A.row(m + k).head(m).norm(), 1e-300);
+      r.A.row(m + k) *= row_scale;
+      r.rhs[m + k] *= row_scale;
+    }
+    for (Index k = 0; k < K; ++k) {
+      r.delta_scale[k] = col_norm / std::max(r.A.col(m + k).norm(), 1e-300);
+      r.A.col(m + k) *= r.delta_scale[k];
+    }
   }
   return r;
 }
@@ -181,14 +189,14 @@ struct BilateralResult {
 
 // Alg V.2 on the pairs in contact; x and delta in/out.
 BilateralResult successive_thresholds(const StepInput& in, const std::vector<bool>& in_contact, double friction,
-                                      const Vector& slip_sign, const SolverOptions& options, Vector& x, double& delta,
+                                      const Vector& slip_sign, const SolverOptions& options, Vector& x, Vector& delta,
                                       StepOutput& out) {
   const auto& p = *in.problem;
   const Restricted r = restrict_to(in, in_contact);
   const Index m = static_cast<Index>(r.dofs.size());
   Vector y(r.A.rows());
   for (Index a = 0; a < m; ++a) y[a] = x[r.dofs[a]];
-  if (p.has_force) y[m] = delta / r.delta_scale;
+  for (Index k = 0; k < p.motions; ++k) y[m + k] = delta[k] / r.delta_scale[k];
   Vector g = Vector::Zero(p.pairs);  // g^0 = 0: frictionless
   BilateralResult result;
   for (int iteration = 0; iteration < std::max(1, options.max_threshold_iterations); ++iteration) {
@@ -218,13 +226,13 @@ BilateralResult successive_thresholds(const StepInput& in, const std::vector<boo
   }
   x.setZero();
   for (Index a = 0; a < m; ++a) x[r.dofs[a]] = y[a];
-  if (p.has_force) delta = y[m] * r.delta_scale;
+  for (Index k = 0; k < p.motions; ++k) delta[k] = y[m + k] * r.delta_scale[k];
   return result;
 }
 
 // Alg V.3 (or one bilateral solve); returns the final contact set through in_contact.
 BilateralResult kalker(const StepInput& in, double friction, const Vector& slip_sign, const SolverOptions& options,
-                       std::vector<bool>& in_contact, Vector& x, double& delta, StepOutput& out) {
+                       std::vector<bool>& in_contact, Vector& x, Vector& delta, StepOutput& out) {
   const auto& p = *in.problem;
   StepInput step = in;
   step.friction = friction;
@@ -240,11 +248,15 @@ BilateralResult kalker(const StepInput& in, double friction, const Vector& slip_
       if (in_contact[i] && x[2 * i] < 0.0) next[i] = false;                            // tension: release
       if (!in_contact[i] && w[2 * i] - p.gap[i] > 1e-12 * gap_scale) next[i] = true;  // penetration: admit
     }
-    if (std::none_of(next.begin(), next.end(), [](bool b) { return b; }) && p.has_force) {
-      Index closest = 0;
-      for (Index i = 1; i < p.pairs; ++i)
-        if (p.gap[i] - w[2 * i] < p.gap[closest] - w[2 * closest]) closest = i;
-      next[closest] = true;
+    // A force needs a contact to go through, and a free body a contact on each side.
+    if (std::none_of(next.begin(), next.end(), [](bool b) { return b; }) && p.motions > 0) {
+      const auto groups = pair_groups(p);
+      for (std::size_t g = 0; g + 1 < groups.size(); ++g) {
+        Index closest = groups[g];
+        for (Index i = groups[g] + 1; i < groups[g + 1]; ++i)
+          if (p.gap[i] - w[2 * i] < p.gap[closest] - w[2 * closest]) closest = i;
+        if (closest < groups[g + 1]) next[closest] = true;
+      }
     }
     if (next == in_contact) return result;
     in_contact = next;
@@ -258,7 +270,7 @@ StepOutput solve_step_thesis(const StepInput& in, const SolverOptions& options) 
   const auto& p = *in.problem;
   StepOutput out;
   Vector x = in.x_start.size() == 2 * p.pairs ? in.x_start : Vector::Zero(2 * p.pairs);
-  double delta = in.delta_start;
+  Vector delta = in.delta_start.size() == p.motions ? in.delta_start : Vector::Zero(p.motions);
   std::vector<bool> in_contact(p.pairs, true);  // Alg V.3, step 0: Gamma_rc^0 = Gamma_c
   // V.3.4: frictionless solution first, for the slip direction.
   const Vector no_sign = Vector::Zero(p.pairs);

@@ -1,6 +1,8 @@
 // Bad contact problem files -> clear messages naming the file, line, key, boundary or body.
 #include <gtest/gtest.h>
 
+#include "../unit/contact/contact_fixtures.hpp"
+
 #include <fstream>
 #include <sstream>
 
@@ -92,19 +94,32 @@ TEST(ContactErrors, ForceOnAnUnknownBody) {
   EXPECT_TRUE(contains(message, "contact.load.body")) << message;
 }
 
-TEST(ContactErrors, FreeBodyNamesTheBody) {
-  // Without the platen the ball is held by nothing but the contact zone.
-  auto file = io::parse_contact_problem(example_text(), "ball.toml");
-  file.problem.force.reset();
-  file.problem.elastic(0).conditions[2] = {};  // the top: free
+TEST(ContactErrors, FreeBodyNamesTheBodyAndTheMotion) {
+  // A cylinder on a block (plane strain) with its top set free and no force: only the
+  // frictionless contact holds it, and its normals are all but vertical, so the horizontal
+  // translation and the rotation are free.
+  auto problem = contact::testing::cylinder_on_block(1.0, 0.25, 10, 1.0, {1.0, 0.3}, {1.0, 0.3});
+  problem.force.reset();
+  problem.elastic(0).conditions[2] = {};
   try {
-    contact::solve_contact(file.problem);
+    contact::solve_contact(problem);
     FAIL() << "a free body was solved";
   } catch (const SolverError& error) {
     const std::string message = error.what();
-    EXPECT_TRUE(contains(message, "body 'ball'")) << message;
-    EXPECT_TRUE(contains(message, "rigid body")) << message;
+    EXPECT_TRUE(contains(message, "body 'cylinder' is free to move")) << message;
+    EXPECT_TRUE(contains(message, "translation x") || contains(message, "rotation")) << message;
   }
+}
+
+TEST(ContactErrors, BodyHeldOnlyByItsContactIsSolved) {
+  // The axisymmetric ball with its top free and no force: its axial translation is held by
+  // the contact (pair normals along z), so it is an unknown with the ball's equilibrium;
+  // with no load the answer is no contact force.
+  auto file = io::parse_contact_problem(example_text(), "ball.toml");
+  file.problem.force.reset();
+  file.problem.elastic(0).conditions[2] = {};
+  const auto result = contact::solve_contact(file.problem);
+  EXPECT_NEAR(result.summary.normal_force, 0.0, 1e-9);
 }
 
 }  // namespace bemcontact

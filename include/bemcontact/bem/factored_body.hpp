@@ -21,14 +21,19 @@ struct VariableNode {
   ConditionKind kind = ConditionKind::traction;  // what is prescribed at the node
 };
 
+// Point constraints may be variable too (a free body's rigid motion, the contact model's
+// unknown): each such constraint prescribes one displacement component, its value is a
+// variable datum after the nodes' (one per constraint) and its complementary value the
+// reaction traction it adds at its node.
 class FactoredBody {
  public:
   FactoredBody(const geometry::BoundaryMesh& mesh, const BodyDefinition& body, AnalysisType type,
-               std::vector<VariableNode> variable_nodes, const ProgressCallback& progress = {});
+               std::vector<VariableNode> variable_nodes, const ProgressCallback& progress = {},
+               std::vector<PointConstraint> variable_constraints = {});
 
   const geometry::BoundaryMesh& mesh() const { return mesh_; }
   const std::vector<VariableNode>& variable_nodes() const { return variable_; }
-  Index variable_dofs() const { return 2 * static_cast<Index>(variable_.size()); }
+  Index variable_dofs() const { return 2 * static_cast<Index>(variable_.size()) + variable_constraints_; }
   double reciprocal_condition() const { return lu_.reciprocal_condition(); }
 
   // Full boundary solution for the given data at the variable nodes (2 per node, global
@@ -49,6 +54,7 @@ class FactoredBody {
 
   geometry::BoundaryMesh mesh_;
   std::vector<VariableNode> variable_;
+  Index variable_constraints_ = 0;  // the last ones of constraints_
   std::vector<NodeCondition> conditions_;
   std::vector<ConstraintEquation> constraints_;
   Vector fixed_rhs_;

@@ -9,10 +9,11 @@
 //   x_i = (lambda_n, tau): the traction on body 1 is p = -lambda_n n + tau t (lambda_n >= 0
 //   is the contact pressure, p_n = -lambda_n in the thesis' sign), body 2 carries -p.
 // Relative displacement [u] = 1u - 2u in the same frame (w_n = [u_n], w_t = [u_t]):
-//   w = load * a + M x + delta * b,
+//   w = load * a + M x + b delta,
 // with M = Q^T B' R the condensed operator, a the jump due to the bodies' own data at full
-// load and b the jump per unit approach of a force-loaded platen. The platen's force is
-//   F = load * F0 + f . x + f_delta * delta.
+// load and b the jump per unit motion (delta: the approach of a force-loaded platen or
+// rigid body, the rigid motions of free bodies). Each motion has a force equation
+//   F = load * F0 + f x + f_delta delta.
 #include <memory>
 #include <vector>
 
@@ -27,13 +28,23 @@ struct CondensedProblem {
   Vector a;        // 2N
   Vector gap;      // N, d of (V.3)
   std::vector<bool> on_axis;  // N
-  bool has_force = false;
-  Vector b;        // 2N
-  Vector f;        // 2N
-  double f_delta = 0.0;
-  double F0 = 0.0;
-  double force = 0.0;  // the prescribed total force at full load
+  // Motion unknowns delta_k, each with its equation
+  //   F_k = load * F0_k + f_k . x + sum_l f_delta(k, l) delta_l = load * force_k:
+  // the approach of a force-loaded platen or rigid body (first, when there is one), and the
+  // rigid motions of bodies held only by their contacts (force 0: their equilibrium).
+  Index motions = 0;
+  Matrix b;        // 2N x K: jump per unit motion
+  Matrix f;        // K x 2N
+  Matrix f_delta;  // K x K
+  Vector F0;       // K
+  Vector force;    // K: the prescribed total at full load
+  std::vector<Index> groups;  // pair offsets of the contacts (group c: [groups[c], groups[c + 1])); empty: one
 };
+
+// The groups of pairs (one group of all pairs when none are given).
+inline std::vector<Index> pair_groups(const CondensedProblem& problem) {
+  return problem.groups.size() >= 2 ? problem.groups : std::vector<Index>{0, problem.pairs};
+}
 
 // The uncoupled (Goodman-type) approximation of Spence's (E.1): the normal jumps no longer
 // depend on the tangential tractions (M's w_n rows lose their tau columns).
@@ -62,7 +73,7 @@ class ContactModel {
 
   // The variable data of region r (prepared().regions) at full load for a contact
   // solution x (local frame) and approach delta.
-  Vector variable_data(int r, const Vector& x, double delta) const;
+  Vector variable_data(int r, const Vector& x, const Vector& delta) const;
   // Traction on side 1 at each pair in global components.
   Vec2 traction(Index pair, const Vector& x) const;
 

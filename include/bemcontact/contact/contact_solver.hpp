@@ -81,7 +81,7 @@ struct ContactResult : ContactInterfaceResult {
 struct LoadHistory : ContactInterfaceResult {
   std::vector<ContactInterfaceResult> contacts;
   Vector x;                             // final (lambda_n, tau) per pair
-  double delta = 0.0;                   // final approach
+  Vector delta;                         // final motions (CondensedProblem::motions)
 };
 LoadHistory solve_load_history(const CondensedProblem& condensed, const std::vector<ContactPair>& pairs,
                                const ContactProblem& problem, const bem::ProgressCallback& progress = {},

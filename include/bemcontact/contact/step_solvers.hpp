@@ -26,12 +26,12 @@ struct StepInput {
   double friction = 0.0;
   Vector previous_tangential_jump;  // N: w_t at the end of the previous step
   Vector x_start;                   // 2N: initial guess (previous step)
-  double delta_start = 0.0;
+  Vector delta_start;               // K: motions (previous step); empty for zeros
 };
 
 struct StepOutput {
   Vector x;       // 2N: (lambda_n, tau) per pair
-  double delta = 0.0;
+  Vector delta;   // K: motions
   Vector w;       // 2N: jump (w_n, w_t) per pair
   double residual = 0.0;  // relative complementarity residual
   bool converged = false;
@@ -43,10 +43,11 @@ struct StepOutput {
 };
 
 // Jump w = load a + M x + delta b.
-Vector relative_displacement(const StepInput& input, const Vector& x, double delta);
-// max |C_n|, |C_t| over the pairs divided by the pressure scale, and the force mismatch
-// relative to the force.
-double complementarity_residual(const StepInput& input, const Vector& x, double delta);
+Vector relative_displacement(const StepInput& input, const Vector& x, const Vector& delta);
+// max |C_n|, |C_t| over the pairs divided by the pressure scale, and each motion's force
+// mismatch relative to its force (or, for a free body's equilibrium, to the sum of the
+// contact forces on it).
+double complementarity_residual(const StepInput& input, const Vector& x, const Vector& delta);
 
 StepOutput solve_step_newton(const StepInput& input, const SolverOptions& options);
 StepOutput solve_step_thesis(const StepInput& input, const SolverOptions& options);

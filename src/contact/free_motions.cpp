@@ -1,0 +1,159 @@
+#include "bemcontact/contact/free_motions.hpp"
+
+#include <Eigen/SVD>
+
+#include "bemcontact/bem/boundary_system.hpp"
+#include "bemcontact/core/error.hpp"
+
+namespace bemcontact::contact {
+namespace {
+
+// The rigid modes at a point: translations and rotation about `centre` (lengths over
+// `scale`), or the axial translation in axisymmetry. Columns: modes.
+Matrix modes_at(const Vec2& x, const Vec2& centre, double scale, AnalysisType type) {
+  if (type == AnalysisType::axisymmetric) return Matrix(Vec2(0.0, 1.0));
+  const Vec2 r = (x - centre) / scale;
+  Matrix m(2, 3);
+  m << 1.0, 0.0, -r.y(), 0.0, 1.0, r.x();
+  return m;
+}
+
+const char* mode_name(Index mode, AnalysisType type) {
+  if (type == AnalysisType::axisymmetric) return "translation z";
+  return mode == 0 ? "translation x" : mode == 1 ? "translation y" : "rotation";
+}
+
+// Orthonormal basis of the null space of rows (columns of the result), within `space`.
+Matrix null_space(const Matrix& rows, Index columns) {
+  if (rows.rows() == 0) return Matrix::Identity(columns, columns);
+  Eigen::JacobiSVD<Matrix> svd(rows, Eigen::ComputeFullV);
+  const auto& sigma = svd.singularValues();
+  const double top = sigma.size() > 0 ? sigma[0] : 0.0;
+  Index rank = 0;
+  for (Index k = 0; k < sigma.size(); ++k) rank += sigma[k] > 1e-8 * std::max(top, 1e-300);
+  return svd.matrixV().rightCols(columns - rank);
+}
+
+}  // namespace
+
+std::vector<FreeMotionConstraint> free_motion_constraints(const ContactProblem& problem, const PreparedContact& prepared,
+                                                          const std::vector<ContactPair>& pairs,
+                                                          const std::vector<Index>& pair_offsets) {
+  std::vector<FreeMotionConstraint> out;
+  const AnalysisType type = problem.analysis;
+  const Index mode_count = type == AnalysisType::axisymmetric ? 1 : 3;
+  for (std::size_t b = 0; b < problem.bodies.size(); ++b) {
+    const auto& members = prepared.body_regions[b];
+    if (members.empty()) continue;
+    // The body's size and centre (the rotation's scale).
+    Vec2 centre = Vec2::Zero();
+    double scale = 0.0;
+    Index count = 0;
+    for (const int r : members) {
+      for (const auto& node : prepared.regions[r].mesh.nodes) centre += node.position, ++count;
+      scale = std::max(scale, prepared.regions[r].mesh.scale);
+    }
+    centre /= static_cast<double>(count);
+    // Rows: every prescribed displacement component (platens included) and point constraint.
+    std::vector<Eigen::RowVectorXd> rows;
+    std::vector<std::vector<bem::NodeCondition>> conditions;
+    for (const int r : members) {
+      const auto& region = prepared.regions[r];
+      conditions.push_back(bem::resolve_node_conditions(region.mesh, region.definition, type));
+      for (Index i = 0; i < region.mesh.node_count(); ++i)
+        for (int c = 0; c < 2; ++c)
+          if (conditions.back()[i].kind[c] == bem::ConditionKind::displacement) {
+            const Vec2 direction = conditions.back()[i].frame.col(c);
+            rows.push_back(direction.transpose() * modes_at(region.mesh.nodes[i].position, centre, scale, type));
+          }
+      for (const auto& constraint : region.definition.constraints)
+        for (int c = 0; c < 2; ++c)
+          if (constraint.displacement[c]) rows.push_back(modes_at(constraint.position, centre, scale, type).row(c));
+    }
+    Matrix held(static_cast<Index>(rows.size()), mode_count);
+    for (std::size_t k = 0; k < rows.size(); ++k) held.row(static_cast<Index>(k)) = rows[k];
+    const Matrix free = null_space(held, mode_count);  // modes x f
+    if (free.cols() == 0) continue;
+
+    // The contacts must hold every free motion: some pair normal along it.
+    std::vector<Eigen::RowVectorXd> normals;
+    for (std::size_t c = 0; c < problem.contacts.size(); ++c) {
+      const auto& contact = problem.contacts[c];
+      if (contact.side1.body != static_cast<int>(b) && contact.side2.body != static_cast<int>(b)) continue;
+      for (Index g = pair_offsets[c]; g < pair_offsets[c + 1]; ++g)
+        normals.push_back(pairs[g].normal.transpose() * modes_at(pairs[g].position1, centre, scale, type) * free);
+    }
+    Matrix contact_rows(static_cast<Index>(normals.size()), free.cols());
+    for (std::size_t k = 0; k < normals.size(); ++k) contact_rows.row(static_cast<Index>(k)) = normals[k];
+    const Matrix unheld = null_space(contact_rows, free.cols());
+    if (unheld.cols() > 0) {
+      Vector motion = free * unheld.col(0);
+      Index dominant = 0;
+      motion.cwiseAbs().maxCoeff(&dominant);
+      throw SolverError("body '" + problem.bodies[b].name + "' is free to move: " + mode_name(dominant, type) +
+                        " is held neither by its conditions nor by its contacts; prescribe a displacement that "
+                        "stops it (a symmetry line, a clamped boundary, a point constraint) or press the body with a "
+                        "force load");
+    }
+
+    // Pin the free motions: one displacement component per motion, at nodes that carry
+    // tractions (not contact, bond or platen nodes), chosen greedily for independence.
+    struct Candidate {
+      int region;
+      Index node;
+      int component;
+      Eigen::RowVectorXd row;
+    };
+    std::vector<Candidate> candidates;
+    for (std::size_t k = 0; k < members.size(); ++k) {
+      const auto& region = prepared.regions[members[k]];
+      std::vector<bool> excluded(region.mesh.node_count(), false);
+      for (const auto& contact : prepared.contacts) {
+        if (contact.region1 == members[k])
+          for (const auto& pair : contact.pairs) excluded[pair.node1] = true;
+        if (contact.region2 == members[k])
+          for (const Index node : contact.zone_nodes2) excluded[node] = true;
+      }
+      const auto& sub = problem.bodies[b].regions[region.region];
+      for (std::size_t p = 0; p < sub.piece_interface.size(); ++p)
+        if (!sub.piece_interface[p].empty())
+          for (const Index node : region.mesh.piece_nodes[p]) excluded[node] = true;
+      for (Index i = 0; i < region.mesh.node_count(); ++i) {
+        const auto& condition = conditions[k][i];
+        if (excluded[i] || condition.on_axis || !condition.frame.isIdentity() || region.mesh.nodes[i].shifted) continue;
+        for (int c = 0; c < 2; ++c)
+          if (condition.kind[c] == bem::ConditionKind::traction)
+            candidates.push_back({members[k], i, c, modes_at(region.mesh.nodes[i].position, centre, scale, type).row(c) * free});
+      }
+    }
+    Matrix chosen(0, free.cols());
+    for (Index m = 0; m < free.cols(); ++m) {
+      // The candidate with the largest part outside the rows chosen so far.
+      const Matrix basis = chosen.rows() > 0 ? Matrix(chosen.transpose().householderQr().householderQ() *
+                                                      Matrix::Identity(free.cols(), chosen.rows()))
+                                             : Matrix(free.cols(), 0);
+      double best = 0.0;
+      int best_k = -1;
+      for (std::size_t k = 0; k < candidates.size(); ++k) {
+        Vector v = candidates[k].row.transpose();
+        if (basis.cols() > 0) v -= basis * (basis.transpose() * v);
+        if (v.norm() > best * (1.0 + 1e-12)) best = v.norm(), best_k = static_cast<int>(k);
+      }
+      if (best_k < 0 || best < 1e-6)
+        throw SolverError("body '" + problem.bodies[b].name + "' is free to move (" + mode_name(m, type) +
+                          ") and has no free boundary node to pin the motion at");
+      const auto& pick = candidates[best_k];
+      chosen.conservativeResize(chosen.rows() + 1, Eigen::NoChange);
+      chosen.row(chosen.rows() - 1) = pick.row;
+      FreeMotionConstraint pin;
+      pin.region = pick.region;
+      pin.constraint.position = prepared.regions[pick.region].mesh.nodes[pick.node].position;
+      pin.constraint.displacement[pick.component] = 0.0;
+      pin.constraint.label = "free motion of body '" + problem.bodies[b].name + "'";
+      out.push_back(pin);
+    }
+  }
+  return out;
+}
+
+}  // namespace bemcontact::contact
