@@ -12,8 +12,26 @@
 #include "bemcontact/reference/hertz.hpp"
 #include "bemcontact/reference/spence.hpp"
 #include "bemcontact/validation/case_groups.hpp"
+#include "bemcontact/validation/contact_support.hpp"
 
 namespace bemcontact::validation {
+
+HertzFit fit_hertz_profile(const std::vector<contact::PairResult>& pairs, double window) {
+  double s0 = 0, s1 = 0, s2 = 0, t0 = 0, t1 = 0;
+  for (const auto& pair : pairs) {
+    const double r = std::abs(pair.coordinate);
+    if (r <= 1e-12 * window || r >= window || pair.status == contact::PairStatus::open) continue;
+    const double x = r * r, y = pair.p_n * pair.p_n;
+    s0 += 1, s1 += x, s2 += x * x, t0 += y, t1 += x * y;
+  }
+  const double det = s0 * s2 - s1 * s1;
+  const double intercept = (s2 * t0 - s1 * t1) / det, slope = (s0 * t1 - s1 * t0) / det;
+  HertzFit fit;
+  fit.p0 = std::sqrt(std::max(intercept, 0.0));
+  fit.a = slope < 0.0 ? std::sqrt(-intercept / slope) : 0.0;
+  return fit;
+}
+
 namespace {
 
 io::ContactFile load(const Context& context, const std::string& file, const io::ParameterOverrides& overrides = {}) {
@@ -49,19 +67,7 @@ double pressure_at(const std::vector<contact::PairResult>& pairs, double x) {
   return -((1 - f) * below->p_n + f * above->p_n);
 }
 
-// p0 from the profile: p^2 = p0^2 (1 - r^2/a^2) is linear in r^2, fitted by least squares
-// on the pairs 0 < r < 0.8a (the pair on the axis is left out: collocation at r = 0 gives
-// it a value a few per cent high).
-double fitted_p0(const std::vector<contact::PairResult>& pairs, double a) {
-  double s0 = 0, s1 = 0, s2 = 0, t0 = 0, t1 = 0;
-  for (const auto& pair : pairs) {
-    const double r = pair.coordinate;
-    if (r <= 1e-12 || r >= 0.8 * a || pair.status == contact::PairStatus::open) continue;
-    const double x = r * r, y = pair.p_n * pair.p_n;
-    s0 += 1, s1 += x, s2 += x * x, t0 += y, t1 += x * y;
-  }
-  return std::sqrt((s2 * t0 - s1 * t1) / (s0 * s2 - s1 * s1));
-}
+double fitted_p0(const std::vector<contact::PairResult>& pairs, double a) { return fit_hertz_profile(pairs, 0.8 * a).p0; }
 
 // Ball on a support (V.5.2.3): a, p0, delta within 2 % of Hertz (thesis: 1.2 %, 0.7 %,
 // 2.2 %), the profile within 3 % of p0 for 0 < r < 0.9a (the axis pair on its own, 2 %), Huber's axis stresses within 3 % of

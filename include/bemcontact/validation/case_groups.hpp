@@ -7,4 +7,5 @@ std::vector<Case> plane_cases();          // src/validation/plane_cases.cpp
 std::vector<Case> axisymmetric_cases();   // src/validation/axisymmetric_cases.cpp
 std::vector<Case> decomposition_cases();  // src/validation/decomposition_cases.cpp
 std::vector<Case> contact_cases();        // src/validation/contact_cases.cpp
+std::vector<Case> multibody_cases();      // src/validation/multibody_cases.cpp
 }  // namespace bemcontact::validation

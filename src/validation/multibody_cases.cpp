@@ -1,0 +1,168 @@
+// Reference cases of the unified contact model: rigid indenters, a body of two regions in
+// contact, three bodies with two contacts.
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "bemcontact/contact/contact_solver.hpp"
+#include "bemcontact/io/contact_file.hpp"
+#include "bemcontact/reference/flat_punch.hpp"
+#include "bemcontact/reference/hertz.hpp"
+#include "bemcontact/validation/case_groups.hpp"
+#include "bemcontact/validation/contact_support.hpp"
+
+namespace bemcontact::validation {
+namespace {
+
+io::ContactFile load(const Context& context, const std::string& file, const io::ParameterOverrides& overrides = {}) {
+  return io::read_contact_file(context.examples_dir + "/" + file, overrides);
+}
+
+std::string text(double value) {
+  std::ostringstream out;
+  out << value;
+  return out.str();
+}
+
+constexpr double kRigid = std::numeric_limits<double>::infinity();
+
+// Rigid flat punch on a large block (examples/contact_rigid_punch.toml): every pair's
+// pressure for |x| <= 0.8a within 1 % of P / (pi sqrt(a^2 - x^2)), linear and quadratic
+// elements. Rigid ball on the block of contact_rigid_sphere.toml: a and p0 (fitted on the
+// profile) within 1 % of Hertz with E* of the block alone, the approach within 2 % (the
+// block's finite size: L = 8R adds its own compliance, as in hertz-sphere).
+std::vector<Record> run_rigid_punch(const Context& context) {
+  std::vector<Record> records;
+  const auto punch = load(context, "contact_rigid_punch.toml");
+  const double a = punch.parameters.at("a"), P = punch.parameters.at("P");
+  const reference::FlatPunchPlane exact{P, a, 1.0};
+  for (Interpolation interpolation : {Interpolation::linear, Interpolation::quadratic}) {
+    auto problem = punch.problem;
+    problem.mesh.interpolation = interpolation;
+    const auto result = contact::solve_contact(problem, context.progress);
+    double worst = 0.0;
+    for (const auto& pair : result.pairs)
+      if (std::abs(pair.coordinate) <= 0.8 * a)
+        worst = std::max(worst, std::abs(-pair.p_n / exact.pressure(pair.coordinate) - 1.0));
+    const std::size_t first = records.size();
+    records.push_back(compare_scaled("pressure_max_relative_error", worst, 0.0, 1.0, 0.01));
+    records.push_back(compare_relative("normal_force", result.summary.normal_force, P, 1e-3));
+    tag(records, first, "rigid-punch", {{"profile", "flat"}, {"interpolation", to_string(interpolation)}});
+  }
+  const auto ball = load(context, "contact_rigid_sphere.toml");
+  const double R = ball.parameters.at("R"), Pb = ball.parameters.at("P");
+  const auto hertz = reference::hertz_point_contact(Pb, R, ball.problem.elastic(0).material, kRigid,
+                                                    Material{kRigid, 0.3});
+  for (Interpolation interpolation : {Interpolation::linear, Interpolation::quadratic}) {
+    auto problem = ball.problem;
+    problem.mesh.interpolation = interpolation;
+    const auto result = contact::solve_contact(problem, context.progress);
+    const auto fit = fit_hertz_profile(result.pairs, 0.8 * result.summary.contact_radius);
+    const std::size_t first = records.size();
+    records.push_back(compare_relative("a", fit.a, hertz.contact_radius(), 0.01));
+    records.push_back(compare_relative("p0", fit.p0, hertz.max_pressure(), 0.01));
+    records.push_back(compare_relative("delta", -result.summary.approach, hertz.approach(), 0.02));
+    tag(records, first, "rigid-punch", {{"profile", "sphere"}, {"interpolation", to_string(interpolation)}});
+  }
+  return records;
+}
+
+// Rigid ball on a coated block (examples/contact_coated_indentation.toml: a body of two
+// bonded regions). a and p0 fitted on the pressure profile, against Hertz with E* of:
+//  - the substrate, when the coating is of the substrate's material (t = a0): 1 %;
+//  - the coating (E_coat = 2 E_sub), when t = 20 a0 >> a: 1 %;
+//  - the substrate, when t = a0 / 40 << a: the stiffer coating adds a correction of first
+//    order in t/a (measured 2.9, 1.7, 0.9 % on p0 at t/a0 = 0.1, 0.05, 0.025): 1 %, and
+//    the deviation at a0 / 40 at most 0.7 times that at a0 / 20 (first order: 0.5).
+// For t = a0 and E_coat = 2 E_sub, a and p0 are reported next to the same model on a mesh
+// twice as fine everywhere on the contact, the bond and the top.
+std::vector<Record> run_coated_indentation(const Context& context) {
+  std::vector<Record> records;
+  const auto base = load(context, "contact_coated_indentation.toml");
+  const double R = base.parameters.at("R"), P = base.parameters.at("P");
+  const double E_sub = base.parameters.at("E_sub"), nu = base.problem.bodies[0].regions[1].body.material.poisson_ratio;
+  auto hertz = [&](double E) { return reference::hertz_point_contact(P, R, Material{E, nu}, kRigid, Material{kRigid, 0.3}); };
+  const double a0 = hertz(E_sub).contact_radius();
+  auto solve = [&](double t, double E_coat, const io::ParameterOverrides& mesh) {
+    io::ParameterOverrides overrides = mesh;
+    overrides["t"] = t;
+    overrides["E_coat"] = E_coat;
+    const auto file = load(context, "contact_coated_indentation.toml", overrides);
+    const auto result = contact::solve_contact(file.problem, context.progress);
+    return fit_hertz_profile(result.pairs, 0.8 * result.summary.contact_radius);
+  };
+  struct Limit {
+    double t_over_a, E_coat;
+    const char* modulus;
+  };
+  const io::ParameterOverrides fine{{"n", 60.0}, {"n_bond", 80.0}};
+  double thin_deviation[2] = {0.0, 0.0};
+  for (const Limit limit : {Limit{1.0, E_sub, "substrate"}, Limit{20.0, 2.0 * E_sub, "coating"},
+                            Limit{0.05, 2.0 * E_sub, "substrate"}, Limit{0.025, 2.0 * E_sub, "substrate"}}) {
+    const bool thin = limit.t_over_a < 0.1;
+    const auto fit = solve(limit.t_over_a * a0, limit.E_coat, thin ? fine : io::ParameterOverrides{});
+    const auto expected = hertz(std::string(limit.modulus) == "coating" ? limit.E_coat : E_sub);
+    const std::size_t first = records.size();
+    if (limit.t_over_a == 0.05) {
+      thin_deviation[0] = std::abs(fit.p0 / expected.max_pressure() - 1.0);
+      records.push_back(report_only("p0", fit.p0, expected.max_pressure()));
+    } else {
+      records.push_back(compare_relative("a", fit.a, expected.contact_radius(), 0.01));
+      records.push_back(compare_relative("p0", fit.p0, expected.max_pressure(), 0.01));
+    }
+    if (limit.t_over_a == 0.025) {
+      thin_deviation[1] = std::abs(fit.p0 / expected.max_pressure() - 1.0);
+      records.push_back(compare_scaled("p0_deviation_ratio_t_halved", thin_deviation[1] / thin_deviation[0], 0.5, 1.0, 0.2));
+    }
+    tag(records, first, "coated-indentation",
+        {{"t_over_a", text(limit.t_over_a)}, {"E_coat_over_E_sub", text(limit.E_coat / E_sub)}, {"hertz_modulus", limit.modulus}});
+  }
+  const auto coarse = solve(a0, 2.0 * E_sub, {});
+  const auto finer = solve(a0, 2.0 * E_sub, {{"n", 60.0}, {"n_bond", 80.0}});
+  const std::size_t first = records.size();
+  records.push_back(report_only("a", coarse.a, finer.a));
+  records.push_back(report_only("p0", coarse.p0, finer.p0));
+  tag(records, first, "coated-indentation", {{"t_over_a", "1"}, {"E_coat_over_E_sub", "2"}, {"reference", "mesh x2"}});
+  return records;
+}
+
+// Roller between two plates (examples/contact_roller_plates.toml: three bodies, two
+// contacts, the roller held only by them): each contact's a and p0 (fitted) within 1 % of
+// 2D Hertz, the two contacts' forces within 1e-6 of each other (the roller's equilibrium)
+// and within 0.5 % of P/2 (the weights' integration of the pressure).
+std::vector<Record> run_roller_between_plates(const Context& context) {
+  std::vector<Record> records;
+  const auto file = load(context, "contact_roller_plates.toml");
+  const auto& problem = file.problem;
+  const double P = file.parameters.at("P"), R = file.parameters.at("R");
+  const reference::HertzLineContact hertz{
+      P, R, reference::contact_modulus(problem.elastic(1).material, problem.elastic(0).material, problem.analysis)};
+  const auto result = contact::solve_contact(problem, context.progress);
+  for (const auto& contact : result.contacts) {
+    const auto fit = fit_hertz_profile(contact.pairs, 0.8 * contact.summary.contact_radius);
+    const std::size_t first = records.size();
+    records.push_back(compare_relative("a", fit.a, hertz.half_width(), 0.01));
+    records.push_back(compare_relative("p0", fit.p0, hertz.max_pressure(), 0.01));
+    records.push_back(compare_relative("normal_force", contact.summary.normal_force, 0.5 * P, 5e-3));
+    tag(records, first, "roller-between-plates", {{"contact", contact.name}});
+  }
+  const std::size_t first = records.size();
+  records.push_back(compare_scaled("force_balance", result.contacts[0].summary.normal_force - result.contacts[1].summary.normal_force,
+                                   0.0, 0.5 * P, 1e-6));
+  tag(records, first, "roller-between-plates", {{"contact", "both"}});
+  return records;
+}
+
+}  // namespace
+
+std::vector<Case> multibody_cases() {
+  return {
+      {"rigid-punch", "-", "rigid flat punch and rigid ball (analytic profiles) on a large block", run_rigid_punch},
+      {"coated-indentation", "-", "rigid ball on a block of two bonded regions: Hertz limits of the coating",
+       run_coated_indentation},
+      {"roller-between-plates", "-", "three bodies, two contacts, a roller held only by them: 2D Hertz",
+       run_roller_between_plates},
+  };
+}
+
+}  // namespace bemcontact::validation
