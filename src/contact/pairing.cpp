@@ -367,6 +367,12 @@ PreparedInterface pair_interface(const ContactProblem& problem, const ContactInt
                           "; draw the bodies without overlap (for an interference fit, at their common nominal "
                           "surface with interference = the overlap)");
     pair.gap = std::max(pair.gap, 0.0) - contact.interference;
+    if (contact.initial_gap) {
+      pair.gap += contact.initial_gap(x1);
+      if (!std::isfinite(pair.gap))
+        throw GeometryError("contact '" + contact.name + "': the prescribed gap is not finite at " + point_text(x1) +
+                            " on " + zone1);
+    }
     out.pairs.push_back(pair);
   }
   if (out.pairs.empty())

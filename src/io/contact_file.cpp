@@ -33,7 +33,7 @@ const std::vector<std::string>& law_keys() {
   return keys;
 }
 const std::vector<std::string>& pairing_keys() {
-  static const std::vector<std::string> keys{"normal", "interference"};
+  static const std::vector<std::string> keys{"normal", "interference", "gap"};
   return keys;
 }
 std::vector<std::string> joined(std::initializer_list<const std::vector<std::string>*> lists,
@@ -250,6 +250,12 @@ void read_pairing(const TableReader& reader, contact::ContactInterface& contact)
     reader.fail("interference", "the interference (initial overlap of the contact zones along the pair normal, "
                                 "e.g. the radial interference of a shrink fit) must be a finite number >= 0, found " +
                                     format_number(contact.interference));
+  if (const toml::node* gap = reader.find("gap")) {
+    const auto value = read_prescribed_value(*gap, reader.where("gap"), reader.context());
+    if (value.zero)
+      reader.fail("gap", "the prescribed initial gap is zero everywhere: it would have no effect (remove it)");
+    contact.initial_gap = value.field;
+  }
   const std::string normal = reader.choice("normal", {"common", "body1", "body2"}, "common");
   contact.pair_normal = normal == "body1"   ? contact::PairNormal::body1
                         : normal == "body2" ? contact::PairNormal::body2

@@ -143,3 +143,81 @@ TEST(ContactErrors, KeysWithoutEffectAreRefused) {
 }
 
 }  // namespace bemcontact
+
+namespace bemcontact {
+namespace {
+
+std::string example(const std::string& name) {
+  std::ifstream in(std::string(BEMCONTACT_EXAMPLES_DIR) + "/" + name);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+}  // namespace
+
+// The [[contact]] spelling: bodies of regions, rigid bodies, several contacts.
+TEST(ContactErrors, UnifiedExamplesRead) {
+  for (const char* name : {"contact_rigid_punch.toml", "contact_rigid_sphere.toml", "contact_coated_indentation.toml",
+                           "contact_roller_plates.toml"})
+    EXPECT_NO_THROW(io::parse_contact_problem(example(name), name)) << name;
+}
+
+TEST(ContactErrors, RigidBodyWithoutLoadOrDisplacement) {
+  const auto text = replaced(example("contact_rigid_punch.toml"), "[load]\nbody = \"punch\"\ncomponent = 2\nforce = \"-P\"", "");
+  const auto message = input_error(text);
+  EXPECT_TRUE(contains(message, "rigid body 'punch' has no load and no displacement")) << message;
+}
+
+TEST(ContactErrors, RigidBodyAsSideOne) {
+  auto text = replaced(example("contact_rigid_punch.toml"), "body1 = \"block\"\nboundary1 = \"contact\"\nbody2 = \"punch\"",
+                       "body1 = \"punch\"\nbody2 = \"block\"\nboundary2 = \"contact\"");
+  const auto message = input_error(text);
+  EXPECT_TRUE(contains(message, "contact[1].body1")) << message;
+  EXPECT_TRUE(contains(message, "must be the second side")) << message;
+}
+
+TEST(ContactErrors, RigidProfileKeyOfAnotherProfile) {
+  const auto message =
+      input_error(replaced(example("contact_rigid_punch.toml"), "half_width = \"a\"", "half_width = \"a\"\nradius = 1.0"));
+  EXPECT_TRUE(contains(message, "body[2].rigid.radius")) << message;
+  EXPECT_TRUE(contains(message, "no effect")) << message;
+}
+
+TEST(ContactErrors, BoundaryInTwoContacts) {
+  const auto text = example("contact_roller_plates.toml") +
+                    "\n[[contact]]\nname = \"again\"\nbody1 = \"roller\"\nboundary1 = \"top contact\"\nbody2 = "
+                    "\"bottom_plate\"\nboundary2 = \"top\"\n";
+  const auto message = input_error(text);
+  EXPECT_TRUE(contains(message, "a boundary is in two contacts")) << message;
+}
+
+TEST(ContactErrors, DifferentLawsPerContact) {
+  const auto text = replaced(example("contact_roller_plates.toml"), "[[contact]]\nname = \"top\"",
+                             "[[contact]]\nname = \"top\"\nfriction = 0.2");
+  const auto message = input_error(text);
+  EXPECT_TRUE(contains(message, "contact[2].friction")) << message;
+  EXPECT_TRUE(contains(message, "same law")) << message;
+}
+
+TEST(ContactErrors, BondInAOneRegionBody) {
+  const auto text = replaced(example("contact_rigid_punch.toml"), "name = \"left\"", "name = \"left\"\ninterface = \"x\"");
+  const auto message = input_error(text);
+  EXPECT_TRUE(contains(message, "bonds regions of one body")) << message;
+}
+
+TEST(ContactErrors, ZeroPrescribedGapHasNoEffect) {
+  const auto text = replaced(example("contact_rigid_punch.toml"), "normal = \"body1\"", "normal = \"body1\"\ngap = 0.0");
+  const auto message = input_error(text);
+  EXPECT_TRUE(contains(message, "contact[1].gap")) << message;
+}
+
+TEST(ContactErrors, OverlappingRigidBody) {
+  // The punch face drawn 0.01 below the block's top: an overlap without interference.
+  const auto text = replaced(example("contact_rigid_punch.toml"), "center = [0.0, 0.0]", "center = [0.0, -0.01]");
+  const auto message = input_error(text);
+  EXPECT_TRUE(contains(message, "the bodies overlap")) << message;
+  EXPECT_TRUE(contains(message, "rigid body 'punch'")) << message;
+}
+
+}  // namespace bemcontact

@@ -100,6 +100,10 @@ struct ContactInterface {
   // along the pair normal (e.g. the radial interference of a shrink fit): every pair's gap
   // is d - interference from the first load step on.
   double interference = 0.0;
+  // A prescribed initial gap added to the geometric one, a function of the position of
+  // side 1's node (e.g. Hertz's r^2 / 2R between two flats); empty for none. Negative
+  // values are overlaps, as with the interference.
+  bem::ScalarField initial_gap;
 };
 
 // Bodies, contacts, one contact law and one load history. The law (kind, friction) and
