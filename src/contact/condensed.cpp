@@ -45,8 +45,7 @@ ContactModel::ContactModel(const ContactProblem& problem, const bem::ProgressCal
     pairs_.insert(pairs_.end(), contact.pairs.begin(), contact.pairs.end());
     pair_offsets_.push_back(static_cast<Index>(pairs_.size()));
   }
-  const Index n = static_cast<Index>(pairs_.size());
-  if (n == 0) throw GeometryError("contact: the contact zones hold no node pair");
+  const Index n = static_cast<Index>(pairs_.size());  // 0 for bodies without contacts
   // Motions: the force load's approach first, then the free motions of bodies held only by
   // their contacts (free_motions.hpp).
   const auto free_motions = free_motion_constraints(problem, prepared_, pairs_, pair_offsets_);

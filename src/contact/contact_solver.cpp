@@ -243,7 +243,7 @@ ContactResult solve_contact(const ContactProblem& problem, const bem::ProgressCa
   result.timings.add("contact iterations", seconds_since(start));
   result.contacts = std::move(history.contacts);
   for (std::size_t c = 0; c < result.contacts.size(); ++c) result.contacts[c].name = problem.contacts[c].name;
-  static_cast<ContactInterfaceResult&>(result) = result.contacts.front();
+  if (!result.contacts.empty()) static_cast<ContactInterfaceResult&>(result) = result.contacts.front();
 
   start = Clock::now();
   result.warnings = model.prepared().warnings;

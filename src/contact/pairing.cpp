@@ -385,7 +385,6 @@ PreparedInterface pair_interface(const ContactProblem& problem, const ContactInt
 }  // namespace
 
 PreparedContact prepare_contact(const ContactProblem& problem) {
-  if (problem.contacts.empty()) throw InputError(SourceLocation{problem.source_file, 0, ""}, "contact: no contact given");
   for (const auto& contact : problem.contacts) {
     check_reference(problem, contact.side1, false, "contact '" + contact.name + "', side 1");
     check_reference(problem, contact.side2, true, "contact '" + contact.name + "', side 2");
@@ -402,6 +401,36 @@ PreparedContact prepare_contact(const ContactProblem& problem) {
     prepared.loaded_weights = node_weights(mesh, {prepared.force_piece}, prepared.loaded_nodes, problem.analysis);
   }
   return prepared;
+}
+
+ContactProblem model_of(const bem::ProblemDefinition& problem) {
+  ContactProblem model;
+  model.title = problem.title;
+  model.source_file = problem.source_file;
+  model.analysis = problem.analysis;
+  model.mesh = problem.mesh;
+  Body body;
+  body.name = problem.body.name;
+  dd::Subdomain region;
+  region.body = problem.body;
+  region.piece_interface.assign(problem.body.pieces.size(), "");
+  region.interior_points = problem.interior_points;
+  body.regions.push_back(region);
+  model.bodies.push_back(body);
+  return model;
+}
+
+ContactProblem model_of(const dd::DecompositionProblem& problem) {
+  ContactProblem model;
+  model.title = problem.title;
+  model.source_file = problem.source_file;
+  model.analysis = problem.analysis;
+  model.mesh = problem.mesh;
+  Body body;
+  body.name = "body";
+  body.regions = problem.subdomains;
+  model.bodies.push_back(body);
+  return model;
 }
 
 ContactProblem two_body_problem(int piece1, int piece2) {

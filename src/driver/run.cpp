@@ -259,7 +259,7 @@ ProblemKind problem_kind(std::string_view text) {
   try {
     const toml::table root = toml::parse(text);
     if (root.contains("subdomain")) return ProblemKind::decomposition;
-    if (root.contains("contact")) return ProblemKind::contact;
+    if (root.contains("contact") || root.contains("body")) return ProblemKind::contact;
   } catch (const toml::parse_error&) {
   }
   return ProblemKind::body;
@@ -276,7 +276,42 @@ RunOutput run_problem(std::string_view text, const std::string& file_name, const
   return output;
 }
 
+namespace {
+
+// `mesh` of a model of bodies, regions and contacts: every region's mesh and every
+// contact's pairs, as the solver would use them.
+RunOutput mesh_model(const contact::ContactProblem& problem, RunOutput output) {
+  const auto prepared = contact::prepare_contact(problem);
+  output.warnings.insert(output.warnings.end(), prepared.warnings.begin(), prepared.warnings.end());
+  for (const auto& region : prepared.regions) {
+    add_mesh_warnings(output.warnings, region.mesh, region.label);
+    append(output.report, "%s: %ld nodes, %ld elements\n", region.label.c_str(),
+           static_cast<long>(region.mesh.node_count()), static_cast<long>(region.mesh.element_count()));
+    append_transitions(output.report, region.mesh, region.label + ": ");
+  }
+  for (std::size_t c = 0; c < prepared.contacts.size(); ++c)
+    append(output.report, "contact '%s': %zu pairs, %d nodes of side 1 facing nothing\n",
+           problem.contacts[c].name.c_str(), prepared.contacts[c].pairs.size(), prepared.contacts[c].unpaired_nodes1);
+  for (const auto& [name, content] : io::contact_mesh_files(problem, prepared)) output.files.add(name, content);
+  check_output_finite(output.files);
+  return output;
+}
+
+}  // namespace
+
 RunOutput mesh_problem(std::string_view text, const std::string& file_name, const RunOptions& options) {
+  const ProblemKind kind = problem_kind(text);
+  if (kind == ProblemKind::contact) {
+    RunOutput output;
+    const auto file = read_checked(io::parse_contact_problem, text, file_name, options, output);
+    return mesh_model(file.problem, std::move(output));
+  }
+  if (kind == ProblemKind::decomposition) {
+    RunOutput output;
+    const auto file = read_checked(io::parse_decomposition, text, file_name, options, output);
+    auto model = contact::model_of(file.problem);
+    return mesh_model(model, std::move(output));
+  }
   const auto file = io::parse_problem(text, file_name, options.overrides, options.limits);
   RunOutput output;
   output.warnings = file.warnings;

@@ -148,8 +148,8 @@ void read_bodies(toml::table& root_table, const TableReader& root, FileContext& 
                  contact::ContactProblem& problem) {
   toml::node* bodies_node = root_table.get("body");
   toml::array* bodies = bodies_node ? bodies_node->as_array() : nullptr;
-  if (!bodies || !bodies->is_array_of_tables() || bodies->size() < 2)
-    root.fail("body", "a contact file needs at least two [[body]] tables (found " +
+  if (!bodies || !bodies->is_array_of_tables() || bodies->empty())
+    root.fail("body", "must be one or more [[body]] tables (found " +
                           (bodies_node ? describe_node(*bodies_node) : std::string("none")) + ")");
   std::map<std::string, int> body_lines, region_lines;
   std::vector<const TableReader*> rigid_readers;
@@ -362,7 +362,9 @@ contact::BoundaryRef read_side(const TableReader& reader, const contact::Contact
 bool is_contact_text(std::string_view text) {
   try {
     const toml::table root = toml::parse(text);
-    return root.contains("contact");
+    // Contacts, or bodies without them (the same model; [[subdomain]] files are the
+    // decomposition's spelling).
+    return root.contains("contact") || (root.contains("body") && !root.contains("subdomain"));
   } catch (...) {
     return false;
   }
@@ -408,11 +410,16 @@ ContactFile parse_contact_problem(std::string_view text, const std::string& file
   read_bodies(root_table, root, context, problem);
 
   const toml::node* contact_node = root.find("contact");
-  if (!contact_node) root.fail("contact", "missing: a [contact] table or [[contact]] tables");
-  std::string pairing_key = "contact";
+  std::string pairing_key = "body";
   const TableReader* anchor = &root;
   std::optional<TableReader> single;
-  if (const toml::table* table = contact_node->as_table()) {
+  if (!contact_node) {
+    // Bodies without contacts: each solved on its own (its bonds included).
+    if (root.has("solver"))
+      root.fail("solver", "[solver] sets the contact solver; without [[contact]] tables it has no effect");
+    if (const toml::table* load = root.optional_table("load", "[load]"))
+      read_force_load(TableReader(*load, "load", context, root.line()), problem);
+  } else if (const toml::table* table = contact_node->as_table()) {
     // One contact between the two bodies: pairing, law, solver and load in one table.
     single.emplace(*table, "contact", context, root.line());
     const TableReader& contact = *single;
@@ -438,6 +445,7 @@ ContactFile parse_contact_problem(std::string_view text, const std::string& file
     anchor = &contact;
     pairing_key = "boundary1";
   } else {
+    pairing_key = "contact";
     const toml::array* contacts = contact_node->as_array();
     if (!contacts || !contacts->is_array_of_tables() || contacts->empty())
       root.fail("contact", "must be a [contact] table or one or more [[contact]] tables");

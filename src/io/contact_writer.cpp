@@ -143,8 +143,10 @@ nlohmann::json contact_summary_json(const contact::ContactProblem& problem, cons
   j["tangential_coupling"] = problem.tangential_coupling;
   j["increments"] = problem.increments;
   j["unknowns"] = result.unknowns;
-  const auto& first = problem.contacts.front();
-  j["bodies"] = {body_label(problem, first.side1), body_label(problem, first.side2)};
+  if (!problem.contacts.empty()) {
+    const auto& first = problem.contacts.front();
+    j["bodies"] = {body_label(problem, first.side1), body_label(problem, first.side2)};
+  }
   j["timings"] = timings_json(result.timings);
   return j;
 }
@@ -166,6 +168,7 @@ std::string contact_report_text(const contact::ContactProblem& problem, const co
                   s.peak_pressure, s.centre_pressure, s.normal_force, s.approach);
     out += line;
   }
+  if (problem.contacts.empty()) return out;
   const auto& s = result.summary;
   std::snprintf(line, sizeof line, "  %s algorithm, %d load steps: newton %d, kalker %d, threshold %d, gmres cycles %d\n",
                 contact::to_string(problem.solver.algorithm), problem.increments, s.newton_iterations,
@@ -206,7 +209,7 @@ std::vector<std::pair<std::string, std::string>> contact_output_files(const cont
   summary["source_file"] = problem.source_file;
   summary["analysis"] = to_string(problem.analysis);
   summary["parameters"] = parameters;
-  summary["contact"] = contact_summary_json(problem, result);
+  if (!problem.contacts.empty()) summary["contact"] = contact_summary_json(problem, result);
   nlohmann::json contacts = nlohmann::json::array();
   for (const auto& contact : result.contacts) contacts.push_back(interface_json(contact));
   summary["contacts"] = contacts;
@@ -214,6 +217,30 @@ std::vector<std::pair<std::string, std::string>> contact_output_files(const cont
   summary["boundary_resultants"] = resultants;
   summary["warnings"] = warnings;
   files.emplace_back("summary.json", write_json_string(summary));
+  return files;
+}
+
+std::vector<std::pair<std::string, std::string>> contact_mesh_files(const contact::ContactProblem& problem,
+                                                                    const contact::PreparedContact& prepared) {
+  std::vector<std::pair<std::string, std::string>> files;
+  for (const auto& region : prepared.regions) {
+    const auto& body = problem.bodies[region.body];
+    const std::string stem = file_stem(body.regions.size() == 1 ? body.name : region.definition.name);
+    files.emplace_back(stem + "_mesh_nodes.csv", mesh_nodes_csv(region.mesh));
+    files.emplace_back(stem + "_mesh_elements.csv", mesh_elements_csv(region.mesh));
+    files.emplace_back(stem + "_mesh.vtk", mesh_vtk(region.mesh, problem.title));
+  }
+  for (std::size_t c = 0; c < prepared.contacts.size(); ++c) {
+    std::string out = "pair,x1,y1,x2,y2,nx,ny,gap,weight\n";
+    const auto& pairs = prepared.contacts[c].pairs;
+    for (std::size_t i = 0; i < pairs.size(); ++i) {
+      const auto& p = pairs[i];
+      out += std::to_string(i) + "," + number(p.position1.x()) + "," + number(p.position1.y()) + "," +
+             number(p.position2.x()) + "," + number(p.position2.y()) + "," + number(p.normal.x()) + "," +
+             number(p.normal.y()) + "," + number(p.gap) + "," + number(p.weight) + "\n";
+    }
+    files.emplace_back(file_stem(problem.contacts[c].name) + "_pairs.csv", out);
+  }
   return files;
 }
 

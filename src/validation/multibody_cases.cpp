@@ -6,7 +6,10 @@
 
 #include "bemcontact/contact/contact_solver.hpp"
 #include "bemcontact/contact/rigid_profile.hpp"
+#include "bemcontact/dd/interface.hpp"
+#include "bemcontact/dd/monolithic.hpp"
 #include "bemcontact/io/contact_file.hpp"
+#include "bemcontact/io/decomposition_file.hpp"
 #include "bemcontact/reference/flat_punch.hpp"
 #include "bemcontact/reference/hertz.hpp"
 #include "bemcontact/validation/case_groups.hpp"
@@ -170,6 +173,41 @@ std::vector<Record> run_roller_between_plates(const Context& context) {
   return records;
 }
 
+// Bodies of bonded regions without contact (the decomposition examples read into the
+// unified model): the bonds eliminated directly in the contact model's condensation against
+// the decomposition's monolithic system (dd/monolithic.hpp: one dense LU of every region
+// and interface unknown, no Schur complement): both are direct solves of the same discrete
+// problem, so they agree to rounding (1e-9 of the largest u and p).
+std::vector<Record> run_bonded_regions(const Context& context) {
+  std::vector<Record> records;
+  for (const char* name : {"dd_two_layer_ring.toml", "dd_two_layer_tube_axisymmetric.toml", "dd_strips_3.toml"}) {
+    const auto file = io::read_decomposition_file(context.examples_dir + "/" + name);
+    for (Interpolation interpolation : {Interpolation::linear, Interpolation::quadratic}) {
+      auto problem = file.problem;
+      problem.mesh.interpolation = interpolation;
+      problem.options.method = dd::InterfaceMethod::conforming;
+      const auto meshes = dd::mesh_subdomains(problem);
+      const auto monolithic = dd::solve_monolithic(problem, meshes, dd::build_connectivity(problem, meshes));
+      auto model = contact::model_of(problem);
+      model.drop_interior_points();
+      const auto result = contact::solve_contact(model, context.progress);
+      double du = 0.0, dp = 0.0, u_scale = 0.0, p_scale = 0.0;
+      for (std::size_t s = 0; s < meshes.size(); ++s)
+        for (Index i = 0; i < meshes[s].node_count(); ++i) {
+          du = std::max(du, (result.boundary[s].displacement[i] - monolithic.boundary[s].displacement[i]).norm());
+          dp = std::max(dp, (result.boundary[s].traction[i] - monolithic.boundary[s].traction[i]).norm());
+          u_scale = std::max(u_scale, monolithic.boundary[s].displacement[i].norm());
+          p_scale = std::max(p_scale, monolithic.boundary[s].traction[i].norm());
+        }
+      const std::size_t first = records.size();
+      records.push_back(compare_scaled("difference_u", du / u_scale, 0.0, 1.0, 1e-9));
+      records.push_back(compare_scaled("difference_p", dp / p_scale, 0.0, 1.0, 1e-9));
+      tag(records, first, "bonded-regions", {{"example", name}, {"interpolation", to_string(interpolation)}});
+    }
+  }
+  return records;
+}
+
 }  // namespace
 
 std::vector<Case> multibody_cases() {
@@ -179,6 +217,8 @@ std::vector<Case> multibody_cases() {
        run_coated_indentation},
       {"roller-between-plates", "-", "three bodies, two contacts, a roller held only by them: 2D Hertz",
        run_roller_between_plates},
+      {"bonded-regions", "IV", "bodies of bonded regions in the unified model against the monolithic decomposition",
+       run_bonded_regions},
   };
 }
 

@@ -149,6 +149,57 @@ TEST(CommandLine, MeshWritesNodesElementsAndVtk) {
   fs::remove_all(dir);
 }
 
+TEST(CommandLine, MeshAcceptsEveryKindOfProblem) {
+  // Bodies, regions and contacts: each region's mesh and each contact's pairs.
+  const auto dir = scratch("mesh_models");
+  auto out = run("mesh " + example("contact_roller_plates.toml") + " -o " + (dir / "roller").string() + " -q");
+  ASSERT_EQ(out.exit_code, 0) << out.output;
+  for (const char* name : {"roller_mesh_nodes.csv", "top_plate_mesh.vtk", "bottom_pairs.csv", "top_pairs.csv"})
+    EXPECT_TRUE(fs::exists(dir / "roller" / name)) << name;
+  out = run("mesh " + example("dd_strips_2.toml") + " -o " + (dir / "dd").string() + " -q");
+  ASSERT_EQ(out.exit_code, 0) << out.output;
+  EXPECT_TRUE(fs::exists(dir / "dd" / "strip1_mesh_elements.csv"));
+  fs::remove_all(dir);
+}
+
+TEST(CommandLine, RunSolvesBodiesWithoutContact) {
+  // The unified format with two bonded regions and no contact.
+  const auto dir = scratch("bonded");
+  fs::create_directories(dir);
+  std::ofstream(dir / "bonded.toml") << R"(analysis = "plane_strain"
+[[body]]
+name = "block"
+[[body.region]]
+name = "upper"
+material = { E = 2.0, nu = 0.3 }
+vertices = { A = [0.0, 0.0], B = [1.0, 0.0], C = [1.0, 1.0], D = [0.0, 1.0] }
+boundary = [ { name = "bond", from = "A", to = "B", elements = 6, interface = "i" },
+             { name = "right", from = "B", to = "C", elements = 6 },
+             { name = "top", from = "C", to = "D", elements = 6, t2 = -1.0 },
+             { name = "left", from = "D", to = "A", elements = 6 } ]
+[[body.region]]
+name = "lower"
+material = { E = 1.0, nu = 0.3 }
+vertices = { A = [0.0, -1.0], B = [1.0, -1.0], C = [1.0, 0.0], D = [0.0, 0.0] }
+boundary = [ { name = "base", from = "A", to = "B", elements = 6, u1 = 0.0, u2 = 0.0 },
+             { name = "right", from = "B", to = "C", elements = 6 },
+             { name = "bond", from = "C", to = "D", elements = 6, interface = "i" },
+             { name = "left", from = "D", to = "A", elements = 6 } ]
+)";
+  const auto out = run("run " + (dir / "bonded.toml").string() + " -o " + (dir / "out").string() + " -q");
+  ASSERT_EQ(out.exit_code, 0) << out.output;
+  for (const char* name : {"upper_boundary.csv", "lower_boundary.csv", "summary.json"})
+    EXPECT_TRUE(fs::exists(dir / "out" / name)) << name;
+  std::ifstream in(dir / "out" / "summary.json");
+  const auto summary = nlohmann::json::parse(in);
+  // The base carries the top's load: F_y = 1 per unit width (to the nodal integration).
+  double base = 0.0;
+  for (const auto& entry : summary["boundary_resultants"]["lower"])
+    if (entry["boundary"] == "base") base = entry["force"][1].get<double>();
+  EXPECT_NEAR(base, 1.0, 5e-3);
+  fs::remove_all(dir);
+}
+
 TEST(CommandLine, ValidateRejectsAnUnknownCaseListingTheValidOnes) {
   const auto out = run("validate no-such-case");
   EXPECT_EQ(out.exit_code, 2);

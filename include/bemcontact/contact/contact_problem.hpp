@@ -138,6 +138,12 @@ struct ContactProblem {
   const dd::Subdomain& region(const BoundaryRef& ref) const { return bodies.at(ref.body).regions.at(ref.region); }
 };
 
+// The one-body and decomposition problems as models of the same kind: one body of one
+// region, one body of the decomposition's regions (bonded along its interfaces); no
+// contact.
+ContactProblem model_of(const bem::ProblemDefinition& problem);
+ContactProblem model_of(const dd::DecompositionProblem& problem);
+
 // Two one-region elastic bodies named body1 and body2 and one contact between piece1 of
 // the first and piece2 of the second (pieces to be added by the caller when -1).
 ContactProblem two_body_problem(int piece1 = -1, int piece2 = -1);

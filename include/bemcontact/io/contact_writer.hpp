@@ -24,6 +24,7 @@
 #include <nlohmann/json.hpp>
 
 #include "bemcontact/contact/contact_solver.hpp"
+#include "bemcontact/contact/pairing.hpp"
 
 namespace bemcontact::io {
 
@@ -46,5 +47,12 @@ std::string contact_report_text(const contact::ContactProblem& problem, const co
 std::vector<std::pair<std::string, std::string>> contact_output_files(
     const contact::ContactProblem& problem, const contact::ContactResult& result, bool vtk = true,
     const std::map<std::string, double>& parameters = {}, const std::vector<std::string>& warnings = {});
+
+// `bemcontact mesh` of a contact model (or of bodies of regions): per region
+// <name>_mesh_nodes.csv, <name>_mesh_elements.csv, <name>_mesh.vtk, and per contact
+// <name>_pairs.csv: pair,x1,y1,x2,y2,nx,ny,gap,weight (side 1's node, the point it faces,
+// the pair normal, the initial gap d and the node's integration weight).
+std::vector<std::pair<std::string, std::string>> contact_mesh_files(const contact::ContactProblem& problem,
+                                                                    const contact::PreparedContact& prepared);
 
 }  // namespace bemcontact::io
