@@ -7,6 +7,24 @@
 
 namespace bemcontact::contact {
 
+Vector CondensedProblem::jump_at(double t) const {
+  Vector w = Vector::Zero(2 * pairs);
+  for (const auto& load : loads) w += load.amplitude.at(t) * load.a;
+  return w;
+}
+
+Vector CondensedProblem::target_at(double t) const {
+  Vector target = force_at(t);
+  for (const auto& load : loads) target -= load.amplitude.at(t) * load.F0;
+  return target;
+}
+
+Vector CondensedProblem::force_at(double t) const {
+  Vector out(motions);
+  for (Index k = 0; k < motions; ++k) out[k] = force[k] == 0.0 ? 0.0 : force_amplitude[k].at(t) * force[k];
+  return out;
+}
+
 void drop_tangential_coupling(CondensedProblem& problem) {
   for (Index i = 0; i < problem.pairs; ++i)
     for (Index j = 0; j < problem.pairs; ++j) problem.M(2 * i, 2 * j + 1) = 0.0;
@@ -18,7 +36,7 @@ namespace {
 enum class BlockKind { side1, side2, platen };
 struct Block {
   BlockKind kind = BlockKind::side1;
-  std::size_t contact = 0;
+  std::size_t contact = 0;  // the contact, or the platen
   Index offset = 0;  // first variable dof of the block in the region
 };
 
@@ -31,7 +49,7 @@ struct RegionVariables {
 
 Index block_offset(const RegionVariables& variables, BlockKind kind, std::size_t contact) {
   for (const auto& block : variables.blocks)
-    if (block.kind == kind && (kind == BlockKind::platen || block.contact == contact)) return block.offset;
+    if (block.kind == kind && block.contact == contact) return block.offset;
   return -1;
 }
 
@@ -49,10 +67,9 @@ ContactModel::ContactModel(const ContactProblem& problem, const bem::ProgressCal
   // Motions: the force load's approach first, then the free motions of bodies held only by
   // their contacts (free_motions.hpp).
   const auto free_motions = free_motion_constraints(problem, prepared_, pairs_, pair_offsets_);
-  const Index force_motions = problem.force ? 1 : 0;
+  const Index force_motions = static_cast<Index>(problem.forces.size());
   const Index K = force_motions + static_cast<Index>(free_motions.size());
-  const Index nq = 2 * n + K;  // q = (x, delta)
-  const Index delta_column = 2 * n;  // the force load's approach
+  const Index nq = 2 * n + K;  // q = (x, delta): delta_k in column 2n + k
   const auto& regions = prepared_.regions;
   const std::size_t region_count = regions.size();
 
@@ -106,10 +123,10 @@ ContactModel::ContactModel(const ContactProblem& problem, const bem::ProgressCal
     v2.blocks.push_back({BlockKind::side2, c, 2 * static_cast<Index>(v2.nodes.size())});
     for (const Index node : contact.zone_nodes2) v2.nodes.push_back({node, bem::ConditionKind::traction});
   }
-  if (prepared_.force_region >= 0) {
-    auto& v = variables[prepared_.force_region];
-    v.blocks.push_back({BlockKind::platen, 0, 2 * static_cast<Index>(v.nodes.size())});
-    for (const Index node : prepared_.loaded_nodes) v.nodes.push_back({node, bem::ConditionKind::displacement});
+  for (std::size_t p = 0; p < prepared_.platens.size(); ++p) {
+    auto& v = variables[prepared_.platens[p].region];
+    v.blocks.push_back({BlockKind::platen, p, 2 * static_cast<Index>(v.nodes.size())});
+    for (const Index node : prepared_.platens[p].nodes) v.nodes.push_back({node, bem::ConditionKind::displacement});
   }
   // Free motions: a variable point constraint each, its datum after the region's nodes.
   std::vector<std::vector<bem::PointConstraint>> pins(region_count);
@@ -118,7 +135,6 @@ ContactModel::ContactModel(const ContactProblem& problem, const bem::ProgressCal
     pin_of_motion.emplace_back(motion.region, static_cast<Index>(pins[motion.region].size()));
     pins[motion.region].push_back(motion.constraint);
   }
-  const int component = problem.force ? problem.force->component : 0;
 
   // Factor every region; its data from the contact unknowns before the bonds: G_r q.
   factored_.resize(region_count);
@@ -151,8 +167,13 @@ ContactModel::ContactModel(const ContactProblem& problem, const bem::ProgressCal
              2 * n + force_motions + static_cast<Index>(m)) = 1.0;
     for (const auto& block : variables[r].blocks) {
       if (block.kind == BlockKind::platen) {
-        for (Index l = 0; l < static_cast<Index>(prepared_.loaded_nodes.size()); ++l)
-          G[r](block.offset + 2 * l + component, delta_column) = 1.0;
+        // The platen moves by the approach of each force load on it, in its component.
+        for (std::size_t k = 0; k < problem.forces.size(); ++k) {
+          if (prepared_.platen_of_force[k] != static_cast<int>(block.contact)) continue;
+          const auto& platen = prepared_.platens[block.contact];
+          for (Index l = 0; l < static_cast<Index>(platen.nodes.size()); ++l)
+            G[r](block.offset + 2 * l + problem.forces[k].component, 2 * n + static_cast<Index>(k)) = 1.0;
+        }
         continue;
       }
       const auto& contact = prepared_.contacts[block.contact];
@@ -221,12 +242,19 @@ ContactModel::ContactModel(const ContactProblem& problem, const bem::ProgressCal
     response0[r] = flexibility[r] * data_offset_[r] + own_response[r];
   }
 
-  // Jumps w = Q (u1 - u2) per pair.
+  // Jumps w = Q (u1 - u2) per pair; loads: the bodies' own data (load 0), then each rigid
+  // body's prescribed translation.
   auto& cp = condensed_;
   cp.pairs = n;
   Matrix W = Matrix::Zero(2 * n, nq);
-  Vector w0 = Vector::Zero(2 * n);
-  const bool rigid_force = problem.force && problem.bodies[problem.force->body].rigid.has_value();
+  cp.loads.push_back({problem.data_amplitude, Vector::Zero(2 * n), Vector::Zero(K)});
+  std::vector<int> load_of_body(problem.bodies.size(), -1);
+  for (std::size_t b = 0; b < problem.bodies.size(); ++b) {
+    const auto& rigid = problem.bodies[b].rigid;
+    if (!rigid || !rigid->displacement) continue;
+    load_of_body[b] = static_cast<int>(cp.loads.size());
+    cp.loads.push_back({rigid->amplitude, Vector::Zero(2 * n), Vector::Zero(K)});
+  }
   for (std::size_t c = 0; c < prepared_.contacts.size(); ++c) {
     const auto& contact = prepared_.contacts[c];
     const Index first = pair_offsets_[c];
@@ -234,6 +262,7 @@ ContactModel::ContactModel(const ContactProblem& problem, const bem::ProgressCal
     const Index o2 = contact.region2 >= 0 ? block_offset(variables[contact.region2], BlockKind::side2, c) : -1;
     for (Index i = 0; i < static_cast<Index>(contact.pairs.size()); ++i) {
       const auto& pair = contact.pairs[i];
+      const Mat2 Qg = Q(first + i);
       Matrix u = response[contact.region1].middleRows(o1 + 2 * i, 2);
       Vec2 u0 = response0[contact.region1].segment<2>(o1 + 2 * i);
       if (contact.region2 >= 0) {
@@ -241,19 +270,20 @@ ContactModel::ContactModel(const ContactProblem& problem, const bem::ProgressCal
           u -= pair.shape2[a] * response[contact.region2].middleRows(o2 + 2 * pair.zone2[a], 2);
           u0 -= pair.shape2[a] * response0[contact.region2].segment<2>(o2 + 2 * pair.zone2[a]);
         }
-      } else if (rigid_force && problem.force->body == contact.rigid_body) {
-        u(component, delta_column) -= 1.0;  // the rigid body translates by delta
       } else {
-        u0 -= problem.bodies[contact.rigid_body].rigid->displacement.value_or(Vec2::Zero());
+        // The rigid body translates by its force loads' approaches and its prescribed displacement.
+        for (std::size_t k = 0; k < problem.forces.size(); ++k)
+          if (problem.forces[k].body == contact.rigid_body) u(problem.forces[k].component, 2 * n + static_cast<Index>(k)) -= 1.0;
+        if (load_of_body[contact.rigid_body] >= 0)
+          cp.loads[load_of_body[contact.rigid_body]].a.segment<2>(2 * (first + i)) =
+              -Qg * *problem.bodies[contact.rigid_body].rigid->displacement;
       }
-      const Mat2 Qg = Q(first + i);
       W.middleRows(2 * (first + i), 2) = Qg * u;
-      w0.segment<2>(2 * (first + i)) = Qg * u0;
+      cp.loads[0].a.segment<2>(2 * (first + i)) = Qg * u0;
     }
   }
   cp.M = W.leftCols(2 * n);
   if (!problem.tangential_coupling) drop_tangential_coupling(cp);
-  cp.a = w0;
   cp.gap.resize(n);
   cp.on_axis.resize(n);
   for (Index g = 0; g < n; ++g) {
@@ -261,27 +291,33 @@ ContactModel::ContactModel(const ContactProblem& problem, const bem::ProgressCal
     cp.on_axis[g] = pairs_[g].on_axis;
   }
   cp.groups = pair_offsets_;
+  for (const auto& region : regions) cp.length_scale = std::max(cp.length_scale, region.mesh.scale);
   cp.motions = K;
   cp.b = W.rightCols(K);
   Matrix F = Matrix::Zero(K, nq);
-  cp.F0 = Vector::Zero(K);
+  auto& F0 = cp.loads[0].F0;
   cp.force = Vector::Zero(K);
-  if (problem.force) {
-    cp.force[0] = problem.force->force;
-    if (rigid_force) {
-      // The force on the rigid body is the integral of the traction its contacts apply to side 1.
+  cp.force_amplitude.assign(K, Amplitude{});
+  for (std::size_t k = 0; k < problem.forces.size(); ++k) {
+    const auto& load = problem.forces[k];
+    const Index row = static_cast<Index>(k);
+    cp.force[row] = load.force;
+    cp.force_amplitude[k] = load.amplitude;
+    const int p = prepared_.platen_of_force[k];
+    if (p < 0) {
+      // The force on a rigid body is the integral of the traction its contacts apply to side 1.
       for (std::size_t c = 0; c < prepared_.contacts.size(); ++c) {
-        if (prepared_.contacts[c].rigid_body != problem.force->body) continue;
+        if (prepared_.contacts[c].rigid_body != load.body) continue;
         for (Index g = pair_offsets_[c]; g < pair_offsets_[c + 1]; ++g)
-          F.block<1, 2>(0, 2 * g) = pairs_[g].weight * R(g).row(component);
+          F.block<1, 2>(row, 2 * g) = pairs_[g].weight * R(g).row(load.component);
       }
-    } else {
-      const int rf = prepared_.force_region;
-      const Index of = block_offset(variables[rf], BlockKind::platen, 0);
-      for (Index l = 0; l < static_cast<Index>(prepared_.loaded_nodes.size()); ++l) {
-        F.row(0) += prepared_.loaded_weights[l] * response[rf].row(of + 2 * l + component);
-        cp.F0[0] += prepared_.loaded_weights[l] * response0[rf][of + 2 * l + component];
-      }
+      continue;
+    }
+    const auto& platen = prepared_.platens[p];
+    const Index of = block_offset(variables[platen.region], BlockKind::platen, static_cast<std::size_t>(p));
+    for (Index l = 0; l < static_cast<Index>(platen.nodes.size()); ++l) {
+      F.row(row) += platen.weights[l] * response[platen.region].row(of + 2 * l + load.component);
+      F0[row] += platen.weights[l] * response0[platen.region][of + 2 * l + load.component];
     }
   }
   // A free motion's equation: its pin's reaction vanishes (the body's equilibrium).
@@ -289,7 +325,7 @@ ContactModel::ContactModel(const ContactProblem& problem, const bem::ProgressCal
     const auto [r, q] = pin_of_motion[m];
     const Index row = 2 * static_cast<Index>(variables[r].nodes.size()) + q;
     F.row(force_motions + static_cast<Index>(m)) = response[r].row(row);
-    cp.F0[force_motions + static_cast<Index>(m)] = response0[r][row];
+    F0[force_motions + static_cast<Index>(m)] = response0[r][row];
   }
   cp.f = F.leftCols(2 * n);
   cp.f_delta = F.rightCols(K);
@@ -300,10 +336,21 @@ Vec2 ContactModel::traction(Index pair, const Vector& x) const {
   return -x[2 * pair] * p.normal + x[2 * pair + 1] * p.tangent;
 }
 
-Vector ContactModel::variable_data(int r, const Vector& x, const Vector& delta) const {
+bem::BoundarySolution ContactModel::region_solution(int r, const Vector& x, const Vector& delta,
+                                                    double data_amplitude) const {
   Vector q(x.size() + delta.size());
   q << x, delta;
-  return data_map_[r] * q + data_offset_[r];
+  const auto& body = *factored_[r];
+  // Linear in the variable data and in the bodies' own data (scaled by its amplitude).
+  auto solution = body.solve(data_map_[r] * q + data_amplitude * data_offset_[r], false);
+  if (data_amplitude != 0.0) {
+    const auto own = body.solve(Vector::Zero(body.variable_dofs()), true);
+    for (std::size_t i = 0; i < solution.displacement.size(); ++i) {
+      solution.displacement[i] += data_amplitude * own.displacement[i];
+      solution.traction[i] += data_amplitude * own.traction[i];
+    }
+  }
+  return solution;
 }
 
 }  // namespace bemcontact::contact

@@ -65,7 +65,7 @@ double stick_margin_measure(double slip_ratio) { return std::cbrt(std::pow(std::
 ContactSummary summarise(const std::vector<ContactPair>& geometry, const std::vector<PairResult>& pairs,
                          const StepOutput& step, double load) {
   ContactSummary s;
-  s.load_factor = load;
+  s.time = load;
   s.approach = 0.0;  // set by the caller (the force load's motion)
   s.residual = step.residual;
   s.newton_iterations = step.newton_iterations;
@@ -143,6 +143,8 @@ ContactSummary summarise(const std::vector<ContactPair>& geometry, const std::ve
 
 void check_history_options(const ContactProblem& problem) {
   if (problem.increments < 1) throw Error("contact: the number of load increments must be >= 1");
+  if (!(problem.end_time > 0.0)) throw Error("contact: the history's end_time must be > 0");
+  if (problem.max_steps < problem.increments) throw Error("contact: max_steps must be >= increments");
   if (problem.friction < 0.0) throw Error("contact: the friction coefficient must be >= 0");
 }
 
@@ -187,6 +189,41 @@ void finish(ContactInterfaceResult& out, const ContactSummary& totals) {
 
 }  // namespace
 
+namespace {
+
+// The step ends the history must hit: every amplitude's corners in (0, end].
+std::vector<double> history_corners(const CondensedProblem& condensed, double end) {
+  std::vector<double> corners{end};
+  auto add = [&](const Amplitude& amplitude) {
+    for (const double t : amplitude.corners())
+      if (t > 0.0 && t < end) corners.push_back(t);
+  };
+  for (const auto& load : condensed.loads) add(load.amplitude);
+  for (Index k = 0; k < condensed.motions; ++k)
+    if (condensed.force[k] != 0.0) add(condensed.force_amplitude[k]);
+  std::sort(corners.begin(), corners.end());
+  corners.erase(std::unique(corners.begin(), corners.end(), [end](double a, double b) { return b - a <= 1e-12 * end; }),
+                corners.end());
+  return corners;
+}
+
+// Pairs whose state (open / stick / slip) differs between two solutions, per group.
+int state_changes(const std::vector<PairStatus>& before, const std::vector<PairStatus>& after, Index first,
+                  Index last) {
+  int changes = 0;
+  for (Index i = first; i < last; ++i) changes += before[i] != after[i];
+  return changes;
+}
+
+std::vector<PairStatus> statuses(const std::vector<ContactPair>& pairs, const StepOutput& step,
+                                 const ContactProblem& problem) {
+  std::vector<PairStatus> out;
+  for (const auto& r : pair_results(pairs, step, problem)) out.push_back(r.status);
+  return out;
+}
+
+}  // namespace
+
 LoadHistory solve_load_history(const CondensedProblem& condensed, const std::vector<ContactPair>& pairs,
                                const ContactProblem& problem, const bem::ProgressCallback& progress,
                                const std::vector<Index>& groups) {
@@ -194,33 +231,117 @@ LoadHistory solve_load_history(const CondensedProblem& condensed, const std::vec
   const Index n = condensed.pairs;
   LoadHistory history;
   if (groups.size() > 1) history.contacts.resize(groups.size() - 1);
-  StepInput input;
-  input.problem = &condensed;
-  input.kind = problem.kind;
-  input.friction = problem.friction;
-  input.previous_tangential_jump = Vector::Zero(n);
-  input.x_start = Vector::Zero(2 * n);
+  const std::vector<Index> all_groups = groups.size() > 1 ? groups : std::vector<Index>{0, n};
+  const double end = problem.end_time;
+  const auto corners = history_corners(condensed, end);
+  const double base_step = end / problem.increments;
+  const double min_step = end / problem.max_steps;
+  // Adaptive stepping matters for friction: frictionless contact does not depend on the path.
+  const bool adaptive = problem.adaptive && problem.friction > 0.0;
+
+  StepInput previous = step_input(condensed, 0.0);
+  previous.kind = problem.kind;
+  previous.friction = problem.friction;
+  previous.previous_tangential_jump = Vector::Zero(n);
+  previous.x_start = Vector::Zero(2 * n);
+  previous.delta_start = Vector::Zero(condensed.motions);
+  std::vector<PairStatus> state(static_cast<std::size_t>(n), PairStatus::open);
   StepOutput step;
+  step.x = Vector::Zero(2 * n);
+  step.delta = Vector::Zero(condensed.motions);
   ContactSummary totals;
-  for (int k = 1; k <= problem.increments; ++k) {
-    input.load = static_cast<double>(k) / problem.increments;
-    step = problem.solver.algorithm == Algorithm::newton ? solve_step_newton(input, problem.solver)
-                                                         : solve_step_thesis(input, problem.solver);
-    if (!step.converged)
-      throw SolverError("contact (" + std::string(to_string(problem.solver.algorithm)) + " algorithm): load step " +
-                        std::to_string(k) + " of " + std::to_string(problem.increments) + ": " + step.failure +
-                        "; complementarity residual " + format_residual(step.residual) + " (relative)");
-    // The approach of the force load (the first motion when it has a force).
+  Vector dissipated = Vector::Zero(static_cast<Index>(all_groups.size()) - 1);
+  double t = 0.0, dt = base_step;
+  std::size_t corner = 0;
+  int taken = 0;
+  while (t < end * (1.0 - 1e-12)) {
+    while (corner < corners.size() && corners[corner] <= t * (1.0 + 1e-12)) ++corner;
+    const double t_next = std::min(t + dt, corners[corner]);
+    StepInput input = step_input(condensed, t_next);
+    input.kind = problem.kind;
+    input.friction = problem.friction;
+    input.previous_tangential_jump = previous.previous_tangential_jump;
+    input.x_start = previous.x_start;
+    input.delta_start = previous.delta_start;
+    StepOutput trial = problem.solver.algorithm == Algorithm::newton ? solve_step_newton(input, problem.solver)
+                                                                           : solve_step_thesis(input, problem.solver);
+    add_iterations(totals, trial);
+    const double h = t_next - t;
+    // A force that nothing carries (a tangential force without friction) leaves its body free
+    // in that direction: the linear system still answers, with a motion of no physical size.
+    for (Index k = 0; k < condensed.motions && trial.converged && condensed.length_scale > 0.0; ++k)
+      if (std::abs(trial.delta[k]) > 1e3 * condensed.length_scale) {
+        trial.converged = false;
+        trial.failure = "the motion of " +
+                        (k < static_cast<Index>(problem.forces.size()) ? "load '" + problem.forces[k].name + "'"
+                                                                        : std::string("a body held by its contacts")) +
+                        " is " + format_residual(trial.delta[k]) + ", over 1000 times the size of the bodies: no contact "
+                        "carries the force in that direction";
+      }
+    if (!trial.converged && adaptive && h > 2.0 * min_step) {
+      dt = 0.5 * h;  // a smaller step may converge
+      continue;
+    }
+    if (!trial.converged) {
+      std::ostringstream message;
+      message.precision(6);
+      message << "contact (" << to_string(problem.solver.algorithm) << " algorithm): no solution at pseudo-time "
+              << t_next << " (step " << taken + 1 << ", from " << t << "): " << trial.failure
+              << "; complementarity residual " << format_residual(trial.residual) << " (relative)";
+      if (!problem.forces.empty()) {
+        message << "; the force loads there:";
+        const Vector forces = condensed.force_at(t_next);
+        for (std::size_t k = 0; k < problem.forces.size(); ++k)
+          message << (k ? ", " : " ") << problem.forces[k].name << " = " << forces[static_cast<Index>(k)];
+        message << " (a force that no contact state can carry, such as a tangential force above the friction limit "
+                   "or without friction, has no solution)";
+      }
+      throw SolverError(message.str());
+    }
+    const auto trial_state = statuses(pairs, trial, problem);
+    if (adaptive && h > 2.0 * min_step) {
+      bool too_fast = false;
+      for (std::size_t g = 0; g + 1 < all_groups.size(); ++g)
+        too_fast = too_fast || state_changes(state, trial_state, all_groups[g], all_groups[g + 1]) > problem.max_state_changes;
+      if (too_fast) {
+        dt = 0.5 * h;
+        ++history.rejected_steps;
+        continue;
+      }
+    }
+    step = trial;
+    // Energy dissipated by friction in the step: -sum weight tau (slip increment).
+    for (std::size_t g = 0; g + 1 < all_groups.size(); ++g)
+      for (Index i = all_groups[g]; i < all_groups[g + 1]; ++i)
+        dissipated[static_cast<Index>(g)] -=
+            pairs[i].weight * step.x[2 * i + 1] * (step.w[2 * i + 1] - previous.previous_tangential_jump[i]);
+    ++taken;
+    t = t_next;
+    state = trial_state;
     const double approach = condensed.motions > 0 && condensed.force[0] != 0.0 ? step.delta[0] : 0.0;
-    record_step(history, pairs, step, problem, input.load, approach, 0, n);
-    for (std::size_t c = 0; c < history.contacts.size(); ++c)
-      record_step(history.contacts[c], pairs, step, problem, input.load, approach, groups[c], groups[c + 1]);
-    add_iterations(totals, step);
-    for (Index i = 0; i < n; ++i) input.previous_tangential_jump[i] = step.w[2 * i + 1];
-    input.x_start = step.x;
-    input.delta_start = step.delta;
-    if (progress) progress("contact load steps", static_cast<double>(k) / problem.increments);
+    record_step(history, pairs, step, problem, t, approach, 0, n);
+    history.steps.back().dissipated_energy = dissipated.sum();
+    for (std::size_t c = 0; c < history.contacts.size(); ++c) {
+      record_step(history.contacts[c], pairs, step, problem, t, approach, groups[c], groups[c + 1]);
+      history.contacts[c].steps.back().dissipated_energy = dissipated[static_cast<Index>(c)];
+    }
+    StepRecord record;
+    record.time = t;
+    record.forces = condensed.force_at(t);
+    record.motions = step.delta;
+    history.records.push_back(record);
+    for (Index i = 0; i < n; ++i) previous.previous_tangential_jump[i] = step.w[2 * i + 1];
+    previous.x_start = step.x;
+    previous.delta_start = step.delta;
+    // Grow again after an accepted step.
+    if (adaptive && dt < base_step) dt = std::min(base_step, 2.0 * dt);
+    if (taken > problem.max_steps)
+      throw SolverError("contact: the history needs more than max_steps = " + std::to_string(problem.max_steps) +
+                        " steps (raise max_steps in [solver])");
+    if (progress) progress("contact load steps", t / end);
   }
+  if (history.steps.empty()) throw SolverError("contact: the load history has no step (end_time must be > 0)");
+  history.steps_taken = taken;
   finish(history, totals);
   for (auto& contact : history.contacts) finish(contact, totals);
   history.x = step.x;
@@ -242,6 +363,9 @@ ContactResult solve_contact(const ContactProblem& problem, const bem::ProgressCa
   auto history = solve_load_history(model.condensed(), model.pairs(), problem, progress, groups);
   result.timings.add("contact iterations", seconds_since(start));
   result.contacts = std::move(history.contacts);
+  result.records = std::move(history.records);
+  result.steps_taken = history.steps_taken;
+  result.rejected_steps = history.rejected_steps;
   for (std::size_t c = 0; c < result.contacts.size(); ++c) result.contacts[c].name = problem.contacts[c].name;
   if (!result.contacts.empty()) static_cast<ContactInterfaceResult&>(result) = result.contacts.front();
 
@@ -255,7 +379,8 @@ ContactResult solve_contact(const ContactProblem& problem, const bem::ProgressCa
     result.body_names.push_back(body.regions.size() == 1 ? body.name : region.definition.name);
     result.region_labels.push_back(region.label);
     result.meshes.push_back(region.mesh);
-    auto boundary = model.region(static_cast<int>(r)).solve(model.variable_data(static_cast<int>(r), history.x, history.delta), true);
+    auto boundary = model.region_solution(static_cast<int>(r), history.x, history.delta,
+                                          problem.data_amplitude.at(problem.end_time));
     if (boundary.stress.empty())
       boundary.stress = bem::boundary_stresses(region.mesh, problem.analysis, material, boundary);
     // Conditions as the user gave them (the platen's are the solver's own).

@@ -111,7 +111,6 @@ HalfSpaceModel halfspace_sphere_model(const HalfSpaceSphereContact& contact) {
       c.M(2 * i + 1, 2 * j + 1) = C(2 * i, 2 * j);
     }
   if (!contact.tangential_coupling) drop_tangential_coupling(c);
-  c.a = Vector::Zero(2 * n);
   c.gap.resize(n);
   c.on_axis.assign(n, false);
   // The sphere's far field moves by delta along z: w_n = -delta. Its force balances the
@@ -120,8 +119,8 @@ HalfSpaceModel halfspace_sphere_model(const HalfSpaceSphereContact& contact) {
   c.b = Matrix::Zero(2 * n, 1);
   c.f = Matrix::Zero(1, 2 * n);
   c.f_delta = Matrix::Zero(1, 1);
-  c.F0 = Vector::Zero(1);
   c.force = Vector::Constant(1, -contact.force);
+  c.force_amplitude.resize(1);
   const auto& rule = quadrature::gauss_legendre(2);
   for (Index i = 0; i < n; ++i) {
     ContactPair pair;

@@ -22,9 +22,19 @@ double threshold(const StepInput& in, double lambda_n) {
 
 }  // namespace
 
+StepInput step_input(const CondensedProblem& problem, double t) {
+  StepInput in;
+  in.problem = &problem;
+  in.time = t;
+  in.jump0 = problem.jump_at(t);
+  in.target = problem.target_at(t);
+  in.force_scale = problem.force_at(t).cwiseAbs();
+  return in;
+}
+
 Vector relative_displacement(const StepInput& in, const Vector& x, const Vector& delta) {
   const auto& p = *in.problem;
-  Vector w = in.load * p.a + p.M * x;
+  Vector w = in.jump0 + p.M * x;
   if (p.motions > 0) w += p.b * delta;
   return w;
 }
@@ -47,10 +57,10 @@ double complementarity_residual(const StepInput& in, const Vector& x, const Vect
     worst = std::max({worst, std::abs(cn) / scale, std::abs(ct) / scale});
   }
   for (Index k = 0; k < p.motions; ++k) {
-    const double target = in.load * (p.force[k] - p.F0[k]);
-    const double mismatch = p.f.row(k).dot(x) + p.f_delta.row(k).dot(delta) - target;
-    // A free body's equilibrium (force 0): relative to the contact forces on it.
-    const double size = std::max({std::abs(in.load * p.force[k]), p.f.row(k).cwiseAbs().dot(x.cwiseAbs()), 1e-300});
+    const double mismatch = p.f.row(k).dot(x) + p.f_delta.row(k).dot(delta) - in.target[k];
+    // A free body's equilibrium (force 0), or a force through 0: relative to the contact
+    // forces on the body.
+    const double size = std::max({in.force_scale[k], p.f.row(k).cwiseAbs().dot(x.cwiseAbs()), 1e-300});
     worst = std::max(worst, std::abs(mismatch) / size);
   }
   return worst;
@@ -102,7 +112,8 @@ StepOutput solve_step_newton(const StepInput& in, const SolverOptions& options) 
       }
       const double g = threshold(in, lambda);
       const double z = tau - c * (w[2 * i + 1] - in.previous_tangential_jump[i]);
-      if (std::abs(z) < g) state[2 * i + 1] = 1;  // stick
+      // A pair just closing (lambda = 0: g = 0, z = 0) starts sticking.
+      if (std::abs(z) <= g) state[2 * i + 1] = 1;  // stick
       else state[2 * i + 1] = z >= 0.0 ? 2 : 3;   // slip, tau = +g or -g
     }
     if (!damped && !seen.insert(state).second && iteration > 2) damped = true;  // the sets cycle
@@ -142,11 +153,11 @@ StepOutput solve_step_newton(const StepInput& in, const SolverOptions& options) 
     for (Index a = 0; a < reduced; ++a) {
       const Index row = free_dofs[a], i = row / 2;
       for (Index m = 0; m < K; ++m) J(a, reduced + m) = p.b(row, m);
-      rhs[a] = (row % 2 == 0 ? p.gap[i] : in.previous_tangential_jump[i]) - in.load * p.a[row];
+      rhs[a] = (row % 2 == 0 ? p.gap[i] : in.previous_tangential_jump[i]) - in.jump0[row];
     }
     for (Index m = 0; m < K; ++m) {
       for (Index l = 0; l < K; ++l) J(reduced + m, reduced + l) = p.f_delta(m, l);
-      rhs[reduced + m] = in.load * (p.force[m] - p.F0[m]);
+      rhs[reduced + m] = in.target[m];
     }
     // LAPACK through DenseLU: the dense solve is the cost of an iteration, at BLAS-3 speed.
     Vector z;

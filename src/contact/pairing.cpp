@@ -168,13 +168,14 @@ void mesh_regions(const ContactProblem& problem, PreparedContact& prepared) {
         zone.conditions[side->piece].signature = "contact zone";
         zone.pieces[side->piece].condition_signature = "contact zone";
       }
-    if (problem.force && problem.force->body == static_cast<int>(b)) {
-      auto& loaded = decomposition.subdomains[problem.force->region].body;
-      auto& condition = loaded.conditions[problem.force->piece];
+    for (const auto& force : problem.forces) {
+      if (force.body != static_cast<int>(b)) continue;
+      auto& loaded = decomposition.subdomains[force.region].body;
+      auto& condition = loaded.conditions[force.piece];
       condition = bem::BoundaryCondition{};
       condition.kind = {bem::ConditionKind::displacement, bem::ConditionKind::displacement};
       condition.signature = "rigid platen";
-      loaded.pieces[problem.force->piece].condition_signature = condition.signature;
+      loaded.pieces[force.piece].condition_signature = condition.signature;
     }
     std::vector<geometry::BoundaryMesh> meshes;
     try {
@@ -393,12 +394,26 @@ PreparedContact prepare_contact(const ContactProblem& problem) {
   mesh_regions(problem, prepared);
   for (const auto& contact : problem.contacts)
     prepared.contacts.push_back(pair_interface(problem, contact, prepared, prepared.warnings));
-  if (problem.force && !problem.bodies[problem.force->body].rigid) {
-    prepared.force_region = prepared.body_regions[problem.force->body][problem.force->region];
-    prepared.force_piece = problem.force->piece;
-    const auto& mesh = prepared.regions[prepared.force_region].mesh;
-    prepared.loaded_nodes = mesh.piece_nodes[prepared.force_piece];
-    prepared.loaded_weights = node_weights(mesh, {prepared.force_piece}, prepared.loaded_nodes, problem.analysis);
+  for (const auto& force : problem.forces) {
+    if (problem.bodies[force.body].rigid) {
+      prepared.platen_of_force.push_back(-1);
+      continue;
+    }
+    const int region = prepared.body_regions[force.body][force.region];
+    int index = -1;
+    for (std::size_t k = 0; k < prepared.platens.size(); ++k)
+      if (prepared.platens[k].region == region && prepared.platens[k].piece == force.piece) index = static_cast<int>(k);
+    if (index < 0) {
+      PreparedContact::Platen platen;
+      platen.region = region;
+      platen.piece = force.piece;
+      const auto& mesh = prepared.regions[region].mesh;
+      platen.nodes = mesh.piece_nodes[force.piece];
+      platen.weights = node_weights(mesh, {force.piece}, platen.nodes, problem.analysis);
+      index = static_cast<int>(prepared.platens.size());
+      prepared.platens.push_back(std::move(platen));
+    }
+    prepared.platen_of_force.push_back(index);
   }
   return prepared;
 }

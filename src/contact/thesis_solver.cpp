@@ -45,8 +45,8 @@ Restricted restrict_to(const StepInput& in, const std::vector<bool>& in_contact)
     for (Index b = 0; b < m; ++b) r.A(a, b) = p.M(row, r.dofs[b]);
     for (Index k = 0; k < K; ++k) r.A(a, m + k) = p.b(row, k);
     const Index pair = row / 2;
-    r.rhs[a] = row % 2 == 0 ? p.gap[pair] - in.load * p.a[row]  // [u_n] = d
-                            : in.previous_tangential_jump[pair] - in.load * p.a[row];  // no slip increment
+    r.rhs[a] = row % 2 == 0 ? p.gap[pair] - in.jump0[row]  // [u_n] = d
+                            : in.previous_tangential_jump[pair] - in.jump0[row];  // no slip increment
   }
   if (K > 0) {
     double row_norm = 0.0, col_norm = 0.0;
@@ -54,7 +54,7 @@ Restricted restrict_to(const StepInput& in, const std::vector<bool>& in_contact)
     for (Index k = 0; k < K; ++k) {
       for (Index b = 0; b < m; ++b) r.A(m + k, b) = p.f(k, r.dofs[b]);
       for (Index l = 0; l < K; ++l) r.A(m + k, m + l) = p.f_delta(k, l);
-      r.rhs[m + k] = in.load * (p.force[k] - p.F0[k]);
+      r.rhs[m + k] = in.target[k];
     }
     // Forces and displacements differ by orders of magnitude: scale the force rows and the
     // motion columns to the mean row and column norms of B' so that GMRES sees a balanced system.

@@ -25,7 +25,8 @@ constexpr double kPi = 3.141592653589793;
 
 const std::vector<std::string>& solver_keys() {
   static const std::vector<std::string> keys{"increments", "algorithm", "gmres_restart", "max_gmres_cycles", "xi",
-                                             "tolerance", "max_iterations", "record_steps"};
+                                             "tolerance", "max_iterations", "record_steps", "adaptive",
+                                             "max_state_changes", "max_steps"};
   return keys;
 }
 const std::vector<std::string>& law_keys() {
@@ -84,9 +85,51 @@ double elastic_extent(const contact::ContactProblem& problem) {
   return std::isfinite(lo.x()) ? (hi - lo).maxCoeff() : 1.0;
 }
 
+// An amplitude: a table [[t, value], ...] with t increasing, or the cyclic shorthand
+// { mean, amplitude, cycles, start = 0, period = 1 }: a triangle wave from the mean up to
+// mean + amplitude, down to mean - amplitude and back, `cycles` times from `start`.
+contact::Amplitude read_amplitude(const TableReader& reader, std::string_view key) {
+  contact::Amplitude amplitude;
+  const toml::node& node = *reader.find(key);
+  const FileContext& context = reader.context();
+  if (const toml::table* table = node.as_table()) {
+    const TableReader cyclic(*table, reader.key_path(key), context, reader.line());
+    cyclic.check_keys({"mean", "amplitude", "cycles", "start", "period"}, "a cyclic amplitude");
+    const double mean = cyclic.optional_number("mean").value_or(0.0);
+    const double size = cyclic.number("amplitude");
+    const int cycles = cyclic.integer_or("cycles", 1);
+    const double start = cyclic.optional_number("start").value_or(0.0);
+    const double period = cyclic.optional_number("period").value_or(1.0);
+    if (cycles < 1 || cycles > 10000) cyclic.fail("cycles", "must be between 1 and 10000");
+    if (!(period > 0.0)) cyclic.fail("period", "must be > 0");
+    if (!(start >= 0.0)) cyclic.fail("start", "must be >= 0");
+    amplitude.points.emplace_back(start, mean);
+    for (int c = 0; c < cycles; ++c) {
+      const double t0 = start + c * period;
+      amplitude.points.emplace_back(t0 + 0.25 * period, mean + size);
+      amplitude.points.emplace_back(t0 + 0.75 * period, mean - size);
+      amplitude.points.emplace_back(t0 + period, mean);
+    }
+    return amplitude;
+  }
+  const toml::array* list = node.as_array();
+  if (!list || list->empty())
+    reader.fail(key, "must be a table of points [[t, value], ...] or a cyclic amplitude { mean, amplitude, cycles, "
+                     "start, period }");
+  for (const toml::node& point : *list) {
+    const Vec2 p = read_point(point, reader.where(key), context);
+    if (!amplitude.points.empty() && !(p.x() > amplitude.points.back().x()))
+      reader.fail(key, "the times of the amplitude must increase, found " + format_number(p.x()) + " after " +
+                           format_number(amplitude.points.back().x()));
+    if (p.x() < 0.0) reader.fail(key, "the times of the amplitude must be >= 0");
+    amplitude.points.push_back(p);
+  }
+  return amplitude;
+}
+
 contact::RigidBody read_rigid(const TableReader& rigid, const FileContext& context, double extent) {
   rigid.check_keys({"profile", "center", "apex", "radius", "half_width", "edge_radius", "half_angle", "height",
-                    "points", "displacement"},
+                    "points", "displacement", "amplitude"},
                    "a [body.rigid] table");
   contact::ProfileShape shape;
   shape.profile = rigid.choice("profile", {"sphere", "cylinder", "flat", "cone", "contour"}, "");
@@ -135,6 +178,10 @@ contact::RigidBody read_rigid(const TableReader& rigid, const FileContext& conte
   }
   if (const toml::node* node = rigid.find("displacement"))
     body.displacement = read_point(*node, rigid.where("displacement"), context);
+  if (rigid.has("amplitude")) {
+    if (!body.displacement) rigid.fail("amplitude", "the amplitude is that of the displacement, which is not given");
+    body.amplitude = read_amplitude(rigid, "amplitude");
+  }
   return body;
 }
 
@@ -269,6 +316,18 @@ void read_solver(const TableReader& reader, contact::ContactProblem& problem) {
     reader.fail("increments", std::to_string(problem.increments) +
                                   " load increments is over the limit of 100000 (each one is a contact solve)");
   problem.record_steps = reader.boolean_or("record_steps", false);
+  problem.adaptive = reader.boolean_or("adaptive", problem.friction > 0.0);
+  if (reader.has("adaptive") && problem.adaptive && problem.friction == 0.0)
+    reader.fail("adaptive", "adaptive stepping follows the stick and slip zones; frictionless contact does not depend "
+                            "on the load path, so it would have no effect (remove it, or give a friction coefficient)");
+  problem.max_state_changes = reader.integer_or("max_state_changes", problem.max_state_changes);
+  if (problem.max_state_changes < 1) reader.fail("max_state_changes", "must be >= 1");
+  problem.max_steps = reader.integer_or("max_steps", std::max(problem.max_steps, problem.increments));
+  if (problem.max_steps < problem.increments)
+    reader.fail("max_steps", "must be >= increments (" + std::to_string(problem.increments) + ")");
+  if (!problem.adaptive)
+    for (const char* key : {"max_state_changes"})
+      if (reader.has(key)) reader.fail(key, "'" + std::string(key) + "' tunes the adaptive stepping, which is off");
   problem.solver.algorithm = reader.choice("algorithm", {"newton", "thesis"}, "newton") == "thesis"
                                  ? contact::Algorithm::thesis
                                  : contact::Algorithm::newton;
@@ -299,7 +358,7 @@ void read_solver(const TableReader& reader, contact::ContactProblem& problem) {
 
 // A total force on a boundary of an elastic body (a rigid platen) or on a rigid body.
 void read_force_load(const TableReader& load, contact::ContactProblem& problem) {
-  load.check_keys({"body", "boundary", "component", "force"}, "the load table");
+  load.check_keys({"name", "body", "boundary", "component", "force", "amplitude"}, "a load table");
   contact::ForceLoad force;
   const auto body_name = load.optional_string("body");
   if (!body_name) load.fail("body", "missing: the body that carries the force");
@@ -309,7 +368,8 @@ void read_force_load(const TableReader& load, contact::ContactProblem& problem) 
     if (load.has("boundary"))
       load.fail("boundary", "body '" + *body_name + "' is rigid: the force acts on the whole body; remove 'boundary'");
     if (body.rigid->displacement)
-      load.fail("body", "rigid body '" + *body_name + "' has both a prescribed displacement and a force; give one");
+      load.fail("body", "rigid body '" + *body_name + "' has a prescribed displacement; a force on it would leave "
+                        "nothing to move (give the displacement or the forces)");
   } else {
     const auto boundary = load.optional_string("boundary");
     if (!boundary) load.fail("boundary", "missing: the boundary that carries the force");
@@ -320,7 +380,8 @@ void read_force_load(const TableReader& load, contact::ContactProblem& problem) 
       for (const auto* side : {&contact.side1, &contact.side2})
         if (side->body == ref.body && side->region == ref.region && side->piece == ref.piece)
           load.fail("boundary", "the force cannot act on a contact boundary itself");
-    if (problem.region(ref).body.conditions[force.piece].signature != "free")
+    if (problem.region(ref).body.conditions[force.piece].signature != "free" &&
+        problem.region(ref).body.conditions[force.piece].signature != "rigid platen")
       load.fail("boundary", "boundary '" + *boundary + "' of body '" + *body_name +
                                 "' carries conditions, but a boundary under a force load moves as a rigid platen "
                                 "(its displacement along the force is the unknown approach, the other component is "
@@ -330,8 +391,62 @@ void read_force_load(const TableReader& load, contact::ContactProblem& problem) 
   if (component != 1 && component != 2) load.fail("component", "must be 1 or 2");
   force.component = component - 1;
   force.force = load.number("force");
-  if (force.force == 0.0) load.fail("force", "the total force must not be zero");
-  problem.force = force;
+  if (force.force == 0.0) load.fail("force", "the total force must not be zero (a zero force through a "
+                                                "history is given by its amplitude)");
+  if (load.has("amplitude")) force.amplitude = read_amplitude(load, "amplitude");
+  force.name = load.optional_string("name").value_or(body.name + (force.piece >= 0 ? "_" + body.regions[force.region].body.pieces[force.piece].name : std::string()) +
+                                                    (force.component == 0 ? "_x" : "_y"));
+  for (const auto& other : problem.forces) {
+    if (other.name == force.name) load.fail("name", "two loads are named '" + force.name + "'");
+    if (other.body == force.body && other.region == force.region && other.piece == force.piece &&
+        other.component == force.component)
+      load.fail("component", "a force in this direction on this " + std::string(force.piece >= 0 ? "boundary" : "body") +
+                                 " is already given ('" + other.name + "')");
+  }
+  problem.forces.push_back(force);
+}
+
+// [load] or [[load]] at the top level.
+void read_force_loads(const TableReader& root, FileContext& context, contact::ContactProblem& problem) {
+  const toml::node* node = root.find("load");
+  if (!node) return;
+  if (const toml::table* table = node->as_table()) {
+    read_force_load(TableReader(*table, "load", context, root.line()), problem);
+    return;
+  }
+  const toml::array* list = node->as_array();
+  if (!list || !list->is_array_of_tables()) root.fail("load", "must be a [load] table or [[load]] tables");
+  int index = 0;
+  for (const toml::node& entry : *list) {
+    ++index;
+    read_force_load(TableReader(*entry.as_table(), "load[" + std::to_string(index) + "]", context,
+                                line_of(entry) > 0 ? line_of(entry) : root.line()),
+                    problem);
+  }
+}
+
+// [history]: end_time and the amplitude of the bodies' own data.
+void read_history(const TableReader& root, FileContext& context, contact::ContactProblem& problem) {
+  double last = 1.0;
+  auto last_time = [&](const contact::Amplitude& a) {
+    if (!a.points.empty()) last = std::max(last, a.points.back().x());
+  };
+  for (const auto& force : problem.forces) last_time(force.amplitude);
+  for (const auto& body : problem.bodies)
+    if (body.rigid) last_time(body.rigid->amplitude);
+  if (const toml::table* table = root.optional_table("history", "[history]")) {
+    const TableReader history(*table, "history", context, root.line());
+    history.check_keys({"end_time", "data_amplitude"}, "the [history] table");
+    if (history.has("data_amplitude")) {
+      problem.data_amplitude = read_amplitude(history, "data_amplitude");
+      last_time(problem.data_amplitude);
+    }
+    problem.end_time = history.optional_number("end_time").value_or(last);
+    if (!(problem.end_time > 0.0 && std::isfinite(problem.end_time)))
+      history.fail("end_time", "the end of the history must be a finite time > 0");
+  } else {
+    problem.end_time = last;
+  }
 }
 
 // Side `side` (1 or 2) of a contact from its body and boundary names.
@@ -392,7 +507,7 @@ ContactFile parse_contact_problem(std::string_view text, const std::string& file
   context.file = file_name;
   const TableReader root(root_table, "", context, 1);
   root.check_keys({"title", "analysis", "interpolation", "parameters", "mesh", "output", "body", "contact", "solver",
-                   "load"},
+                   "load", "history"},
                   "the top level of a contact file");
   auto& problem = result.problem;
   problem.source_file = file_name;
@@ -417,8 +532,7 @@ ContactFile parse_contact_problem(std::string_view text, const std::string& file
     // Bodies without contacts: each solved on its own (its bonds included).
     if (root.has("solver"))
       root.fail("solver", "[solver] sets the contact solver; without [[contact]] tables it has no effect");
-    if (const toml::table* load = root.optional_table("load", "[load]"))
-      read_force_load(TableReader(*load, "load", context, root.line()), problem);
+    read_force_loads(root, context, problem);
   } else if (const toml::table* table = contact_node->as_table()) {
     // One contact between the two bodies: pairing, law, solver and load in one table.
     single.emplace(*table, "contact", context, root.line());
@@ -491,13 +605,14 @@ ContactFile parse_contact_problem(std::string_view text, const std::string& file
     const TableReader solver_keys_reader(solver ? *solver : empty, "solver", context, root.line());
     solver_keys_reader.check_keys(solver_keys(), "the [solver] table");
     read_solver(solver_keys_reader, problem);
-    if (const toml::table* load = root.optional_table("load", "[load]"))
-      read_force_load(TableReader(*load, "load", context, root.line()), problem);
+    read_force_loads(root, context, problem);
   }
+  read_history(root, context, problem);
   for (std::size_t b = 0; b < problem.bodies.size(); ++b) {
     const auto& body = problem.bodies[b];
     if (!body.rigid) continue;
-    const bool loaded = problem.force && problem.force->body == static_cast<int>(b);
+    const bool loaded = std::any_of(problem.forces.begin(), problem.forces.end(),
+                                    [b](const contact::ForceLoad& f) { return f.body == static_cast<int>(b); });
     if (!loaded && !body.rigid->displacement)
       root.fail("body", "rigid body '" + body.name + "' has no load and no displacement: give its displacement in "
                         "[body.rigid] (displacement = [u1, u2]) or press it with a force ([load] body = \"" + body.name +

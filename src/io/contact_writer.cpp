@@ -27,7 +27,7 @@ std::string file_stem(const std::string& name) {
 }
 
 nlohmann::json summary_json(const contact::ContactSummary& s) {
-  return {{"load_factor", s.load_factor},
+  return {{"time", s.time},
           {"a", s.contact_radius},
           {"c", s.stick_radius},
           {"c_over_a", s.stick_ratio()},
@@ -36,6 +36,7 @@ nlohmann::json summary_json(const contact::ContactSummary& s) {
           {"normal_force", s.normal_force},
           {"approach", s.approach},
           {"pairs_in_contact", s.pairs_in_contact},
+          {"dissipated_energy", s.dissipated_energy},
           {"iterations",
            {{"newton", s.newton_iterations},
             {"kalker", s.kalker_iterations},
@@ -60,13 +61,14 @@ std::string contact_csv(const std::vector<contact::PairResult>& pairs) {
 
 std::string contact_steps_csv(const contact::ContactInterfaceResult& result) {
   std::string out =
-      "step,load_factor,a,c,peak_pressure,centre_pressure,normal_force,approach,pairs_in_contact,"
+      "step,time,a,c,peak_pressure,centre_pressure,normal_force,approach,pairs_in_contact,dissipated_energy,"
       "newton_iterations,kalker_iterations,threshold_iterations,gmres_cycles,residual\n";
   for (std::size_t k = 0; k < result.steps.size(); ++k) {
     const auto& s = result.steps[k];
-    out += std::to_string(k + 1) + "," + number(s.load_factor) + "," + number(s.contact_radius) + "," +
+    out += std::to_string(k + 1) + "," + number(s.time) + "," + number(s.contact_radius) + "," +
            number(s.stick_radius) + "," + number(s.peak_pressure) + "," + number(s.centre_pressure) + "," +
            number(s.normal_force) + "," + number(s.approach) + "," + std::to_string(s.pairs_in_contact) + "," +
+           number(s.dissipated_energy) + "," +
            std::to_string(s.newton_iterations) + "," + std::to_string(s.kalker_iterations) + "," +
            std::to_string(s.threshold_iterations) + "," + std::to_string(s.gmres_cycles) + "," + number(s.residual) +
            "\n";
@@ -94,7 +96,7 @@ std::string body_label(const contact::ContactProblem& problem, const contact::Bo
 // on side 1 facing a straight elastic zone, or a flat zone facing a rigid sphere) pressed
 // by a force.
 std::string hertz_comparison(const contact::ContactProblem& problem, const contact::ContactSummary& s) {
-  if (problem.analysis != AnalysisType::axisymmetric || !problem.force || problem.contacts.size() != 1) return "";
+  if (problem.analysis != AnalysisType::axisymmetric || problem.forces.size() != 1 || problem.contacts.size() != 1) return "";
   const auto& contact = problem.contacts.front();
   const auto& side1 = problem.region(contact.side1).body;
   const auto& zone1 = side1.pieces[contact.side1.piece];
@@ -110,7 +112,7 @@ std::string hertz_comparison(const contact::ContactProblem& problem, const conta
     R = geometry::arc_radius(zone1);
     material2 = problem.region(contact.side2).body.material;
   }
-  const auto hertz = reference::hertz_point_contact(std::abs(problem.force->force), R, side1.material,
+  const auto hertz = reference::hertz_point_contact(std::abs(problem.forces.front().force), R, side1.material,
                                                     std::numeric_limits<double>::infinity(), material2);
   char line[256];
   std::string out;
@@ -142,6 +144,11 @@ nlohmann::json contact_summary_json(const contact::ContactProblem& problem, cons
   j["friction"] = problem.friction;
   j["tangential_coupling"] = problem.tangential_coupling;
   j["increments"] = problem.increments;
+  j["history"] = {{"end_time", problem.end_time},
+                  {"adaptive", problem.adaptive && problem.friction > 0.0},
+                  {"steps_taken", result.steps_taken},
+                  {"rejected_steps", result.rejected_steps},
+                  {"max_state_changes", problem.max_state_changes}};
   j["unknowns"] = result.unknowns;
   if (!problem.contacts.empty()) {
     const auto& first = problem.contacts.front();
@@ -170,8 +177,8 @@ std::string contact_report_text(const contact::ContactProblem& problem, const co
   }
   if (problem.contacts.empty()) return out;
   const auto& s = result.summary;
-  std::snprintf(line, sizeof line, "  %s algorithm, %d load steps: newton %d, kalker %d, threshold %d, gmres cycles %d\n",
-                contact::to_string(problem.solver.algorithm), problem.increments, s.newton_iterations,
+  std::snprintf(line, sizeof line, "  %s algorithm, %d load steps (%d redone in halves): newton %d, kalker %d, threshold %d, gmres cycles %d\n",
+                contact::to_string(problem.solver.algorithm), result.steps_taken, result.rejected_steps, s.newton_iterations,
                 s.kalker_iterations, s.threshold_iterations, s.gmres_cycles);
   out += line;
   out += hertz_comparison(problem, s);
@@ -189,6 +196,24 @@ std::vector<std::pair<std::string, std::string>> contact_output_files(const cont
     files.emplace_back(stem + "_steps.csv", contact_steps_csv(contact));
     for (std::size_t k = 0; k < contact.step_pairs.size(); ++k)
       files.emplace_back(stem + "_step" + std::to_string(k + 1) + ".csv", contact_csv(contact.step_pairs[k]));
+  }
+  if (!result.records.empty() && result.records.front().motions.size() > 0) {
+    std::string out = "step,time";
+    for (const auto& load : problem.forces) out += "," + file_stem(load.name) + "_force," + file_stem(load.name) + "_displacement";
+    const Index K = result.records.front().motions.size();
+    for (Index k = static_cast<Index>(problem.forces.size()); k < K; ++k)
+      out += ",free_motion_" + std::to_string(k - static_cast<Index>(problem.forces.size()) + 1) + "_displacement";
+    out += "\n";
+    for (std::size_t s = 0; s < result.records.size(); ++s) {
+      const auto& r = result.records[s];
+      out += std::to_string(s + 1) + "," + number(r.time);
+      for (Index k = 0; k < K; ++k) {
+        if (k < static_cast<Index>(problem.forces.size())) out += "," + number(r.forces[k]);
+        out += "," + number(r.motions[k]);
+      }
+      out += "\n";
+    }
+    files.emplace_back("motions.csv", out);
   }
   nlohmann::json transitions = nlohmann::json::object(), resultants = nlohmann::json::object();
   for (std::size_t r = 0; r < result.meshes.size(); ++r) {

@@ -80,7 +80,7 @@ std::vector<Record> run_hertz_sphere(const Context& context) {
   for (const Load load : {Load{72000.0, 10.0}, Load{216000.0, 10.0}, Load{432000.0, 10.0}, Load{432000.0, 31.5}}) {
     auto problem = file.problem;
     problem.elastic(0).material.young_modulus = load.E_ball;
-    problem.force->force = -load.P;
+    problem.forces.at(0).force = -load.P;
     const bool last = load.P == 31.5;
     const auto hertz = reference::hertz_point_contact(load.P, R, problem.elastic(0).material,
                                                       std::numeric_limits<double>::infinity(), problem.elastic(1).material);

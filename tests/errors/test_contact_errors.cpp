@@ -9,23 +9,13 @@
 #include "bemcontact/contact/contact_solver.hpp"
 #include "bemcontact/core/error.hpp"
 #include "bemcontact/io/contact_file.hpp"
+#include "support/example_text.hpp"
 
 namespace bemcontact {
 namespace {
 
-std::string example_text() {
-  std::ifstream in(std::string(BEMCONTACT_EXAMPLES_DIR) + "/contact_hertz_sphere.toml");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-std::string replaced(std::string text, const std::string& from, const std::string& to) {
-  const auto at = text.find(from);
-  EXPECT_NE(at, std::string::npos) << from;
-  if (at != std::string::npos) text.replace(at, from.size(), to);
-  return text;
-}
+std::string example_text() { return test_support::example_text("contact_hertz_sphere.toml"); }
+using test_support::replaced;
 
 std::string input_error(const std::string& text) {
   try {
@@ -99,7 +89,7 @@ TEST(ContactErrors, FreeBodyNamesTheBodyAndTheMotion) {
   // frictionless contact holds it, and its normals are all but vertical, so the horizontal
   // translation and the rotation are free.
   auto problem = contact::testing::cylinder_on_block(1.0, 0.25, 10, 1.0, {1.0, 0.3}, {1.0, 0.3});
-  problem.force.reset();
+  problem.forces.clear();
   problem.elastic(0).conditions[2] = {};
   try {
     contact::solve_contact(problem);
@@ -116,7 +106,7 @@ TEST(ContactErrors, BodyHeldOnlyByItsContactIsSolved) {
   // the contact (pair normals along z), so it is an unknown with the ball's equilibrium;
   // with no load the answer is no contact force.
   auto file = io::parse_contact_problem(example_text(), "ball.toml");
-  file.problem.force.reset();
+  file.problem.forces.clear();
   file.problem.elastic(0).conditions[2] = {};
   const auto result = contact::solve_contact(file.problem);
   EXPECT_NEAR(result.summary.normal_force, 0.0, 1e-9);
@@ -147,12 +137,7 @@ TEST(ContactErrors, KeysWithoutEffectAreRefused) {
 namespace bemcontact {
 namespace {
 
-std::string example(const std::string& name) {
-  std::ifstream in(std::string(BEMCONTACT_EXAMPLES_DIR) + "/" + name);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+std::string example(const std::string& name) { return test_support::example_text(name); }
 
 }  // namespace
 

@@ -9,11 +9,11 @@
 //   x_i = (lambda_n, tau): the traction on body 1 is p = -lambda_n n + tau t (lambda_n >= 0
 //   is the contact pressure, p_n = -lambda_n in the thesis' sign), body 2 carries -p.
 // Relative displacement [u] = 1u - 2u in the same frame (w_n = [u_n], w_t = [u_t]):
-//   w = load * a + M x + b delta,
-// with M = Q^T B' R the condensed operator, a the jump due to the bodies' own data at full
-// load and b the jump per unit motion (delta: the approach of a force-loaded platen or
-// rigid body, the rigid motions of free bodies). Each motion has a force equation
-//   F = load * F0 + f x + f_delta delta.
+//   w = w0(t) + M x + b delta,
+// with M = Q^T B' R the condensed operator, w0(t) the jump due to the loads (the bodies'
+// own data, prescribed rigid displacements) at pseudo-time t and b the jump per unit motion
+// (delta: the approaches of force loads, the rigid motions of free bodies). Each motion has
+// a force equation F = F0(t) + f x + f_delta delta = force(t).
 #include <memory>
 #include <vector>
 
@@ -22,23 +22,38 @@
 
 namespace bemcontact::contact {
 
+// One load of the history at amplitude 1: the jump it causes with no contact traction
+// and no motion, and its part of the motions' equations.
+struct CondensedLoad {
+  Amplitude amplitude;
+  Vector a;   // 2N
+  Vector F0;  // K
+};
+
 struct CondensedProblem {
   Index pairs = 0;
   Matrix M;        // 2N x 2N
-  Vector a;        // 2N
   Vector gap;      // N, d of (V.3)
   std::vector<bool> on_axis;  // N
+  std::vector<CondensedLoad> loads;  // the bodies' own data, prescribed rigid displacements
   // Motion unknowns delta_k, each with its equation
-  //   F_k = load * F0_k + f_k . x + sum_l f_delta(k, l) delta_l = load * force_k:
-  // the approach of a force-loaded platen or rigid body (first, when there is one), and the
-  // rigid motions of bodies held only by their contacts (force 0: their equilibrium).
+  //   f_k . x + sum_l f_delta(k, l) delta_l = amplitude_k(t) force_k - sum_g amplitude_g(t) F0_g,k:
+  // the approaches of the force loads (first, in the problem's order), and the rigid
+  // motions of bodies held only by their contacts (force 0: their equilibrium).
   Index motions = 0;
   Matrix b;        // 2N x K: jump per unit motion
   Matrix f;        // K x 2N
   Matrix f_delta;  // K x K
-  Vector F0;       // K
-  Vector force;    // K: the prescribed total at full load
+  Vector force;    // K: the prescribed force at amplitude 1 (0 for a free body)
+  std::vector<Amplitude> force_amplitude;  // K
+  double length_scale = 0.0;  // size of the bodies: a motion beyond 1e3 times it has no equilibrium (0: unchecked)
   std::vector<Index> groups;  // pair offsets of the contacts (group c: [groups[c], groups[c + 1])); empty: one
+
+  // At pseudo-time t: the jump of the loads, w0 = sum_g amplitude_g(t) a_g; the motions'
+  // right-hand sides; the prescribed forces.
+  Vector jump_at(double t) const;
+  Vector target_at(double t) const;
+  Vector force_at(double t) const;
 };
 
 // The groups of pairs (one group of all pairs when none are given).
@@ -71,9 +86,9 @@ class ContactModel {
   // The pairs of every contact, in the order of the condensed unknowns.
   const std::vector<ContactPair>& pairs() const { return pairs_; }
 
-  // The variable data of region r (prepared().regions) at full load for a contact
-  // solution x (local frame) and approach delta.
-  Vector variable_data(int r, const Vector& x, const Vector& delta) const;
+  // The boundary solution of region r (prepared().regions) for a contact solution x (local
+  // frame), motions delta and the amplitude of the bodies' own data (no stresses).
+  bem::BoundarySolution region_solution(int r, const Vector& x, const Vector& delta, double data_amplitude) const;
   // Traction on side 1 at each pair in global components.
   Vec2 traction(Index pair, const Vector& x) const;
 

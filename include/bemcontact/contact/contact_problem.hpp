@@ -26,18 +26,33 @@ enum class Algorithm {
            // Kalker-style active set for unilateral contact (Alg V.3)
 };
 
-// A total force on one boundary of one elastic body, or on a rigid body. An elastic body's
-// boundary moves as a rigid platen: its displacement component `component` is the unknown
-// approach (reported as delta), the other component is held at 0; a rigid body translates
-// along `component` by delta. The force is the integral of the traction component over the
-// boundary (2 pi r dr in axisymmetry), e.g. -31.5 for a downward push on the top of the
-// ball; on a rigid body it is the force applied to it (-31.5 pushes it down).
+// The amplitude of a load over the pseudo-time t of the load history: piecewise linear
+// through (t, value) points with t increasing, constant before the first and after the
+// last. Without points, the ramp min(t, 1): the load reaches its full value at t = 1 and
+// stays there.
+struct Amplitude {
+  std::vector<Vec2> points;
+  double at(double t) const;
+  // The times where the amplitude changes slope (the history steps through them).
+  std::vector<double> corners() const;
+};
+
+// A total force in one direction on a boundary of an elastic body, or on a rigid body,
+// with its own amplitude. An elastic body's boundary moves as a rigid platen: its
+// displacement component `component` is the unknown approach (reported as delta), a
+// component without a force load is held at 0; a rigid body translates along `component`
+// by delta. The force is the integral of the traction component over the boundary (2 pi r
+// dr in axisymmetry), e.g. -31.5 for a downward push on the top of the ball; on a rigid
+// body it is the force applied to it (-31.5 pushes it down). Several force loads may act
+// on one platen or rigid body (a normal force P and a tangential force Q).
 struct ForceLoad {
+  std::string name;    // for messages and output columns (default: the body and component)
   int body = 0;        // index into ContactProblem::bodies
   int region = 0;      // region of an elastic body
   int piece = -1;      // index into the region's pieces; -1 for a rigid body
   int component = 1;   // 0: x (r), 1: y (z)
-  double force = 0.0;
+  double force = 0.0;  // at amplitude 1
+  Amplitude amplitude;
 };
 
 // Direction of the pair normal n (and tangent t) on the contact zone.
@@ -72,7 +87,9 @@ struct SolverOptions {
 struct RigidBody {
   std::string profile;                          // "sphere", "cylinder", "flat", "cone", "contour"
   std::vector<geometry::BoundaryPiece> contour;
-  std::optional<Vec2> displacement;             // prescribed translation at full load (without a force load)
+  std::optional<Vec2> displacement;             // prescribed translation at amplitude 1 (components
+                                                // without a force load)
+  Amplitude amplitude;                          // of the prescribed translation
 };
 
 // A body: one or more elastic regions bonded along shared interfaces (each region a BEM
@@ -121,9 +138,18 @@ struct ContactProblem {
   // operator (the pressure then stays the frictionless one): the uncoupled (Goodman-type)
   // approximation under which Spence's (E.1) holds (DESIGN.md section 6).
   bool tangential_coupling = true;
-  int increments = 1;  // quasi-static load steps, equal load factors k / N
+  // Load history over the pseudo-time 0 < t <= end_time: every prescribed value of the
+  // elastic bodies follows data_amplitude, each force load and rigid displacement its own.
+  Amplitude data_amplitude;
+  double end_time = 1.0;
+  int increments = 1;       // steps over the history (the initial step count when adaptive)
+  // Adaptive stepping: a step in which more pairs change state (open / stick / slip) than
+  // max_state_changes per contact is redone in halves, down to end_time / max_steps.
+  bool adaptive = false;
+  int max_state_changes = 2;
+  int max_steps = 4096;
   bool record_steps = false;
-  std::optional<ForceLoad> force;
+  std::vector<ForceLoad> forces;
   SolverOptions solver;
 
   // The one region of elastic body b (the two-body problems of chapter V).

@@ -34,7 +34,7 @@ struct PairResult {
 
 // Scalars of a solution (one load step or the final state).
 struct ContactSummary {
-  double load_factor = 1.0;
+  double time = 1.0;            // pseudo-time of the history (the load factor of a single ramp)
   double contact_radius = 0.0;  // a: the edge of the zone in compression, along x1 (see docs/contact.md)
   double stick_radius = 0.0;    // c: the edge of the stick zone around the centre
   double peak_pressure = 0.0;   // max of -p_n
@@ -44,6 +44,7 @@ struct ContactSummary {
   int pairs_in_contact = 0;
   int newton_iterations = 0, kalker_iterations = 0, threshold_iterations = 0, gmres_cycles = 0;
   double residual = 0.0;        // relative complementarity residual
+  double dissipated_energy = 0.0;  // by friction since the start: -sum weight p_t (slip increment)
 
   double stick_ratio() const { return contact_radius > 0.0 ? stick_radius / contact_radius : 0.0; }  // c/a
 };
@@ -57,10 +58,21 @@ struct ContactInterfaceResult {
   std::vector<std::vector<PairResult>> step_pairs;  // per load step when record_steps
 };
 
+// The motions at the end of one step: the prescribed forces and the motions (approaches
+// of the force loads, then the free bodies' motions), for force-displacement loops.
+struct StepRecord {
+  double time = 0.0;
+  Vector forces;   // K: prescribed force of each motion at `time` (0 for free bodies)
+  Vector motions;  // K
+};
+
 // The base holds the first contact's results (the only one of a two-body problem);
 // `contacts` every contact's, in the problem's order.
 struct ContactResult : ContactInterfaceResult {
   std::vector<ContactInterfaceResult> contacts;
+  std::vector<StepRecord> records;  // per step: forces and motions
+  int steps_taken = 0;
+  int rejected_steps = 0;
   // Per elastic region (ContactModel::prepared().regions): mesh, solution, output name.
   std::vector<geometry::BoundaryMesh> meshes;
   std::vector<bem::BoundarySolution> boundary;
@@ -80,6 +92,9 @@ struct ContactResult : ContactInterfaceResult {
 // `groups` (offsets: group c holds pairs [groups[c], groups[c + 1])), when given.
 struct LoadHistory : ContactInterfaceResult {
   std::vector<ContactInterfaceResult> contacts;
+  std::vector<StepRecord> records;      // per step
+  int steps_taken = 0;
+  int rejected_steps = 0;               // adaptive steps redone in halves
   Vector x;                             // final (lambda_n, tau) per pair
   Vector delta;                         // final motions (CondensedProblem::motions)
 };

@@ -68,10 +68,15 @@ struct PreparedContact {
   // body 2's nodes can carry, and the pressures oscillate (Hertz ball, 30 elements against
   // 19: profile 7.7 %, axis pair -12 %; against 25: 0.8 %). Reported, with the remedy.
   std::vector<std::string> warnings;
-  int force_region = -1;                             // region of a force-loaded platen
-  int force_piece = -1;
-  std::vector<Index> loaded_nodes;                   // nodes of the force-loaded boundary
-  std::vector<double> loaded_weights;                // their integration weights
+  // Boundaries under force loads (rigid platens), and the platen of each force load (-1
+  // for a force on a rigid body).
+  struct Platen {
+    int region = -1, piece = -1;
+    std::vector<Index> nodes;     // nodes of the boundary
+    std::vector<double> weights;  // their integration weights
+  };
+  std::vector<Platen> platens;
+  std::vector<int> platen_of_force;
 };
 
 // Meshes and pairs. Throws GeometryError naming the boundaries or the node when no node of

@@ -19,9 +19,16 @@
 
 namespace bemcontact::contact {
 
+struct StepInput;
+// The input of the step ending at pseudo-time t (loads evaluated there).
+StepInput step_input(const CondensedProblem& problem, double t);
+
 struct StepInput {
   const CondensedProblem* problem = nullptr;
-  double load = 1.0;  // load factor of the step
+  double time = 1.0;  // pseudo-time at the end of the step
+  Vector jump0;       // 2N: the loads' jump at `time` (CondensedProblem::jump_at)
+  Vector target;      // K: the motions' right-hand sides at `time`
+  Vector force_scale; // K: |prescribed force| at `time`, for the residual
   ContactKind kind = ContactKind::unilateral;
   double friction = 0.0;
   Vector previous_tangential_jump;  // N: w_t at the end of the previous step
@@ -42,7 +49,7 @@ struct StepOutput {
   int gmres_cycles = 0;          // Alg V.1 restarts
 };
 
-// Jump w = load a + M x + delta b.
+// Jump w = w0 + M x + b delta.
 Vector relative_displacement(const StepInput& input, const Vector& x, const Vector& delta);
 // max |C_n|, |C_t| over the pairs divided by the pressure scale, and each motion's force
 // mismatch relative to its force (or, for a free body's equilibrium, to the sum of the

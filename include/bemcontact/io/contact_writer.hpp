@@ -9,9 +9,13 @@
 //                      (x, y: body 1's node; n: common normal out of body 1; p_n < 0 in
 //                      compression; slip_ratio = |p_t| / (beta |p_n|); jump = [u] = 1u - 2u;
 //                      status open / stick / slip)
-//   contact_steps.csv  one row per load step: step,load_factor,a,c,peak_pressure,
-//                      centre_pressure,normal_force,approach,pairs_in_contact,
+//   contact_steps.csv  one row per load step: step,time,a,c,peak_pressure,
+//                      centre_pressure,normal_force,approach,pairs_in_contact,dissipated_energy,
 //                      newton_iterations,kalker_iterations,threshold_iterations,gmres_cycles,residual
+//   motions.csv        one row per load step (when the problem has motions): step,time, then
+//                      per force load <name>_force,<name>_displacement (the prescribed force
+//                      and the approach: a force-displacement loop), per free body motion
+//                      <body>_<k>_displacement
 //   contact_step<k>.csv  the pairs at step k (when record_steps)
 //   <body>_boundary.csv, <body>_interior.csv (+ .vtk): each elastic body's fields (each
 //                      region's, named after it, in a body of several regions) (formats of

@@ -8,4 +8,5 @@ std::vector<Case> axisymmetric_cases();   // src/validation/axisymmetric_cases.c
 std::vector<Case> decomposition_cases();  // src/validation/decomposition_cases.cpp
 std::vector<Case> contact_cases();        // src/validation/contact_cases.cpp
 std::vector<Case> multibody_cases();      // src/validation/multibody_cases.cpp
+std::vector<Case> fretting_cases();       // src/validation/fretting_cases.cpp
 }  // namespace bemcontact::validation

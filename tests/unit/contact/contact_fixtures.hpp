@@ -62,7 +62,7 @@ inline ContactProblem flat_punch(double a, double W, int contact_elements, doubl
   load.piece = 2;
   load.component = 1;
   load.force = -force;
-  problem.force = load;
+  problem.forces = {load};
   return problem;
 }
 
@@ -108,7 +108,7 @@ inline ContactProblem cylinder_on_block(double R, double theta, int contact_elem
   load.piece = 2;
   load.component = 1;
   load.force = -force;
-  problem.force = load;
+  problem.forces = {load};
   return problem;
 }
 

@@ -19,9 +19,9 @@ TEST(ContactIo, ExamplesReadWithTheirSettings) {
   EXPECT_EQ(hertz.problem.analysis, AnalysisType::axisymmetric);
   EXPECT_EQ(hertz.problem.kind, contact::ContactKind::unilateral);
   EXPECT_EQ(hertz.problem.contacts.front().pair_normal, contact::PairNormal::body2);
-  ASSERT_TRUE(hertz.problem.force.has_value());
-  EXPECT_DOUBLE_EQ(hertz.problem.force->force, -31.5);
-  EXPECT_EQ(hertz.problem.force->component, 1);
+  ASSERT_EQ(hertz.problem.forces.size(), 1u);
+  EXPECT_DOUBLE_EQ(hertz.problem.forces[0].force, -31.5);
+  EXPECT_EQ(hertz.problem.forces[0].component, 1);
   EXPECT_EQ(hertz.problem.bodies[0].name, "ball");
   EXPECT_DOUBLE_EQ(hertz.problem.elastic(0).material.young_modulus, 432000.0);
   const auto spence = io::read_contact_file(dir + "/contact_spence_sphere.toml");
@@ -30,7 +30,7 @@ TEST(ContactIo, ExamplesReadWithTheirSettings) {
   const auto punch = io::read_contact_file(dir + "/contact_flat_punch.toml");
   EXPECT_EQ(punch.problem.kind, contact::ContactKind::bilateral);
   EXPECT_EQ(punch.problem.analysis, AnalysisType::plane_stress);
-  EXPECT_FALSE(punch.problem.force.has_value());
+  EXPECT_TRUE(punch.problem.forces.empty());
   EXPECT_TRUE(io::is_contact_file(dir + "/contact_punch_halfplane.toml"));
   EXPECT_FALSE(io::is_contact_file(dir + "/plate_tension.toml"));
 }

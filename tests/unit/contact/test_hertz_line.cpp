@@ -35,7 +35,7 @@ TEST(ContactHertzLine, FrictionlessContactMatchesHertz) {
   const Material m{1.0, 0.3};
   auto problem = cylinder(m, m);
   const auto result = solve_contact(problem);
-  const double P = -problem.force->force;
+  const double P = -problem.forces.at(0).force;
   const reference::HertzLineContact hertz{P, 1.0, reference::contact_modulus(m, m, AnalysisType::plane_strain)};
   // Element size 0.0125 = a/8 near the edge: the edge extrapolation of p^2 keeps a within ~2 %.
   EXPECT_NEAR(result.summary.contact_radius, hertz.half_width(), 0.02 * hertz.half_width());

@@ -2,6 +2,9 @@
 // condition signatures, axisymmetric specifics, reading from disk, and every bundled example.
 #include <gtest/gtest.h>
 
+#include "bemcontact/io/contact_file.hpp"
+#include "bemcontact/io/decomposition_file.hpp"
+
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -366,9 +369,8 @@ TEST(IoProblemFile, EveryBundledOneBodyExampleParses) {
   int count = 0;
   for (const auto& entry : std::filesystem::directory_iterator(examples)) {
     if (entry.path().extension() != ".toml") continue;
-    // Several subdomains or two bodies in contact have formats of their own (dd_*, contact_*).
-    const std::string stem = entry.path().stem().string();
-    if (stem.rfind("dd_", 0) == 0 || stem.rfind("contact_", 0) == 0) continue;
+    // Several subdomains, several bodies or contacts have formats of their own.
+    if (io::is_decomposition_file(entry.path()) || io::is_contact_file(entry.path())) continue;
     ++count;
     EXPECT_NO_THROW({
       const ProblemFile file = read_problem_file(entry.path());
