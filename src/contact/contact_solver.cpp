@@ -263,6 +263,7 @@ LoadHistory solve_load_history(const CondensedProblem& condensed, const std::vec
     input.previous_tangential_jump = previous.previous_tangential_jump;
     input.x_start = previous.x_start;
     input.delta_start = previous.delta_start;
+    input.state_start = previous.state_start;
     StepOutput trial = problem.solver.algorithm == Algorithm::newton ? solve_step_newton(input, problem.solver)
                                                                            : solve_step_thesis(input, problem.solver);
     add_iterations(totals, trial);
@@ -333,6 +334,7 @@ LoadHistory solve_load_history(const CondensedProblem& condensed, const std::vec
     for (Index i = 0; i < n; ++i) previous.previous_tangential_jump[i] = step.w[2 * i + 1];
     previous.x_start = step.x;
     previous.delta_start = step.delta;
+    previous.state_start = step.state;
     // Grow again after an accepted step.
     if (adaptive && dt < base_step) dt = std::min(base_step, 2.0 * dt);
     if (taken > problem.max_steps)

@@ -116,6 +116,14 @@ StepOutput solve_step_newton(const StepInput& in, const SolverOptions& options) 
       if (std::abs(z) <= g) state[2 * i + 1] = 1;  // stick
       else state[2 * i + 1] = z >= 0.0 ? 2 : 3;   // slip, tau = +g or -g
     }
+    if (iteration == 1 && in.state_start.size() == state.size()) {
+      // Warm start: pairs in contact at the end of the previous step keep their sets.
+      for (Index i = 0; i < n; ++i)
+        if (in.state_start[2 * i] == 1) {
+          state[2 * i] = 1;
+          state[2 * i + 1] = in.state_start[2 * i + 1];
+        }
+    }
     if (!damped && !seen.insert(state).second && iteration > 2) damped = true;  // the sets cycle
 
     // The Newton system in the unknowns that are not fixed by their own row: lambda_n of
@@ -196,6 +204,7 @@ StepOutput solve_step_newton(const StepInput& in, const SolverOptions& options) 
     x = x_new;
     delta = delta_new;
     residual = new_residual;
+    out.state = state;
     if (residual <= options.tolerance) {
       out.converged = true;
       break;

@@ -157,6 +157,41 @@ std::vector<Record> run_mindlin_unloading(const Context& context) {
   return records;
 }
 
+// P, then Q = 0.5 mu P and a bulk stress sigma_B = 0.396 mu p0 in the block together
+// (examples/fretting_bulk_stress.toml, a/R = 0.005, 120 elements per zone): the stick zone
+// keeps c/a = sqrt(1 - Q/(mu P)) and moves by e/a = sigma_B / (4 mu p0) (Nowell and Hills),
+// both within 0.02 (the zone's edges are located to half a pair spacing, 0.01a).
+std::vector<Record> run_nowell_hills(const Context& context) {
+  const double scale = 0.005 / 0.07;
+  const auto file = io::read_contact_file(context.examples_dir + "/fretting_bulk_stress.toml",
+                                          {{"P", 148.0 * scale * scale}, {"rc", 0.085 * scale},
+                                           {"sigma_B", 160.0 * scale}, {"n", 120.0}});
+  const auto& problem = file.problem;
+  const double P = -problem.forces.at(0).force, Q = problem.forces.at(1).force, R = file.parameters.at("R");
+  reference::PartialSlipLine theory;
+  theory.hertz = {P, R, reference::contact_modulus(problem.elastic(0).material, problem.elastic(1).material, problem.analysis)};
+  theory.friction = problem.friction;
+  const double a = theory.hertz.half_width(), mu_p0 = theory.friction * theory.hertz.max_pressure();
+  const double sigma_B = file.parameters.at("sigma_B");
+  const auto result = contact::solve_contact(problem, context.progress);
+  // The stick zone's ends: midway between its outermost pairs and their slipping neighbours.
+  double lo = 1e300, hi = -1e300;
+  for (const auto& pair : result.pairs)
+    if (pair.status == contact::PairStatus::stick) lo = std::min(lo, pair.coordinate), hi = std::max(hi, pair.coordinate);
+  double left = -1e300, right = 1e300;
+  for (const auto& pair : result.pairs) {
+    if (pair.coordinate < lo) left = std::max(left, pair.coordinate);
+    if (pair.coordinate > hi) right = std::min(right, pair.coordinate);
+  }
+  const double start = 0.5 * (lo + left), end = 0.5 * (hi + right);
+  std::vector<Record> records;
+  records.push_back(compare_scaled("e_over_a", 0.5 * (start + end) / a, sigma_B / (4.0 * mu_p0), 1.0, 0.02));
+  records.push_back(compare_scaled("c_over_a", 0.5 * (end - start) / a, theory.stick_ratio(Q), 1.0, 0.02));
+  records.push_back(report_only("steps", result.steps_taken, 0.0));
+  tag(records, 0, "nowell-hills", {{"Q_over_muP", text(Q / (theory.friction * P))}, {"sigma_B_over_4mup0", text(sigma_B / (4.0 * mu_p0))}});
+  return records;
+}
+
 }  // namespace
 
 std::vector<Case> fretting_cases() {
@@ -165,6 +200,8 @@ std::vector<Case> fretting_cases() {
        run_cattaneo_mindlin},
       {"mindlin-unloading", "Johnson 7.2", "P then a cycle of Q: reversal slip, loop closure, energy per cycle",
        run_mindlin_unloading},
+      {"nowell-hills", "Nowell-Hills 1987", "P then Q with a bulk stress in the block: the stick zone's offset",
+       run_nowell_hills},
   };
 }
 

@@ -34,12 +34,18 @@ struct StepInput {
   Vector previous_tangential_jump;  // N: w_t at the end of the previous step
   Vector x_start;                   // 2N: initial guess (previous step)
   Vector delta_start;               // K: motions (previous step); empty for zeros
+  // Newton: the active sets of the previous step (per dof: lambda_n 0 open / 1 contact;
+  // tau 0 free, 1 stick, 2 / 3 slip +-), used for the first iteration: a load increment
+  // then moves the bodies as the previous contact state allows (a bulk strain carries a
+  // sticking body along) before the sets are updated. Empty: from x_start.
+  std::vector<int> state_start;
 };
 
 struct StepOutput {
   Vector x;       // 2N: (lambda_n, tau) per pair
   Vector delta;   // K: motions
   Vector w;       // 2N: jump (w_n, w_t) per pair
+  std::vector<int> state;  // Newton: the active sets of the last iteration
   double residual = 0.0;  // relative complementarity residual
   bool converged = false;
   std::string failure;    // why not, when not converged
