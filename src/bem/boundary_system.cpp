@@ -37,6 +37,7 @@ std::vector<NodeCondition> resolve_node_conditions(const geometry::BoundaryMesh&
     const auto& piece = body.pieces.at(node.piece);
     NodeCondition& c = conditions[i];
     if (bc.frame == ConditionFrame::local) c.frame << node.normal, Vec2(-node.normal.y(), node.normal.x());
+    c.load_group = bc.load_group;
     for (int k = 0; k < 2; ++k) {
       c.kind[k] = bc.kind[k];
       c.value[k] = bc.value_at(k, node.position);

@@ -31,6 +31,24 @@ FactoredBody::FactoredBody(const geometry::BoundaryMesh& mesh, const BodyDefinit
   auto matrices = assemble_influence_matrices(mesh_, integrator, progress);
   auto system = build_boundary_system(matrices, conditions_, constraints_);
   fixed_rhs_ = std::move(system.b);
+  // The same right-hand side per load group (matrices are now in the nodes' frames, as the
+  // values are): b_g = G p_g - H u_g, constraint rows in group 0.
+  int groups = 1;
+  for (const auto& c : conditions_) groups = std::max(groups, c.load_group + 1);
+  const Index node_dofs = 2 * mesh_.node_count();
+  for (int g = 0; g < groups; ++g) {
+    Vector known_u = Vector::Zero(node_dofs), known_p = Vector::Zero(node_dofs);
+    for (Index i = 0; i < mesh_.node_count(); ++i)
+      for (int c = 0; c < 2; ++c)
+        if (conditions_[i].load_group == g)
+          (conditions_[i].kind[c] == ConditionKind::displacement ? known_u : known_p)[2 * i + c] = conditions_[i].value[c];
+    Vector b = Vector::Zero(fixed_rhs_.size());
+    b.head(node_dofs) = matrices.G * known_p - matrices.H * known_u;
+    if (g == 0) b.tail(fixed_rhs_.size() - node_dofs) = fixed_rhs_.tail(fixed_rhs_.size() - node_dofs);
+    for (Index i = 0; i < mesh_.node_count(); ++i)
+      if (conditions_[i].on_axis) b[2 * i] = 0.0;
+    group_rhs_.push_back(std::move(b));
+  }
   // Right-hand side of a unit datum at variable dof d: b = G p_known - H u_known.
   const Index rows = fixed_rhs_.size();
   variable_rhs_ = Matrix::Zero(rows, variable_dofs());
@@ -51,6 +69,7 @@ FactoredBody::FactoredBody(const geometry::BoundaryMesh& mesh, const BodyDefinit
   for (Index q = 0; q < variable_constraints_; ++q) {
     variable_rhs_(dofs + first_variable + q, 2 * static_cast<Index>(variable_.size()) + q) = 1.0;
     fixed_rhs_[dofs + first_variable + q] = 0.0;
+    group_rhs_[0][dofs + first_variable + q] = 0.0;
   }
   for (Index i = 0; i < mesh_.node_count(); ++i)
     if (conditions_[i].on_axis) variable_rhs_.row(2 * i).setZero();
@@ -107,6 +126,42 @@ Matrix FactoredBody::complementary_columns(const Matrix& variable_data, bool wit
         out.row(2 * static_cast<Index>(k) + constraints_[q].reaction_component) +=
             y.row(2 * mesh_.node_count() + static_cast<Index>(q));
   return out;
+}
+
+Vector FactoredBody::group_complementary(int group) const {
+  Matrix rhs = group_rhs_.at(group);
+  lu_.solve_in_place(rhs);
+  Vector out(variable_dofs());
+  const Index n = mesh_.node_count(), first_variable = static_cast<Index>(constraints_.size()) - variable_constraints_;
+  for (std::size_t k = 0; k < variable_.size(); ++k)
+    for (int c = 0; c < 2; ++c) {
+      const Index node = variable_[k].node;
+      out[2 * static_cast<Index>(k) + c] = conditions_[node].on_axis && c == 0 ? 0.0 : rhs(2 * node + c, 0);
+    }
+  for (Index q = 0; q < variable_constraints_; ++q)
+    out[2 * static_cast<Index>(variable_.size()) + q] = rhs(2 * n + first_variable + q, 0);
+  for (std::size_t q = 0; q < constraints_.size(); ++q)
+    for (std::size_t k = 0; k < variable_.size(); ++k)
+      if (variable_[k].node == constraints_[q].reaction_node && variable_[k].kind == ConditionKind::displacement)
+        out[2 * static_cast<Index>(k) + constraints_[q].reaction_component] += rhs(2 * n + static_cast<Index>(q), 0);
+  return out;
+}
+
+BoundarySolution FactoredBody::solve_with_amplitudes(const Vector& variable_data,
+                                                     const std::vector<double>& amplitudes) const {
+  if (variable_data.size() != variable_dofs())
+    throw Error("FactoredBody: expected " + std::to_string(variable_dofs()) + " variable data");
+  Vector rhs = variable_rhs_ * variable_data;
+  for (std::size_t g = 0; g < group_rhs_.size(); ++g) rhs += amplitudes.at(g) * group_rhs_[g];
+  rhs = lu_.solve(rhs);
+  std::vector<NodeCondition> conditions = conditions_;
+  for (auto& c : conditions) c.value = {amplitudes.at(c.load_group) * c.value[0], amplitudes.at(c.load_group) * c.value[1]};
+  for (std::size_t k = 0; k < variable_.size(); ++k) {
+    auto& c = conditions[variable_[k].node];
+    for (int comp = 0; comp < 2; ++comp)
+      if (!(c.on_axis && comp == 0)) c.value[comp] = variable_data[2 * static_cast<Index>(k) + comp];
+  }
+  return recover_boundary_values(rhs, conditions, constraints_);
 }
 
 Vector FactoredBody::complementary(const Vector& variable_data, bool with_fixed_data) const {

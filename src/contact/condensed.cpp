@@ -139,7 +139,9 @@ ContactModel::ContactModel(const ContactProblem& problem, const bem::ProgressCal
   // Factor every region; its data from the contact unknowns before the bonds: G_r q.
   factored_.resize(region_count);
   std::vector<Matrix> flexibility(region_count), G(region_count);
-  std::vector<Vector> own_response(region_count);
+  // The bodies' own data by load group (0: data_amplitude; g: boundary_amplitudes[g - 1]).
+  const Index groups = static_cast<Index>(problem.boundary_amplitudes.size()) + 1;
+  std::vector<Matrix> own_response(region_count);
   for (std::size_t r = 0; r < region_count; ++r) {
     bem::ProgressCallback region_progress;
     if (progress)
@@ -159,7 +161,8 @@ ContactModel::ContactModel(const ContactProblem& problem, const bem::ProgressCal
     }
     const Index dofs = factored_[r]->variable_dofs();
     flexibility[r] = factored_[r]->complementary_columns(Matrix::Identity(dofs, dofs), false);
-    own_response[r] = factored_[r]->complementary(Vector::Zero(dofs), true);
+    own_response[r] = Matrix::Zero(dofs, groups);
+    for (int g = 0; g < factored_[r]->load_groups(); ++g) own_response[r].col(g) = factored_[r]->group_complementary(g);
     G[r] = Matrix::Zero(dofs, nq);
     for (std::size_t m = 0; m < pin_of_motion.size(); ++m)
       if (pin_of_motion[m].first == static_cast<int>(r))
@@ -194,20 +197,20 @@ ContactModel::ContactModel(const ContactProblem& problem, const bem::ProgressCal
 
   // Bonds: equilibrium of the nodal tractions at every bond pair, K U + L q + l0 = 0.
   data_map_ = G;
-  data_offset_.assign(region_count, Vector());
-  for (std::size_t r = 0; r < region_count; ++r) data_offset_[r] = Vector::Zero(G[r].rows());
+  data_offset_.assign(region_count, Matrix());
+  for (std::size_t r = 0; r < region_count; ++r) data_offset_[r] = Matrix::Zero(G[r].rows(), groups);
   for (std::size_t b = 0; b < problem.bodies.size(); ++b) {
     const Index nb = bonds[b].unknowns;
     if (nb == 0) continue;
     Matrix K = Matrix::Zero(nb, nb), L = Matrix::Zero(nb, nq);
-    Vector l0 = Vector::Zero(nb);
+    Matrix l0 = Matrix::Zero(nb, groups);
     for (const int r : prepared_.body_regions[b]) {
       const auto& v = variables[r];
       const Matrix bond_rows = flexibility[r].topRows(v.bond_dofs);
       for (Index i = 0; i < v.bond_dofs; ++i) {
         for (Index j = 0; j < v.bond_dofs; ++j) K(v.bond_unknown[i], v.bond_unknown[j]) += bond_rows(i, j);
         L.row(v.bond_unknown[i]) += bond_rows.row(i) * G[r];
-        l0[v.bond_unknown[i]] += own_response[r][i];
+        l0.row(v.bond_unknown[i]) += own_response[r].row(i);
       }
     }
     // A bond node on the axis of an axisymmetric body keeps u_r = 0 (its radial datum and
@@ -224,19 +227,20 @@ ContactModel::ContactModel(const ContactProblem& problem, const bem::ProgressCal
     }
     Matrix Uq = -L;
     lu->solve_in_place(Uq);
-    const Vector U0 = -lu->solve(l0);
+    Matrix U0 = -l0;
+    lu->solve_in_place(U0);
     for (const int r : prepared_.body_regions[b]) {
       const auto& v = variables[r];
       for (Index i = 0; i < v.bond_dofs; ++i) {
         data_map_[r].row(i) += Uq.row(v.bond_unknown[i]);
-        data_offset_[r][i] = U0[v.bond_unknown[i]];
+        data_offset_[r].row(i) = U0.row(v.bond_unknown[i]);
       }
     }
   }
 
   // Complementary fields as affine maps of q: C_r (D_r q + d0_r) + c0_r.
   std::vector<Matrix> response(region_count);
-  std::vector<Vector> response0(region_count);
+  std::vector<Matrix> response0(region_count);  // dofs x groups
   for (std::size_t r = 0; r < region_count; ++r) {
     response[r] = flexibility[r] * data_map_[r];
     response0[r] = flexibility[r] * data_offset_[r] + own_response[r];
@@ -248,6 +252,15 @@ ContactModel::ContactModel(const ContactProblem& problem, const bem::ProgressCal
   cp.pairs = n;
   Matrix W = Matrix::Zero(2 * n, nq);
   cp.loads.push_back({problem.data_amplitude, Vector::Zero(2 * n), Vector::Zero(K)});
+  for (const auto& amplitude : problem.boundary_amplitudes) cp.loads.push_back({amplitude, Vector::Zero(2 * n), Vector::Zero(K)});
+  // Interferences: the overlap d - interference of each pair, as a jump +interference along
+  // the normal that follows the contact's amplitude.
+  for (std::size_t c = 0; c < prepared_.contacts.size(); ++c) {
+    if (problem.contacts[c].interference == 0.0) continue;
+    CondensedLoad load{problem.contacts[c].interference_amplitude, Vector::Zero(2 * n), Vector::Zero(K)};
+    for (Index g = pair_offsets_[c]; g < pair_offsets_[c + 1]; ++g) load.a[2 * g] = pairs_[g].interference;
+    cp.loads.push_back(load);
+  }
   std::vector<int> load_of_body(problem.bodies.size(), -1);
   for (std::size_t b = 0; b < problem.bodies.size(); ++b) {
     const auto& rigid = problem.bodies[b].rigid;
@@ -264,11 +277,11 @@ ContactModel::ContactModel(const ContactProblem& problem, const bem::ProgressCal
       const auto& pair = contact.pairs[i];
       const Mat2 Qg = Q(first + i);
       Matrix u = response[contact.region1].middleRows(o1 + 2 * i, 2);
-      Vec2 u0 = response0[contact.region1].segment<2>(o1 + 2 * i);
+      Matrix u0 = response0[contact.region1].middleRows(o1 + 2 * i, 2);  // 2 x groups
       if (contact.region2 >= 0) {
         for (int a = 0; a < pair.count2; ++a) {
           u -= pair.shape2[a] * response[contact.region2].middleRows(o2 + 2 * pair.zone2[a], 2);
-          u0 -= pair.shape2[a] * response0[contact.region2].segment<2>(o2 + 2 * pair.zone2[a]);
+          u0 -= pair.shape2[a] * response0[contact.region2].middleRows(o2 + 2 * pair.zone2[a], 2);
         }
       } else {
         // The rigid body translates by its force loads' approaches and its prescribed displacement.
@@ -279,7 +292,8 @@ ContactModel::ContactModel(const ContactProblem& problem, const bem::ProgressCal
               -Qg * *problem.bodies[contact.rigid_body].rigid->displacement;
       }
       W.middleRows(2 * (first + i), 2) = Qg * u;
-      cp.loads[0].a.segment<2>(2 * (first + i)) = Qg * u0;
+      const Matrix w0 = Qg * u0;
+      for (Index g = 0; g < groups; ++g) cp.loads[g].a.segment<2>(2 * (first + i)) = w0.col(g);
     }
   }
   cp.M = W.leftCols(2 * n);
@@ -295,7 +309,7 @@ ContactModel::ContactModel(const ContactProblem& problem, const bem::ProgressCal
   cp.motions = K;
   cp.b = W.rightCols(K);
   Matrix F = Matrix::Zero(K, nq);
-  auto& F0 = cp.loads[0].F0;
+  Matrix F0 = Matrix::Zero(K, groups);
   cp.force = Vector::Zero(K);
   cp.force_amplitude.assign(K, Amplitude{});
   for (std::size_t k = 0; k < problem.forces.size(); ++k) {
@@ -317,7 +331,7 @@ ContactModel::ContactModel(const ContactProblem& problem, const bem::ProgressCal
     const Index of = block_offset(variables[platen.region], BlockKind::platen, static_cast<std::size_t>(p));
     for (Index l = 0; l < static_cast<Index>(platen.nodes.size()); ++l) {
       F.row(row) += platen.weights[l] * response[platen.region].row(of + 2 * l + load.component);
-      F0[row] += platen.weights[l] * response0[platen.region][of + 2 * l + load.component];
+      F0.row(row) += platen.weights[l] * response0[platen.region].row(of + 2 * l + load.component);
     }
   }
   // A free motion's equation: its pin's reaction vanishes (the body's equilibrium).
@@ -325,8 +339,9 @@ ContactModel::ContactModel(const ContactProblem& problem, const bem::ProgressCal
     const auto [r, q] = pin_of_motion[m];
     const Index row = 2 * static_cast<Index>(variables[r].nodes.size()) + q;
     F.row(force_motions + static_cast<Index>(m)) = response[r].row(row);
-    F0[force_motions + static_cast<Index>(m)] = response0[r][row];
+    F0.row(force_motions + static_cast<Index>(m)) = response0[r].row(row);
   }
+  for (Index g = 0; g < groups; ++g) cp.loads[g].F0 = F0.col(g);
   cp.f = F.leftCols(2 * n);
   cp.f_delta = F.rightCols(K);
 }
@@ -336,21 +351,12 @@ Vec2 ContactModel::traction(Index pair, const Vector& x) const {
   return -x[2 * pair] * p.normal + x[2 * pair + 1] * p.tangent;
 }
 
-bem::BoundarySolution ContactModel::region_solution(int r, const Vector& x, const Vector& delta,
-                                                    double data_amplitude) const {
+bem::BoundarySolution ContactModel::region_solution(int r, const Vector& x, const Vector& delta, double t) const {
   Vector q(x.size() + delta.size());
   q << x, delta;
-  const auto& body = *factored_[r];
-  // Linear in the variable data and in the bodies' own data (scaled by its amplitude).
-  auto solution = body.solve(data_map_[r] * q + data_amplitude * data_offset_[r], false);
-  if (data_amplitude != 0.0) {
-    const auto own = body.solve(Vector::Zero(body.variable_dofs()), true);
-    for (std::size_t i = 0; i < solution.displacement.size(); ++i) {
-      solution.displacement[i] += data_amplitude * own.displacement[i];
-      solution.traction[i] += data_amplitude * own.traction[i];
-    }
-  }
-  return solution;
+  const auto amplitudes = problem_.group_amplitudes(t);
+  const Vector scale = Eigen::Map<const Vector>(amplitudes.data(), static_cast<Index>(amplitudes.size()));
+  return factored_[r]->solve_with_amplitudes(data_map_[r] * q + data_offset_[r] * scale, amplitudes);
 }
 
 }  // namespace bemcontact::contact

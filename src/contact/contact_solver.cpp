@@ -40,7 +40,7 @@ std::vector<PairResult> pair_results(const std::vector<ContactPair>& pairs, cons
     r.position = pairs[i].position1;
     r.coordinate = pairs[i].position1.x();
     r.normal = pairs[i].normal;
-    r.gap = pairs[i].gap;
+    r.gap = pairs[i].gap - pairs[i].interference;
     const double lambda = step.x[2 * i];
     r.p_n = -lambda;
     r.p_t = step.x[2 * i + 1];
@@ -381,8 +381,7 @@ ContactResult solve_contact(const ContactProblem& problem, const bem::ProgressCa
     result.body_names.push_back(body.regions.size() == 1 ? body.name : region.definition.name);
     result.region_labels.push_back(region.label);
     result.meshes.push_back(region.mesh);
-    auto boundary = model.region_solution(static_cast<int>(r), history.x, history.delta,
-                                          problem.data_amplitude.at(problem.end_time));
+    auto boundary = model.region_solution(static_cast<int>(r), history.x, history.delta, problem.end_time);
     if (boundary.stress.empty())
       boundary.stress = bem::boundary_stresses(region.mesh, problem.analysis, material, boundary);
     // Conditions as the user gave them (the platen's are the solver's own).

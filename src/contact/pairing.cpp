@@ -367,7 +367,8 @@ PreparedInterface pair_interface(const ContactProblem& problem, const ContactInt
                           point_text(facing.position) +
                           "; draw the bodies without overlap (for an interference fit, at their common nominal "
                           "surface with interference = the overlap)");
-    pair.gap = std::max(pair.gap, 0.0) - contact.interference;
+    pair.gap = std::max(pair.gap, 0.0);
+    pair.interference = contact.interference;
     if (contact.initial_gap) {
       pair.gap += contact.initial_gap(x1);
       if (!std::isfinite(pair.gap))

@@ -34,7 +34,7 @@ const std::vector<std::string>& law_keys() {
   return keys;
 }
 const std::vector<std::string>& pairing_keys() {
-  static const std::vector<std::string> keys{"normal", "interference", "gap"};
+  static const std::vector<std::string> keys{"normal", "interference", "interference_amplitude", "gap"};
   return keys;
 }
 std::vector<std::string> joined(std::initializer_list<const std::vector<std::string>*> lists,
@@ -185,6 +185,47 @@ contact::RigidBody read_rigid(const TableReader& rigid, const FileContext& conte
   return body;
 }
 
+// Boundaries with their own amplitude (amplitude = ... in a boundary table): read and
+// removed from the table before the body is parsed; their conditions get a load group.
+struct BoundaryAmplitudes {
+  std::vector<int> group;                 // per boundary table: load group (0: the data amplitude)
+  std::vector<SourceLocation> where;
+};
+BoundaryAmplitudes take_boundary_amplitudes(toml::table& table, const std::string& path, FileContext& context, int line,
+                                            contact::ContactProblem& problem) {
+  BoundaryAmplitudes out;
+  toml::array* boundaries = table.get("boundary") ? table.get("boundary")->as_array() : nullptr;
+  if (!boundaries || !boundaries->is_array_of_tables()) return out;
+  int b = 0;
+  for (toml::node& node : *boundaries) {
+    ++b;
+    toml::table& boundary = *node.as_table();
+    const TableReader reader(boundary, path + ".boundary[" + std::to_string(b) + "]", context, line);
+    int group = 0;
+    SourceLocation where;
+    if (reader.has("amplitude")) {
+      problem.boundary_amplitudes.push_back(read_amplitude(reader, "amplitude"));
+      group = static_cast<int>(problem.boundary_amplitudes.size());
+      where = reader.where("amplitude");
+      boundary.erase("amplitude");
+    }
+    out.group.push_back(group);
+    out.where.push_back(where);
+  }
+  return out;
+}
+
+void set_load_groups(dd::Subdomain& region, const BoundaryAmplitudes& amplitudes) {
+  for (std::size_t k = 0; k < amplitudes.group.size() && k < region.body.conditions.size(); ++k) {
+    if (amplitudes.group[k] == 0) continue;
+    auto& condition = region.body.conditions[k];
+    if (!condition.value[0] && !condition.value[1])
+      throw InputError(amplitudes.where[k], "boundary '" + region.body.pieces[k].name +
+                                                "' prescribes no nonzero value: its amplitude would have no effect");
+    condition.load_group = amplitudes.group[k];
+  }
+}
+
 std::vector<bem::InteriorPoint> as_grid_points(std::vector<bem::InteriorPoint> points) {
   // Stress points of a contact body outside it are dropped and listed (not errors).
   for (auto& point : points) point.from_grid = true;
@@ -240,7 +281,9 @@ void read_bodies(toml::table& root_table, const TableReader& root, FileContext& 
         region_reader.check_keys(joined({&schema::body_keys()}, {"name", "interior"}), "a [[body.region]] table");
         const std::string name = region_reader.optional_string("name").value_or(body.name + "_" + std::to_string(r));
         add_region_name(name, region_reader);
+        const auto amplitudes = take_boundary_amplitudes(region_table, region_path, context, region_reader.line(), problem);
         auto region = parse_region(region_table, region_path, context, region_reader.line(), name);
+        set_load_groups(region, amplitudes);
         if (regions->size() > 1 && std::none_of(region.piece_interface.begin(), region.piece_interface.end(),
                                                 [](const std::string& s) { return !s.empty(); }))
           region_reader.fail("boundary", "region '" + name + "' of body '" + body.name +
@@ -252,7 +295,9 @@ void read_bodies(toml::table& root_table, const TableReader& root, FileContext& 
     } else {
       reader.check_keys(joined({&schema::body_keys()}, {"name", "interior"}), "a [[body]] table");
       add_region_name(body.name, reader);
+      const auto amplitudes = take_boundary_amplitudes(table, path, context, line, problem);
       auto region = parse_region(table, path, context, line, body.name);
+      set_load_groups(region, amplitudes);
       for (std::size_t k = 0; k < region.piece_interface.size(); ++k)
         if (!region.piece_interface[k].empty())
           throw InputError(region.body.pieces[k].where,
@@ -297,6 +342,11 @@ void read_pairing(const TableReader& reader, contact::ContactInterface& contact)
     reader.fail("interference", "the interference (initial overlap of the contact zones along the pair normal, "
                                 "e.g. the radial interference of a shrink fit) must be a finite number >= 0, found " +
                                     format_number(contact.interference));
+  if (reader.has("interference_amplitude")) {
+    if (contact.interference == 0.0)
+      reader.fail("interference_amplitude", "the amplitude is that of the interference, which is not given");
+    contact.interference_amplitude = read_amplitude(reader, "interference_amplitude");
+  }
   if (const toml::node* gap = reader.find("gap")) {
     const auto value = read_prescribed_value(*gap, reader.where("gap"), reader.context());
     if (value.zero)
@@ -434,6 +484,8 @@ void read_history(const TableReader& root, FileContext& context, contact::Contac
   for (const auto& force : problem.forces) last_time(force.amplitude);
   for (const auto& body : problem.bodies)
     if (body.rigid) last_time(body.rigid->amplitude);
+  for (const auto& contact : problem.contacts) last_time(contact.interference_amplitude);
+  for (const auto& amplitude : problem.boundary_amplitudes) last_time(amplitude);
   if (const toml::table* table = root.optional_table("history", "[history]")) {
     const TableReader history(*table, "history", context, root.line());
     history.check_keys({"end_time", "data_amplitude"}, "the [history] table");

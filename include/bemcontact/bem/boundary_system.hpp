@@ -23,6 +23,7 @@ struct NodeCondition {
   std::array<ConditionKind, 2> kind{ConditionKind::traction, ConditionKind::traction};
   std::array<double, 2> value{0.0, 0.0};
   bool on_axis = false;
+  int load_group = 0;  // BoundaryCondition::load_group of the node's piece
 };
 
 struct ConstraintEquation {

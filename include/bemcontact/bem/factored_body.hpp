@@ -41,6 +41,14 @@ class FactoredBody {
   // the body's own prescribed values (loads, imposed displacements, constraint values).
   BoundarySolution solve(const Vector& variable_data, bool with_fixed_data = true) const;
 
+  // The body's own prescribed values split by their load group (BoundaryCondition::
+  // load_group; point constraints' values belong to group 0): load_groups() groups, the
+  // complementary field of each group's values alone, and the solution with each group
+  // scaled by its amplitude.
+  int load_groups() const { return static_cast<int>(group_rhs_.size()); }
+  Vector group_complementary(int group) const;
+  BoundarySolution solve_with_amplitudes(const Vector& variable_data, const std::vector<double>& amplitudes) const;
+
   // Only the complementary field at the variable nodes: tractions where displacements are
   // prescribed and displacements where tractions are (2 per node).
   Vector complementary(const Vector& variable_data, bool with_fixed_data = true) const;
@@ -58,6 +66,7 @@ class FactoredBody {
   std::vector<NodeCondition> conditions_;
   std::vector<ConstraintEquation> constraints_;
   Vector fixed_rhs_;
+  std::vector<Vector> group_rhs_;  // fixed_rhs_ split by load group (they sum to it)
   Matrix variable_rhs_;  // columns: right-hand side per unit variable datum
   operators::DenseLU lu_;
 };

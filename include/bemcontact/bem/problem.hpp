@@ -27,6 +27,9 @@ struct BoundaryCondition {
   // Canonical text of the condition; pieces with equal signatures carry the same
   // condition, so the mesher need not split the node where they meet.
   std::string signature = "free";
+  // Which amplitude of a load history scales the prescribed values (0: the body's data
+  // amplitude; others: a boundary's own, contact model). Plain solves ignore it.
+  int load_group = 0;
 
   double value_at(int component, const Vec2& position) const {
     return value[component] ? value[component](position) : 0.0;

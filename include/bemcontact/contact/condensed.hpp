@@ -87,8 +87,9 @@ class ContactModel {
   const std::vector<ContactPair>& pairs() const { return pairs_; }
 
   // The boundary solution of region r (prepared().regions) for a contact solution x (local
-  // frame), motions delta and the amplitude of the bodies' own data (no stresses).
-  bem::BoundarySolution region_solution(int r, const Vector& x, const Vector& delta, double data_amplitude) const;
+  // frame) and motions delta at pseudo-time t (the bodies' own data at their amplitudes; no
+  // stresses).
+  bem::BoundarySolution region_solution(int r, const Vector& x, const Vector& delta, double t) const;
   // Traction on side 1 at each pair in global components.
   Vec2 traction(Index pair, const Vector& x) const;
 
@@ -100,7 +101,7 @@ class ContactModel {
   std::vector<ContactPair> pairs_;
   std::vector<std::unique_ptr<bem::FactoredBody>> factored_;
   std::vector<Matrix> data_map_;     // D_r
-  std::vector<Vector> data_offset_;  // d0_r
+  std::vector<Matrix> data_offset_;  // d0_r per load group (columns)
 };
 
 }  // namespace bemcontact::contact

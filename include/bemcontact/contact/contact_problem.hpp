@@ -117,6 +117,7 @@ struct ContactInterface {
   // along the pair normal (e.g. the radial interference of a shrink fit): every pair's gap
   // is d - interference from the first load step on.
   double interference = 0.0;
+  Amplitude interference_amplitude{{Vec2(0.0, 1.0)}};  // default: the whole overlap from the first step
   // A prescribed initial gap added to the geometric one, a function of the position of
   // side 1's node (e.g. Hertz's r^2 / 2R between two flats); empty for none. Negative
   // values are overlaps, as with the interference.
@@ -141,6 +142,9 @@ struct ContactProblem {
   // Load history over the pseudo-time 0 < t <= end_time: every prescribed value of the
   // elastic bodies follows data_amplitude, each force load and rigid displacement its own.
   Amplitude data_amplitude;
+  // Boundaries with their own amplitude: BoundaryCondition::load_group g >= 1 follows
+  // boundary_amplitudes[g - 1].
+  std::vector<Amplitude> boundary_amplitudes;
   double end_time = 1.0;
   int increments = 1;       // steps over the history (the initial step count when adaptive)
   // Adaptive stepping: a step in which more pairs change state (open / stick / slip) than
@@ -155,6 +159,12 @@ struct ContactProblem {
   // The one region of elastic body b (the two-body problems of chapter V).
   bem::BodyDefinition& elastic(int b) { return bodies.at(b).regions.at(0).body; }
   const bem::BodyDefinition& elastic(int b) const { return bodies.at(b).regions.at(0).body; }
+  // The amplitudes of the bodies' own data at t, by load group.
+  std::vector<double> group_amplitudes(double t) const {
+    std::vector<double> out{data_amplitude.at(t)};
+    for (const auto& a : boundary_amplitudes) out.push_back(a.at(t));
+    return out;
+  }
   // No stress points (cases and tests that check the contact only).
   void drop_interior_points() {
     for (auto& body : bodies)

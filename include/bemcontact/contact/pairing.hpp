@@ -27,7 +27,8 @@ struct ContactPair {
   Vec2 position1, position2;
   Vec2 normal;    // common normal (V.2), pointing out of body 1 toward body 2
   Vec2 tangent;   // (-n_y, n_x)
-  double gap = 0.0;     // d = <x2 - x1, n> (V.3) minus the problem's interference
+  double gap = 0.0;     // d = <x2 - x1, n> (V.3) plus the prescribed initial gap
+  double interference = 0.0;  // the contact's (applied by its amplitude: ContactModel's loads)
   double weight = 0.0;  // integral of the node's shape function over body 1's zone (2 pi r in axisymmetry)
   bool on_axis = false; // axisymmetric pair on r = 0: no tangential traction by symmetry
 };

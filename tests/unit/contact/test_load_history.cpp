@@ -110,3 +110,39 @@ TEST(LoadHistory, AdaptiveStepsFollowTheFineHistory) {
 }
 
 }  // namespace bemcontact::contact
+
+namespace bemcontact::contact {
+
+TEST(LoadHistory, ABoundaryAmplitudeEqualsTheDataAmplitudeWhenTheyAgree) {
+  // The bulk stress of fretting_bulk_stress.toml through its boundary's own amplitude, or
+  // through [history] data_amplitude: the same history, the same answer.
+  const auto own = test_support::example_text("fretting_bulk_stress.toml");
+  auto shared = test_support::replaced(own, "amplitude = [[0.0, 0.0], [1.0, 0.0], [2.0, 1.0]]   # the bulk stress comes with Q\n", "");
+  shared += "\n[history]\ndata_amplitude = [[0.0, 0.0], [1.0, 0.0], [2.0, 1.0]]\n";
+  const io::ParameterOverrides coarse{{"n", 20.0}};
+  const auto a = solve_contact(io::parse_contact_problem(own, "own.toml", coarse).problem);
+  const auto b = solve_contact(io::parse_contact_problem(shared, "shared.toml", coarse).problem);
+  ASSERT_EQ(a.pairs.size(), b.pairs.size());
+  double scale = 0.0, difference = 0.0;
+  for (std::size_t i = 0; i < a.pairs.size(); ++i) {
+    scale = std::max(scale, std::abs(a.pairs[i].p_n));
+    difference = std::max({difference, std::abs(a.pairs[i].p_n - b.pairs[i].p_n), std::abs(a.pairs[i].p_t - b.pairs[i].p_t)});
+  }
+  EXPECT_LT(difference, 1e-9 * scale);
+}
+
+TEST(LoadHistory, AnInterferenceRampedInStepsEndsAtTheSamePressure) {
+  // Frictionless: the path does not matter, so a shrink fit built up over 4 steps ends
+  // where the one-step fit is.
+  auto text = test_support::example_text("contact_shrink_fit.toml");
+  const auto once = solve_contact(io::parse_contact_problem(text, "once.toml").problem);
+  text = test_support::replaced(text, "interference = \"delta\"",
+                                "interference = \"delta\"\ninterference_amplitude = [[0.0, 0.0], [1.0, 1.0]]\nincrements = 4");
+  const auto ramped = solve_contact(io::parse_contact_problem(text, "ramped.toml").problem);
+  EXPECT_EQ(ramped.steps_taken, 4);
+  EXPECT_NEAR(ramped.summary.peak_pressure, once.summary.peak_pressure, 1e-9 * once.summary.peak_pressure);
+  EXPECT_GT(ramped.steps.front().peak_pressure, 0.2 * once.summary.peak_pressure);
+  EXPECT_LT(ramped.steps.front().peak_pressure, 0.3 * once.summary.peak_pressure);  // a quarter of the fit
+}
+
+}  // namespace bemcontact::contact
