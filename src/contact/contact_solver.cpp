@@ -331,6 +331,10 @@ LoadHistory solve_load_history(const CondensedProblem& condensed, const std::vec
     record.forces = condensed.force_at(t);
     record.motions = step.delta;
     history.records.push_back(record);
+    if (problem.record_steps) {
+      history.step_x.push_back(step.x);
+      history.step_delta.push_back(step.delta);
+    }
     for (Index i = 0; i < n; ++i) previous.previous_tangential_jump[i] = step.w[2 * i + 1];
     previous.x_start = step.x;
     previous.delta_start = step.delta;
@@ -388,6 +392,17 @@ ContactResult solve_contact(const ContactProblem& problem, const bem::ProgressCa
     boundary.resultants =
         bem::boundary_resultants(region.mesh, boundary, body.regions[region.region].body, problem.analysis);
     result.boundary.push_back(std::move(boundary));
+  }
+  for (std::size_t k = 0; k < history.step_x.size(); ++k) {
+    std::vector<bem::BoundarySolution> regions_at_step;
+    for (std::size_t r = 0; r < regions.size(); ++r) {
+      auto boundary = model.region_solution(static_cast<int>(r), history.step_x[k], history.step_delta[k],
+                                            result.records[k].time);
+      boundary.stress =
+          bem::boundary_stresses(regions[r].mesh, problem.analysis, regions[r].definition.material, boundary);
+      regions_at_step.push_back(std::move(boundary));
+    }
+    result.step_boundary.push_back(std::move(regions_at_step));
   }
   result.timings.add("boundary stresses", seconds_since(start));
   start = Clock::now();

@@ -224,6 +224,16 @@ std::vector<std::pair<std::string, std::string>> contact_output_files(const cont
       files.emplace_back(stem + "_interior.csv", interior_csv(result.interior[r]));
       if (vtk) files.emplace_back(stem + "_interior.vtk", interior_vtk(result.interior[r], problem.title));
     }
+    if (vtk && !result.step_boundary.empty()) {
+      // Every step's boundary fields as a ParaView time series.
+      std::vector<std::pair<double, std::string>> series;
+      for (std::size_t k = 0; k < result.step_boundary.size(); ++k) {
+        const std::string name = stem + "_boundary_step" + std::to_string(k + 1) + ".vtp";
+        files.emplace_back(name, boundary_vtp(result.meshes[r], result.step_boundary[k][r]));
+        series.emplace_back(result.records[k].time, name);
+      }
+      files.emplace_back(stem + "_boundary.pvd", time_series_pvd(series));
+    }
     transitions[result.body_names[r]] = mesh_transitions_json(result.meshes[r]);
     // Per region, the contact zones included (the resultant of the contact tractions).
     resultants[result.body_names[r]] = resultants_json(result.boundary[r].resultants, problem.analysis);

@@ -289,4 +289,67 @@ std::string interior_vtk(const bem::InteriorSolution& solution, std::string_view
   return std::move(out).str();
 }
 
+namespace {
+
+void vtp_array(Text& out, const char* name, int components, const std::vector<double>& values) {
+  out << "<DataArray type=\"Float64\" Name=\"" << name << "\" NumberOfComponents=\"" << components
+      << "\" format=\"ascii\">\n";
+  for (const double v : values) out << v << ' ';
+  out << "\n</DataArray>\n";
+}
+
+std::vector<double> vectors3(const std::vector<Vec2>& values) {
+  std::vector<double> out;
+  for (const Vec2& v : values) out.insert(out.end(), {v.x(), v.y(), 0.0});
+  return out;
+}
+
+}  // namespace
+
+std::string boundary_vtp(const geometry::BoundaryMesh& mesh, const bem::BoundarySolution& solution) {
+  check_boundary(mesh, solution);
+  const auto lines = boundary_polylines(mesh);
+  std::vector<Vec2> positions, normals;
+  for (const auto& node : mesh.nodes) positions.push_back(node.position), normals.push_back(node.normal);
+  Text out;
+  out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"0.1\" byte_order=\"LittleEndian\">\n<PolyData>\n"
+      << "<Piece NumberOfPoints=\"" << static_cast<Index>(mesh.nodes.size()) << "\" NumberOfVerts=\"0\" NumberOfLines=\""
+      << static_cast<Index>(lines.size()) << "\" NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n<Points>\n";
+  vtp_array(out, "points", 3, vectors3(positions));
+  out << "</Points>\n<Lines>\n<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
+  Index offset = 0;
+  std::string offsets;
+  for (const auto& line : lines) {
+    for (const Index node : line) out << node << ' ';
+    offset += static_cast<Index>(line.size());
+    offsets += std::to_string(offset) + " ";
+  }
+  out << "\n</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n" << offsets
+      << "\n</DataArray>\n</Lines>\n<PointData Vectors=\"u\">\n";
+  vtp_array(out, "normal", 3, vectors3(normals));
+  vtp_array(out, "u", 3, vectors3(solution.displacement));
+  vtp_array(out, "t", 3, vectors3(solution.traction));
+  std::vector<double> vm, s11, s22, s12, s33;
+  for (const auto& s : solution.stress) {
+    vm.push_back(s.von_mises());
+    s11.push_back(s.s11), s22.push_back(s.s22), s12.push_back(s.s12), s33.push_back(s.s33);
+  }
+  vtp_array(out, "von_mises", 1, vm);
+  vtp_array(out, "s11", 1, s11);
+  vtp_array(out, "s22", 1, s22);
+  vtp_array(out, "s12", 1, s12);
+  vtp_array(out, "s33", 1, s33);
+  out << "</PointData>\n</Piece>\n</PolyData>\n</VTKFile>\n";
+  return std::move(out).str();
+}
+
+std::string time_series_pvd(const std::vector<std::pair<double, std::string>>& time_and_file) {
+  Text out;
+  out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n";
+  for (const auto& [time, file] : time_and_file)
+    out << "<DataSet timestep=\"" << time << "\" group=\"\" part=\"0\" file=\"" << file << "\"/>\n";
+  out << "</Collection>\n</VTKFile>\n";
+  return std::move(out).str();
+}
+
 }  // namespace bemcontact::io

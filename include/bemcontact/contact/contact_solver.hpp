@@ -73,6 +73,8 @@ struct ContactResult : ContactInterfaceResult {
   std::vector<StepRecord> records;  // per step: forces and motions
   int steps_taken = 0;
   int rejected_steps = 0;
+  // When record_steps: per step, every region's boundary solution with stresses.
+  std::vector<std::vector<bem::BoundarySolution>> step_boundary;
   // Per elastic region (ContactModel::prepared().regions): mesh, solution, output name.
   std::vector<geometry::BoundaryMesh> meshes;
   std::vector<bem::BoundarySolution> boundary;
@@ -93,6 +95,7 @@ struct ContactResult : ContactInterfaceResult {
 struct LoadHistory : ContactInterfaceResult {
   std::vector<ContactInterfaceResult> contacts;
   std::vector<StepRecord> records;      // per step
+  std::vector<Vector> step_x, step_delta;  // per step when record_steps
   int steps_taken = 0;
   int rejected_steps = 0;               // adaptive steps redone in halves
   Vector x;                             // final (lambda_n, tau) per pair

@@ -37,6 +37,10 @@ std::string mesh_elements_csv(const geometry::BoundaryMesh& mesh);
 std::string boundary_vtk(const geometry::BoundaryMesh& mesh, const bem::BoundarySolution& solution,
                          std::string_view title);
 std::string mesh_vtk(const geometry::BoundaryMesh& mesh, std::string_view title);
+// The same boundary fields as VTK XML PolyData (.vtp), for ParaView time series, and the
+// collection (.pvd) that lists files with their times.
+std::string boundary_vtp(const geometry::BoundaryMesh& mesh, const bem::BoundarySolution& solution);
+std::string time_series_pvd(const std::vector<std::pair<double, std::string>>& time_and_file);
 std::string interior_vtk(const bem::InteriorSolution& solution, std::string_view title);
 
 // The node sequences the VTK lines follow: per contour, the nodes of its elements in

@@ -146,3 +146,36 @@ TEST(LoadHistory, AnInterferenceRampedInStepsEndsAtTheSamePressure) {
 }
 
 }  // namespace bemcontact::contact
+
+#include "bemcontact/io/contact_writer.hpp"
+
+namespace bemcontact::contact {
+
+TEST(LoadHistory, RecordedStepsAreAParaViewTimeSeries) {
+  auto problem = io::parse_contact_problem(test_support::example_text("fretting_cylinder.toml"), "fretting.toml",
+                                           {{"n", 10.0}})
+                     .problem;
+  problem.record_steps = true;
+  problem.friction = 0.0;  // frictionless: the equal steps as given
+  problem.adaptive = false;
+  problem.forces.pop_back();  // P only
+  problem.increments = 4;
+  problem.end_time = 1.0;
+  const auto result = solve_contact(problem);
+  ASSERT_EQ(result.step_boundary.size(), 4u);
+  std::map<std::string, std::string> files;
+  for (auto& [name, content] : io::contact_output_files(problem, result)) files[name] = content;
+  ASSERT_TRUE(files.count("cylinder_boundary.pvd"));
+  const std::string& pvd = files["cylinder_boundary.pvd"];
+  std::size_t datasets = 0;
+  for (std::size_t at = pvd.find("<DataSet"); at != std::string::npos; at = pvd.find("<DataSet", at + 1)) ++datasets;
+  EXPECT_EQ(datasets, 4u);
+  EXPECT_NE(pvd.find("timestep=\"0.5\""), std::string::npos);
+  const std::string& step = files.at("block_boundary_step4.vtp");
+  EXPECT_NE(step.find("NumberOfPoints=\"" + std::to_string(result.meshes[1].node_count()) + "\""), std::string::npos);
+  EXPECT_NE(step.find("Name=\"s11\""), std::string::npos);
+  // The last step is the final state.
+  EXPECT_NEAR(result.step_boundary.back()[1].traction[0].y(), result.boundary[1].traction[0].y(), 1e-12);
+}
+
+}  // namespace bemcontact::contact
