@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include "bemcontact/bem/postprocess.hpp"
@@ -137,6 +138,19 @@ ContactSummary summarise(const std::vector<ContactPair>& geometry, const std::ve
       if (r_in >= 0.0 && m_in > m_stick)
         s.stick_radius = std::clamp(r_stick + m_stick * (r_stick - r_in) / (m_in - m_stick), r_stick, r_slip);
     }
+  }
+  // The stick zone's ends (either side of x1 = 0, or both on one side).
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (const auto& pair : pairs)
+    if (pair.status == PairStatus::stick) lo = std::min(lo, pair.coordinate), hi = std::max(hi, pair.coordinate);
+  if (lo <= hi) {
+    double before = -std::numeric_limits<double>::infinity(), after = -before;
+    for (const auto& pair : pairs) {
+      if (pair.status == PairStatus::slip && pair.coordinate < lo) before = std::max(before, pair.coordinate);
+      if (pair.status == PairStatus::slip && pair.coordinate > hi) after = std::min(after, pair.coordinate);
+    }
+    s.stick_start = std::isfinite(before) ? 0.5 * (lo + before) : lo;
+    s.stick_end = std::isfinite(after) ? 0.5 * (hi + after) : hi;
   }
   return s;
 }

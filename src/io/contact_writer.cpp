@@ -36,6 +36,7 @@ nlohmann::json summary_json(const contact::ContactSummary& s) {
           {"normal_force", s.normal_force},
           {"approach", s.approach},
           {"pairs_in_contact", s.pairs_in_contact},
+          {"stick_zone", {s.stick_start, s.stick_end}},
           {"dissipated_energy", s.dissipated_energy},
           {"iterations",
            {{"newton", s.newton_iterations},
@@ -61,12 +62,13 @@ std::string contact_csv(const std::vector<contact::PairResult>& pairs) {
 
 std::string contact_steps_csv(const contact::ContactInterfaceResult& result) {
   std::string out =
-      "step,time,a,c,peak_pressure,centre_pressure,normal_force,approach,pairs_in_contact,dissipated_energy,"
+      "step,time,a,c,stick_start,stick_end,peak_pressure,centre_pressure,normal_force,approach,pairs_in_contact,"
+      "dissipated_energy,"
       "newton_iterations,kalker_iterations,threshold_iterations,gmres_cycles,residual\n";
   for (std::size_t k = 0; k < result.steps.size(); ++k) {
     const auto& s = result.steps[k];
     out += std::to_string(k + 1) + "," + number(s.time) + "," + number(s.contact_radius) + "," +
-           number(s.stick_radius) + "," + number(s.peak_pressure) + "," + number(s.centre_pressure) + "," +
+           number(s.stick_radius) + "," + number(s.stick_start) + "," + number(s.stick_end) + "," + number(s.peak_pressure) + "," + number(s.centre_pressure) + "," +
            number(s.normal_force) + "," + number(s.approach) + "," + std::to_string(s.pairs_in_contact) + "," +
            number(s.dissipated_energy) + "," +
            std::to_string(s.newton_iterations) + "," + std::to_string(s.kalker_iterations) + "," +
@@ -148,6 +150,8 @@ nlohmann::json contact_summary_json(const contact::ContactProblem& problem, cons
                   {"adaptive", problem.adaptive && problem.friction > 0.0},
                   {"steps_taken", result.steps_taken},
                   {"rejected_steps", result.rejected_steps},
+                  {"rule", "a step in which more than max_state_changes pairs of one contact change state (open, "
+                           "stick, slip) is redone in halves; the step grows back by 2 after an accepted one"},
                   {"max_state_changes", problem.max_state_changes}};
   j["unknowns"] = result.unknowns;
   if (!problem.contacts.empty()) {
@@ -168,8 +172,13 @@ std::string contact_report_text(const contact::ContactProblem& problem, const co
         result.contacts.size() == 1 ? std::string("contact")
                                     : "contact '" + contact.name + "' (" + body_label(problem, problem.contacts[c].side1) +
                                           " / " + body_label(problem, problem.contacts[c].side2) + ")";
-    std::snprintf(line, sizeof line, "%s: %zu pairs, %d in contact, a = %.6g, c = %.6g (c/a = %.4f)\n", label.c_str(),
-                  contact.pairs.size(), s.pairs_in_contact, s.contact_radius, s.stick_radius, s.stick_ratio());
+    if (problem.friction > 0.0)
+      std::snprintf(line, sizeof line, "%s: %zu pairs, %d in contact, a = %.6g, stick zone [%.6g, %.6g] (c = %.6g, c/a = %.4f)\n",
+                    label.c_str(), contact.pairs.size(), s.pairs_in_contact, s.contact_radius, s.stick_start, s.stick_end,
+                    s.stick_radius, s.stick_ratio());
+    else
+      std::snprintf(line, sizeof line, "%s: %zu pairs, %d in contact, a = %.6g (frictionless)\n", label.c_str(),
+                    contact.pairs.size(), s.pairs_in_contact, s.contact_radius);
     out += line;
     std::snprintf(line, sizeof line, "  peak pressure %.6g, centre pressure %.6g, normal force %.6g, approach %.6g\n",
                   s.peak_pressure, s.centre_pressure, s.normal_force, s.approach);
@@ -224,6 +233,9 @@ std::vector<std::pair<std::string, std::string>> contact_output_files(const cont
       files.emplace_back(stem + "_interior.csv", interior_csv(result.interior[r]));
       if (vtk) files.emplace_back(stem + "_interior.vtk", interior_vtk(result.interior[r], problem.title));
     }
+    for (std::size_t k = 0; k < result.step_boundary.size(); ++k)
+      files.emplace_back(stem + "_boundary_step" + std::to_string(k + 1) + ".csv",
+                         boundary_csv(result.meshes[r], result.step_boundary[k][r]));
     if (vtk && !result.step_boundary.empty()) {
       // Every step's boundary fields as a ParaView time series.
       std::vector<std::pair<double, std::string>> series;

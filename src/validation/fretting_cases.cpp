@@ -68,25 +68,9 @@ double max_shear_error(const std::vector<contact::PairResult>& pairs, double a, 
   return worst;
 }
 
-// The stick zone's half-width: midway between the outermost sticking pair and the next
-// slipping one, on each side, averaged.
-double stick_half_width(const std::vector<contact::PairResult>& pairs) {
-  double width = 0.0;
-  for (const double side : {-1.0, 1.0}) {
-    double stick = 0.0, slip = 1e300;
-    for (const auto& pair : pairs) {
-      const double r = side * pair.coordinate;
-      if (r < 0.0) continue;
-      if (pair.status == contact::PairStatus::stick) stick = std::max(stick, r);
-    }
-    for (const auto& pair : pairs) {
-      const double r = side * pair.coordinate;
-      if (r > stick && pair.status == contact::PairStatus::slip) slip = std::min(slip, r);
-    }
-    width += 0.5 * (0.5 * (stick + slip));
-  }
-  return width;
-}
+// The stick zone's half-width (ContactSummary: its ends midway between the outermost
+// sticking pairs and the next slipping ones).
+double stick_half_width(const contact::ContactSummary& s) { return 0.5 * (s.stick_end - s.stick_start); }
 
 const contact::ContactInterfaceResult& only(const contact::ContactResult& result) { return result.contacts.front(); }
 
@@ -105,7 +89,7 @@ std::vector<Record> run_cattaneo_mindlin(const Context& context) {
     const auto result = contact::solve_contact(f.file.problem, context.progress);
     const double a = f.theory.hertz.half_width();
     const std::size_t first = records.size();
-    records.push_back(compare_scaled("c_over_a", stick_half_width(result.pairs) / a, f.theory.stick_ratio(f.Q_star), 1.0, 0.02));
+    records.push_back(compare_scaled("c_over_a", stick_half_width(result.summary) / a, f.theory.stick_ratio(f.Q_star), 1.0, 0.02));
     const double c = f.theory.stick_ratio(f.Q_star) * a;
     auto exact = [&](double x) { return f.theory.shear(x, f.Q_star); };
     records.push_back(compare_scaled("max_shear_error", max_shear_error(result.pairs, a, f.mu_p0, exact, c), 0.0, 1.0, 0.02));
@@ -138,7 +122,7 @@ std::vector<Record> run_mindlin_unloading(const Context& context) {
     records.push_back(compare_scaled("max_shear_error", max_shear_error(contact.step_pairs[k], a, f.mu_p0, exact, c), 0.0, 1.0, 0.02));
     records.push_back(report_only("max_shear_error_at_stick_edge",
                                   max_shear_error(contact.step_pairs[k], a, f.mu_p0, exact, c, true), 0.0));
-    records.push_back(compare_scaled("reversal_c_over_a", stick_half_width(contact.step_pairs[k]) / a,
+    records.push_back(compare_scaled("reversal_c_over_a", stick_half_width(contact.steps[k]) / a,
                                      f.theory.reversal_stick_ratio(f.Q_star, Q), 1.0, 0.02));
     tag(records, first, "mindlin-unloading", {{"Q_over_Qstar", text(Q_over)}, {"Q_star_over_muP", text(ratio)}});
   }
@@ -174,16 +158,7 @@ std::vector<Record> run_nowell_hills(const Context& context) {
   const double a = theory.hertz.half_width(), mu_p0 = theory.friction * theory.hertz.max_pressure();
   const double sigma_B = file.parameters.at("sigma_B");
   const auto result = contact::solve_contact(problem, context.progress);
-  // The stick zone's ends: midway between its outermost pairs and their slipping neighbours.
-  double lo = 1e300, hi = -1e300;
-  for (const auto& pair : result.pairs)
-    if (pair.status == contact::PairStatus::stick) lo = std::min(lo, pair.coordinate), hi = std::max(hi, pair.coordinate);
-  double left = -1e300, right = 1e300;
-  for (const auto& pair : result.pairs) {
-    if (pair.coordinate < lo) left = std::max(left, pair.coordinate);
-    if (pair.coordinate > hi) right = std::min(right, pair.coordinate);
-  }
-  const double start = 0.5 * (lo + left), end = 0.5 * (hi + right);
+  const double start = result.summary.stick_start, end = result.summary.stick_end;
   std::vector<Record> records;
   records.push_back(compare_scaled("e_over_a", 0.5 * (start + end) / a, sigma_B / (4.0 * mu_p0), 1.0, 0.02));
   records.push_back(compare_scaled("c_over_a", 0.5 * (end - start) / a, theory.stick_ratio(Q), 1.0, 0.02));

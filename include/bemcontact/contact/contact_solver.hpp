@@ -37,6 +37,10 @@ struct ContactSummary {
   double time = 1.0;            // pseudo-time of the history (the load factor of a single ramp)
   double contact_radius = 0.0;  // a: the edge of the zone in compression, along x1 (see docs/contact.md)
   double stick_radius = 0.0;    // c: the edge of the stick zone around the centre
+  // The stick zone's ends along x1, each midway between its outermost sticking pair and
+  // the next slipping one (0, 0 when nothing sticks): its offset under a tangential load is
+  // their mean (Nowell-Hills), its half-width half their difference.
+  double stick_start = 0.0, stick_end = 0.0;
   double peak_pressure = 0.0;   // max of -p_n
   double centre_pressure = 0.0; // -p_n at the pair with the smallest |x1|
   double normal_force = 0.0;    // integral of -p_n (2 pi r in axisymmetry)

@@ -9,7 +9,7 @@
 //                      (x, y: body 1's node; n: common normal out of body 1; p_n < 0 in
 //                      compression; slip_ratio = |p_t| / (beta |p_n|); jump = [u] = 1u - 2u;
 //                      status open / stick / slip)
-//   contact_steps.csv  one row per load step: step,time,a,c,peak_pressure,
+//   contact_steps.csv  one row per load step: step,time,a,c,stick_start,stick_end,peak_pressure,
 //                      centre_pressure,normal_force,approach,pairs_in_contact,dissipated_energy,
 //                      newton_iterations,kalker_iterations,threshold_iterations,gmres_cycles,residual
 //   motions.csv        one row per load step (when the problem has motions): step,time, then
@@ -17,6 +17,7 @@
 //                      and the approach: a force-displacement loop), per free body motion
 //                      <body>_<k>_displacement
 //   contact_step<k>.csv  the pairs at step k (when record_steps)
+//   <body>_boundary_step<k>.csv (when record_steps): every step's boundary fields
 //   <body>_boundary.pvd, <body>_boundary_step<k>.vtp (when record_steps and vtk): every
 //                      step's boundary fields (u, t, stresses) as a ParaView time series
 //   <body>_boundary.csv, <body>_interior.csv (+ .vtk): each elastic body's fields (each
