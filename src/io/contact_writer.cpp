@@ -164,7 +164,8 @@ nlohmann::json contact_summary_json(const contact::ContactProblem& problem, cons
 
 std::string contact_report_text(const contact::ContactProblem& problem, const contact::ContactResult& result) {
   char line[256];
-  std::string out;
+  std::string out = problem.title + " (" + to_string(problem.analysis) +
+                    "; units: those of the file, a consistent set such as mm, N, MPa)\n";
   for (std::size_t c = 0; c < result.contacts.size(); ++c) {
     const auto& contact = result.contacts[c];
     const auto& s = contact.summary;
@@ -186,8 +187,9 @@ std::string contact_report_text(const contact::ContactProblem& problem, const co
   }
   if (problem.contacts.empty()) return out;
   const auto& s = result.summary;
-  std::snprintf(line, sizeof line, "  %s algorithm, %d load steps (%d redone in halves): newton %d, kalker %d, threshold %d, gmres cycles %d\n",
-                contact::to_string(problem.solver.algorithm), result.steps_taken, result.rejected_steps, s.newton_iterations,
+  std::snprintf(line, sizeof line, "  %s algorithm, %d load step%s (%d redone in halves): newton %d, kalker %d, threshold %d, gmres cycles %d\n",
+                contact::to_string(problem.solver.algorithm), result.steps_taken, result.steps_taken == 1 ? "" : "s",
+                result.rejected_steps, s.newton_iterations,
                 s.kalker_iterations, s.threshold_iterations, s.gmres_cycles);
   out += line;
   out += hertz_comparison(problem, s);
