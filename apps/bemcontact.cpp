@@ -41,12 +41,12 @@ bem::ProgressCallback make_progress(bool quiet) {
 }
 
 void print_written(const std::string& output_dir, const io::OutputDirectory& out) {
+  const auto names = out.names();
+  // Recorded load steps write a few files per step: list the first ones only.
+  constexpr std::size_t kListed = 24;
   std::printf("  wrote %s/{", output_dir.c_str());
-  bool first = true;
-  for (const auto& name : out.names()) {
-    std::printf("%s%s", first ? "" : ",", name.c_str());
-    first = false;
-  }
+  for (std::size_t k = 0; k < names.size() && k < kListed; ++k) std::printf("%s%s", k ? "," : "", names[k].c_str());
+  if (names.size() > kListed) std::printf(",... %zu files in all", names.size());
   std::printf("}\n");
 }
 

@@ -249,6 +249,7 @@ void read_bodies(toml::table& root_table, const TableReader& root, FileContext& 
     const int line = line_of(node) > 0 ? line_of(node) : root.line();
     const TableReader reader(table, path, context, line);
     contact::Body body;
+    body.where = SourceLocation{context.file, reader.line(), path};
     body.name = reader.optional_string("name").value_or(path);
     if (body.name.empty()) reader.fail("name", "the name must not be empty");
     if (const auto [existing, inserted] = body_lines.emplace(body.name, reader.line()); !inserted)
@@ -438,7 +439,7 @@ void read_force_load(const TableReader& load, contact::ContactProblem& problem) 
                                 "held at 0), so they would have no effect; remove them");
   }
   const int component = load.integer_or("component", 2);
-  if (component != 1 && component != 2) load.fail("component", "must be 1 or 2");
+  if (component != 1 && component != 2) load.fail("component", "must be 1 (x, or r in axisymmetry) or 2 (y, or z)");
   force.component = component - 1;
   force.force = load.number("force");
   if (force.force == 0.0) load.fail("force", "the total force must not be zero (a zero force through a "
@@ -519,8 +520,11 @@ contact::BoundaryRef read_side(const TableReader& reader, const contact::Contact
   const auto& condition = problem.region(ref).body.conditions[ref.piece];
   if (condition.kind[0] == bem::ConditionKind::displacement || condition.kind[1] == bem::ConditionKind::displacement ||
       condition.value[0] || condition.value[1] || !problem.region(ref).piece_interface[ref.piece].empty())
-    reader.fail(key, "boundary '" + *name + "' of body '" + b.name +
-                         "' carries conditions; a contact boundary must have none (the contact sets them)");
+    throw InputError(problem.region(ref).body.pieces[ref.piece].where,
+                     "boundary '" + *name + "' of body '" + b.name + "' carries conditions (" + condition.signature +
+                         ") but is in contact (" + reader.key_path(key) +
+                         "); a contact boundary must have none: the contact sets them (remove them, or name another "
+                         "boundary in the contact)");
   return ref;
 }
 
@@ -666,12 +670,12 @@ ContactFile parse_contact_problem(std::string_view text, const std::string& file
     const bool loaded = std::any_of(problem.forces.begin(), problem.forces.end(),
                                     [b](const contact::ForceLoad& f) { return f.body == static_cast<int>(b); });
     if (!loaded && !body.rigid->displacement)
-      root.fail("body", "rigid body '" + body.name + "' has no load and no displacement: give its displacement in "
+      throw InputError(body.where, "rigid body '" + body.name + "' has no load and no displacement: give its displacement in "
                         "[body.rigid] (displacement = [u1, u2]) or press it with a force ([load] body = \"" + body.name +
                         "\")");
     bool in_contact = false;
     for (const auto& contact : problem.contacts) in_contact = in_contact || contact.side2.body == static_cast<int>(b);
-    if (!in_contact) root.fail("body", "rigid body '" + body.name + "' is in no contact: it would have no effect");
+    if (!in_contact) throw InputError(body.where, "rigid body '" + body.name + "' is in no contact: it would have no effect");
   }
   // Pair the zones now, so that geometric errors point at the contact tables.
   try {

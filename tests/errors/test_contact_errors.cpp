@@ -72,6 +72,8 @@ TEST(ContactErrors, ContactBoundaryWithConditions) {
   const auto message = input_error(replaced(example_text(), "name = \"contact\"\nfrom = \"D\"\nto = \"F\"\n",
                                             "name = \"contact\"\nfrom = \"D\"\nto = \"F\"\nu2 = 0.0\n"));
   EXPECT_TRUE(contains(message, "carries conditions")) << message;
+  EXPECT_TRUE(contains(message, "key 'body[2].boundary[4]'")) << message;  // the boundary, not the contact table
+  EXPECT_TRUE(contains(message, "u2=0")) << message;
 }
 
 TEST(ContactErrors, NegativeFrictionAndBadIncrements) {
@@ -152,6 +154,7 @@ TEST(ContactErrors, RigidBodyWithoutLoadOrDisplacement) {
   const auto text = replaced(example("contact_rigid_punch.toml"), "[load]\nbody = \"punch\"\ncomponent = 2\nforce = \"-P\"", "");
   const auto message = input_error(text);
   EXPECT_TRUE(contains(message, "rigid body 'punch' has no load and no displacement")) << message;
+  EXPECT_TRUE(contains(message, "key 'body[2]'")) << message;  // the rigid body's own table
 }
 
 TEST(ContactErrors, RigidBodyAsSideOne) {

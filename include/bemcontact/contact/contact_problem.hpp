@@ -97,6 +97,7 @@ struct RigidBody {
 // dd::Subdomain::piece_interface), or a rigid body.
 struct Body {
   std::string name;
+  SourceLocation where;  // its table in the problem file, for messages
   std::vector<dd::Subdomain> regions;  // empty for a rigid body
   std::optional<RigidBody> rigid;
 };
