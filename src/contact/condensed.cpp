@@ -94,6 +94,7 @@ ContactModel::ContactModel(const ContactProblem& problem, const bem::ProgressCal
     const auto& members = prepared_.body_regions[b];
     if (members.size() < 2) continue;
     dd::DecompositionProblem decomposition;
+    decomposition.part_word = "region";
     decomposition.analysis = problem.analysis;
     decomposition.mesh = problem.mesh;
     decomposition.options.method = dd::InterfaceMethod::conforming;

@@ -157,6 +157,7 @@ void mesh_regions(const ContactProblem& problem, PreparedContact& prepared) {
     prepared.body_regions.emplace_back();
     if (body.rigid) continue;
     dd::DecompositionProblem decomposition;
+    decomposition.part_word = "region";
     decomposition.analysis = problem.analysis;
     decomposition.mesh = problem.mesh;
     decomposition.subdomains = body.regions;

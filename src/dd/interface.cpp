@@ -41,7 +41,7 @@ std::vector<geometry::BoundaryMesh> mesh_subdomains(const DecompositionProblem& 
     try {
       meshes.push_back(bem::mesh_body(subdomain_problem(problem, s)));
     } catch (const GeometryError& error) {
-      throw GeometryError("subdomain '" + problem.subdomains[s].body.name + "': " + error.what());
+      throw GeometryError(problem.part_word + " '" + problem.subdomains[s].body.name + "': " + error.what());
     }
   }
   return meshes;
@@ -79,18 +79,18 @@ Connectivity build_connectivity(const DecompositionProblem& problem,
     for (const Side& side : list) distinct.insert(side.subdomain);
     if (distinct.size() != list.size())
       throw InputError(piece_where(list.back()),
-                       "interface '" + name + "' is listed twice by subdomain " + sub_name(list.back().subdomain) +
+                       "interface '" + name + "' is listed twice by " + problem.part_word + " " + sub_name(list.back().subdomain) +
                            " with other boundaries between; list its pieces one after the other");
     if (list.size() == 1)
       throw InputError(piece_where(list.front()),
-                       "interface '" + name + "' is listed only by subdomain " + sub_name(list.front().subdomain) +
-                           "; the subdomain on the other side must list a boundary with interface = \"" + name +
+                       "interface '" + name + "' is listed only by " + problem.part_word + " " + sub_name(list.front().subdomain) +
+                           "; the " + problem.part_word + " on the other side must list a boundary with interface = \"" + name +
                            "\" (traversed the other way)");
     if (list.size() > 2)
       throw InputError(piece_where(list[2]), "interface '" + name + "' is listed by " + std::to_string(list.size()) +
-                                                 " subdomains (" + sub_name(list[0].subdomain) + ", " +
+                                                 " " + problem.part_word + "s (" + sub_name(list[0].subdomain) + ", " +
                                                  sub_name(list[1].subdomain) + ", " + sub_name(list[2].subdomain) +
-                                                 "...); an interface joins exactly two subdomains");
+                                                 "...); an interface joins exactly two " + problem.part_word + "s");
     const Side& a = list[0];
     const Side& b = list[1];
     const auto& mesh_a = meshes[a.subdomain];
@@ -121,8 +121,8 @@ Connectivity build_connectivity(const DecompositionProblem& problem,
         char distance[64];
         std::snprintf(distance, sizeof distance, "%.3g", best_distance);
         throw InputError(piece_where(a), "interface '" + name + "' does not match: node " + std::to_string(na) +
-                                             " of subdomain " + sub_name(a.subdomain) + " at " + point_text(x) +
-                                             " has no facing node in subdomain " + sub_name(b.subdomain) +
+                                             " of " + problem.part_word + " " + sub_name(a.subdomain) + " at " + point_text(x) +
+                                             " has no facing node in " + problem.part_word + " " + sub_name(b.subdomain) +
                                              " (the nearest is " + distance + " away)" + advice);
       }
       used[best] = true;
@@ -141,9 +141,9 @@ Connectivity build_connectivity(const DecompositionProblem& problem,
     for (std::size_t k = 0; k < nodes_b.size(); ++k)
       if (!used[k])
         throw InputError(piece_where(b), "interface '" + name + "' does not match: node " + std::to_string(nodes_b[k]) +
-                                             " of subdomain " + sub_name(b.subdomain) + " at " +
+                                             " of " + problem.part_word + " " + sub_name(b.subdomain) + " at " +
                                              point_text(mesh_b.nodes[nodes_b[k]].position) +
-                                             " has no facing node in subdomain " + sub_name(a.subdomain) + advice);
+                                             " has no facing node in " + problem.part_word + " " + sub_name(a.subdomain) + advice);
 
     // Kinds of the pairs from the method.
     const std::size_t n = interface.pairs.size();
@@ -189,7 +189,7 @@ Connectivity build_connectivity(const DecompositionProblem& problem,
     std::set<Index> seen;
     for (const auto& v : result.variable_nodes[s])
       if (!seen.insert(v.node).second)
-        throw GeometryError("subdomain " + sub_name(s) + ": node " + std::to_string(v.node) + " at " +
+        throw GeometryError(problem.part_word + " " + sub_name(s) + ": node " + std::to_string(v.node) + " at " +
                             point_text(meshes[s].nodes[v.node].position) + " lies on two interfaces");
   }
   return result;

@@ -57,6 +57,7 @@ struct DecompositionProblem {
   geometry::MeshOptions mesh;
   std::vector<Subdomain> subdomains;
   DecompositionOptions options;
+  std::string part_word = "subdomain";  // in messages: "region" when they are a body's regions
 };
 
 // Marks piece `piece` of `subdomain` as part of interface `name` (no condition of its own).
