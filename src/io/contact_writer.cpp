@@ -256,7 +256,25 @@ std::vector<std::pair<std::string, std::string>> contact_output_files(const cont
   summary["bemcontact_version"] = BEMCONTACT_VERSION;
   summary["title"] = problem.title;
   summary["source_file"] = problem.source_file;
+  summary["input"] = problem.source_file;  // as in the other kinds' summaries
   summary["analysis"] = to_string(problem.analysis);
+  int rigid = 0;
+  for (const auto& body : problem.bodies) rigid += body.rigid.has_value();
+  summary["problem"] = {{"kind", problem.contacts.empty() ? "bodies" : "contact"},
+                        {"analysis", to_string(problem.analysis)},
+                        {"bodies", problem.bodies.size()},
+                        {"rigid_bodies", rigid},
+                        {"regions", result.meshes.size()},
+                        {"contacts", problem.contacts.size()},
+                        {"force_loads", problem.forces.size()}};
+  nlohmann::json mesh = nlohmann::json::object();
+  for (std::size_t r = 0; r < result.meshes.size(); ++r)
+    mesh[result.body_names[r]] = {{"nodes", result.meshes[r].node_count()}, {"elements", result.meshes[r].element_count()}};
+  summary["mesh"] = mesh;
+  summary["timings_seconds"] = timings_json(result.timings);
+  nlohmann::json outputs = nlohmann::json::array();
+  for (const auto& [name, content] : files) outputs.push_back(name);
+  summary["outputs"] = outputs;
   summary["parameters"] = parameters;
   if (!problem.contacts.empty()) summary["contact"] = contact_summary_json(problem, result);
   nlohmann::json contacts = nlohmann::json::array();
