@@ -378,6 +378,17 @@ PreparedInterface pair_interface(const ContactProblem& problem, const ContactInt
     }
     out.pairs.push_back(pair);
   }
+  // Linear elasticity assumes small strains: an interference of a few per cent of the
+  // bodies' size is outside what the model describes.
+  const double size = side2 ? std::min(mesh1.scale, side2->mesh.scale) : mesh1.scale;
+  if (contact.interference > 0.02 * size) {
+    std::ostringstream note;
+    note.precision(3);
+    note << "contact '" << contact.name << "': the interference " << contact.interference << " is "
+         << 100.0 * contact.interference / size << " % of the size of the bodies (" << size
+         << "); the model assumes small strains, and an overlap this large is outside it";
+    warnings.push_back(note.str());
+  }
   if (out.pairs.empty())
     throw GeometryError("contact '" + contact.name + "': no node of " + zone1 + " faces " + zone2 +
                         " along the pair normal: the contact boundaries do not face each other");

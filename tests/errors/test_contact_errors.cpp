@@ -209,3 +209,16 @@ TEST(ContactErrors, OverlappingRigidBody) {
 }
 
 }  // namespace bemcontact
+
+namespace bemcontact {
+
+TEST(ContactErrors, ALargeInterferenceIsAWarning) {
+  auto file = io::parse_contact_problem(test_support::example_text("contact_shrink_fit.toml"), "fit.toml", {{"delta", 0.5}});
+  const auto prepared = contact::prepare_contact(file.problem);
+  ASSERT_EQ(prepared.warnings.size(), 1u);
+  EXPECT_NE(prepared.warnings[0].find("small strains"), std::string::npos) << prepared.warnings[0];
+  file = io::parse_contact_problem(test_support::example_text("contact_shrink_fit.toml"), "fit.toml");
+  EXPECT_TRUE(contact::prepare_contact(file.problem).warnings.empty());
+}
+
+}  // namespace bemcontact
