@@ -114,7 +114,11 @@ std::string hertz_comparison(const contact::ContactProblem& problem, const conta
     R = geometry::arc_radius(zone1);
     material2 = problem.region(contact.side2).body.material;
   }
-  const auto hertz = reference::hertz_point_contact(std::abs(problem.forces.front().force), R, side1.material,
+  // The force at the end of the history (its amplitude there).
+  const auto& load = problem.forces.front();
+  const double P = std::abs(load.force * load.amplitude.at(problem.end_time));
+  if (P == 0.0) return "";
+  const auto hertz = reference::hertz_point_contact(P, R, side1.material,
                                                     std::numeric_limits<double>::infinity(), material2);
   char line[256];
   std::string out;

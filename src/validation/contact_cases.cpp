@@ -32,18 +32,27 @@ HertzFit fit_hertz_profile(const std::vector<contact::PairResult>& pairs, double
   return fit;
 }
 
-namespace {
-
-io::ContactFile load(const Context& context, const std::string& file, const io::ParameterOverrides& overrides = {}) {
+io::ContactFile load_contact_example(const Context& context, const std::string& file,
+                                     const io::ParameterOverrides& overrides) {
   return io::read_contact_file(context.examples_dir + "/" + file, overrides);
 }
 
-
-std::string text(double value) {
+std::string number_text(double value) {
   std::ostringstream out;
   out << value;
   return out.str();
 }
+
+double flat_punch_max_error(const std::vector<contact::PairResult>& pairs, const reference::FlatPunchPlane& exact) {
+  double worst = 0.0;
+  for (const auto& pair : pairs)
+    if (std::abs(pair.coordinate) <= 0.8 * exact.half_width)
+      worst = std::max(worst, std::abs(-pair.p_n / exact.pressure(pair.coordinate) - 1.0));
+  return worst;
+}
+
+namespace {
+
 
 // Largest |difference| of p_n and p_t between two solutions, over the peak pressure.
 double algorithm_difference(const contact::ContactResult& a, const contact::ContactResult& b) {
@@ -74,7 +83,7 @@ double fitted_p0(const std::vector<contact::PairResult>& pairs, double a) { retu
 // p0, and the two algorithms against each other.
 std::vector<Record> run_hertz_sphere(const Context& context) {
   std::vector<Record> records;
-  const auto file = load(context, "contact_hertz_sphere.toml");
+  const auto file = load_contact_example(context, "contact_hertz_sphere.toml");
   const double R = file.parameters.at("R");
   struct Load { double E_ball, P; };
   for (const Load load : {Load{72000.0, 10.0}, Load{216000.0, 10.0}, Load{432000.0, 10.0}, Load{432000.0, 31.5}}) {
@@ -134,7 +143,7 @@ std::vector<Record> run_hertz_sphere(const Context& context) {
       records.push_back(require_at_least("thesis_kalker_iterations", other.summary.kalker_iterations, 1));
       records.push_back(require_at_least("thesis_gmres_cycles", other.summary.gmres_cycles, 1));
     }
-    tag(records, first, "hertz-sphere", {{"E_ball", text(load.E_ball)}, {"P", text(load.P)}});
+    tag(records, first, "hertz-sphere", {{"E_ball", number_text(load.E_ball)}, {"P", number_text(load.P)}});
   }
   return records;
 }
@@ -147,7 +156,7 @@ std::vector<Record> run_hertz_sphere(const Context& context) {
 // with R four times larger the ball lands within 0.01 of the half-space value.
 std::vector<Record> run_spence_sphere(const Context& context) {
   std::vector<Record> records;
-  auto file = load(context, "contact_spence_sphere.toml");
+  auto file = load_contact_example(context, "contact_spence_sphere.toml");
   file.problem.drop_interior_points();  // the stress grid is for plots, not checked here
   auto frictionless = file.problem;
   frictionless.friction = 0.0;
@@ -187,7 +196,7 @@ std::vector<Record> run_spence_sphere(const Context& context) {
       // Spence's theory is the limit a/R -> 0 of the ball: the same contact radius with R
       // four times larger (P / 4) brings c/a to the half-space value (spence-halfspace).
       const double R = file.parameters.at("R"), P = file.parameters.at("P");
-      auto flatter = load(context, "contact_spence_sphere.toml", {{"R", 4.0 * R}, {"P", P / 4.0}}).problem;
+      auto flatter = load_contact_example(context, "contact_spence_sphere.toml", {{"R", 4.0 * R}, {"P", P / 4.0}}).problem;
       flatter.drop_interior_points();
       flatter.friction = beta;
       const auto f = contact::solve_contact(flatter, context.progress);
@@ -199,8 +208,8 @@ std::vector<Record> run_spence_sphere(const Context& context) {
       records.push_back(compare_scaled("thesis_vs_newton_max_difference", algorithm_difference(result, other), 0.0, 1.0, 1e-4));
       records.push_back(compare_scaled("thesis_c_over_a", other.summary.stick_ratio(), c_over_a, 1.0, 1e-3));
     }
-    tag(records, first, "spence-sphere", {{"beta", text(beta)}, {"increments", text(problem.increments)},
-                                          {"spence_E1", text(spence)}});
+    tag(records, first, "spence-sphere", {{"beta", number_text(beta)}, {"increments", number_text(problem.increments)},
+                                          {"spence_E1", number_text(spence)}});
   }
   return records;
 }
@@ -214,7 +223,7 @@ std::vector<Record> run_spence_sphere(const Context& context) {
 // and the measure of c apart from the BEM bodies.
 std::vector<Record> run_spence_halfspace(const Context& context) {
   std::vector<Record> records;
-  const auto file = load(context, "contact_spence_sphere.toml");
+  const auto file = load_contact_example(context, "contact_spence_sphere.toml");
   const double R = file.parameters.at("R"), P = file.parameters.at("P");
   const auto& sphere = file.problem.elastic(0).material;
   const auto& flat = file.problem.elastic(1).material;
@@ -250,8 +259,8 @@ std::vector<Record> run_spence_halfspace(const Context& context) {
                                      spence, 1.0, 0.01));
     records.push_back(compare_scaled("c_over_a", c.summary.stick_ratio(),
                                      coupled_reference, 1.0, 0.01));
-    tag(records, first, "spence-halfspace", {{"beta", text(beta)}, {"increments", text(settings.increments)},
-                                             {"spence_E1", text(spence)}});
+    tag(records, first, "spence-halfspace", {{"beta", number_text(beta)}, {"increments", number_text(settings.increments)},
+                                             {"spence_E1", number_text(spence)}});
   }
   return records;
 }
@@ -261,7 +270,7 @@ std::vector<Record> run_spence_halfspace(const Context& context) {
 // informational records (tolerance 100 %): they show the gap, they do not validate.
 std::vector<Record> run_flat_punch(const Context& context) {
   std::vector<Record> records;
-  const auto file = load(context, "contact_flat_punch.toml");
+  const auto file = load_contact_example(context, "contact_flat_punch.toml");
   struct Thesis { double beta, p0, pI, c; };
   for (const Thesis t : {Thesis{0.05, 1.39, 6.51, 2.90}, Thesis{0.10, 1.43, 6.37, 3.87}}) {
     const std::size_t first = records.size();
@@ -275,21 +284,18 @@ std::vector<Record> run_flat_punch(const Context& context) {
     thesis.solver.algorithm = contact::Algorithm::thesis;
     const auto other = contact::solve_contact(thesis, context.progress);
     records.push_back(compare_scaled("thesis_vs_newton_max_difference", algorithm_difference(result, other), 0.0, 1.0, 1e-4));
-    tag(records, first, "flat-punch", {{"beta", text(t.beta)}});
+    tag(records, first, "flat-punch", {{"beta", number_text(t.beta)}});
   }
   // Frictionless stiff punch on a large support: P / (pi sqrt(a^2 - x^2)) within 3 % for
   // |x| < 0.8a, with linear and with quadratic elements.
-  const auto half_plane = load(context, "contact_punch_halfplane.toml");
+  const auto half_plane = load_contact_example(context, "contact_punch_halfplane.toml");
   const double a = half_plane.parameters.at("a"), P = half_plane.parameters.at("P");
   const reference::FlatPunchPlane exact{P, a, 1.0};
   for (Interpolation interpolation : {Interpolation::linear, Interpolation::quadratic}) {
     auto problem = half_plane.problem;
     problem.mesh.interpolation = interpolation;
     const auto result = contact::solve_contact(problem, context.progress);
-    double worst = 0.0;
-    for (const auto& pair : result.pairs)
-      if (std::abs(pair.coordinate) < 0.8 * a)
-        worst = std::max(worst, std::abs(-pair.p_n - exact.pressure(pair.coordinate)) / exact.pressure(pair.coordinate));
+    const double worst = flat_punch_max_error(result.pairs, exact);
     const std::size_t first = records.size();
     records.push_back(compare_scaled("pressure_max_relative_error", worst, 0.0, 1.0, 0.03));
     tag(records, first, "flat-punch",
@@ -329,14 +335,14 @@ std::vector<Record> run_non_matching(const Context& context) {
   std::vector<Record> records;
   for (const int support_elements : {47, 36}) {
     const io::ParameterOverrides overrides{{"contact_elements", 30}, {"contact_elements_2", support_elements}};
-    auto hertz_file = load(context, "contact_hertz_sphere.toml", overrides);
+    auto hertz_file = load_contact_example(context, "contact_hertz_sphere.toml", overrides);
     auto problem = hertz_file.problem;
     problem.drop_interior_points();
     const std::size_t first = records.size();
     hertz_ball_records(context, hertz_file, problem, records);
-    tag(records, first, "hertz-sphere", {{"P", text(hertz_file.parameters.at("P"))},
+    tag(records, first, "hertz-sphere", {{"P", number_text(hertz_file.parameters.at("P"))},
                                          {"contact_elements", "30/" + std::to_string(support_elements)}});
-    auto spence_file = load(context, "contact_spence_sphere.toml", overrides);
+    auto spence_file = load_contact_example(context, "contact_spence_sphere.toml", overrides);
     spence_file.problem.drop_interior_points();
     spence_file.problem.friction = 0.1;
     const auto spence = contact::solve_contact(spence_file.problem, context.progress);
@@ -373,7 +379,7 @@ std::vector<Record> run_shrink_fit(const Context& context) {
   std::vector<Record> records;
   for (const AnalysisType type : {AnalysisType::plane_stress, AnalysisType::plane_strain, AnalysisType::axisymmetric}) {
     const bool axisymmetric = type == AnalysisType::axisymmetric;
-    auto file = load(context, axisymmetric ? "contact_shrink_fit_axisymmetric.toml" : "contact_shrink_fit.toml");
+    auto file = load_contact_example(context, axisymmetric ? "contact_shrink_fit_axisymmetric.toml" : "contact_shrink_fit.toml");
     auto problem = file.problem;
     problem.analysis = type;
     const double a = file.parameters.at("a"), b = file.parameters.at("b"), c = file.parameters.at("c");
@@ -402,15 +408,15 @@ std::vector<Record> run_shrink_fit(const Context& context) {
 // plane-strain cylinder half model (every pair within 1 % for |x| <= 0.8a).
 std::vector<Record> run_contact_quadratic(const Context& context) {
   std::vector<Record> records;
-  auto hertz_file = load(context, "contact_hertz_sphere.toml");
+  auto hertz_file = load_contact_example(context, "contact_hertz_sphere.toml");
   auto problem = hertz_file.problem;
   problem.drop_interior_points();
   problem.mesh.interpolation = Interpolation::quadratic;
   std::size_t first = records.size();
   hertz_ball_records(context, hertz_file, problem, records);
-  tag(records, first, "hertz-sphere", {{"interpolation", "quadratic"}, {"P", text(hertz_file.parameters.at("P"))}});
+  tag(records, first, "hertz-sphere", {{"interpolation", "quadratic"}, {"P", number_text(hertz_file.parameters.at("P"))}});
 
-  auto spence_file = load(context, "contact_spence_sphere.toml");
+  auto spence_file = load_contact_example(context, "contact_spence_sphere.toml");
   auto spence = spence_file.problem;
   spence.drop_interior_points();
   spence.mesh.interpolation = Interpolation::quadratic;
@@ -420,7 +426,7 @@ std::vector<Record> run_contact_quadratic(const Context& context) {
       compare_scaled("c_over_a", contact::solve_contact(spence, context.progress).summary.stick_ratio(), 0.513, 1.0, 0.03));
   tag(records, first, "spence-sphere", {{"interpolation", "quadratic"}, {"beta", "0.1"}});
 
-  auto half_file = load(context, "contact_hertz_cylinder_half.toml");
+  auto half_file = load_contact_example(context, "contact_hertz_cylinder_half.toml");
   auto half = half_file.problem;
   half.drop_interior_points();
   half.mesh.interpolation = Interpolation::quadratic;
@@ -446,7 +452,7 @@ std::vector<Record> run_contact_quadratic(const Context& context) {
 std::vector<Record> run_hertz_cylinder_half(const Context& context) {
   std::vector<Record> records;
   for (int elements : {25, 50, 100}) {
-    const auto file = load(context, "contact_hertz_cylinder_half.toml", {{"contact_elements", elements}});
+    const auto file = load_contact_example(context, "contact_hertz_cylinder_half.toml", {{"contact_elements", elements}});
     const auto& problem = file.problem;
     // The half model carries P/2 of the cylinder's load P per unit length.
     const double P = file.parameters.at("P"), R = file.parameters.at("R");

@@ -12,15 +12,11 @@
 #include "bemcontact/io/contact_file.hpp"
 #include "bemcontact/reference/fretting.hpp"
 #include "bemcontact/validation/case_groups.hpp"
+#include "bemcontact/validation/contact_support.hpp"
 
 namespace bemcontact::validation {
 namespace {
 
-std::string text(double value) {
-  std::ostringstream out;
-  out << value;
-  return out.str();
-}
 
 struct Fretting {
   io::ContactFile file;
@@ -33,7 +29,7 @@ struct Fretting {
 Fretting load_fretting(const Context& context, double ratio, const std::vector<Vec2>& q_amplitude, int elements) {
   const double scale = 0.005 / 0.07;
   Fretting f;
-  f.file = io::read_contact_file(context.examples_dir + "/fretting_cylinder.toml",
+  f.file = load_contact_example(context, "fretting_cylinder.toml",
                                  {{"P", 148.0 * scale * scale}, {"rc", 0.085 * scale}, {"Q_ratio", ratio},
                                   {"n", static_cast<double>(elements)}});
   auto& problem = f.file.problem;
@@ -77,7 +73,7 @@ const contact::ContactInterfaceResult& only(const contact::ContactResult& result
 std::size_t step_at(const contact::ContactResult& result, double time) {
   for (std::size_t k = 0; k < result.steps.size(); ++k)
     if (std::abs(result.steps[k].time - time) < 1e-9) return k;
-  throw Error("fretting case: no step ends at t = " + text(time));
+  throw Error("fretting case: no step ends at t = " + number_text(time));
 }
 
 // P, then Q raised to Q* = 0.3, 0.6, 0.9 mu P: c/a = sqrt(1 - Q*/mu P) within 0.02 and the
@@ -95,7 +91,7 @@ std::vector<Record> run_cattaneo_mindlin(const Context& context) {
     records.push_back(compare_scaled("max_shear_error", max_shear_error(result.pairs, a, f.mu_p0, exact, c), 0.0, 1.0, 0.02));
     records.push_back(report_only("max_shear_error_at_stick_edge", max_shear_error(result.pairs, a, f.mu_p0, exact, c, true), 0.0));
     records.push_back(report_only("steps", result.steps_taken, 0.0));
-    tag(records, first, "cattaneo-mindlin", {{"Q_over_muP", text(ratio)}, {"a_over_R", "0.005"}});
+    tag(records, first, "cattaneo-mindlin", {{"Q_over_muP", number_text(ratio)}, {"a_over_R", "0.005"}});
   }
   return records;
 }
@@ -124,7 +120,7 @@ std::vector<Record> run_mindlin_unloading(const Context& context) {
                                   max_shear_error(contact.step_pairs[k], a, f.mu_p0, exact, c, true), 0.0));
     records.push_back(compare_scaled("reversal_c_over_a", stick_half_width(contact.steps[k]) / a,
                                      f.theory.reversal_stick_ratio(f.Q_star, Q), 1.0, 0.02));
-    tag(records, first, "mindlin-unloading", {{"Q_over_Qstar", text(Q_over)}, {"Q_star_over_muP", text(ratio)}});
+    tag(records, first, "mindlin-unloading", {{"Q_over_Qstar", number_text(Q_over)}, {"Q_star_over_muP", number_text(ratio)}});
   }
   const std::size_t start = step_at(result, 2.0), end = step_at(result, 4.0);
   double loop = 0.0;
@@ -137,7 +133,7 @@ std::vector<Record> run_mindlin_unloading(const Context& context) {
   records.push_back(compare_relative("loop_tangential_motion", q_motion_end, q_motion_start, 5e-3));
   records.push_back(compare_relative("dissipated_energy_per_cycle", energy, f.theory.dissipated_energy_per_cycle(f.Q_star), 0.03));
   records.push_back(report_only("steps", result.steps_taken, 0.0));
-  tag(records, first, "mindlin-unloading", {{"Q_star_over_muP", text(ratio)}, {"cycle", "Q* -> -Q* -> Q*"}});
+  tag(records, first, "mindlin-unloading", {{"Q_star_over_muP", number_text(ratio)}, {"cycle", "Q* -> -Q* -> Q*"}});
   return records;
 }
 
@@ -147,7 +143,7 @@ std::vector<Record> run_mindlin_unloading(const Context& context) {
 // both within 0.02 (the zone's edges are located to half a pair spacing, 0.01a).
 std::vector<Record> run_nowell_hills(const Context& context) {
   const double scale = 0.005 / 0.07;
-  const auto file = io::read_contact_file(context.examples_dir + "/fretting_bulk_stress.toml",
+  const auto file = load_contact_example(context, "fretting_bulk_stress.toml",
                                           {{"P", 148.0 * scale * scale}, {"rc", 0.085 * scale},
                                            {"sigma_B", 160.0 * scale}, {"n", 120.0}});
   const auto& problem = file.problem;
@@ -163,7 +159,7 @@ std::vector<Record> run_nowell_hills(const Context& context) {
   records.push_back(compare_scaled("e_over_a", 0.5 * (start + end) / a, sigma_B / (4.0 * mu_p0), 1.0, 0.02));
   records.push_back(compare_scaled("c_over_a", 0.5 * (end - start) / a, theory.stick_ratio(Q), 1.0, 0.02));
   records.push_back(report_only("steps", result.steps_taken, 0.0));
-  tag(records, 0, "nowell-hills", {{"Q_over_muP", text(Q / (theory.friction * P))}, {"sigma_B_over_4mup0", text(sigma_B / (4.0 * mu_p0))}});
+  tag(records, 0, "nowell-hills", {{"Q_over_muP", number_text(Q / (theory.friction * P))}, {"sigma_B_over_4mup0", number_text(sigma_B / (4.0 * mu_p0))}});
   return records;
 }
 

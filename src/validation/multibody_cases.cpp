@@ -19,15 +19,6 @@
 namespace bemcontact::validation {
 namespace {
 
-io::ContactFile load(const Context& context, const std::string& file, const io::ParameterOverrides& overrides = {}) {
-  return io::read_contact_file(context.examples_dir + "/" + file, overrides);
-}
-
-std::string text(double value) {
-  std::ostringstream out;
-  out << value;
-  return out.str();
-}
 
 constexpr double kRigid = std::numeric_limits<double>::infinity();
 
@@ -38,23 +29,20 @@ constexpr double kRigid = std::numeric_limits<double>::infinity();
 // block's finite size: L = 8R adds its own compliance, as in hertz-sphere).
 std::vector<Record> run_rigid_punch(const Context& context) {
   std::vector<Record> records;
-  const auto punch = load(context, "contact_rigid_punch.toml");
+  const auto punch = load_contact_example(context, "contact_rigid_punch.toml");
   const double a = punch.parameters.at("a"), P = punch.parameters.at("P");
   const reference::FlatPunchPlane exact{P, a, 1.0};
   for (Interpolation interpolation : {Interpolation::linear, Interpolation::quadratic}) {
     auto problem = punch.problem;
     problem.mesh.interpolation = interpolation;
     const auto result = contact::solve_contact(problem, context.progress);
-    double worst = 0.0;
-    for (const auto& pair : result.pairs)
-      if (std::abs(pair.coordinate) <= 0.8 * a)
-        worst = std::max(worst, std::abs(-pair.p_n / exact.pressure(pair.coordinate) - 1.0));
+    const double worst = flat_punch_max_error(result.pairs, exact);
     const std::size_t first = records.size();
     records.push_back(compare_scaled("pressure_max_relative_error", worst, 0.0, 1.0, 0.01));
     records.push_back(compare_relative("normal_force", result.summary.normal_force, P, 1e-3));
     tag(records, first, "rigid-punch", {{"profile", "flat"}, {"interpolation", to_string(interpolation)}});
   }
-  const auto ball = load(context, "contact_rigid_sphere.toml");
+  const auto ball = load_contact_example(context, "contact_rigid_sphere.toml");
   const double R = ball.parameters.at("R"), Pb = ball.parameters.at("P");
   const auto hertz = reference::hertz_point_contact(Pb, R, ball.problem.elastic(0).material, kRigid,
                                                     Material{kRigid, 0.3});
@@ -99,7 +87,7 @@ std::vector<Record> run_rigid_punch(const Context& context) {
 // twice as fine everywhere on the contact, the bond and the top.
 std::vector<Record> run_coated_indentation(const Context& context) {
   std::vector<Record> records;
-  const auto base = load(context, "contact_coated_indentation.toml");
+  const auto base = load_contact_example(context, "contact_coated_indentation.toml");
   const double R = base.parameters.at("R"), P = base.parameters.at("P");
   const double E_sub = base.parameters.at("E_sub"), nu = base.problem.bodies[0].regions[1].body.material.poisson_ratio;
   auto hertz = [&](double E) { return reference::hertz_point_contact(P, R, Material{E, nu}, kRigid, Material{kRigid, 0.3}); };
@@ -108,7 +96,7 @@ std::vector<Record> run_coated_indentation(const Context& context) {
     io::ParameterOverrides overrides = mesh;
     overrides["t"] = t;
     overrides["E_coat"] = E_coat;
-    const auto file = load(context, "contact_coated_indentation.toml", overrides);
+    const auto file = load_contact_example(context, "contact_coated_indentation.toml", overrides);
     const auto result = contact::solve_contact(file.problem, context.progress);
     return fit_hertz_profile(result.pairs, 0.8 * result.summary.contact_radius);
   };
@@ -136,7 +124,7 @@ std::vector<Record> run_coated_indentation(const Context& context) {
       records.push_back(compare_scaled("p0_deviation_ratio_t_halved", thin_deviation[1] / thin_deviation[0], 0.5, 1.0, 0.2));
     }
     tag(records, first, "coated-indentation",
-        {{"t_over_a", text(limit.t_over_a)}, {"E_coat_over_E_sub", text(limit.E_coat / E_sub)}, {"hertz_modulus", limit.modulus}});
+        {{"t_over_a", number_text(limit.t_over_a)}, {"E_coat_over_E_sub", number_text(limit.E_coat / E_sub)}, {"hertz_modulus", limit.modulus}});
   }
   const auto coarse = solve(a0, 2.0 * E_sub, {});
   const auto finer = solve(a0, 2.0 * E_sub, {{"n", 60.0}, {"n_bond", 80.0}});
@@ -153,7 +141,7 @@ std::vector<Record> run_coated_indentation(const Context& context) {
 // and within 0.5 % of P/2 (the weights' integration of the pressure).
 std::vector<Record> run_roller_between_plates(const Context& context) {
   std::vector<Record> records;
-  const auto file = load(context, "contact_roller_plates.toml");
+  const auto file = load_contact_example(context, "contact_roller_plates.toml");
   const auto& problem = file.problem;
   const double P = file.parameters.at("P"), R = file.parameters.at("R");
   const reference::HertzLineContact hertz{
@@ -218,12 +206,12 @@ std::vector<Record> run_bonded_regions(const Context& context) {
 // since Persson's closed form could not be checked here.
 std::vector<Record> run_pin_in_hole(const Context& context) {
   std::vector<Record> records;
-  const auto base = load(context, "contact_pin_in_hole.toml");
+  const auto base = load_contact_example(context, "contact_pin_in_hole.toml");
   const double Rh = base.parameters.at("Rh"), Rp = base.parameters.at("Rp"), E = base.parameters.at("E");
   const double R = Rh * Rp / (Rh - Rp);
   for (const double a : {0.025, 0.05, 0.1}) {
     const double P = std::numbers::pi * E * a * a / (4.0 * R);
-    const auto file = load(context, "contact_pin_in_hole.toml", {{"P", P}, {"th", std::max(0.06, 5.25 * a)}});
+    const auto file = load_contact_example(context, "contact_pin_in_hole.toml", {{"P", P}, {"th", std::max(0.06, 5.25 * a)}});
     const reference::HertzLineContact hertz{P, R, reference::contact_modulus(file.problem.elastic(0).material, Material{kRigid, 0.3},
                                                                              file.problem.analysis)};
     const auto result = contact::solve_contact(file.problem, context.progress);
@@ -236,7 +224,7 @@ std::vector<Record> run_pin_in_hole(const Context& context) {
       records.push_back(report_only("a", fit.a, hertz.half_width()));
       records.push_back(report_only("p0", fit.p0, hertz.max_pressure()));
     }
-    tag(records, first, "pin-in-hole", {{"a_over_Rp", text(a / Rp)}, {"reference", "Hertz limit"}});
+    tag(records, first, "pin-in-hole", {{"a_over_Rp", number_text(a / Rp)}, {"reference", "Hertz limit"}});
   }
   return records;
 }

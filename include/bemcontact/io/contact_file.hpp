@@ -1,26 +1,15 @@
 #pragma once
-// Two-body contact problem files (format in docs/contact.md): the file-level keys of a
-// one-body file (title, analysis, interpolation, [parameters], [mesh]), two [[body]]
-// tables each read by parse_body (plus `name` and an optional [body.interior] table of
-// stress points), and a [contact] table:
+// Problem files of the model of bodies, regions and contacts (format in docs/contact.md):
+// the file-level keys of a one-body file (title, analysis, interpolation, [parameters],
+// [mesh], [output]); [[body]] tables, each with the one-body keys, [[body.region]] tables
+// of them (bonded by interface = "...") or a [body.rigid] profile; contacts as
+// [[contact]] tables with [solver] and [[load]], or, for two bodies, the thesis' single
+// [contact] table holding all of them with [contact.load]; an optional [history]. A boundary
+// may carry its own amplitude. Files with [[body]] tables and no contact are accepted too.
 //
-//   [contact]
-//   boundary1 = "contact"     # boundary of the first body that forms Gamma_c
-//   boundary2 = "contact"     # boundary of the second body facing it
-//   kind = "unilateral"       # or "bilateral"
-//   friction = 0.1            # Coulomb beta (0: frictionless)
-//   coupling = true           # false: drop the normal-tangential coupling (Spence E.1 check)
-//   increments = 16           # quasi-static load steps
-//   algorithm = "newton"      # or "thesis"
-//   [contact.load]            # optional: a total force on a boundary (rigid platen)
-//   body = "ball"
-//   boundary = "top"
-//   component = 2
-//   force = -31.5
-//
-// Every error is an InputError naming the file, the line and the key. The contact zone is
-// paired while reading, so boundaries that do not face each other, a zone that cannot be
-// paired or bodies that overlap are reported against the [contact] table.
+// Every error is an InputError naming the file, the line and the key. The contact zones
+// are paired while reading, so boundaries that do not face each other, a zone that cannot
+// be paired or bodies that overlap are reported against the contact tables.
 #include <filesystem>
 #include <map>
 #include <string>
@@ -39,8 +28,9 @@ struct ContactFile {
   bool vtk = true;  // [output] vtk
 };
 
-// True when the file (TOML) holds a [contact] table: `bemcontact run` then reads it with
-// read_contact_file and solves it with contact::solve_contact. False for unreadable files.
+// True when the file (TOML) holds contact tables, or [[body]] tables without [[subdomain]]
+// ones: `bemcontact run` then reads it with read_contact_file and solves it with
+// contact::solve_contact. False for unreadable files.
 bool is_contact_file(const std::filesystem::path& path);
 bool is_contact_text(std::string_view text);
 

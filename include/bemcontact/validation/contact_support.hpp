@@ -3,6 +3,9 @@
 #include <vector>
 
 #include "bemcontact/contact/contact_solver.hpp"
+#include "bemcontact/io/contact_file.hpp"
+#include "bemcontact/reference/flat_punch.hpp"
+#include "bemcontact/validation/validation.hpp"
 
 namespace bemcontact::validation {
 
@@ -14,5 +17,16 @@ struct HertzFit {
   double p0 = 0.0;
 };
 HertzFit fit_hertz_profile(const std::vector<contact::PairResult>& pairs, double window);
+
+// A bundled contact example, with parameter overrides.
+io::ContactFile load_contact_example(const Context& context, const std::string& file,
+                                     const io::ParameterOverrides& overrides = {});
+
+// A number as a case parameter ("0.3").
+std::string number_text(double value);
+
+// Largest relative error of the pressure against a rigid flat punch's P / (pi sqrt(a^2 -
+// x^2)) over the pairs with |x| <= 0.8a (the edges are singular).
+double flat_punch_max_error(const std::vector<contact::PairResult>& pairs, const reference::FlatPunchPlane& exact);
 
 }  // namespace bemcontact::validation
