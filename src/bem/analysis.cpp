@@ -71,17 +71,11 @@ BodyResult solve_body(const ProblemDefinition& problem, const ProgressCallback& 
   const auto constraints = resolve_point_constraints(result.mesh, body, conditions);
   // Interior points are sorted before the solve, so that a listed point outside the body
   // is reported at once.
-  std::vector<Vec2> inside;
-  const double inside_tolerance = 1e-9 * result.mesh.scale;
-  for (const auto& p : problem.interior_points) {
-    if (point_inside(result.mesh, p.position, inside_tolerance)) {
-      inside.push_back(p.position);
-    } else if (p.from_grid) {
-      result.interior.dropped_points.push_back(p.position);
-    } else {
-      throw InputError(p.where.file.empty() ? SourceLocation{problem.source_file, 0, "interior.points"} : p.where,
-                       "point " + point_label(p.position) + " is not inside the body");
-    }
+  auto selection = select_interior_points(result.mesh, problem.interior_points);
+  if (!selection.listed_outside.empty()) {
+    const auto& p = *selection.listed_outside.front();
+    throw InputError(p.where.file.empty() ? SourceLocation{problem.source_file, 0, "interior.points"} : p.where,
+                     "point " + point_label(p.position) + " is not inside the body");
   }
   clock.lap("mesh");
 
@@ -114,9 +108,7 @@ BodyResult solve_body(const ProblemDefinition& problem, const ProgressCallback& 
   clock.lap("boundary stress");
 
   if (!problem.interior_points.empty()) {
-    auto dropped = std::move(result.interior.dropped_points);
-    result.interior = interior_values(result.mesh, integrator, result.boundary, inside, progress);
-    result.interior.dropped_points = std::move(dropped);
+    result.interior = interior_values(result.mesh, integrator, result.boundary, std::move(selection), progress);
     clock.lap("interior points");
   }
   return result;

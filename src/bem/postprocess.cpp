@@ -362,3 +362,32 @@ InteriorSolution interior_values(const geometry::BoundaryMesh& mesh, const Eleme
 }
 
 }  // namespace bemcontact::bem
+
+namespace bemcontact::bem {
+
+InteriorSelection select_interior_points(const geometry::BoundaryMesh& mesh, const std::vector<InteriorPoint>& points) {
+  InteriorSelection selection;
+  const double tolerance = 1e-9 * mesh.scale;
+  for (const auto& p : points) {
+    if (point_inside(mesh, p.position, tolerance)) {
+      selection.inside.push_back(p.position);
+      selection.grid_index.push_back(p.grid_index);
+    } else if (p.from_grid) {
+      selection.dropped.push_back(p.position);
+    } else {
+      selection.listed_outside.push_back(&p);
+    }
+  }
+  return selection;
+}
+
+InteriorSolution interior_values(const geometry::BoundaryMesh& mesh, const ElementIntegrator& integrator,
+                                 const BoundarySolution& solution, InteriorSelection selection,
+                                 const ProgressCallback& progress) {
+  auto result = interior_values(mesh, integrator, solution, selection.inside, progress);
+  result.grid_index = std::move(selection.grid_index);
+  result.dropped_points = std::move(selection.dropped);
+  return result;
+}
+
+}  // namespace bemcontact::bem

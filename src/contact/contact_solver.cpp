@@ -428,13 +428,10 @@ ContactResult solve_contact(const ContactProblem& problem, const bem::ProgressCa
     if (points.empty()) continue;
     any_interior = true;
     const bem::ElementIntegrator integrator(problem.analysis, region.definition.material);
-    std::vector<Vec2> inside;
-    std::vector<Vec2> dropped;
-    for (const auto& point : points)
-      if (bem::point_inside(result.meshes[r], point.position, 1e-9 * result.meshes[r].scale)) inside.push_back(point.position);
-      else dropped.push_back(point.position);
-    result.interior[r] = bem::interior_values(result.meshes[r], integrator, result.boundary[r], inside, progress);
-    result.interior[r].dropped_points = dropped;
+    // Every point of a contact file's grid may fall outside (as_grid_points).
+    auto selection = bem::select_interior_points(result.meshes[r], points);
+    for (const auto* p : selection.listed_outside) selection.dropped.push_back(p->position);
+    result.interior[r] = bem::interior_values(result.meshes[r], integrator, result.boundary[r], std::move(selection), progress);
   }
   if (any_interior) result.timings.add("interior points", seconds_since(start));
   return result;

@@ -120,20 +120,14 @@ DecompositionResult solve_decomposition(const DecompositionProblem& problem, con
     any_interior = true;
     auto& sub = result.subdomains[s];
     const bem::ElementIntegrator integrator(problem.analysis, problem.subdomains[s].body.material);
-    std::vector<Vec2> inside, dropped;
-    const double tol = 1e-9 * sub.mesh.scale;
-    for (const auto& p : points) {
-      if (bem::point_inside(sub.mesh, p.position, tol))
-        inside.push_back(p.position);
-      else if (p.from_grid)
-        dropped.push_back(p.position);
-      else
-        throw InputError(p.where.file.empty() ? SourceLocation{problem.source_file, 0, "subdomain '" + sub.name + "' interior.points"} : p.where,
-                         "point (" + std::to_string(p.position.x()) + ", " + std::to_string(p.position.y()) +
-                             ") is not inside subdomain '" + sub.name + "'");
+    auto selection = bem::select_interior_points(sub.mesh, points);
+    if (!selection.listed_outside.empty()) {
+      const auto& p = *selection.listed_outside.front();
+      throw InputError(p.where.file.empty() ? SourceLocation{problem.source_file, 0, "subdomain '" + sub.name + "' interior.points"} : p.where,
+                       "point (" + std::to_string(p.position.x()) + ", " + std::to_string(p.position.y()) +
+                           ") is not inside subdomain '" + sub.name + "'");
     }
-    sub.interior = bem::interior_values(sub.mesh, integrator, sub.boundary, inside, progress);
-    sub.interior.dropped_points = std::move(dropped);
+    sub.interior = bem::interior_values(sub.mesh, integrator, sub.boundary, std::move(selection), progress);
   }
   if (any_interior) clock.lap("interior points");
   return result;

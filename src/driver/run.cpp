@@ -21,6 +21,7 @@
 #include "bemcontact/io/json_writer.hpp"
 #include "bemcontact/io/problem_file.hpp"
 #include "bemcontact/io/results_writer.hpp"
+#include "bemcontact/io/run_summary.hpp"
 #include "bemcontact/geometry/boundary.hpp"
 #include "bemcontact/io/toml_reader.hpp"
 
@@ -61,14 +62,11 @@ void add_geometry_warnings(std::vector<std::string>& warnings, const bem::BodyDe
     warnings.push_back(label.empty() ? warning : label + ": " + warning);
 }
 
-json options_json(const bem::ProblemDefinition& problem) {
-  return {{"analysis", to_string(problem.analysis)},
-          {"interpolation", to_string(problem.mesh.interpolation)},
-          {"corner_shift", problem.mesh.corner_shift},
-          {"corner_transition", problem.mesh.corner_transition},
-          {"split_angle_radians", problem.mesh.split_angle_radians},
-          {"material", {{"E", problem.body.material.young_modulus}, {"nu", problem.body.material.poisson_ratio}}},
-          {"threads", omp_get_max_threads()}};
+json mesh_options_json(const geometry::MeshOptions& mesh) {
+  return {{"interpolation", to_string(mesh.interpolation)},
+          {"corner_shift", mesh.corner_shift},
+          {"corner_transition", mesh.corner_transition},
+          {"split_angle_radians", mesh.split_angle_radians}};
 }
 
 json mesh_json(const geometry::BoundaryMesh& mesh) {
@@ -77,6 +75,38 @@ json mesh_json(const geometry::BoundaryMesh& mesh) {
   return {{"nodes", mesh.node_count()}, {"elements", mesh.element_count()},
           {"contours", mesh.contours.size()}, {"split_corners", split},
           {"graded_toward_vertices", io::mesh_transitions_json(mesh)}};
+}
+
+// The mesh block of summary.json: totals, and each region's own counts by name.
+json meshes_json(const std::vector<std::pair<std::string, const geometry::BoundaryMesh*>>& meshes) {
+  Index nodes = 0, elements = 0;
+  json regions = json::object();
+  for (const auto& [name, mesh] : meshes) {
+    nodes += mesh->node_count();
+    elements += mesh->element_count();
+    regions[name] = mesh_json(*mesh);
+  }
+  return {{"nodes", nodes}, {"elements", elements}, {"regions", regions}};
+}
+
+io::RunSummary summary_envelope(const char* kind, const char* command, std::string_view text,
+                                const std::string& file_name, const std::string& title, AnalysisType analysis) {
+  io::RunSummary s;
+  s.kind = kind;
+  s.command = command;
+  s.title = title;
+  s.analysis = to_string(analysis);
+  s.input_file = file_name;
+  s.input_text = text;
+  s.options["threads"] = omp_get_max_threads();
+  return s;
+}
+
+// summary.json, last, listing the files added before it.
+void add_summary(io::RunSummary& summary, RunOutput& output) {
+  summary.warnings = output.warnings;
+  summary.outputs = output.files.names();
+  output.files.add("summary.json", io::write_json_string(io::summary_json(summary)));
 }
 
 // One line per boundary the corner transition graded (geometry::MeshOptions).
@@ -107,11 +137,25 @@ RunOutput run_decomposition(std::string_view text, const std::string& file_name,
   const auto result = dd::solve_decomposition(file.problem, options.progress);
   for (const auto& subdomain : result.subdomains)
     add_mesh_warnings(output.warnings, subdomain.mesh, "subdomain '" + subdomain.name + "'");
-  json summary = {{"bemcontact_version", BEMCONTACT_VERSION},
-                  {"input", file_name},
-                  {"title", file.problem.title},
-                  {"parameters", file.parameters},
-                  {"decomposition", io::decomposition_summary_json(file.problem, result)}};
+  auto summary = summary_envelope("decomposition", "run", text, file_name, file.problem.title, file.problem.analysis);
+  summary.parameters = file.parameters;
+  const auto& o = file.problem.options;
+  summary.options.update({{"mesh", mesh_options_json(file.problem.mesh)},
+                          {"method", dd::to_string(o.method)},
+                          {"restart", o.restart},
+                          {"tolerance", o.tolerance},
+                          {"max_iterations", o.max_iterations},
+                          {"interface_tolerance", o.interface_tolerance},
+                          {"displacement_nodes", o.displacement_nodes}});
+  summary.problem = {{"subdomains", file.problem.subdomains.size()}};
+  std::vector<std::pair<std::string, const geometry::BoundaryMesh*>> meshes;
+  for (const auto& subdomain : result.subdomains) {
+    meshes.emplace_back(subdomain.name, &subdomain.mesh);
+    if (result.converged())
+      summary.reactions[subdomain.name] = io::resultants_json(subdomain.boundary.resultants, file.problem.analysis);
+  }
+  summary.mesh = meshes_json(meshes);
+  summary.results = {{"decomposition", io::decomposition_summary_json(file.problem, result)}};
   if (result.converged()) {
     for (const auto& [name, content] : io::decomposition_files(result, file.problem.title, file.output.vtk))
       output.files.add(name, content);
@@ -120,10 +164,8 @@ RunOutput run_decomposition(std::string_view text, const std::string& file_name,
     output.files.add("gmres.csv", io::gmres_history_csv(result.gmres));
     output.solver_failure = "the interface problem did not converge: " + result.gmres.message;
   }
-  summary["timings_seconds"] = {{"total", seconds_since(started)}};
-  summary["outputs"] = output.files.names();
-  summary["warnings"] = output.warnings;
-  output.files.add("summary.json", io::write_json_string(summary));
+  summary.timings = {{"total", seconds_since(started)}};
+  add_summary(summary, output);
 
   std::string& report = output.report;
   append(report, "%s\n  %zu subdomains, method %s, %ld interface unknowns\n", file.problem.title.c_str(),
@@ -159,8 +201,12 @@ RunOutput run_contact(std::string_view text, const std::string& file_name, const
   for (std::size_t r = 0; r < result.meshes.size(); ++r)
     add_mesh_warnings(output.warnings, result.meshes[r], result.region_labels[r]);
   for (const auto& [name, content] :
-       io::contact_output_files(file.problem, result, file.vtk, file.parameters, output.warnings))
+       io::contact_output_files(file.problem, result, file.vtk))
     output.files.add(name, content);
+  auto summary = summary_envelope("contact", "run", text, file_name, file.problem.title, file.problem.analysis);
+  summary.parameters = file.parameters;
+  io::fill_contact_summary(summary, file.problem, result);
+  add_summary(summary, output);
   output.report = io::contact_report_text(file.problem, result);
   for (std::size_t r = 0; r < result.meshes.size(); ++r) {
     const std::string label = result.region_labels[r] + ": ";
@@ -204,29 +250,24 @@ RunOutput run_body(std::string_view text, const std::string& file_name, const Ru
   timings["write"] = seconds_since(write_started);
   timings["total"] = seconds_since(started);
   const auto& peak = result.mesh.nodes[max_vm_node].position;
-  json summary = {
-      {"bemcontact_version", BEMCONTACT_VERSION},
-      {"input", file_name},
-      {"title", file.problem.title},
-      {"parameters", file.parameters},
-      {"options", options_json(file.problem)},
-      {"problem", io::problem_echo_json(file)},
-      {"mesh", mesh_json(result.mesh)},
-      {"solve", {{"unknowns", result.report.unknowns},
-                 {"reciprocal_condition_estimate", result.report.reciprocal_condition},
-                 {"relative_residual", result.report.relative_residual},
-                 {"constraints_fix_rigid_modes_only", result.report.constraints_fix_rigid_modes_only}}},
-      {"results", {{"max_boundary_displacement", max_u},
-                   {"max_boundary_von_mises", max_vm},
-                   {"max_boundary_von_mises_at", {peak.x(), peak.y()}},
-                   {"interior_points", result.interior.points.size()},
-                   {"interior_points_dropped_outside", result.interior.dropped_points.size()},
-                   {"max_interior_von_mises", interior_max_vm}}},
-      {"boundary_resultants", io::resultants_json(result.boundary.resultants, file.problem.analysis)},
-      {"timings_seconds", timings},
-      {"outputs", out.names()},
-      {"warnings", output.warnings}};
-  out.add("summary.json", io::write_json_string(summary));
+  auto summary = summary_envelope("body", "run", text, file_name, file.problem.title, file.problem.analysis);
+  summary.parameters = file.parameters;
+  summary.options.update({{"mesh", mesh_options_json(file.problem.mesh)}});
+  summary.problem = io::problem_echo_json(file);
+  summary.mesh = meshes_json({{file.problem.body.name, &result.mesh}});
+  summary.results = {{"solve", {{"unknowns", result.report.unknowns},
+                                {"reciprocal_condition_estimate", result.report.reciprocal_condition},
+                                {"relative_residual", result.report.relative_residual},
+                                {"constraints_fix_rigid_modes_only", result.report.constraints_fix_rigid_modes_only}}},
+                     {"max_boundary_displacement", max_u},
+                     {"max_boundary_von_mises", max_vm},
+                     {"max_boundary_von_mises_at", {peak.x(), peak.y()}},
+                     {"interior_points", result.interior.points.size()},
+                     {"interior_points_dropped_outside", result.interior.dropped_points.size()},
+                     {"max_interior_von_mises", interior_max_vm}};
+  summary.reactions[file.problem.body.name] = io::resultants_json(result.boundary.resultants, file.problem.analysis);
+  summary.timings = timings;
+  add_summary(summary, output);
 
   std::string& report = output.report;
   append(report, "%s\n", file.problem.title.c_str());
@@ -280,11 +321,13 @@ namespace {
 
 // `mesh` of a model of bodies, regions and contacts: every region's mesh and every
 // contact's pairs, as the solver would use them.
-RunOutput mesh_model(const contact::ContactProblem& problem, RunOutput output) {
+RunOutput mesh_model(const contact::ContactProblem& problem, RunOutput output, io::RunSummary summary) {
   const auto prepared = contact::prepare_contact(problem);
+  std::vector<std::pair<std::string, const geometry::BoundaryMesh*>> meshes;
   output.warnings.insert(output.warnings.end(), prepared.warnings.begin(), prepared.warnings.end());
   for (const auto& region : prepared.regions) {
     add_mesh_warnings(output.warnings, region.mesh, region.label);
+    meshes.emplace_back(region.label, &region.mesh);
     append(output.report, "%s: %ld nodes, %ld elements\n", region.label.c_str(),
            static_cast<long>(region.mesh.node_count()), static_cast<long>(region.mesh.element_count()));
     append_transitions(output.report, region.mesh, region.label + ": ");
@@ -293,6 +336,15 @@ RunOutput mesh_model(const contact::ContactProblem& problem, RunOutput output) {
     append(output.report, "contact '%s': %zu pairs, %d nodes of side 1 facing nothing\n",
            problem.contacts[c].name.c_str(), prepared.contacts[c].pairs.size(), prepared.contacts[c].unpaired_nodes1);
   for (const auto& [name, content] : io::contact_mesh_files(problem, prepared)) output.files.add(name, content);
+  summary.mesh = meshes_json(meshes);
+  json pairs = json::object();
+  for (std::size_t c = 0; c < prepared.contacts.size(); ++c)
+    pairs[problem.contacts[c].name] = {{"pairs", prepared.contacts[c].pairs.size()},
+                                       {"unpaired_nodes_side1", prepared.contacts[c].unpaired_nodes1}};
+  summary.results = {{"contacts", pairs}};
+  summary.problem = {{"bodies", problem.bodies.size()}, {"regions", prepared.regions.size()},
+                     {"contacts", problem.contacts.size()}};
+  add_summary(summary, output);
   check_output_finite(output.files);
   return output;
 }
@@ -304,13 +356,19 @@ RunOutput mesh_problem(std::string_view text, const std::string& file_name, cons
   if (kind == ProblemKind::contact) {
     RunOutput output;
     const auto file = read_checked(io::parse_contact_problem, text, file_name, options, output);
-    return mesh_model(file.problem, std::move(output));
+    auto summary = summary_envelope(file.problem.contacts.empty() ? "bodies" : "contact", "mesh", text, file_name,
+                                    file.problem.title, file.problem.analysis);
+    summary.parameters = file.parameters;
+    return mesh_model(file.problem, std::move(output), std::move(summary));
   }
   if (kind == ProblemKind::decomposition) {
     RunOutput output;
     const auto file = read_checked(io::parse_decomposition, text, file_name, options, output);
     auto model = contact::model_of(file.problem);
-    return mesh_model(model, std::move(output));
+    auto summary = summary_envelope("decomposition", "mesh", text, file_name, file.problem.title,
+                                    file.problem.analysis);
+    summary.parameters = file.parameters;
+    return mesh_model(model, std::move(output), std::move(summary));
   }
   const auto file = io::parse_problem(text, file_name, options.overrides, options.limits);
   RunOutput output;
@@ -322,6 +380,12 @@ RunOutput mesh_problem(std::string_view text, const std::string& file_name, cons
   output.files.add("mesh.vtk", io::mesh_vtk(mesh, file.problem.title));
   append(output.report, "%s: %ld nodes, %ld elements\n", file.problem.title.c_str(),
          static_cast<long>(mesh.node_count()), static_cast<long>(mesh.element_count()));
+  auto summary = summary_envelope("body", "mesh", text, file_name, file.problem.title, file.problem.analysis);
+  summary.parameters = file.parameters;
+  summary.options.update({{"mesh", mesh_options_json(file.problem.mesh)}});
+  summary.problem = io::problem_echo_json(file);
+  summary.mesh = meshes_json({{file.problem.body.name, &mesh}});
+  add_summary(summary, output);
   check_output_finite(output.files);
   return output;
 }

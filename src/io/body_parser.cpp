@@ -581,8 +581,10 @@ std::vector<bem::InteriorPoint> read_interior_grid(const TableReader& grid, cons
                       std::to_string(context.limits.max_interior_points) + " (raise it with --max-points)");
   // Row by row: x (r) varies fastest.
   std::vector<bem::InteriorPoint> points;
-  for (const double y : coordinates[1])
-    for (const double x : coordinates[0]) points.push_back(bem::InteriorPoint{Vec2(x, y), true, {}});
+  for (std::size_t row = 0; row < coordinates[1].size(); ++row)
+    for (std::size_t column = 0; column < coordinates[0].size(); ++column)
+      points.push_back(bem::InteriorPoint{Vec2(coordinates[0][column], coordinates[1][row]), true, {},
+                                          {static_cast<int>(column), static_cast<int>(row)}});
   return points;
 }
 

@@ -60,6 +60,24 @@ std::string contact_csv(const std::vector<contact::PairResult>& pairs) {
   return out;
 }
 
+std::string contact_vtk(const std::vector<contact::PairResult>& pairs, std::string_view title) {
+  std::vector<Vec2> points, normals;
+  std::vector<double> gap, p_n, p_t, slip_ratio, jump_n, jump_t, status;
+  for (const auto& p : pairs) {
+    points.push_back(p.position);
+    normals.push_back(p.normal);
+    gap.push_back(p.gap), p_n.push_back(p.p_n), p_t.push_back(p.p_t), slip_ratio.push_back(p.slip_ratio);
+    jump_n.push_back(p.jump_n), jump_t.push_back(p.jump_t), status.push_back(static_cast<double>(p.status));
+  }
+  return point_cloud_vtk(title, points,
+                         {{"p_n", p_n}, {"p_t", p_t}, {"gap", gap}, {"slip_ratio", slip_ratio}, {"jump_n", jump_n},
+                          {"jump_t", jump_t}, {"status", status}},
+                         {{"normal", normals}},
+                         {"status_names", {contact::to_string(contact::PairStatus::open),
+                                           contact::to_string(contact::PairStatus::stick),
+                                           contact::to_string(contact::PairStatus::slip)}});
+}
+
 std::string contact_steps_csv(const contact::ContactInterfaceResult& result) {
   std::string out =
       "step,time,a,c,stick_start,stick_end,peak_pressure,centre_pressure,normal_force,approach,pairs_in_contact,"
@@ -201,13 +219,12 @@ std::string contact_report_text(const contact::ContactProblem& problem, const co
 }
 
 std::vector<std::pair<std::string, std::string>> contact_output_files(const contact::ContactProblem& problem,
-                                                                      const contact::ContactResult& result, bool vtk,
-                                                                      const std::map<std::string, double>& parameters,
-                                                                      const std::vector<std::string>& warnings) {
+                                                                      const contact::ContactResult& result, bool vtk) {
   std::vector<std::pair<std::string, std::string>> files;
   for (const auto& contact : result.contacts) {
     const std::string stem = file_stem(contact.name);
     files.emplace_back(stem + ".csv", contact_csv(contact.pairs));
+    if (vtk) files.emplace_back(stem + ".vtk", contact_vtk(contact.pairs, problem.title + ": contact " + contact.name));
     files.emplace_back(stem + "_steps.csv", contact_steps_csv(contact));
     for (std::size_t k = 0; k < contact.step_pairs.size(); ++k)
       files.emplace_back(stem + "_step" + std::to_string(k + 1) + ".csv", contact_csv(contact.step_pairs[k]));
@@ -230,7 +247,6 @@ std::vector<std::pair<std::string, std::string>> contact_output_files(const cont
     }
     files.emplace_back("motions.csv", out);
   }
-  nlohmann::json transitions = nlohmann::json::object(), resultants = nlohmann::json::object();
   for (std::size_t r = 0; r < result.meshes.size(); ++r) {
     const std::string stem = file_stem(result.body_names[r]);
     files.emplace_back(stem + "_boundary.csv", boundary_csv(result.meshes[r], result.boundary[r]));
@@ -252,43 +268,60 @@ std::vector<std::pair<std::string, std::string>> contact_output_files(const cont
       }
       files.emplace_back(stem + "_boundary.pvd", time_series_pvd(series));
     }
-    transitions[result.body_names[r]] = mesh_transitions_json(result.meshes[r]);
-    // Per region, the contact zones included (the resultant of the contact tractions).
-    resultants[result.body_names[r]] = resultants_json(result.boundary[r].resultants, problem.analysis);
   }
-  nlohmann::json summary;
-  summary["bemcontact_version"] = BEMCONTACT_VERSION;
-  summary["title"] = problem.title;
-  summary["source_file"] = problem.source_file;
-  summary["input"] = problem.source_file;  // as in the other kinds' summaries
-  summary["analysis"] = to_string(problem.analysis);
+  return files;
+}
+
+void fill_contact_summary(RunSummary& summary, const contact::ContactProblem& problem,
+                          const contact::ContactResult& result) {
   int rigid = 0;
   for (const auto& body : problem.bodies) rigid += body.rigid.has_value();
-  summary["problem"] = {{"kind", problem.contacts.empty() ? "bodies" : "contact"},
-                        {"analysis", to_string(problem.analysis)},
-                        {"bodies", problem.bodies.size()},
-                        {"rigid_bodies", rigid},
-                        {"regions", result.meshes.size()},
-                        {"contacts", problem.contacts.size()},
-                        {"force_loads", problem.forces.size()}};
-  nlohmann::json mesh = nlohmann::json::object();
-  for (std::size_t r = 0; r < result.meshes.size(); ++r)
-    mesh[result.body_names[r]] = {{"nodes", result.meshes[r].node_count()}, {"elements", result.meshes[r].element_count()}};
-  summary["mesh"] = mesh;
-  summary["timings_seconds"] = timings_json(result.timings);
-  nlohmann::json outputs = nlohmann::json::array();
-  for (const auto& [name, content] : files) outputs.push_back(name);
-  summary["outputs"] = outputs;
-  summary["parameters"] = parameters;
-  if (!problem.contacts.empty()) summary["contact"] = contact_summary_json(problem, result);
+  summary.kind = problem.contacts.empty() ? "bodies" : "contact";
+  summary.problem = {{"bodies", problem.bodies.size()},
+                     {"rigid_bodies", rigid},
+                     {"regions", result.meshes.size()},
+                     {"contacts", problem.contacts.size()},
+                     {"force_loads", problem.forces.size()}};
+  const auto& solver = problem.solver;
+  summary.options.update(
+      {{"mesh", {{"interpolation", to_string(problem.mesh.interpolation)},
+                 {"corner_shift", problem.mesh.corner_shift},
+                 {"corner_transition", problem.mesh.corner_transition},
+                 {"split_angle_radians", problem.mesh.split_angle_radians}}},
+       {"law", {{"kind", contact::to_string(problem.kind)},
+                {"friction", problem.friction},
+                {"tangential_coupling", problem.tangential_coupling}}},
+       {"solver", {{"algorithm", contact::to_string(solver.algorithm)},
+                   {"tolerance", solver.tolerance},
+                   {"max_iterations", solver.max_iterations},
+                   {"gmres_restart", solver.gmres_restart},
+                   {"xi", solver.xi},
+                   {"max_gmres_cycles", solver.max_gmres_cycles},
+                   {"max_threshold_iterations", solver.max_threshold_iterations}}},
+       {"history", {{"end_time", problem.end_time},
+                    {"increments", problem.increments},
+                    {"adaptive", problem.adaptive && problem.friction > 0.0},
+                    {"max_state_changes", problem.max_state_changes},
+                    {"max_steps", problem.max_steps},
+                    {"record_steps", problem.record_steps}}}});
+  Index nodes = 0, elements = 0;
+  nlohmann::json regions = nlohmann::json::object();
+  for (std::size_t r = 0; r < result.meshes.size(); ++r) {
+    const auto& mesh = result.meshes[r];
+    nodes += mesh.node_count();
+    elements += mesh.element_count();
+    regions[result.body_names[r]] = {{"nodes", mesh.node_count()},
+                                     {"elements", mesh.element_count()},
+                                     {"graded_toward_vertices", mesh_transitions_json(mesh)}};
+    // Per region, the contact zones included (the resultant of the contact tractions).
+    summary.reactions[result.body_names[r]] = resultants_json(result.boundary[r].resultants, problem.analysis);
+  }
+  summary.mesh = {{"nodes", nodes}, {"elements", elements}, {"regions", regions}};
+  summary.timings = timings_json(result.timings);
+  if (!problem.contacts.empty()) summary.results["contact"] = contact_summary_json(problem, result);
   nlohmann::json contacts = nlohmann::json::array();
   for (const auto& contact : result.contacts) contacts.push_back(interface_json(contact));
-  summary["contacts"] = contacts;
-  summary["graded_toward_vertices"] = transitions;
-  summary["boundary_resultants"] = resultants;
-  summary["warnings"] = warnings;
-  files.emplace_back("summary.json", write_json_string(summary));
-  return files;
+  summary.results["contacts"] = contacts;
 }
 
 std::vector<std::pair<std::string, std::string>> contact_mesh_files(const contact::ContactProblem& problem,

@@ -1,6 +1,8 @@
 #include "bemcontact/io/results_writer.hpp"
 
 #include <algorithm>
+#include <map>
+#include <cstdio>
 
 #include "bemcontact/core/error.hpp"
 #include "bemcontact/io/expression.hpp"
@@ -107,6 +109,38 @@ void vtk_stress(Text& out, const std::vector<bem::StressTensor>& stress) {
 }
 
 // Geometry of the boundary lines and the point data every boundary file carries.
+// A string as VTK's legacy reader decodes it: bytes outside '!'..'~', '%' and '"' as %XX.
+std::string vtk_encoded(std::string_view text) {
+  std::string out;
+  char hex[4];
+  for (const unsigned char c : text) {
+    if (c <= ' ' || c > '~' || c == '%' || c == '"') {
+      std::snprintf(hex, sizeof hex, "%%%02X", c);
+      out += hex;
+    } else {
+      out += static_cast<char>(c);
+    }
+  }
+  return out.empty() ? "%00" : out;
+}
+
+// Dataset field data: one string array (names indexed by a cell or point array).
+void vtk_string_field(Text& out, const char* name, const std::vector<std::string>& values) {
+  out << "FIELD FieldData 1\n" << name << " 1 " << static_cast<Index>(values.size()) << " string\n";
+  for (const auto& v : values) out << vtk_encoded(v) << '\n';
+}
+
+void vtk_cells(Text& out, const char* keyword, const std::vector<std::vector<Index>>& cells) {
+  Index size = 0;
+  for (const auto& cell : cells) size += 1 + static_cast<Index>(cell.size());
+  out << keyword << ' ' << static_cast<Index>(cells.size()) << ' ' << size << '\n';
+  for (const auto& cell : cells) {
+    out << static_cast<Index>(cell.size());
+    for (const Index node : cell) out << ' ' << node;
+    out << '\n';
+  }
+}
+
 void vtk_boundary_geometry(Text& out, const geometry::BoundaryMesh& mesh) {
   std::vector<Vec2> positions, normals;
   std::vector<int> pieces;
@@ -115,16 +149,15 @@ void vtk_boundary_geometry(Text& out, const geometry::BoundaryMesh& mesh) {
     normals.push_back(node.normal);
     pieces.push_back(node.piece);
   }
+  vtk_string_field(out, "boundary_names", mesh.piece_names);
   vtk_points(out, positions);
-  const auto lines = boundary_polylines(mesh);
-  Index size = 0;
-  for (const auto& line : lines) size += 1 + static_cast<Index>(line.size());
-  out << "LINES " << static_cast<Index>(lines.size()) << ' ' << size << '\n';
-  for (const auto& line : lines) {
-    out << static_cast<Index>(line.size());
-    for (const Index node : line) out << ' ' << node;
-    out << '\n';
-  }
+  const auto piece_lines = boundary_piece_lines(mesh);
+  std::vector<std::vector<Index>> lines;
+  std::vector<int> line_pieces;
+  for (const auto& [piece, line] : piece_lines) lines.push_back(line), line_pieces.push_back(piece);
+  vtk_cells(out, "LINES", lines);
+  out << "CELL_DATA " << static_cast<Index>(lines.size()) << '\n';
+  vtk_scalars(out, "boundary", "int", line_pieces);
   out << "POINT_DATA " << static_cast<Index>(mesh.nodes.size()) << '\n';
   vtk_vectors(out, "normal", normals);
   vtk_scalars(out, "piece", "int", pieces);
@@ -195,6 +228,73 @@ std::vector<std::vector<Index>> boundary_polylines(const geometry::BoundaryMesh&
     }
   }
   return lines;
+}
+
+std::vector<std::pair<int, std::vector<Index>>> boundary_piece_lines(const geometry::BoundaryMesh& mesh) {
+  // The piece of each segment between two nodes of one element; a segment that bridges
+  // two elements (across a split corner) goes with the element it leads into.
+  std::map<std::pair<Index, Index>, int> segment_piece;
+  for (const auto& element : mesh.elements) {
+    std::vector<Index> along;
+    append_nodes(mesh, {&element - mesh.elements.data()}, along);
+    for (std::size_t k = 1; k < along.size(); ++k) {
+      segment_piece[{along[k - 1], along[k]}] = element.piece;
+      segment_piece[{along[k], along[k - 1]}] = element.piece;
+    }
+  }
+  const auto piece_of = [&](Index a, Index b) {
+    const auto found = segment_piece.find({a, b});
+    return found != segment_piece.end() ? found->second : mesh.nodes[b].piece;
+  };
+  std::vector<std::pair<int, std::vector<Index>>> out;
+  for (const auto& line : boundary_polylines(mesh)) {
+    for (std::size_t k = 1; k < line.size(); ++k) {
+      const int piece = piece_of(line[k - 1], line[k]);
+      if (out.empty() || k == 1 || out.back().first != piece) out.push_back({piece, {line[k - 1]}});
+      out.back().second.push_back(line[k]);
+    }
+  }
+  return out;
+}
+
+// Quadrilaterals of the [interior] grid whose four corners were computed (inside the body).
+std::vector<std::vector<Index>> interior_grid_cells(const bem::InteriorSolution& solution) {
+  std::map<std::array<int, 2>, Index> at;  // by (row, column): cells come row by row
+  for (std::size_t i = 0; i < solution.grid_index.size(); ++i)
+    if (solution.grid_index[i][0] >= 0) at.emplace(std::array<int, 2>{solution.grid_index[i][1], solution.grid_index[i][0]}, static_cast<Index>(i));
+  std::vector<std::vector<Index>> cells;
+  for (const auto& [row_column, first] : at) {
+    const auto corner = [&, rc = row_column](int di, int dj) {
+      const auto found = at.find({rc[0] + dj, rc[1] + di});
+      return found == at.end() ? Index(-1) : found->second;
+    };
+    const std::vector<Index> quad{first, corner(1, 0), corner(1, 1), corner(0, 1)};
+    if (std::find(quad.begin(), quad.end(), Index(-1)) == quad.end()) cells.push_back(quad);
+  }
+  return cells;
+}
+
+std::string point_cloud_vtk(std::string_view title, const std::vector<Vec2>& points,
+                            const std::vector<std::pair<std::string, std::vector<double>>>& scalars,
+                            const std::vector<std::pair<std::string, std::vector<Vec2>>>& vectors,
+                            const std::pair<std::string, std::vector<std::string>>& names) {
+  Text out;
+  vtk_header(out, title);
+  if (!names.first.empty()) vtk_string_field(out, names.first.c_str(), names.second);
+  vtk_points(out, points);
+  std::vector<std::vector<Index>> vertices;
+  for (std::size_t i = 0; i < points.size(); ++i) vertices.push_back({static_cast<Index>(i)});
+  vtk_cells(out, "VERTICES", vertices);
+  out << "POINT_DATA " << static_cast<Index>(points.size()) << '\n';
+  for (const auto& [name, values] : scalars) {
+    require_size(values.size(), points.size(), ("point data '" + name + "'").c_str());
+    vtk_scalars(out, name.c_str(), "double", values);
+  }
+  for (const auto& [name, values] : vectors) {
+    require_size(values.size(), points.size(), ("point data '" + name + "'").c_str());
+    vtk_vectors(out, name.c_str(), values);
+  }
+  return std::move(out).str();
 }
 
 std::string boundary_csv(const geometry::BoundaryMesh& mesh, const bem::BoundarySolution& solution) {
@@ -281,8 +381,16 @@ std::string interior_vtk(const bem::InteriorSolution& solution, std::string_view
   vtk_header(out, title);
   vtk_points(out, solution.points);
   const Index n = static_cast<Index>(solution.points.size());
-  out << "VERTICES " << n << ' ' << 2 * n << '\n';
-  for (Index i = 0; i < n; ++i) out << "1 " << i << '\n';
+  // The grid's cells where all four corners are inside; the other points as vertices.
+  const auto cells = interior_grid_cells(solution);
+  std::vector<bool> in_cell(solution.points.size(), false);
+  for (const auto& cell : cells)
+    for (const Index i : cell) in_cell[i] = true;
+  std::vector<std::vector<Index>> vertices;
+  for (Index i = 0; i < n; ++i)
+    if (!in_cell[i]) vertices.push_back({i});
+  if (!vertices.empty()) vtk_cells(out, "VERTICES", vertices);
+  if (!cells.empty()) vtk_cells(out, "POLYGONS", cells);
   out << "POINT_DATA " << n << '\n';
   vtk_vectors(out, "u", solution.displacement);
   vtk_stress(out, solution.stress);
@@ -308,7 +416,9 @@ std::vector<double> vectors3(const std::vector<Vec2>& values) {
 
 std::string boundary_vtp(const geometry::BoundaryMesh& mesh, const bem::BoundarySolution& solution) {
   check_boundary(mesh, solution);
-  const auto lines = boundary_polylines(mesh);
+  std::vector<std::vector<Index>> lines;
+  std::vector<double> line_pieces;
+  for (const auto& [piece, line] : boundary_piece_lines(mesh)) lines.push_back(line), line_pieces.push_back(piece);
   std::vector<Vec2> positions, normals;
   for (const auto& node : mesh.nodes) positions.push_back(node.position), normals.push_back(node.normal);
   Text out;
@@ -325,7 +435,9 @@ std::string boundary_vtp(const geometry::BoundaryMesh& mesh, const bem::Boundary
     offsets += std::to_string(offset) + " ";
   }
   out << "\n</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n" << offsets
-      << "\n</DataArray>\n</Lines>\n<PointData Vectors=\"u\">\n";
+      << "\n</DataArray>\n</Lines>\n<CellData Scalars=\"boundary\">\n";
+  vtp_array(out, "boundary", 1, line_pieces);
+  out << "</CellData>\n<PointData Vectors=\"u\">\n";
   vtp_array(out, "normal", 3, vectors3(normals));
   vtp_array(out, "u", 3, vectors3(solution.displacement));
   vtp_array(out, "t", 3, vectors3(solution.traction));

@@ -58,6 +58,21 @@ InteriorSolution interior_values(const geometry::BoundaryMesh& mesh, const Eleme
                                  const BoundarySolution& solution, const std::vector<Vec2>& points,
                                  const ProgressCallback& progress = {});
 
+// The points of `points` inside the body (with their grid indices) and the grid points
+// outside it; listed points outside are returned for the caller to report.
+struct InteriorSelection {
+  std::vector<Vec2> inside;
+  std::vector<std::array<int, 2>> grid_index;
+  std::vector<Vec2> dropped;
+  std::vector<const InteriorPoint*> listed_outside;
+};
+InteriorSelection select_interior_points(const geometry::BoundaryMesh& mesh, const std::vector<InteriorPoint>& points);
+
+// interior_values at the selected points, with the grid indices and dropped points set.
+InteriorSolution interior_values(const geometry::BoundaryMesh& mesh, const ElementIntegrator& integrator,
+                                 const BoundarySolution& solution, InteriorSelection selection,
+                                 const ProgressCallback& progress = {});
+
 // Plane or axisymmetric Somigliana stress at one interior point, without the
 // near-boundary treatment (exposed for tests).
 StressTensor somigliana_stress(const geometry::BoundaryMesh& mesh, const ElementIntegrator& integrator,

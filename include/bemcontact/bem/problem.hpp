@@ -56,6 +56,7 @@ struct InteriorPoint {
   Vec2 position;
   bool from_grid = false;  // grid points outside the body are dropped, listed ones are errors
   SourceLocation where;    // of a listed point in the problem file
+  std::array<int, 2> grid_index = {-1, -1};  // column, row in its [interior] grid (-1: listed)
 };
 
 struct ProblemDefinition {

@@ -1,5 +1,6 @@
 #pragma once
 // Results of a one-body solve: what the writers in io/ take.
+#include <array>
 #include <string>
 #include <vector>
 
@@ -39,6 +40,9 @@ struct InteriorSolution {
   std::vector<Vec2> displacement;
   std::vector<StressTensor> stress;
   std::vector<Vec2> dropped_points;  // grid points outside the body
+  // Per point, its column and row in the [interior] grid ({-1, -1}: a listed point), so
+  // that writers can draw the grid's cells (io/results_writer.hpp).
+  std::vector<std::array<int, 2>> grid_index;
 };
 
 // Wall-clock time of each phase, in seconds, in the order run.

@@ -25,17 +25,22 @@
 //                      io/results_writer.hpp), for stresses and von Mises iso-contours.
 #include <map>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "bemcontact/io/run_summary.hpp"
 #include "bemcontact/contact/contact_solver.hpp"
 #include "bemcontact/contact/pairing.hpp"
 
 namespace bemcontact::io {
 
 std::string contact_csv(const std::vector<contact::PairResult>& pairs);
+// The same pairs as VTK vertices (<contact>.vtk): point data p_n, p_t, gap, slip_ratio,
+// jump_n, jump_t, status (0 open, 1 stick, 2 slip: field data status_names) and normal.
+std::string contact_vtk(const std::vector<contact::PairResult>& pairs, std::string_view title);
 std::string contact_steps_csv(const contact::ContactInterfaceResult& result);
 
 // The "contact" fragment of summary.json: kind, algorithm, friction, increments, unknowns,
@@ -49,11 +54,16 @@ nlohmann::json contact_summary_json(const contact::ContactProblem& problem, cons
 // on body 2), the Hertz values a, p0, delta next to the computed ones (Annex D).
 std::string contact_report_text(const contact::ContactProblem& problem, const contact::ContactResult& result);
 
-// Every file of a contact run as (file name, content), summary.json included (with the
-// evaluated [parameters] of the file, when given).
-std::vector<std::pair<std::string, std::string>> contact_output_files(
-    const contact::ContactProblem& problem, const contact::ContactResult& result, bool vtk = true,
-    const std::map<std::string, double>& parameters = {}, const std::vector<std::string>& warnings = {});
+// Every file of a contact run as (file name, content), summary.json left to the caller.
+std::vector<std::pair<std::string, std::string>> contact_output_files(const contact::ContactProblem& problem,
+                                                                      const contact::ContactResult& result,
+                                                                      bool vtk = true);
+
+// The blocks of summary.json a contact run (or bodies of regions) fills: kind, problem,
+// options (law, solver, history, mesh), mesh, results (contact, contacts), reactions,
+// timings (io/run_summary.hpp).
+void fill_contact_summary(RunSummary& summary, const contact::ContactProblem& problem,
+                          const contact::ContactResult& result);
 
 // `bemcontact mesh` of a contact model (or of bodies of regions): per region
 // <name>_mesh_nodes.csv, <name>_mesh_elements.csv, <name>_mesh.vtk, and per contact

@@ -12,15 +12,21 @@
 //
 // VTK files (legacy ASCII, version 3.0, POLYDATA; z = 0):
 //   boundary.vtk  the boundary nodes as points, joined by lines in element order along
-//                 each contour, with point data u, t, normal (vectors), von_mises, s11,
+//                 each contour, one line cell per boundary piece with cell data
+//                 `boundary` (its index into the field-data string array
+//                 `boundary_names`), and point data u, t, normal (vectors), von_mises, s11,
 //                 s22, s12, s33 (scalars), stress (tensor) and piece. Nodes are not always
 //                 at element ends (split corner nodes sit inside their elements, constant
 //                 elements have their node at the middle), so the drawn line joins the
 //                 nodes and cuts corners slightly; a contour is broken where the mesh is
 //                 (e.g. at the axis of an axisymmetric body, which carries no elements).
 //   mesh.vtk      the same lines with normal and piece only (`bemcontact mesh`).
-//   interior.vtk  the interior points as vertices with u, von_mises, s11..s33, stress.
+//   interior.vtk  the interior points with u, von_mises, s11..s33, stress; the points of an
+//                 [interior] grid joined by its quadrilateral cells where all four corners
+//                 are inside the body (a hole or notch stays empty instead of being
+//                 bridged), the other points (listed ones) as vertices.
 #include <string>
+#include <utility>
 #include <string_view>
 #include <vector>
 
@@ -46,5 +52,17 @@ std::string interior_vtk(const bem::InteriorSolution& solution, std::string_view
 // The node sequences the VTK lines follow: per contour, the nodes of its elements in
 // order, shared nodes once; a contour without gaps ends with its first node again.
 std::vector<std::vector<Index>> boundary_polylines(const geometry::BoundaryMesh& mesh);
+// The same lines cut where the boundary piece changes: (piece, nodes); each cut line
+// starts at the previous one's last node.
+std::vector<std::pair<int, std::vector<Index>>> boundary_piece_lines(const geometry::BoundaryMesh& mesh);
+// The quadrilaterals (counter-clockwise point indices) of the interior grid whose four
+// corners are in `solution` (InteriorSolution::grid_index).
+std::vector<std::vector<Index>> interior_grid_cells(const bem::InteriorSolution& solution);
+// Points as vertices with scalar and vector point data, and optionally one string array of
+// field data (e.g. the names a numeric code stands for).
+std::string point_cloud_vtk(std::string_view title, const std::vector<Vec2>& points,
+                            const std::vector<std::pair<std::string, std::vector<double>>>& scalars,
+                            const std::vector<std::pair<std::string, std::vector<Vec2>>>& vectors,
+                            const std::pair<std::string, std::vector<std::string>>& names = {});
 
 }  // namespace bemcontact::io

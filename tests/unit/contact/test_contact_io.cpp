@@ -49,8 +49,15 @@ TEST(ContactIo, WritersHoldEveryPairAndTheSummary) {
   const std::string& csv = by_name["contact.csv"];
   EXPECT_EQ(csv.substr(0, csv.find('\n')), "pair,x,y,coordinate,nx,ny,gap,p_n,p_t,slip_ratio,jump_n,jump_t,status");
   EXPECT_EQ(static_cast<std::size_t>(std::count(csv.begin(), csv.end(), '\n')), result.pairs.size() + 1);
-  const auto summary = nlohmann::json::parse(by_name["summary.json"]);
-  const auto& c = summary.at("contact");
+  EXPECT_FALSE(by_name.count("summary.json"));  // the caller's (io/run_summary.hpp)
+  io::RunSummary blocks;
+  io::fill_contact_summary(blocks, file.problem, result);
+  const auto summary = io::summary_json(blocks);
+  EXPECT_EQ(summary.at("kind"), "contact");
+  EXPECT_EQ(summary.at("options").at("law").at("kind"), contact::to_string(file.problem.kind));
+  EXPECT_EQ(summary.at("mesh").at("regions").size(), 2u);
+  EXPECT_TRUE(summary.at("reactions").contains("punch"));
+  const auto& c = summary.at("results").at("contact");
   EXPECT_DOUBLE_EQ(c.at("a").get<double>(), result.summary.contact_radius);
   EXPECT_DOUBLE_EQ(c.at("approach").get<double>(), result.summary.approach);
   EXPECT_EQ(c.at("steps").size(), 2u);

@@ -148,9 +148,10 @@ TEST(IoResultsWriter, BoundaryVtkIsAPolylineWithPointData) {
   const auto points = block_after(lines, "POINTS 4 double", 4);
   ASSERT_EQ(points.size(), 4u);
   EXPECT_EQ(points[2], "1 1 0");
-  const auto connectivity = block_after(lines, "LINES 1 6", 1);
-  ASSERT_EQ(connectivity.size(), 1u);
-  EXPECT_EQ(connectivity[0], "5 0 1 2 3 0");  // closed contour
+  // One line cell per boundary piece along the closed contour, named in the field data.
+  EXPECT_EQ(block_after(lines, "LINES 4 12", 4), (std::vector<std::string>{"2 0 1", "2 1 2", "2 2 3", "2 3 0"}));
+  EXPECT_EQ(block_after(lines, "SCALARS boundary int 1", 5),
+            (std::vector<std::string>{"LOOKUP_TABLE default", "0", "1", "2", "3"}));
   EXPECT_NE(std::find(lines.begin(), lines.end(), "POINT_DATA 4"), lines.end());
 
   const auto u = block_after(lines, "VECTORS u double", 4);
@@ -208,7 +209,10 @@ TEST(IoResultsWriter, PolylinesFollowSplitCornersAndConstantElements) {
   // No contour information: the element order of the mesh is used.
   EXPECT_EQ(boundary_polylines(constant), (std::vector<std::vector<Index>>{{0, 1, 2, 3, 0}}));
   const auto lines = lines_of(mesh_vtk(constant, "constant"));
-  EXPECT_EQ(block_after(lines, "LINES 1 6", 1), (std::vector<std::string>{"5 0 1 2 3 0"}));
+  // Segments between the middles of two elements go with the element they lead into.
+  EXPECT_EQ(block_after(lines, "LINES 4 12", 4), (std::vector<std::string>{"2 0 1", "2 1 2", "2 2 3", "2 3 0"}));
+  EXPECT_EQ(block_after(lines, "SCALARS boundary int 1", 5),
+            (std::vector<std::string>{"LOOKUP_TABLE default", "1", "2", "3", "0"}));
   EXPECT_NE(std::find(lines.begin(), lines.end(), "VECTORS normal double"), lines.end());
 }
 
@@ -225,7 +229,44 @@ TEST(IoResultsWriter, PolylineBreaksWhereTheContourHasNoElements) {
   mesh.contours.push_back(geometry::Contour{{2, 3, 0, 1}, 1.0, false});
   EXPECT_EQ(boundary_polylines(mesh), (std::vector<std::vector<Index>>{{0, 1, 2, 3}}));
   const auto lines = lines_of(mesh_vtk(mesh, "axis"));
-  EXPECT_EQ(block_after(lines, "LINES 1 5", 1), (std::vector<std::string>{"4 0 1 2 3"}));
+  EXPECT_EQ(block_after(lines, "LINES 3 9", 3), (std::vector<std::string>{"2 0 1", "2 1 2", "2 2 3"}));
+}
+
+TEST(IoResultsWriter, PieceLinesJoinTheElementsOfEachNamedBoundary) {
+  // Two pieces of two linear elements each along an open line: nodes 0-1-2 | 2-3-4.
+  BoundaryMesh mesh;
+  for (int k = 0; k < 5; ++k) mesh.nodes.push_back(BoundaryNode{Vec2(k, 0), Vec2(0, -1), k < 2 ? 0 : 1, false});
+  for (int k = 0; k < 4; ++k) mesh.elements.push_back(element(Vec2(k, 0), Vec2(k + 1, 0), k / 2, {k, k + 1}, 2));
+  mesh.piece_elements = {{0, 1}, {2, 3}};
+  mesh.piece_names = {"floor", "contact zone"};
+  mesh.contours.push_back(geometry::Contour{{0, 1}, 1.0, false});
+  using Lines = std::vector<std::pair<int, std::vector<Index>>>;
+  EXPECT_EQ(boundary_piece_lines(mesh), (Lines{{0, {0, 1, 2}}, {1, {2, 3, 4}}}));
+  const auto lines = lines_of(mesh_vtk(mesh, "names"));
+  // Legacy VTK strings: a space is written %20 (the reader decodes it).
+  EXPECT_EQ(block_after(lines, "boundary_names 1 2 string", 2), (std::vector<std::string>{"floor", "contact%20zone"}));
+}
+
+TEST(IoResultsWriter, InteriorVtkDrawsTheGridCellsInsideTheBody) {
+  // A 3 x 3 grid whose corner (2, 2) fell outside: three cells of four remain.
+  bem::InteriorSolution interior;
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < 3; ++i) {
+      if (i == 2 && j == 2) continue;
+      interior.points.emplace_back(i, j);
+      interior.grid_index.push_back({i, j});
+      interior.displacement.emplace_back(0.0, 0.0);
+      interior.stress.push_back(bem::StressTensor{1.0, 0.0, 0.0, 0.0});
+    }
+  interior.points.emplace_back(0.5, 0.5);  // a listed point
+  interior.grid_index.push_back({-1, -1});
+  interior.displacement.emplace_back(0.0, 0.0);
+  interior.stress.push_back(bem::StressTensor{});
+  EXPECT_EQ(interior_grid_cells(interior),
+            (std::vector<std::vector<Index>>{{0, 1, 4, 3}, {1, 2, 5, 4}, {3, 4, 7, 6}}));
+  const auto lines = lines_of(interior_vtk(interior, "grid"));
+  EXPECT_EQ(block_after(lines, "VERTICES 1 2", 1), (std::vector<std::string>{"1 8"}));
+  EXPECT_EQ(block_after(lines, "POLYGONS 3 15", 3), (std::vector<std::string>{"4 0 1 4 3", "4 1 2 5 4", "4 3 4 7 6"}));
 }
 
 TEST(IoResultsWriter, InteriorVtkHasOneVertexPerPoint) {

@@ -1,0 +1,200 @@
+"""bemcontact from Python: load or build a problem, run it, read every result as arrays.
+
+    import bemcontact as bc
+    problem = bc.Problem.load("examples/contact_hertz_sphere.toml")
+    result = problem.run(P=40.0)               # [parameters] overridden by name
+    print(result.summary["results"]["contact"]["a"])  # summary.json (docs/summary.md)
+    pairs = result.contact()                   # contact.csv as numpy columns
+    print(pairs["x"], pairs["p_n"])
+
+Errors raise bemcontact.InputError / GeometryError / SolverError (all bemcontact.Error)
+with the messages of the command line. See docs/python.md.
+"""
+import csv
+import hashlib
+import io
+import json
+import os
+import tomllib
+
+import numpy as np
+
+from . import _toml
+from ._core import Error, GeometryError, InputError, SolverError, __version__
+from . import _core
+
+__all__ = ["Problem", "Result", "Table", "run", "Error", "InputError", "GeometryError", "SolverError",
+           "__version__"]
+
+
+class Table(dict):
+    """One CSV file: column name -> numpy array (float, or str for text columns such as
+    `boundary` or `status`), in the file's column order."""
+
+    def __init__(self, name, text):
+        super().__init__()
+        self.name = name
+        rows = list(csv.reader(io.StringIO(text)))
+        if not rows:
+            raise ValueError(f"{name} is empty")
+        self.columns = rows[0]
+        body = rows[1:]
+        for k, column in enumerate(self.columns):
+            values = [row[k] for row in body]
+            try:
+                self[column] = np.array([float(v) for v in values], dtype=float)
+            except ValueError:
+                self[column] = np.array(values, dtype=str)
+
+    def __len__(self):
+        return len(next(iter(self.values()))) if self.columns else 0
+
+    def rows(self):
+        return len(self)
+
+    def __repr__(self):
+        return f"Table({self.name!r}, {len(self)} rows, columns={self.columns})"
+
+
+class Result:
+    """The files of one run, in memory: `summary` (summary.json), `report` (the terminal
+    summary), `warnings`, and every CSV as a Table."""
+
+    def __init__(self, raw):
+        self.files = dict(raw["files"])
+        self.report = raw["report"]
+        self.warnings = list(raw["warnings"])
+        self.solver_failure = raw["solver_failure"]
+        self.summary = json.loads(self.files["summary.json"]) if "summary.json" in self.files else {}
+
+    def names(self):
+        return list(self.files)
+
+    def text(self, name):
+        if name not in self.files:
+            raise KeyError(f"no file '{name}' in this result; files: {', '.join(self.files)}")
+        return self.files[name].decode()
+
+    def table(self, name):
+        """A CSV file by name, with or without '.csv'."""
+        name = name if name.endswith(".csv") else name + ".csv"
+        return Table(name, self.text(name))
+
+    def _per_body(self, suffix, body):
+        if body is not None:
+            return self.table(f"{body}_{suffix}")
+        if f"{suffix}.csv" in self.files:
+            return self.table(suffix)
+        found = [n for n in self.files if n.endswith(f"_{suffix}.csv")]
+        if len(found) == 1:
+            return self.table(found[0])
+        bodies = ", ".join(n[: -len(f"_{suffix}.csv")] for n in found) or "none"
+        raise KeyError(f"name the body: {suffix} files exist for {bodies}")
+
+    def boundary(self, body=None):
+        """Boundary nodes: x, y, normal, u, t, stresses, von_mises, boundary name."""
+        return self._per_body("boundary", body)
+
+    def interior(self, body=None):
+        """Interior points: x, y, u, stresses, von_mises."""
+        return self._per_body("interior", body)
+
+    def contact_names(self):
+        return [c["name"] for c in self.summary.get("results", {}).get("contacts", [])]
+
+    def _contact_name(self, name):
+        names = self.contact_names()
+        if name is None:
+            if len(names) != 1:
+                raise KeyError(f"name the contact: this result has {', '.join(names) or 'none'}")
+            return names[0]
+        if name not in names:
+            raise KeyError(f"no contact '{name}'; contacts: {', '.join(names) or 'none'}")
+        return name
+
+    def contact(self, name=None):
+        """Contact pairs at the end of the history: x, y, gap, p_n, p_t, slip, status."""
+        return self.table(self._contact_name(name))
+
+    def contact_steps(self, name=None):
+        """One row per load step: time, a, c, stick zone, forces, energy, iterations."""
+        return self.table(self._contact_name(name) + "_steps")
+
+    def motions(self):
+        """Rigid-body and platen motions and forces per step."""
+        return self.table("motions")
+
+    def save(self, directory):
+        """Write the files to `directory`, replacing it whole (as `bemcontact run -o`)."""
+        _core.commit(self.files, os.fspath(directory))
+        return directory
+
+    def __repr__(self):
+        return f"Result({len(self.files)} files: {', '.join(list(self.files)[:6])}...)"
+
+
+class Problem:
+    """A problem file's text, with parameters to override when it runs."""
+
+    def __init__(self, text, file_name="<python>", overrides=None):
+        self.text = text
+        self.file_name = file_name
+        self.overrides = dict(overrides or {})
+
+    @classmethod
+    def load(cls, path):
+        path = os.fspath(path)
+        with open(path, encoding="utf-8") as f:
+            return cls(f.read(), path)
+
+    @classmethod
+    def from_dict(cls, data, name="<python>"):
+        """A problem from Python values laid out as the file's tables (docs/problem-file.md)."""
+        return cls(_toml.dumps(data), name)
+
+    def data(self):
+        """The file as a dictionary (tomllib)."""
+        return tomllib.loads(self.text)
+
+    @property
+    def parameters(self):
+        values = dict(self.data().get("parameters", {}))
+        values.update(self.overrides)
+        return values
+
+    def with_parameters(self, **values):
+        """A copy whose [parameters] of these names take these values."""
+        merged = dict(self.overrides)
+        for name, value in values.items():
+            merged[name] = float(value)
+        return Problem(self.text, self.file_name, merged)
+
+    def sha256(self):
+        return hashlib.sha256(self.text.encode()).hexdigest()
+
+    def run(self, output=None, threads=0, **parameters):
+        """Solve; `parameters` override [parameters] by name; `output` also writes the
+        files there (the folder is replaced whole). Raises bemcontact.Error subclasses."""
+        return self._go(False, output, threads, parameters)
+
+    def mesh(self, output=None, **parameters):
+        """Mesh only: the boundary mesh of every body and contact pairs."""
+        return self._go(True, output, 0, parameters)
+
+    def _go(self, mesh_only, output, threads, parameters):
+        problem = self.with_parameters(**parameters) if parameters else self
+        raw = _core.run(problem.text, problem.file_name, problem.overrides, mesh_only, int(threads))
+        result = Result(raw)
+        if output is not None:
+            result.save(output)
+        if result.solver_failure:
+            raise SolverError(result.solver_failure + (f" (diagnostics in {output})" if output else ""))
+        return result
+
+    def __repr__(self):
+        return f"Problem({self.file_name!r}, overrides={self.overrides})"
+
+
+def run(path, output=None, threads=0, **parameters):
+    """Load a problem file and run it (Problem.load(path).run(...))."""
+    return Problem.load(path).run(output=output, threads=threads, **parameters)

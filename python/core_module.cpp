@@ -1,0 +1,67 @@
+// The Python module's native part, bemcontact._core: the same driver as the command line
+// (driver/run.hpp), files returned in memory, errors raised as Python exceptions with the
+// same messages. The Python package (python/bemcontact) builds the user-facing API on it.
+#include <omp.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <map>
+#include <string>
+
+#include "bemcontact/core/error.hpp"
+#include "bemcontact/driver/run.hpp"
+#include "bemcontact/io/output_directory.hpp"
+#include "bemcontact/operators/dense_lu.hpp"
+
+namespace py = pybind11;
+using namespace bemcontact;
+
+namespace {
+
+py::dict as_dict(const driver::RunOutput& output) {
+  py::dict files;  // insertion order = the order the driver wrote them
+  for (const auto& file : output.files.files()) files[py::str(file.name)] = py::bytes(file.content);
+  py::dict result;
+  result["files"] = files;
+  result["report"] = output.report;
+  result["warnings"] = output.warnings;
+  result["solver_failure"] = output.solver_failure;
+  return result;
+}
+
+py::dict run(const std::string& text, const std::string& file_name, const std::map<std::string, double>& overrides,
+             bool mesh_only, int threads) {
+  driver::RunOptions options;
+  options.overrides = overrides;
+  driver::RunOutput output;
+  {
+    py::gil_scoped_release released;
+    if (threads > 0) omp_set_num_threads(threads);
+    output = mesh_only ? driver::mesh_problem(text, file_name, options) : driver::run_problem(text, file_name, options);
+  }
+  return as_dict(output);
+}
+
+void commit(const std::map<std::string, py::bytes>& files, const std::string& directory) {
+  io::OutputDirectory output;
+  for (const auto& [name, content] : files) output.add(name, std::string(content));
+  py::gil_scoped_release released;
+  output.commit(directory);
+}
+
+}  // namespace
+
+PYBIND11_MODULE(_core, m) {
+  m.doc() = "bemcontact's native part; use the bemcontact package instead";
+  operators::use_single_threaded_blas();
+  // Translators are tried last registered first: the base class goes first.
+  const auto& error = py::register_exception<Error>(m, "Error", PyExc_RuntimeError);
+  py::register_exception<InputError>(m, "InputError", error.ptr());
+  py::register_exception<GeometryError>(m, "GeometryError", error.ptr());
+  py::register_exception<SolverError>(m, "SolverError", error.ptr());
+  m.attr("__version__") = BEMCONTACT_VERSION;
+  m.def("run", &run, py::arg("text"), py::arg("file_name"), py::arg("overrides"), py::arg("mesh_only") = false,
+        py::arg("threads") = 0, "Solve (or only mesh) a problem text; returns files, report, warnings.");
+  m.def("commit", &commit, py::arg("files"), py::arg("directory"),
+        "Replace `directory` whole by these files (as `bemcontact run -o`).");
+}

@@ -1,0 +1,165 @@
+"""The Python module against closed forms, the command line and its own contracts."""
+import hashlib
+import json
+import math
+import subprocess
+
+import numpy as np
+import pytest
+
+import bemcontact as bc
+
+
+def tension_plate(E=200.0, nu=0.3, p=2.0, width=2.0, height=1.0):
+    """A plane-stress plate pulled on its right edge, held by symmetry on two edges."""
+    return {
+        "title": "plate in tension from Python",
+        "analysis": "plane_stress",
+        "interpolation": "linear",
+        "parameters": {"p": p, "W": width, "H": height},
+        "material": {"E": E, "nu": nu},
+        "vertices": {"A": [0.0, 0.0], "B": ["W", 0.0], "C": ["W", "H"], "D": [0.0, "H"]},
+        "boundary": [
+            {"name": "bottom", "from": "A", "to": "B", "elements": 4, "u2": 0.0, "t1": 0.0},
+            {"name": "right", "from": "B", "to": "C", "elements": 3, "t1": "p", "t2": 0.0},
+            {"name": "top", "from": "C", "to": "D", "elements": 4},
+            {"name": "left", "from": "D", "to": "A", "elements": 3, "u1": 0.0, "t2": 0.0},
+        ],
+        "interior": {"points": [[0.5, 0.5], [1.5, 0.25]]},
+    }
+
+
+def test_uniform_tension_matches_the_closed_form():
+    # A linear field is reproduced exactly by linear elements: round-off only.
+    E, nu, p = 200.0, 0.3, 2.0
+    result = bc.Problem.from_dict(tension_plate(E, nu, p)).run()
+    inner = result.interior()
+    assert list(inner["point"]) == [0.0, 1.0]
+    np.testing.assert_allclose(inner["s11"], p, rtol=1e-6)
+    np.testing.assert_allclose(inner["s22"], 0.0, atol=1e-6 * p)
+    np.testing.assert_allclose(inner["u1"], p / E * inner["x"], rtol=1e-6)
+    np.testing.assert_allclose(inner["u2"], -nu * p / E * inner["y"], rtol=1e-6)
+    edge = result.boundary()
+    on_right = edge["boundary"] == "right"
+    assert on_right.sum() > 0
+    np.testing.assert_allclose(edge["u1"][on_right], p / E * 2.0, rtol=1e-6)
+
+
+def hertz_sphere_radius(problem, force):
+    """a = (3 P R / 4 E*)^(1/3), E* from the two bodies of the example (closed form)."""
+    data = problem.data()
+    nu = data["body"][0]["material"]["nu"]
+    E1 = problem.parameters["E_ball"]
+    E2 = data["body"][1]["material"]["E"]
+    E_star = 1.0 / ((1 - nu**2) / E1 + (1 - nu**2) / E2)
+    return (3.0 * force * problem.parameters["R"] / (4.0 * E_star)) ** (1.0 / 3.0)
+
+
+def test_parameter_sweep_follows_hertz(examples):
+    problem = bc.Problem.load(examples / "contact_hertz_sphere.toml")
+    h = problem.parameters["rc"] / problem.parameters["contact_elements"]
+    for force in (15.0, 31.5, 63.0):
+        result = problem.run(P=force)
+        a = result.summary["results"]["contact"]["a"]
+        reference = hertz_sphere_radius(problem, force)
+        # The contact edge is located within half an element.
+        assert abs(a - reference) < 0.5 * h, (force, a, reference)
+        pairs = result.contact()
+        assert pairs.columns[:3] == ["pair", "x", "y"]
+        assert np.all(pairs["p_n"] <= 0.0)
+        assert set(pairs["status"]) <= {"stick", "slip", "open"}
+        # The pressures balance the applied force (whole ring: 2 pi r dr).
+        assert result.summary["results"]["contact"]["normal_force"] == pytest.approx(force, rel=1e-3)
+
+
+def test_version_agrees_with_the_command_and_the_summary(binary, examples):
+    shown = subprocess.run([binary, "--version"], capture_output=True, text=True, check=True).stdout.split()
+    assert shown == ["bemcontact", bc.__version__]
+    result = bc.run(examples / "plate_tension.toml")
+    assert result.summary["bemcontact_version"] == bc.__version__
+
+
+def test_errors_raise_with_the_command_line_messages(examples, binary, tmp_path):
+    bad = tmp_path / "bad.toml"
+    bad.write_text((examples / "plate_tension.toml").read_text().replace("nu = 0.1", "nu = 0.1\nnuu = 3"))
+    with pytest.raises(bc.InputError) as raised:
+        bc.run(bad)
+    message = str(raised.value)
+    assert str(bad) in message and "nuu" in message
+    command = subprocess.run([binary, "run", str(bad), "-o", str(tmp_path / "out")], capture_output=True, text=True)
+    assert command.returncode == 2
+    assert message in command.stderr
+    with pytest.raises(bc.InputError, match="Q"):
+        bc.run(examples / "plate_tension.toml", Q=1.0)
+    assert issubclass(bc.GeometryError, bc.Error) and issubclass(bc.SolverError, bc.Error)
+    crossing = tension_plate()
+    crossing["vertices"]["C"] = [0.0, "H"]
+    crossing["vertices"]["D"] = ["W", "H"]
+    with pytest.raises(bc.GeometryError):
+        bc.Problem.from_dict(crossing).run()
+
+
+def test_results_are_the_files_of_the_command_line(examples, binary, tmp_path):
+    command_dir = tmp_path / "command"
+    subprocess.run([binary, "run", str(examples / "contact_roller_plates.toml"), "-q", "-o", str(command_dir)],
+                   check=True)
+    result = bc.run(examples / "contact_roller_plates.toml", threads=2)
+    written = sorted(p.name for p in command_dir.iterdir() if not p.name.startswith("."))
+    assert sorted(result.names()) == written
+    for name in written:
+        if name != "summary.json":  # timings differ
+            assert result.text(name) == (command_dir / name).read_text(), name
+    assert result.contact_names() == ["bottom", "top"]
+    with pytest.raises(KeyError, match="bottom, top"):
+        result.contact()
+    steps = result.contact_steps("top")
+    assert steps["time"][-1] == pytest.approx(1.0)
+    with pytest.raises(KeyError, match="bottom_plate"):
+        result.boundary()
+    assert len(result.boundary("roller")) > 0
+
+
+def test_save_replaces_the_folder_whole(examples, tmp_path):
+    out = tmp_path / "run"
+    bc.run(examples / "contact_roller_plates.toml", output=out)
+    assert (out / "top.csv").exists()
+    bc.run(examples / "plate_tension.toml", output=out)
+    names = sorted(p.name for p in out.iterdir())
+    assert "top.csv" not in names and "boundary.csv" in names
+    assert json.loads((out / "summary.json").read_text())["title"].startswith("Plate in uniaxial tension")
+
+
+def test_mesh_only(examples):
+    result = bc.Problem.load(examples / "contact_roller_plates.toml").mesh()
+    assert any(name.endswith("_pairs.csv") for name in result.names())
+    assert "summary.json" in result.names()
+
+
+def test_dictionary_round_trip_is_the_same_problem():
+    data = tension_plate()
+    problem = bc.Problem.from_dict(data)
+    assert problem.data() == json.loads(json.dumps(data))
+    assert problem.parameters == {"p": 2.0, "W": 2.0, "H": 1.0}
+    assert problem.with_parameters(p=3).parameters["p"] == 3.0
+    with pytest.raises(ValueError):
+        bc.Problem.from_dict({"parameters": {"x": math.nan}})
+
+
+def test_one_summary_schema_for_every_kind_and_command(examples):
+    keys = None
+    for name, kind in (("plate_tension.toml", "body"), ("dd_two_layer_ring.toml", "decomposition"),
+                       ("contact_hertz_sphere.toml", "contact")):
+        problem = bc.Problem.load(examples / name)
+        for command, result in (("run", problem.run()), ("mesh", problem.mesh())):
+            s = result.summary
+            assert (s["schema"], s["kind"], s["command"]) == ("bemcontact.summary/1", kind, command)
+            keys = keys or set(s)
+            assert set(s) == keys, name
+            assert s["input"]["file"] == str(examples / name)
+            assert s["input"]["sha256"] == hashlib.sha256(problem.text.encode()).hexdigest()
+            assert s["bemcontact_version"] == bc.__version__
+            assert s["outputs"] == [n for n in result.names() if n != "summary.json"]
+            regions = s["mesh"]["regions"].values()
+            assert s["mesh"]["nodes"] == sum(r["nodes"] for r in regions) > 0
+            if command == "run":
+                assert s["reactions"] and s["timings_seconds"]["total"] > 0
