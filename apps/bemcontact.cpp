@@ -1,10 +1,15 @@
 // bemcontact: command line. Arguments -> problem file -> solve -> writers.
 #include <omp.h>
+#include <spawn.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <cerrno>
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <iostream>
 #include <nlohmann/json.hpp>
@@ -69,6 +74,38 @@ int command_run(const std::string& input, const std::string& output_dir, bool qu
     print_written(output_dir, output.files);
   }
   return ok;
+}
+
+// `plot` and `validate --report` draw with the Python package (matplotlib), which keeps
+// the C++ core free of plotting: the command hands over to its interpreter.
+int run_python_module(const std::string& module, std::vector<std::string> arguments) {
+#if defined(BEMCONTACT_PYTHON) && defined(BEMCONTACT_PYTHON_DIR)
+  std::string path = BEMCONTACT_PYTHON_DIR;
+  if (const char* extra = std::getenv("BEMCONTACT_PYTHONPATH")) path = std::string(extra) + ":" + path;
+  if (const char* existing = std::getenv("PYTHONPATH")) path += std::string(":") + existing;
+  ::setenv("PYTHONPATH", path.c_str(), 1);
+  arguments.insert(arguments.begin(), {BEMCONTACT_PYTHON, "-m", module});
+  std::vector<char*> argv;
+  for (auto& a : arguments) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  std::fflush(stdout);
+  pid_t child = 0;
+  const int error = ::posix_spawn(&child, BEMCONTACT_PYTHON, nullptr, nullptr, argv.data(), environ);
+  if (error != 0) {
+    std::fprintf(stderr, "bemcontact: cannot start %s: %s\n", BEMCONTACT_PYTHON, std::strerror(error));
+    return internal;
+  }
+  int status = 0;
+  while (::waitpid(child, &status, 0) < 0 && errno == EINTR) {
+  }
+  return WIFEXITED(status) ? WEXITSTATUS(status) : internal;
+#else
+  (void)arguments;
+  std::fprintf(stderr, "bemcontact: %s needs the Python module, and this build has none "
+                       "(configure with -DBEMCONTACT_BUILD_PYTHON=ON and pybind11-dev, python3-numpy, "
+                       "python3-matplotlib installed)\n", module.c_str());
+  return bad_input;
+#endif
 }
 
 std::string params_text(const validation::Record& r) {
@@ -189,6 +226,15 @@ int main(int argc, char** argv) {
   validate->add_flag("--list", list, "list the cases");
   validate->add_option("--skip", skip, "cases to leave out of a full run");
   validate->add_flag("-q,--quiet", quiet, "no progress");
+  std::string report_dir;
+  validate->add_option("--report", report_dir, "write an HTML page with the table and one figure per case to this folder");
+
+  std::string plot_source, plot_output, plot_format = "png";
+  auto* plot = app.add_subcommand("plot", "figures of a problem file (mesh) or of a run's output folder (mesh, "
+                                          "stresses, contact tractions, load history)");
+  plot->add_option("SOURCE", plot_source, "problem file or output folder")->required();
+  plot->add_option("-o,--output", plot_output, "folder of the figures (default: SOURCE/figures or STEM_figures)");
+  plot->add_option("--format", plot_format, "png or svg")->check(CLI::IsMember({"png", "svg"}));
 
   try {
     app.parse(argc, argv);
@@ -205,7 +251,19 @@ int main(int argc, char** argv) {
     run_options.limits.max_memory_bytes = max_memory_gb * 1e9;
     if (*run) return command_run(input, output_dir, quiet, run_options, false);
     if (*mesh) return command_run(input, output_dir, quiet, run_options, true);
-    if (*validate) return command_validate(cases, skip, json_path, examples, quiet, list);
+    if (*validate) {
+      if (!report_dir.empty() && json_path.empty()) json_path = (std::filesystem::path(report_dir) / "validate.json").string();
+      if (!report_dir.empty()) std::filesystem::create_directories(report_dir);
+      const int code = command_validate(cases, skip, json_path, examples, quiet, list);
+      if (report_dir.empty() || list) return code;
+      const int drawn = run_python_module("bemcontact.report", {json_path, report_dir});
+      return code != ok ? code : drawn;
+    }
+    if (*plot) {
+      std::vector<std::string> arguments{plot_source, "--format", plot_format};
+      if (!plot_output.empty()) arguments.insert(arguments.end(), {"-o", plot_output});
+      return run_python_module("bemcontact.plot", arguments);
+    }
   } catch (const InputError& e) {
     std::fprintf(stderr, "bemcontact: error: %s\n", e.what());
     return bad_input;

@@ -1,5 +1,7 @@
 #include "bemcontact/io/contact_writer.hpp"
 
+#include <optional>
+
 #include <cctype>
 #include <charconv>
 
@@ -112,11 +114,15 @@ std::string body_label(const contact::ContactProblem& problem, const contact::Bo
   return problem.bodies[side.body].name;
 }
 
-// Hertz's a, p0 and delta next to the computed ones, for an axisymmetric ball (an arc zone
-// on side 1 facing a straight elastic zone, or a flat zone facing a rigid sphere) pressed
-// by a force.
-std::string hertz_comparison(const contact::ContactProblem& problem, const contact::ContactSummary& s) {
-  if (problem.analysis != AnalysisType::axisymmetric || problem.forces.size() != 1 || problem.contacts.size() != 1) return "";
+// Hertz's solution for an axisymmetric ball (an arc zone on side 1 facing a straight
+// elastic zone, or a flat zone facing a rigid sphere) pressed by a force; none otherwise.
+struct HertzReference {
+  double R, a, p0, approach;
+};
+
+std::optional<HertzReference> hertz_reference(const contact::ContactProblem& problem) {
+  if (problem.analysis != AnalysisType::axisymmetric || problem.forces.size() != 1 || problem.contacts.size() != 1)
+    return std::nullopt;
   const auto& contact = problem.contacts.front();
   const auto& side1 = problem.region(contact.side1).body;
   const auto& zone1 = side1.pieces[contact.side1.piece];
@@ -124,30 +130,37 @@ std::string hertz_comparison(const contact::ContactProblem& problem, const conta
   double R = 0.0;
   Material material2{std::numeric_limits<double>::infinity(), 0.3};  // rigid: E* from side 1 alone
   if (body2.rigid) {
-    if (body2.rigid->profile != "sphere" || zone1.shape != geometry::PieceShape::line) return "";
+    if (body2.rigid->profile != "sphere" || zone1.shape != geometry::PieceShape::line) return std::nullopt;
     R = geometry::arc_radius(body2.rigid->contour.front());
   } else {
     const auto& zone2 = problem.region(contact.side2).body.pieces[contact.side2.piece];
-    if (zone1.shape != geometry::PieceShape::arc || zone2.shape != geometry::PieceShape::line) return "";
+    if (zone1.shape != geometry::PieceShape::arc || zone2.shape != geometry::PieceShape::line) return std::nullopt;
     R = geometry::arc_radius(zone1);
     material2 = problem.region(contact.side2).body.material;
   }
   // The force at the end of the history (its amplitude there).
   const auto& load = problem.forces.front();
   const double P = std::abs(load.force * load.amplitude.at(problem.end_time));
-  if (P == 0.0) return "";
-  const auto hertz = reference::hertz_point_contact(P, R, side1.material,
-                                                    std::numeric_limits<double>::infinity(), material2);
+  if (P == 0.0) return std::nullopt;
+  const auto hertz = reference::hertz_point_contact(P, R, side1.material, std::numeric_limits<double>::infinity(),
+                                                    material2);
+  return HertzReference{R, hertz.contact_radius(), hertz.max_pressure(), hertz.approach()};
+}
+
+// Hertz's a, p0 and delta next to the computed ones, when hertz_reference applies.
+std::string hertz_comparison(const contact::ContactProblem& problem, const contact::ContactSummary& s) {
+  const auto hertz = hertz_reference(problem);
+  if (!hertz) return "";
   char line[256];
   std::string out;
-  std::snprintf(line, sizeof line, "  Hertz (R = %.6g): a = %.6g (computed %.6g, %+.2f %%)\n", R,
-                hertz.contact_radius(), s.contact_radius, 100.0 * (s.contact_radius / hertz.contact_radius() - 1.0));
+  std::snprintf(line, sizeof line, "  Hertz (R = %.6g): a = %.6g (computed %.6g, %+.2f %%)\n", hertz->R, hertz->a,
+                s.contact_radius, 100.0 * (s.contact_radius / hertz->a - 1.0));
   out += line;
-  std::snprintf(line, sizeof line, "                   p0 = %.6g (centre %.6g, %+.2f %%)\n", hertz.max_pressure(),
-                s.centre_pressure, 100.0 * (s.centre_pressure / hertz.max_pressure() - 1.0));
+  std::snprintf(line, sizeof line, "                   p0 = %.6g (centre %.6g, %+.2f %%)\n", hertz->p0,
+                s.centre_pressure, 100.0 * (s.centre_pressure / hertz->p0 - 1.0));
   out += line;
-  std::snprintf(line, sizeof line, "                   delta = %.6g (computed %.6g, %+.2f %%)\n", hertz.approach(),
-                std::abs(s.approach), 100.0 * (std::abs(s.approach) / hertz.approach() - 1.0));
+  std::snprintf(line, sizeof line, "                   delta = %.6g (computed %.6g, %+.2f %%)\n", hertz->approach,
+                std::abs(s.approach), 100.0 * (std::abs(s.approach) / hertz->approach - 1.0));
   out += line;
   return out;
 }
@@ -176,6 +189,10 @@ nlohmann::json contact_summary_json(const contact::ContactProblem& problem, cons
                            "stick, slip) is redone in halves; the step grows back by 2 after an accepted one"},
                   {"max_state_changes", problem.max_state_changes}};
   j["unknowns"] = result.unknowns;
+  // The closed form the plots draw next to the pressure (Hertz: p0 sqrt(1 - (r/a)^2)).
+  if (const auto hertz = hertz_reference(problem))
+    j["reference"] = {{"name", "hertz_sphere"}, {"R", hertz->R}, {"a", hertz->a}, {"p0", hertz->p0},
+                      {"approach", hertz->approach}};
   if (!problem.contacts.empty()) {
     const auto& first = problem.contacts.front();
     j["bodies"] = {body_label(problem, first.side1), body_label(problem, first.side2)};

@@ -318,13 +318,14 @@ std::string boundary_csv(const geometry::BoundaryMesh& mesh, const bem::Boundary
 std::string interior_csv(const bem::InteriorSolution& solution) {
   check_interior(solution);
   Text out;
-  out << "point,x,y,u1,u2,s11,s22,s12,s33,von_mises\n";
+  out << "point,x,y,u1,u2,s11,s22,s12,s33,von_mises,grid_column,grid_row\n";
   for (std::size_t i = 0; i < solution.points.size(); ++i) {
     const Vec2& p = solution.points[i];
     const Vec2& u = solution.displacement[i];
+    const std::array<int, 2> grid = i < solution.grid_index.size() ? solution.grid_index[i] : std::array<int, 2>{-1, -1};
     out << static_cast<Index>(i) << ',' << p.x() << ',' << p.y() << ',' << u.x() << ',' << u.y() << ',';
     stress_columns(out, solution.stress[i]);
-    out << '\n';
+    out << ',' << grid[0] << ',' << grid[1] << '\n';
   }
   return std::move(out).str();
 }

@@ -3,6 +3,7 @@
 #include <array>
 #include <cstdint>
 #include <cstdio>
+#include <filesystem>
 
 namespace bemcontact::io {
 
@@ -43,6 +44,15 @@ void compress(std::array<std::uint32_t, 8>& h, const unsigned char* block) {
   for (int i = 0; i < 8; ++i) h[i] += v[i];
 }
 
+// The file's absolute path, so that tools find it from another folder; empty for texts
+// that were not read from a file ("<python>", "-").
+std::string input_path(const std::string& file) {
+  if (file.empty() || file.front() == '<' || file == "-") return "";
+  std::error_code error;
+  const auto path = std::filesystem::absolute(file, error);
+  return error ? "" : path.lexically_normal().string();
+}
+
 }  // namespace
 
 std::string sha256_hex(std::string_view bytes) {
@@ -76,7 +86,8 @@ nlohmann::json summary_json(const RunSummary& s) {
           {"command", s.command},
           {"title", s.title},
           {"analysis", s.analysis},
-          {"input", {{"file", s.input_file}, {"sha256", sha256_hex(s.input_text)}, {"bytes", s.input_text.size()}}},
+          {"input", {{"file", s.input_file}, {"path", input_path(s.input_file)}, {"sha256", sha256_hex(s.input_text)},
+                     {"bytes", s.input_text.size()}}},
           {"parameters", s.parameters},
           {"options", s.options},
           {"problem", s.problem},

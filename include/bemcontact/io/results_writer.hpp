@@ -5,7 +5,7 @@
 //
 // CSV files (header line, comma separated, one row per node, element or point):
 //   boundary.csv  node,x,y,nx,ny,u1,u2,t1,t2,s11,s22,s12,s33,von_mises
-//   interior.csv  point,x,y,u1,u2,s11,s22,s12,s33,von_mises
+//   interior.csv  point,x,y,u1,u2,s11,s22,s12,s33,von_mises,grid_column,grid_row (-1: listed)
 //   mesh.csv      node,x,y,nx,ny,piece,shifted
 //   elements.csv  element,node0,node1,x_start,y_start,x_end,y_end,nx,ny,piece
 // (node1 = -1 for constant elements; indices start at 0; components 1, 2 are x, y or r, z.)

@@ -111,9 +111,10 @@ TEST(IoResultsWriter, InteriorCsvRoundTrips) {
   interior.dropped_points.emplace_back(9.0, 9.0);  // not written
   const auto lines = lines_of(interior_csv(interior));
   ASSERT_EQ(lines.size(), 4u);
-  EXPECT_EQ(lines[0], "point,x,y,u1,u2,s11,s22,s12,s33,von_mises");
+  EXPECT_EQ(lines[0], "point,x,y,u1,u2,s11,s22,s12,s33,von_mises,grid_column,grid_row");
   const auto values = numbers_of(lines[3], ',');
-  ASSERT_EQ(values.size(), 10u);
+  ASSERT_EQ(values.size(), 12u);
+  EXPECT_EQ(values[10], -1.0);  // a listed point: no grid index
   EXPECT_EQ(values[0], 2.0);
   EXPECT_EQ(values[1], 0.1 * 2);
   EXPECT_EQ(values[2], 1.0 / 3.0);

@@ -1,0 +1,310 @@
+"""Figures of a problem file or of a run's output folder (matplotlib, no display needed).
+
+    python3 -m bemcontact.plot SOURCE [-o DIR] [--format png|svg]
+    bemcontact plot SOURCE ...            (the same, from the command line)
+
+SOURCE a problem file: the mesh of every body (element ends, normals, boundary names,
+contact pairs), so that a wrong arc direction or a reversed contour shows before solving.
+SOURCE an output folder: the mesh again (from the problem file named in summary.json when
+it is unchanged), von Mises and principal stresses on each interior grid, contact pressure
+and shear per contact (with the closed form when the run names one), load-history curves.
+"""
+import argparse
+import hashlib
+import json
+import os
+import pathlib
+import sys
+import urllib.parse
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import matplotlib.tri as mtri  # noqa: E402
+from matplotlib.collections import LineCollection  # noqa: E402
+import numpy as np  # noqa: E402
+
+from . import Problem, Result, Table  # noqa: E402
+
+
+def _vtk_names(vtk_text, field):
+    """A string array of a legacy VTK file's field data (percent-decoded)."""
+    lines = vtk_text.splitlines()
+    for k, line in enumerate(lines):
+        words = line.split()
+        if len(words) == 4 and words[0] == field and words[3] == "string":
+            count = int(words[2])
+            return [urllib.parse.unquote(w) for w in lines[k + 1:k + 1 + count]]
+    return []
+
+
+def _stems(result, suffix):
+    """Region stems of files named <stem><suffix> ('' for a one-body problem's file)."""
+    stems = []
+    for name in result.names():
+        if name.endswith(suffix):
+            stem = name[: -len(suffix)]
+            stems.append(stem[:-1] if stem.endswith("_") else stem)
+    return stems
+
+
+def _file(stem, suffix):
+    return f"{stem}_{suffix}" if stem else suffix
+
+
+def _size(x, y):
+    return max(np.ptp(x), np.ptp(y), 1e-300)
+
+
+def mesh_figure(mesh_result, title, path):
+    """Elements (ends marked), nodes, outward normals and boundary names of every region."""
+    stems = _stems(mesh_result, "mesh_elements.csv")
+    fig, ax = plt.subplots(figsize=(8, 7))
+    xs, ys = [], []
+    for stem in stems:
+        nodes = mesh_result.table(_file(stem, "mesh_nodes.csv"))
+        xs.extend(nodes["x"])
+        ys.extend(nodes["y"])
+    size = _size(np.array(xs), np.array(ys)) if xs else 1.0
+    colours = plt.get_cmap("tab10")
+    for r, stem in enumerate(stems):
+        elements = mesh_result.table(_file(stem, "mesh_elements.csv"))
+        nodes = mesh_result.table(_file(stem, "mesh_nodes.csv"))
+        names = _vtk_names(mesh_result.text(_file(stem, "mesh.vtk")), "boundary_names")
+        for piece in np.unique(elements["piece"]).astype(int):
+            on = elements["piece"] == piece
+            colour = colours((r * 3 + piece) % 10)
+            for e in np.flatnonzero(on):
+                xe = [elements["x_start"][e], elements["x_end"][e]]
+                ye = [elements["y_start"][e], elements["y_end"][e]]
+                middle = int(elements["node_middle"][e]) if "node_middle" in elements else -1
+                if middle >= 0:  # quadratic: through its middle node
+                    xe.insert(1, nodes["x"][middle])
+                    ye.insert(1, nodes["y"][middle])
+                ax.plot(xe, ye, "-", color=colour, lw=1.2)
+            # Element ends: short ticks across the element (along its normal).
+            tick = 0.012 * size
+            for end in ("start", "end"):
+                ex, ey = elements[f"x_{end}"][on], elements[f"y_{end}"][on]
+                nx, ny = elements["nx"][on], elements["ny"][on]
+                ticks = np.stack([np.stack([ex - tick * nx, ey - tick * ny], 1),
+                                  np.stack([ex + tick * nx, ey + tick * ny], 1)], 1)
+                ax.add_collection(LineCollection(ticks, colors="k", linewidths=0.8))
+            at = nodes["piece"] == piece
+            ax.plot(nodes["x"][at], nodes["y"][at], "o", mfc="none", mec=colour, ms=3)
+            ax.quiver(nodes["x"][at], nodes["y"][at], nodes["nx"][at], nodes["ny"][at], color=colour,
+                      angles="xy", scale_units="xy", scale=1.0 / (0.04 * size), width=0.002)
+            mid = np.flatnonzero(at)[len(np.flatnonzero(at)) // 2] if at.any() else None
+            if mid is not None:
+                label = names[piece] if piece < len(names) else f"piece {piece}"
+                if stem:
+                    label = f"{stem}: {label}"
+                ax.annotate(label, (nodes["x"][mid], nodes["y"][mid]),
+                            xytext=(nodes["x"][mid] + 0.1 * size * nodes["nx"][mid],
+                                    nodes["y"][mid] + 0.1 * size * nodes["ny"][mid]),
+                            fontsize=8, color=colour, ha="center",
+                            arrowprops={"arrowstyle": "-", "color": colour, "lw": 0.5})
+    for name in mesh_result.names():
+        if name.endswith("_pairs.csv"):
+            pairs = mesh_result.table(name)
+            for k in range(len(pairs)):
+                ax.plot([pairs["x1"][k], pairs["x2"][k]], [pairs["y1"][k], pairs["y2"][k]], "-", color="0.5", lw=0.5)
+    ax.set_aspect("equal")
+    ax.set_title(f"{title}\nelements (| ends), nodes (o), outward normals, boundary names", fontsize=9)
+    ax.set_xlabel("x (r)")
+    ax.set_ylabel("y (z)")
+    fig.tight_layout()
+    fig.savefig(path)
+    plt.close(fig)
+    return path
+
+
+def principal_stresses(s11, s22, s12):
+    """In-plane principal stresses (s1 >= s2) from the components (closed form)."""
+    centre = 0.5 * (s11 + s22)
+    radius = np.hypot(0.5 * (s11 - s22), s12)
+    return centre + radius, centre - radius
+
+
+def grid_triangles(table):
+    """Two triangles per grid square whose four corners are in the table (interior.csv)."""
+    at = {}
+    for k, (i, j) in enumerate(zip(table["grid_column"].astype(int), table["grid_row"].astype(int))):
+        if i >= 0:
+            at[(i, j)] = k
+    triangles = []
+    for (i, j), a in at.items():
+        b, c, d = at.get((i + 1, j)), at.get((i + 1, j + 1)), at.get((i, j + 1))
+        if None not in (b, c, d):
+            triangles += [[a, b, c], [a, c, d]]
+    return np.array(triangles, dtype=int).reshape(-1, 3)
+
+
+def _outline(ax, boundary):
+    for name in dict.fromkeys(boundary["boundary"]):
+        on = boundary["boundary"] == name
+        ax.plot(boundary["x"][on], boundary["y"][on], "-", color="k", lw=0.8)
+
+
+def interior_figure(result, stem, title, path):
+    table = result.table(_file(stem, "interior.csv"))
+    boundary = result.table(_file(stem, "boundary.csv"))
+    s1, s2 = principal_stresses(table["s11"], table["s22"], table["s12"])
+    triangles = grid_triangles(table)
+    fig, axes = plt.subplots(1, 3, figsize=(15, 5))
+    for ax, values, name in zip(axes, (table["von_mises"], s1, s2),
+                                ("von Mises", "max principal s1", "min principal s2")):
+        if len(triangles):
+            mesh = mtri.Triangulation(table["x"], table["y"], triangles)
+            shown = ax.tricontourf(mesh, values, levels=20, cmap="viridis")
+        else:
+            shown = ax.scatter(table["x"], table["y"], c=values, s=12, cmap="viridis")
+        fig.colorbar(shown, ax=ax, shrink=0.8)
+        _outline(ax, boundary)
+        # The grid's region, with the boundary around it.
+        margin = 0.05 * _size(table["x"], table["y"])
+        ax.set_xlim(table["x"].min() - margin, table["x"].max() + margin)
+        ax.set_ylim(table["y"].min() - margin, table["y"].max() + margin)
+        ax.set_aspect("equal")
+        ax.set_title(name, fontsize=9)
+    fig.suptitle(f"{title}: {stem or 'body'} (interior points; stresses in the file's units)", fontsize=10)
+    fig.tight_layout()
+    fig.savefig(path)
+    plt.close(fig)
+    return path
+
+
+def contact_figure(result, name, reference, friction, title, path):
+    pairs = result.contact(name)
+    r = pairs["coordinate"]
+    order = np.argsort(r)
+    fig, ax = plt.subplots(figsize=(8, 5))
+    ax.plot(r[order], -pairs["p_n"][order], "o-", ms=3, label="pressure -p_n")
+    ax.plot(r[order], pairs["p_t"][order], "s-", ms=3, label="shear p_t")
+    if reference and reference.get("name") == "hertz_sphere":
+        a, p0 = reference["a"], reference["p0"]
+        rr = np.linspace(0.0, a, 200) * np.sign(np.median(r) or 1.0)
+        ax.plot(rr, p0 * np.sqrt(np.clip(1 - (rr / a) ** 2, 0, None)), "k--", label=f"Hertz (a = {a:.4g})")
+    for status, colour in (("stick", "tab:green"), ("slip", "tab:red")):
+        on = pairs["status"] == status
+        if on.any() and friction > 0:
+            ax.plot(r[on], np.zeros(on.sum()), "|", color=colour, ms=10, label=status)
+    ax.axhline(0.0, color="0.6", lw=0.5)
+    ax.set_xlabel("position along the contact (x or r)")
+    ax.set_ylabel("traction")
+    ax.set_title(f"{title}: contact '{name}' at the end of the history", fontsize=9)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(path)
+    plt.close(fig)
+    return path
+
+
+def history_figure(result, names, title, path):
+    fig, axes = plt.subplots(2, 2, figsize=(11, 7))
+    for name in names:
+        steps = result.contact_steps(name)
+        t = steps["time"]
+        axes[0, 0].plot(t, steps["normal_force"], ".-", label=name)
+        axes[0, 1].plot(t, steps["a"], ".-", label=f"{name}: a")
+        axes[0, 1].plot(t, steps["c"], ".--", label=f"{name}: c (stick)")
+        axes[1, 0].plot(t, np.cumsum(steps["dissipated_energy"]), ".-", label=name)
+    if "motions.csv" in result.names():
+        motions = result.motions()
+        # Forces on the left axis, displacements (much smaller numbers) on the right.
+        right = axes[1, 1].twinx()
+        for k, column in enumerate(motions.columns[2:]):
+            ax = axes[1, 1] if column.endswith("_force") else right
+            ax.plot(motions["time"], motions[column], ".-" if ax is right else "o-", ms=3, label=column,
+                    color=plt.get_cmap("tab10")(k % 10))
+        axes[1, 1].set_ylabel("forces")
+        right.set_ylabel("displacements")
+        if right.has_data():
+            right.legend(fontsize=7, loc="lower right")
+    for ax, label in zip(axes.flat, ("normal force", "contact and stick sizes", "dissipated energy (cumulative)",
+                                     "prescribed / computed motions and forces")):
+        ax.set_title(label, fontsize=9)
+        ax.set_xlabel("time")
+        if ax.has_data():
+            ax.legend(fontsize=7)
+    fig.suptitle(title, fontsize=10)
+    fig.tight_layout()
+    fig.savefig(path)
+    plt.close(fig)
+    return path
+
+
+def _load_folder(folder):
+    files = {p.name: p.read_bytes() for p in sorted(folder.iterdir()) if p.is_file() and not p.name.startswith(".")}
+    if "summary.json" not in files:
+        raise SystemExit(f"bemcontact plot: {folder} is not an output folder of bemcontact (no summary.json)")
+    summary = json.loads(files["summary.json"])
+    order = summary.get("outputs", []) + ["summary.json"]
+    files = {n: files[n] for n in order if n in files}
+    return Result({"files": files, "report": "", "warnings": summary.get("warnings", []), "solver_failure": ""})
+
+
+def figures(source, out_dir=None, fmt="png"):
+    """Write the figures of `source` (problem file or output folder); returns their paths."""
+    source = pathlib.Path(source)
+    written = []
+    if source.is_dir():
+        result = _load_folder(source)
+        summary = result.summary
+        title = summary.get("title", "")
+        out = pathlib.Path(out_dir) if out_dir else source / "figures"
+        out.mkdir(parents=True, exist_ok=True)
+        problem_file = pathlib.Path(summary.get("input", {}).get("path") or summary.get("input", {}).get("file", ""))
+        if problem_file.is_file():
+            problem = Problem.load(problem_file)
+            if hashlib.sha256(problem.text.encode()).hexdigest() == summary["input"]["sha256"]:
+                overrides = {k: v for k, v in summary.get("parameters", {}).items()
+                             if isinstance(v, (int, float)) and k in problem.parameters and
+                             isinstance(problem.parameters[k], (int, float)) and problem.parameters[k] != v}
+                written.append(mesh_figure(problem.mesh(**overrides), title, out / f"mesh.{fmt}"))
+            else:
+                print(f"bemcontact plot: {problem_file} changed since the run; no mesh figure", file=sys.stderr)
+        else:
+            print(f"bemcontact plot: the problem file '{problem_file}' is not found from here; no mesh figure",
+                  file=sys.stderr)
+        for stem in _stems(result, "interior.csv"):
+            written.append(interior_figure(result, stem, title, out / f"{_file(stem, 'interior')}.{fmt}"))
+        contacts = result.contact_names()
+        reference = summary.get("results", {}).get("contact", {}).get("reference")
+        friction = summary.get("options", {}).get("law", {}).get("friction", 0.0)
+        for k, name in enumerate(contacts):
+            written.append(contact_figure(result, name, reference if k == 0 else None, friction, title,
+                                          out / f"contact_{name}.{fmt}"))
+        if contacts and len(result.contact_steps(contacts[0])) > 1:
+            written.append(history_figure(result, contacts, title, out / f"history.{fmt}"))
+    elif source.is_file():
+        problem = Problem.load(source)
+        out = pathlib.Path(out_dir) if out_dir else pathlib.Path(f"{source.stem}_figures")
+        out.mkdir(parents=True, exist_ok=True)
+        mesh = problem.mesh()
+        written.append(mesh_figure(mesh, mesh.summary.get("title", source.stem), out / f"mesh.{fmt}"))
+    else:
+        raise SystemExit(f"bemcontact plot: no such file or folder: {source}")
+    return written
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(prog="bemcontact plot", description=__doc__.split("\n\n")[0])
+    parser.add_argument("source", help="problem file (.toml) or output folder of a run")
+    parser.add_argument("-o", "--output", help="folder of the figures (default: SOURCE/figures or STEM_figures)")
+    parser.add_argument("--format", choices=("png", "svg"), default="png")
+    args = parser.parse_args(argv)
+    from . import Error
+    try:
+        paths = figures(args.source, args.output, args.format)
+    except Error as error:
+        print(f"bemcontact plot: error: {error}", file=sys.stderr)
+        return 2
+    for path in paths:
+        print(f"  wrote {os.fspath(path)}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,84 @@
+"""Figures: the numbers they draw, the files they write, the errors they report."""
+import json
+import subprocess
+import xml.etree.ElementTree as ET
+
+import numpy as np
+import pytest
+
+import bemcontact as bc
+from bemcontact import plot, report
+
+PNG_SIGNATURE = b"\x89PNG\r\n\x1a\n"
+
+
+def test_principal_stresses_match_mohrs_circle():
+    s1, s2 = plot.principal_stresses(np.array([3.0, 0.0, 1.0]), np.array([0.0, 0.0, 1.0]), np.array([0.0, 2.0, 0.0]))
+    np.testing.assert_allclose(s1, [3.0, 2.0, 1.0])  # uniaxial, pure shear (+-tau), hydrostatic
+    np.testing.assert_allclose(s2, [0.0, -2.0, 1.0])
+
+
+def test_grid_triangles_are_the_vtk_cells_split_in_two(examples):
+    result = bc.run(examples / "plate_hole.toml")
+    triangles = plot.grid_triangles(result.interior())
+    quads = result.text("interior.vtk").split("POLYGONS ")[1].split()[0]
+    assert len(triangles) == 2 * int(quads)
+
+
+def test_mesh_figure_of_a_problem_file_names_every_boundary(examples, binary, tmp_path):
+    out = tmp_path / "figures"
+    command = subprocess.run([binary, "plot", str(examples / "contact_roller_plates.toml"), "-o", str(out)],
+                             capture_output=True, text=True)
+    assert command.returncode == 0, command.stderr
+    assert (out / "mesh.png").read_bytes()[:8] == PNG_SIGNATURE
+    mesh = bc.Problem.load(examples / "contact_roller_plates.toml").mesh()
+    names = plot._vtk_names(mesh.text("roller_mesh.vtk"), "boundary_names")
+    data = bc.Problem.load(examples / "contact_roller_plates.toml").data()
+    roller = next(b for b in data["body"] if b["name"] == "roller")
+    assert names == [b["name"] for b in roller["boundary"]]
+
+
+def test_figures_of_an_output_folder(examples, binary, tmp_path):
+    run_dir = tmp_path / "run"
+    bc.run(examples / "fretting_cylinder.toml", output=run_dir)
+    command = subprocess.run([binary, "plot", str(run_dir), "--format", "svg"], capture_output=True, text=True)
+    assert command.returncode == 0, command.stderr
+    written = sorted(p.name for p in (run_dir / "figures").iterdir())
+    assert written == ["contact_contact.svg", "history.svg", "mesh.svg"]
+    for name in written:
+        assert ET.parse(run_dir / "figures" / name).getroot().tag.endswith("svg")
+
+
+def test_plot_errors_are_clear(binary, tmp_path):
+    missing = subprocess.run([binary, "plot", str(tmp_path / "nothing")], capture_output=True, text=True)
+    assert missing.returncode != 0 and "no such file or folder" in missing.stderr
+    (tmp_path / "empty").mkdir()
+    empty = subprocess.run([binary, "plot", str(tmp_path / "empty")], capture_output=True, text=True)
+    assert empty.returncode != 0 and "not an output folder" in empty.stderr
+    bad = tmp_path / "bad.toml"
+    bad.write_text("title = 'x'\n[material]\nE = -1\n")
+    broken = subprocess.run([binary, "plot", str(bad)], capture_output=True, text=True)
+    assert broken.returncode == 2 and str(bad) in broken.stderr
+
+
+def test_validate_report_has_a_figure_and_a_row_per_record(binary, tmp_path):
+    out = tmp_path / "report"
+    command = subprocess.run([binary, "validate", "plate-hole", "cattaneo-mindlin", "--report", str(out), "-q"],
+                             capture_output=True, text=True)
+    assert command.returncode == 0, command.stdout + command.stderr
+    records = json.loads((out / "validate.json").read_text())
+    page = (out / "index.html").read_text()
+    assert page.count("<img ") == 2
+    assert page.count("<tr class=") == len(records)
+    for case in ("plate-hole", "cattaneo-mindlin"):
+        assert (out / f"{case}.png").read_bytes()[:8] == PNG_SIGNATURE
+
+
+def test_report_marks_failures(tmp_path):
+    records = [{"case": "c", "params": {"elements": "8"}, "quantity": "q", "computed": 1.1, "reference": 1.0,
+                "error": 0.1, "comparison": "relative", "tolerance": 0.01, "passed": False},
+               {"case": "c", "params": {"elements": "16"}, "quantity": "q", "computed": 1.001, "reference": 1.0,
+                "error": 0.001, "comparison": "relative", "tolerance": 0.01, "passed": True}]
+    page = report.write_report(records, tmp_path).read_text()
+    assert "1 passed, 1 failed" in page
+    assert page.count("class='no'") == 1
