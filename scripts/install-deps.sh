@@ -6,7 +6,8 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 packages=(g++ cmake make pkg-config libeigen3-dev libopenblas-dev liblapacke-dev
   libtomlplusplus-dev libcli11-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev
-  python3 python3-dev pybind11-dev python3-numpy python3-pytest python3-matplotlib python3-vtk9)
+  python3 python3-dev pybind11-dev python3-numpy python3-pytest python3-matplotlib python3-vtk9
+  libgmsh-dev)
 if [ "${1:-}" = "--fuzz" ]; then
   packages+=(clang libclang-rt-14-dev libomp-14-dev)
 fi

@@ -7,6 +7,7 @@
 #include <map>
 #include <optional>
 
+#include "bemcontact/io/gmsh_geometry.hpp"
 #include "bemcontact/io/problem_schema.hpp"
 #include "bemcontact/io/suggestions.hpp"
 
@@ -362,6 +363,100 @@ PrescribedValue read_prescribed_value(const toml::node& node, const SourceLocati
                           "found " + describe_node(node));
 }
 
+// The [[boundary]] tables: each a piece (line or arc) with its conditions.
+void read_boundary_pieces(const TableReader& body, const FileContext& context, const Vertices& vertices,
+                          bem::BodyDefinition& definition) {
+  // [[boundary]]
+  const toml::array* boundaries = array_of_tables(body, "boundary", "[[boundary]]");
+  if (!boundaries)
+    body.fail("boundary", "missing [[boundary]] tables: the body needs boundary pieces (lines and "
+                          "arcs) forming closed contours");
+  std::map<std::string, int> name_lines;
+  int index = 0;
+  for (const toml::node& node : *boundaries) {
+    ++index;
+    const std::string path = body.key_path("boundary[" + std::to_string(index) + "]");
+    const TableReader reader(*node.as_table(), path, context, body.where("boundary").line);
+    BoundaryPiece piece = read_piece(reader, index, vertices, context);
+    const auto [existing, inserted] = name_lines.emplace(piece.name, reader.line());
+    if (!inserted)
+      reader.fail(reader.has("name") ? "name" : "",
+                  "the boundary name '" + piece.name + "' is already used by the boundary at line " +
+                      std::to_string(existing->second) + "; boundary names must be unique");
+    bem::BoundaryCondition condition = read_condition(reader, piece.name, lies_on_axis(piece, context));
+    piece.condition_signature = condition.signature;
+    definition.pieces.push_back(std::move(piece));
+    definition.conditions.push_back(std::move(condition));
+  }
+}
+
+// The body's pieces from a Gmsh file (io/gmsh_geometry.hpp); each [[boundary]] table
+// gives the conditions of the physical curve of its name (none: traction-free).
+void read_gmsh_pieces(const TableReader& body, const FileContext& context, bem::BodyDefinition& definition) {
+  const auto name = body.optional_string("geometry");
+  if (!name || name->empty()) body.fail("geometry", "the Gmsh file (.geo or .msh) as a string");
+  std::filesystem::path file(*name);
+  // Relative to the problem file's folder.
+  if (file.is_relative() && !context.file.empty() && context.file.front() != '<')
+    file = std::filesystem::path(context.file).parent_path() / file;
+  GmshBoundary gmsh;
+  try {
+    gmsh = read_gmsh_boundary(file, context.axisymmetric());
+  } catch (const InputError& e) {
+    // The Gmsh file's own position, then the key that named it.
+    throw InputError(body.where("geometry"), e.what());
+  }
+  std::map<std::string, const toml::table*> conditions;
+  std::map<std::string, int> lines;
+  if (const toml::array* boundaries = array_of_tables(body, "boundary", "[[boundary]]")) {
+    int index = 0;
+    for (const toml::node& node : *boundaries) {
+      ++index;
+      const TableReader reader(*node.as_table(), body.key_path("boundary[" + std::to_string(index) + "]"), context,
+                               body.where("boundary").line);
+      reader.check_keys(schema::boundary_keys(), "each [[boundary]] table");
+      for (const char* key : {"shape", "from", "to", "center", "direction", "elements", "grading", "refine"})
+        if (reader.has(key))
+          reader.fail(key, "'" + std::string(key) + "' comes from the Gmsh file '" + *name +
+                               "' (its curves, their mesh and grading): give only name and conditions here");
+      const auto boundary_name = reader.optional_string("name");
+      if (!boundary_name) reader.fail("name", "name the physical curve of '" + *name + "' these conditions apply to");
+      bool known = false;
+      for (const auto& piece : gmsh.pieces) known = known || piece.name == *boundary_name;
+      if (!known) {
+        std::string names;
+        for (const auto& piece : gmsh.pieces) names += (names.empty() ? "'" : ", '") + piece.name + "'";
+        reader.fail("name", "'" + *name + "' has no physical curve named '" + *boundary_name + "'; its curves are " +
+                                names);
+      }
+      if (!conditions.emplace(*boundary_name, node.as_table()).second)
+        reader.fail("name", "the boundary '" + *boundary_name + "' already has conditions at line " +
+                                std::to_string(lines[*boundary_name]));
+      lines[*boundary_name] = reader.line();
+    }
+  }
+  const toml::table traction_free;
+  for (auto& piece : gmsh.pieces) {
+    const auto found = conditions.find(piece.name);
+    const int line = found != conditions.end() ? lines[piece.name] : body.where("geometry").line;
+    const TableReader reader(found != conditions.end() ? *found->second : traction_free,
+                             body.key_path("boundary '" + piece.name + "'"), context, line);
+    piece.where = SourceLocation{context.file, line, reader.path()};
+    if (piece.elements > context.limits.max_elements)
+      body.fail("geometry", "curve '" + piece.name + "' has " + std::to_string(piece.elements) +
+                                " elements, over the limit of " + std::to_string(context.limits.max_elements));
+    bem::BoundaryCondition condition = read_condition(reader, piece.name, lies_on_axis(piece, context));
+    const bool reversed = std::find(gmsh.reversed.begin(), gmsh.reversed.end(), piece.name) != gmsh.reversed.end();
+    if (reversed && (reader.has("ut") || reader.has("tt")))
+      context.warnings.push_back(reader.where().describe() + ": curve '" + piece.name +
+                                 "' runs against the body's orientation in '" + *name +
+                                 "' and was reversed: 'ut'/'tt' act along the reversed direction (body on the left)");
+    piece.condition_signature = condition.signature;
+    definition.pieces.push_back(std::move(piece));
+    definition.conditions.push_back(std::move(condition));
+  }
+}
+
 bem::BodyDefinition parse_body(const toml::table& table, const BodyContext& body_context) {
   const FileContext& context = *body_context.file;
   const TableReader body(table, body_context.path, context, body_context.fallback_line);
@@ -407,32 +502,15 @@ bem::BodyDefinition parse_body(const toml::table& table, const BodyContext& body
     }
   }
 
-  // [[boundary]]
-  const toml::array* boundaries = array_of_tables(body, "boundary", "[[boundary]]");
-  if (!boundaries)
-    body.fail("boundary", "missing [[boundary]] tables: the body needs boundary pieces (lines and "
-                          "arcs) forming closed contours");
-  std::map<std::string, int> name_lines;
-  int index = 0;
-  for (const toml::node& node : *boundaries) {
-    ++index;
-    const std::string path = body.key_path("boundary[" + std::to_string(index) + "]");
-    const TableReader reader(*node.as_table(), path, context, body.where("boundary").line);
-    BoundaryPiece piece = read_piece(reader, index, vertices, context);
-    const auto [existing, inserted] = name_lines.emplace(piece.name, reader.line());
-    if (!inserted)
-      reader.fail(reader.has("name") ? "name" : "",
-                  "the boundary name '" + piece.name + "' is already used by the boundary at line " +
-                      std::to_string(existing->second) + "; boundary names must be unique");
-    bem::BoundaryCondition condition = read_condition(reader, piece.name, lies_on_axis(piece, context));
-    piece.condition_signature = condition.signature;
-    definition.pieces.push_back(std::move(piece));
-    definition.conditions.push_back(std::move(condition));
-  }
+  // geometry = "part.msh" / "part.geo": the pieces are Gmsh's physical curves.
+  if (body.has("geometry"))
+    read_gmsh_pieces(body, context, definition);
+  else
+    read_boundary_pieces(body, context, vertices, definition);
 
   // [[constraint]]
   if (const toml::array* constraints = array_of_tables(body, "constraint", "[[constraint]]")) {
-    index = 0;
+    int index = 0;
     for (const toml::node& node : *constraints) {
       ++index;
       const std::string path = body.key_path("constraint[" + std::to_string(index) + "]");

@@ -11,7 +11,7 @@ const std::vector<std::string>& file_keys() {
   return keys;
 }
 const std::vector<std::string>& body_keys() {
-  static const std::vector<std::string> keys{"material", "vertices", "boundary", "constraint"};
+  static const std::vector<std::string> keys{"material", "vertices", "boundary", "constraint", "geometry"};
   return keys;
 }
 const std::vector<std::string>& material_keys() {

@@ -163,3 +163,18 @@ def test_one_summary_schema_for_every_kind_and_command(examples):
             assert s["mesh"]["nodes"] == sum(r["nodes"] for r in regions) > 0
             if command == "run":
                 assert s["reactions"] and s["timings_seconds"]["total"] > 0
+
+
+def test_gmsh_geometry_gives_the_problem_drawn_by_hand(examples):
+    # gmsh_plate_hole.geo draws plate_hole.toml's boundary (two curves against the body's
+    # orientation): the same nodes and stresses to round-off.
+    by_hand = bc.run(examples / "plate_hole.toml")
+    drawn = bc.run(examples / "gmsh_plate_hole.toml")
+    for a, b in ((by_hand.boundary(), drawn.boundary()), (by_hand.interior(), drawn.interior())):
+        np.testing.assert_allclose(b["x"], a["x"], atol=1e-12)
+        np.testing.assert_allclose(b["von_mises"], a["von_mises"], rtol=1e-9, atol=1e-9 * a["von_mises"].max())
+    # Kirsch: s_tt = 3P at (a, 0) (the finite plate adds about 0.3 %, the mesh about 1 %).
+    P = 2.5
+    edge = drawn.boundary()
+    at_a = np.argmin(np.hypot(edge["x"] - 1.0, edge["y"]))
+    assert edge["s22"][at_a] == pytest.approx(3 * P, rel=0.02)

@@ -1,0 +1,198 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "bemcontact/core/error.hpp"
+#include "bemcontact/io/gmsh_geometry.hpp"
+#include "bemcontact/io/problem_file.hpp"
+#include "bemcontact/io/toml_reader.hpp"
+
+namespace bemcontact::io {
+
+namespace {
+
+using geometry::PieceShape;
+
+// A unit square (format 2.2): bottom 0-1 (2 elements), right, top drawn left to right
+// (against the square's orientation), left; one triangle that is not boundary.
+const char* square_22 = R"($MeshFormat
+2.2 0 8
+$EndMeshFormat
+$PhysicalNames
+4
+1 1 "bottom"
+1 2 "right"
+1 3 "top"
+1 4 "left"
+$EndPhysicalNames
+$Nodes
+5
+1 0 0 0
+2 1 0 0
+3 1 1 0
+4 0 1 0
+5 0.5 0 0
+$EndNodes
+$Elements
+6
+1 1 2 1 1 1 5
+2 1 2 1 1 5 2
+3 1 2 2 2 2 3
+4 1 2 3 3 4 3
+5 1 2 4 4 4 1
+6 2 2 9 9 1 2 3
+$EndElements
+)";
+
+// A quarter of a circle of radius 2 centred at the origin, drawn clockwise, in format 4.1,
+// closed by two lines: the region 0 <= r <= 2, 0 <= theta <= pi/2.
+std::string quarter_disc_41() {
+  std::string nodes;
+  const int n = 8;
+  for (int k = 0; k <= n; ++k) {
+    const double t = M_PI / 2 * (1.0 - double(k) / n);  // from (0, 2) down to (2, 0)
+    nodes += std::to_string(10 + k) + "\n";
+  }
+  std::string coordinates;
+  for (int k = 0; k <= n; ++k) {
+    const double t = M_PI / 2 * (1.0 - double(k) / n);
+    char line[96];
+    std::snprintf(line, sizeof line, "%.17g %.17g 0\n", 2 * std::cos(t), 2 * std::sin(t));
+    coordinates += line;
+  }
+  std::string arc_elements;
+  for (int k = 0; k < n; ++k)
+    arc_elements += std::to_string(100 + k) + " " + std::to_string(10 + k) + " " + std::to_string(11 + k) + "\n";
+  return "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$PhysicalNames\n3\n1 7 \"arc\"\n1 8 \"x axis\"\n1 9 \"y axis\"\n"
+         "$EndPhysicalNames\n$Entities\n0 3 0 0\n"
+         "1 0 0 0 2 2 0 1 7 0\n2 0 0 0 2 0 0 1 8 0\n3 0 0 0 0 2 0 1 9 0\n$EndEntities\n"
+         "$Nodes\n2 10 1 20\n1 1 0 9\n" + nodes + coordinates + "0 1 0 1\n1\n0 0 0\n$EndNodes\n"
+         "$Elements\n3 10 1 200\n1 1 1 8\n" + arc_elements +
+         "1 2 1 1\n200 1 18\n1 3 1 1\n201 10 1\n$EndElements\n";
+}
+
+}  // namespace
+
+TEST(GmshGeometry, Format22SquareIsOrientedCounterClockwise) {
+  const auto curves = parse_msh(square_22, "square.msh");
+  ASSERT_EQ(curves.curves.size(), 4u);
+  EXPECT_EQ(curves.curves[0].name, "bottom");
+  EXPECT_EQ(curves.curves[0].elements.size(), 2u);
+  const auto boundary = boundary_from_curves(curves, false, "square.msh");
+  ASSERT_EQ(boundary.pieces.size(), 4u);
+  EXPECT_EQ(boundary.reversed, (std::vector<std::string>{"top"}));
+  const auto& top = boundary.pieces[2];
+  EXPECT_EQ(top.shape, PieceShape::line);
+  EXPECT_EQ(top.start, Vec2(1, 1));  // turned: right to left, the square on its left
+  EXPECT_EQ(top.end, Vec2(0, 1));
+  EXPECT_EQ(boundary.pieces[0].elements, 2);
+  EXPECT_EQ(boundary.pieces[0].grading, 1.0);
+}
+
+TEST(GmshGeometry, Format41ArcKeepsItsCentreAndSense) {
+  const auto boundary = boundary_from_curves(parse_msh(quarter_disc_41(), "disc.msh"), false, "disc.msh");
+  ASSERT_EQ(boundary.pieces.size(), 3u);
+  const auto& arc = boundary.pieces[0];
+  EXPECT_EQ(arc.name, "arc");
+  EXPECT_EQ(arc.shape, PieceShape::arc);
+  EXPECT_NEAR(arc.center.norm(), 0.0, 1e-12);
+  EXPECT_EQ(arc.elements, 8);
+  // Drawn clockwise from (0, 2) to (2, 0), the disc on its right: turned to run
+  // counter-clockwise from (2, 0) to (0, 2).
+  EXPECT_TRUE(arc.counterclockwise);
+  EXPECT_NEAR((arc.start - Vec2(2, 0)).norm(), 0.0, 1e-12);
+  EXPECT_EQ(boundary.pieces[1].name, "x axis");
+}
+
+TEST(GmshGeometry, AxisymmetricChainIsClosedByTheAxis) {
+  // Only the arc and the x axis: open at (0, 2) and (0, 0), both on r = 0.
+  auto curves = parse_msh(quarter_disc_41(), "disc.msh");
+  curves.curves.pop_back();
+  EXPECT_THROW(boundary_from_curves(curves, false, "disc.msh"), InputError);
+  const auto boundary = boundary_from_curves(curves, true, "disc.msh");
+  EXPECT_EQ(boundary.pieces.size(), 2u);
+  EXPECT_TRUE(boundary.pieces[0].counterclockwise);
+}
+
+TEST(GmshGeometry, RefusesWhatIsNotALineOrAnArcWithTheReason) {
+  auto curves = parse_msh(square_22, "square.msh");
+  // Move the bottom's middle node off the line and off any circle through its ends.
+  curves.nodes[4].second = Vec2(0.2, 0.1);
+  curves.curves[0].elements.push_back({5, 2});  // now branching at node 5... and node 2
+  try {
+    boundary_from_curves(curves, false, "square.msh");
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("'bottom' branches"), std::string::npos) << e.what();
+  }
+  // A parabola through three collinear-free points is a circle; through five it is not.
+  GmshCurves parabola;
+  for (int k = 0; k <= 4; ++k) parabola.nodes.emplace_back(k, Vec2(k, 0.1 * k * k * k));
+  parabola.curves.push_back(GmshCurve{"cubic", {{0, 1}, {1, 2}, {2, 3}, {3, 4}}});
+  try {
+    boundary_from_curves(parabola, false, "cubic.msh");
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("neither a straight line nor a circular arc"), std::string::npos);
+  }
+}
+
+TEST(GmshGeometry, FileErrorsNameTheFileAndLine) {
+  try {
+    parse_msh("$MeshFormat\n4.1 1 8\n$EndMeshFormat\n", "binary.msh");
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.where().file, "binary.msh");
+    EXPECT_EQ(e.where().line, 2);
+    EXPECT_NE(std::string(e.what()).find("ASCII"), std::string::npos);
+  }
+  EXPECT_THROW(parse_msh("hello\n", "text.msh"), InputError);
+  EXPECT_THROW(parse_msh("$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n2\n1 0 0\n", "short.msh"), InputError);
+  std::string open_square = square_22;
+  open_square.replace(open_square.find("5 1 2 4 4 4 1"), 13, "5 2 2 4 4 4 1");  // the left side is a triangle now
+  EXPECT_THROW(boundary_from_curves(parse_msh(open_square, "open.msh"), false, "open.msh"), InputError);
+}
+
+TEST(GmshGeometry, ProblemFileTakesConditionsByCurveName) {
+  if (!gmsh_api_available()) GTEST_SKIP() << "built without the Gmsh library (.geo files refused)";
+  const std::string dir = BEMCONTACT_EXAMPLES_DIR;
+  auto file = parse_problem(read_problem_text(dir + "/gmsh_plate_hole.toml"), dir + "/gmsh_plate_hole.toml");
+  const auto& pieces = file.problem.body.pieces;
+  ASSERT_EQ(pieces.size(), 5u);
+  EXPECT_EQ(pieces[4].name, "hole");
+  EXPECT_EQ(pieces[4].shape, PieceShape::arc);
+  EXPECT_FALSE(pieces[4].counterclockwise);  // a hole: clockwise, the plate on its left
+  EXPECT_EQ(pieces[0].elements, 14);
+  EXPECT_NEAR(pieces[0].grading, 40.0, 40.0 * 1e-6);  // Gmsh places nodes to about 1e-7
+  EXPECT_EQ(pieces[0].refine_toward, geometry::RefineToward::start);
+  const auto with_text = [&](const std::string& from, const std::string& to) {
+    std::string text = read_problem_text(dir + "/gmsh_plate_hole.toml");
+    text.replace(text.find(from), from.size(), to);
+    return text;
+  };
+  try {
+    parse_problem(with_text("name = \"CD\"", "name = \"CE\""), dir + "/gmsh_plate_hole.toml");
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("no physical curve named 'CE'"), std::string::npos) << message;
+    EXPECT_NE(message.find("'AB', 'BC', 'CD', 'DE', 'hole'"), std::string::npos) << message;
+  }
+  try {
+    parse_problem(with_text("name = \"CD\"", "name = \"CD\"\nelements = 3"), dir + "/gmsh_plate_hole.toml");
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("comes from the Gmsh file"), std::string::npos) << e.what();
+  }
+  // The .msh that Gmsh wrote from the .geo gives the same pieces.
+  auto from_msh = parse_problem(with_text("gmsh_plate_hole.geo", "gmsh_plate_hole.msh"),
+                                dir + "/gmsh_plate_hole.toml");
+  ASSERT_EQ(from_msh.problem.body.pieces.size(), pieces.size());
+  for (std::size_t k = 0; k < pieces.size(); ++k) {
+    EXPECT_NEAR((from_msh.problem.body.pieces[k].start - pieces[k].start).norm(), 0.0, 1e-12);
+    EXPECT_EQ(from_msh.problem.body.pieces[k].elements, pieces[k].elements);
+  }
+}
+
+}  // namespace bemcontact::io
