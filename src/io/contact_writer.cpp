@@ -62,22 +62,41 @@ std::string contact_csv(const std::vector<contact::PairResult>& pairs) {
   return out;
 }
 
-std::string contact_vtk(const std::vector<contact::PairResult>& pairs, std::string_view title) {
+namespace {
+
+// The pairs' point data: tractions, gap, slip, jumps, status (0 open, 1 stick, 2 slip).
+struct PairFields {
   std::vector<Vec2> points, normals;
+  std::vector<std::pair<std::string, std::vector<double>>> scalars;
+};
+
+PairFields pair_fields(const std::vector<contact::PairResult>& pairs) {
+  PairFields f;
   std::vector<double> gap, p_n, p_t, slip_ratio, jump_n, jump_t, status;
   for (const auto& p : pairs) {
-    points.push_back(p.position);
-    normals.push_back(p.normal);
+    f.points.push_back(p.position);
+    f.normals.push_back(p.normal);
     gap.push_back(p.gap), p_n.push_back(p.p_n), p_t.push_back(p.p_t), slip_ratio.push_back(p.slip_ratio);
     jump_n.push_back(p.jump_n), jump_t.push_back(p.jump_t), status.push_back(static_cast<double>(p.status));
   }
-  return point_cloud_vtk(title, points,
-                         {{"p_n", p_n}, {"p_t", p_t}, {"gap", gap}, {"slip_ratio", slip_ratio}, {"jump_n", jump_n},
-                          {"jump_t", jump_t}, {"status", status}},
-                         {{"normal", normals}},
+  f.scalars = {{"p_n", p_n}, {"p_t", p_t}, {"gap", gap}, {"slip_ratio", slip_ratio}, {"jump_n", jump_n},
+               {"jump_t", jump_t}, {"status", status}};
+  return f;
+}
+
+}  // namespace
+
+std::string contact_vtk(const std::vector<contact::PairResult>& pairs, std::string_view title) {
+  const auto f = pair_fields(pairs);
+  return point_cloud_vtk(title, f.points, f.scalars, {{"normal", f.normals}},
                          {"status_names", {contact::to_string(contact::PairStatus::open),
                                            contact::to_string(contact::PairStatus::stick),
                                            contact::to_string(contact::PairStatus::slip)}});
+}
+
+std::string contact_vtp(const std::vector<contact::PairResult>& pairs) {
+  const auto f = pair_fields(pairs);
+  return point_cloud_vtp(f.points, f.scalars, {{"normal", f.normals}});
 }
 
 std::string contact_steps_csv(const contact::ContactInterfaceResult& result) {
@@ -245,6 +264,16 @@ std::vector<std::pair<std::string, std::string>> contact_output_files(const cont
     files.emplace_back(stem + "_steps.csv", contact_steps_csv(contact));
     for (std::size_t k = 0; k < contact.step_pairs.size(); ++k)
       files.emplace_back(stem + "_step" + std::to_string(k + 1) + ".csv", contact_csv(contact.step_pairs[k]));
+    if (vtk && !contact.step_pairs.empty()) {
+      // Every step's pairs as a ParaView time series.
+      std::vector<std::pair<double, std::string>> series;
+      for (std::size_t k = 0; k < contact.step_pairs.size(); ++k) {
+        const std::string name = stem + "_step" + std::to_string(k + 1) + ".vtp";
+        files.emplace_back(name, contact_vtp(contact.step_pairs[k]));
+        series.emplace_back(contact.steps[k].time, name);
+      }
+      files.emplace_back(stem + ".pvd", time_series_pvd(series));
+    }
   }
   if (!result.records.empty() && result.records.front().motions.size() > 0) {
     std::string out = "step,time";

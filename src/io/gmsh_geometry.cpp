@@ -557,6 +557,11 @@ GmshCurves mesh_geo(const std::filesystem::path& file) {
 
 GmshBoundary read_gmsh_boundary(const std::filesystem::path& file, bool axisymmetric) {
   const std::string extension = file.extension().string();
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(file, error))
+    throw InputError(SourceLocation{file.string(), 0, ""},
+                     std::filesystem::exists(file, error) ? "the Gmsh file is not a regular file"
+                                                          : "cannot read the Gmsh file: no such file");
   if (extension == ".geo") return boundary_from_curves(mesh_geo(file), axisymmetric, file.string());
   if (extension == ".msh")
     return boundary_from_curves(parse_msh(read_problem_text(file), file.string()), axisymmetric, file.string());

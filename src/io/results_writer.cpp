@@ -456,6 +456,32 @@ std::string boundary_vtp(const geometry::BoundaryMesh& mesh, const bem::Boundary
   return std::move(out).str();
 }
 
+std::string point_cloud_vtp(const std::vector<Vec2>& points,
+                            const std::vector<std::pair<std::string, std::vector<double>>>& scalars,
+                            const std::vector<std::pair<std::string, std::vector<Vec2>>>& vectors) {
+  const Index n = static_cast<Index>(points.size());
+  Text out;
+  out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"0.1\" byte_order=\"LittleEndian\">\n<PolyData>\n"
+      << "<Piece NumberOfPoints=\"" << n << "\" NumberOfVerts=\"" << n
+      << "\" NumberOfLines=\"0\" NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n<Points>\n";
+  vtp_array(out, "points", 3, vectors3(points));
+  out << "</Points>\n<Verts>\n<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
+  for (Index i = 0; i < n; ++i) out << i << ' ';
+  out << "\n</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
+  for (Index i = 1; i <= n; ++i) out << i << ' ';
+  out << "\n</DataArray>\n</Verts>\n<PointData>\n";
+  for (const auto& [name, values] : scalars) {
+    require_size(values.size(), points.size(), ("point data '" + name + "'").c_str());
+    vtp_array(out, name.c_str(), 1, values);
+  }
+  for (const auto& [name, values] : vectors) {
+    require_size(values.size(), points.size(), ("point data '" + name + "'").c_str());
+    vtp_array(out, name.c_str(), 3, vectors3(values));
+  }
+  out << "</PointData>\n</Piece>\n</PolyData>\n</VTKFile>\n";
+  return std::move(out).str();
+}
+
 std::string time_series_pvd(const std::vector<std::pair<double, std::string>>& time_and_file) {
   Text out;
   out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n";

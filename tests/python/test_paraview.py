@@ -101,7 +101,7 @@ def test_contact_pairs_dataset_and_time_series(examples, tmp_path):
     assert [status_names[c] for c in codes] == list(pairs["status"])
     steps = result.contact_steps(name)
     series = [f for f in result.names() if f.endswith(".pvd")]
-    assert series
+    assert f"{name}.pvd" in series and len(series) == 3  # the pairs and the two bodies' boundaries
     for pvd in series:
         entries = ET.parse(out / pvd).getroot().findall("./Collection/DataSet")
         times = [float(e.get("timestep")) for e in entries]
@@ -112,6 +112,12 @@ def test_contact_pairs_dataset_and_time_series(examples, tmp_path):
             reader.SetFileName(str(out / entry.get("file")))
             reader.Update()
             step = reader.GetOutput()
+            if pvd == f"{name}.pvd":  # the pairs of that step, as in <contact>_step<k>.csv
+                k = int(entry.get("file").rsplit("_step", 1)[1].split(".")[0])
+                pairs_k = result.table(f"{name}_step{k}")
+                assert step.GetNumberOfVerts() == step.GetNumberOfPoints() == len(pairs_k)
+                np.testing.assert_allclose(point_array(step, "p_n"), pairs_k["p_n"], rtol=1e-15)
+                continue
             assert step.GetNumberOfPoints() > 0 and step.GetNumberOfLines() > 0
             assert step.GetCellData().GetArray("boundary") is not None
             assert step.GetPointData().GetArray("u") is not None

@@ -82,3 +82,23 @@ def test_report_marks_failures(tmp_path):
     page = report.write_report(records, tmp_path).read_text()
     assert "1 passed, 1 failed" in page
     assert page.count("class='no'") == 1
+
+
+def test_example_scripts_run(examples, tmp_path):
+    import os
+    import sys
+    env = dict(os.environ)
+    sweep = subprocess.run([sys.executable, str(examples / "python" / "hertz_sweep.py")], capture_output=True,
+                           text=True, env=env)
+    assert sweep.returncode == 0, sweep.stderr
+    rows = [line.split() for line in sweep.stdout.splitlines()[1:]]
+    assert len(rows) == 5
+    # The contact edge is located within half a contact element (rc / contact_elements).
+    half_element = 0.5 * 0.1 / 30
+    for row in rows:
+        assert abs(float(row[1]) - float(row[2])) < half_element + 1e-5  # + the printed rounding
+    figure = tmp_path / "pressure.png"
+    drawn = subprocess.run([sys.executable, str(examples / "python" / "pressure_plot.py"), str(figure)],
+                           capture_output=True, text=True, env=env)
+    assert drawn.returncode == 0, drawn.stderr
+    assert figure.read_bytes()[:8] == PNG_SIGNATURE

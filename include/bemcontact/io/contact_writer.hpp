@@ -41,6 +41,8 @@ std::string contact_csv(const std::vector<contact::PairResult>& pairs);
 // The same pairs as VTK vertices (<contact>.vtk): point data p_n, p_t, gap, slip_ratio,
 // jump_n, jump_t, status (0 open, 1 stick, 2 slip: field data status_names) and normal.
 std::string contact_vtk(const std::vector<contact::PairResult>& pairs, std::string_view title);
+// The same point data as VTK XML (<contact>_step<k>.vtp of the <contact>.pvd time series).
+std::string contact_vtp(const std::vector<contact::PairResult>& pairs);
 std::string contact_steps_csv(const contact::ContactInterfaceResult& result);
 
 // The "contact" fragment of summary.json: kind, algorithm, friction, increments, unknowns,

@@ -46,6 +46,10 @@ std::string mesh_vtk(const geometry::BoundaryMesh& mesh, std::string_view title)
 // The same boundary fields as VTK XML PolyData (.vtp), for ParaView time series, and the
 // collection (.pvd) that lists files with their times.
 std::string boundary_vtp(const geometry::BoundaryMesh& mesh, const bem::BoundarySolution& solution);
+// Points as vertices with point data, as VTK XML PolyData (.vtp, for time series).
+std::string point_cloud_vtp(const std::vector<Vec2>& points,
+                            const std::vector<std::pair<std::string, std::vector<double>>>& scalars,
+                            const std::vector<std::pair<std::string, std::vector<Vec2>>>& vectors);
 std::string time_series_pvd(const std::vector<std::pair<double, std::string>>& time_and_file);
 std::string interior_vtk(const bem::InteriorSolution& solution, std::string_view title);
 

@@ -185,8 +185,16 @@ TEST(GmshGeometry, ProblemFileTakesConditionsByCurveName) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("comes from the Gmsh file"), std::string::npos) << e.what();
   }
+  try {
+    parse_problem(with_text("geometry = \"gmsh_plate_hole.geo\"", "geometry = \"nothere.msh\""), dir + "/gmsh_plate_hole.toml");
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    EXPECT_EQ(e.where().key, "geometry");  // the problem file's key, then the Gmsh file
+    EXPECT_NE(message.find("nothere.msh: cannot read the Gmsh file: no such file"), std::string::npos) << message;
+  }
   // The .msh that Gmsh wrote from the .geo gives the same pieces.
-  auto from_msh = parse_problem(with_text("gmsh_plate_hole.geo", "gmsh_plate_hole.msh"),
+  auto from_msh = parse_problem(with_text("geometry = \"gmsh_plate_hole.geo\"", "geometry = \"gmsh_plate_hole.msh\""),
                                 dir + "/gmsh_plate_hole.toml");
   ASSERT_EQ(from_msh.problem.body.pieces.size(), pieces.size());
   for (std::size_t k = 0; k < pieces.size(); ++k) {
