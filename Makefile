@@ -5,20 +5,33 @@ JOBS ?= 2
 DEMO ?= examples/contact_hertz_sphere.toml
 FUZZ_SECONDS ?= 300
 
-.PHONY: deps configure build demo test test-sanitize fuzz bench clean
+.PHONY: deps deps-core configure build demo test test-sanitize fuzz bench clean
 
+# Everything the tests need (Python module, figures, VTK read-back, Gmsh), or only what the
+# library and the command need (the demo).
 deps:
 	@bash scripts/install-deps.sh
 
+deps-core:
+	@bash scripts/install-deps.sh --core
+
 configure: deps
-	@cmake -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=Release > $(BUILD_DIR).configure.log 2>&1 || (cat $(BUILD_DIR).configure.log; exit 1)
+	@cmake -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=Release -DBEMCONTACT_BUILD_TESTS=ON -DBEMCONTACT_BUILD_BENCH=ON \
+	  -DBEMCONTACT_REQUIRE_PYTHON=ON \
+	  > $(BUILD_DIR).configure.log 2>&1 || (cat $(BUILD_DIR).configure.log; exit 1)
 
 build: configure
 	@cmake --build $(BUILD_DIR) -j $(JOBS) -- --no-print-directory
 
-# The demo needs only the library and the command.
-demo: configure
-	@cmake --build $(BUILD_DIR) -j $(JOBS) --target bemcontact -- --no-print-directory
+# The demo needs only the library and the command; the compiler's output goes to a log,
+# shown only when the build fails.
+demo: deps-core
+	@cmake -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=Release -DBEMCONTACT_BUILD_TESTS=OFF -DBEMCONTACT_BUILD_BENCH=OFF \
+	  -DBEMCONTACT_REQUIRE_PYTHON=OFF > $(BUILD_DIR).configure.log 2>&1 \
+	  || (cat $(BUILD_DIR).configure.log; exit 1)
+	@echo "bemcontact: building the library and the command (a few minutes the first time; log in $(BUILD_DIR).build.log)"
+	@cmake --build $(BUILD_DIR) -j $(JOBS) --target bemcontact -- --no-print-directory > $(BUILD_DIR).build.log 2>&1 \
+	  || (tail -n 60 $(BUILD_DIR).build.log; exit 1)
 	@$(BUILD_DIR)/bemcontact run $(DEMO) -o $(BUILD_DIR)/demo
 
 test: build
@@ -42,4 +55,4 @@ bench: build
 	@for b in $(BUILD_DIR)/bench/*; do $$b --benchmark_min_time=0.2; done
 
 clean:
-	rm -rf $(BUILD_DIR) $(BUILD_DIR).configure.log $(SANITIZE_DIR) $(SANITIZE_DIR).configure.log build-fuzz build-fuzz.configure.log
+	rm -rf $(BUILD_DIR) $(BUILD_DIR).configure.log $(BUILD_DIR).build.log $(SANITIZE_DIR) $(SANITIZE_DIR).configure.log build-fuzz build-fuzz.configure.log

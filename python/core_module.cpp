@@ -10,6 +10,7 @@
 
 #include "bemcontact/core/error.hpp"
 #include "bemcontact/driver/run.hpp"
+#include "bemcontact/io/gmsh_geometry.hpp"
 #include "bemcontact/io/output_directory.hpp"
 #include "bemcontact/operators/dense_lu.hpp"
 
@@ -60,6 +61,7 @@ PYBIND11_MODULE(_core, m) {
   py::register_exception<GeometryError>(m, "GeometryError", error.ptr());
   py::register_exception<SolverError>(m, "SolverError", error.ptr());
   m.attr("__version__") = BEMCONTACT_VERSION;
+  m.attr("reads_geo_files") = io::gmsh_api_available();  // .geo through the Gmsh library
   m.def("run", &run, py::arg("text"), py::arg("file_name"), py::arg("overrides"), py::arg("mesh_only") = false,
         py::arg("threads") = 0, "Solve (or only mesh) a problem text; returns files, report, warnings.");
   m.def("commit", &commit, py::arg("files"), py::arg("directory"),

@@ -1,13 +1,18 @@
 #!/usr/bin/env bash
 # Installs the Debian packages bemcontact builds with, when any is missing.
-#   install-deps.sh          what the build and `make test` need
+#   install-deps.sh          what the build and `make test` need (Python module, figures,
+#                            VTK read-back, Gmsh)
+#   install-deps.sh --core   only the library and the command (`make demo`)
 #   install-deps.sh --fuzz   plus clang, libFuzzer and clang's OpenMP (`make fuzz`)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 packages=(g++ cmake make pkg-config libeigen3-dev libopenblas-dev liblapacke-dev
-  libtomlplusplus-dev libcli11-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev
-  python3 python3-dev pybind11-dev python3-numpy python3-pytest python3-matplotlib python3-vtk9
-  libgmsh-dev)
+  libtomlplusplus-dev libcli11-dev nlohmann-json3-dev)
+if [ "${1:-}" != "--core" ]; then
+  packages+=(libgtest-dev libbenchmark-dev
+    python3 python3-dev pybind11-dev python3-numpy python3-pytest python3-matplotlib python3-vtk9
+    libgmsh-dev)
+fi
 if [ "${1:-}" = "--fuzz" ]; then
   packages+=(clang libclang-rt-14-dev libomp-14-dev)
 fi

@@ -165,6 +165,7 @@ def test_one_summary_schema_for_every_kind_and_command(examples):
                 assert s["reactions"] and s["timings_seconds"]["total"] > 0
 
 
+@pytest.mark.skipif(not bc._core.reads_geo_files, reason="built without the Gmsh library")
 def test_gmsh_geometry_gives_the_problem_drawn_by_hand(examples):
     # gmsh_plate_hole.geo draws plate_hole.toml's boundary (two curves against the body's
     # orientation): the same nodes and stresses to round-off.
