@@ -120,6 +120,14 @@ class Result:
         """One row per load step: time, a, c, stick zone, forces, energy, iterations."""
         return self.table(self._contact_name(name) + "_steps")
 
+    def contact_step(self, step, name=None):
+        """The pairs at load step `step` (1 = first), written with record_steps = true."""
+        table = f"{self._contact_name(name)}_step{int(step)}"
+        if table + ".csv" not in self.files:
+            raise KeyError(f"no pairs of step {step}: run with record_steps = true in [solver] "
+                           f"({len(self.contact_steps(name))} steps in this result)")
+        return self.table(table)
+
     def motions(self):
         """Rigid-body and platen motions and forces per step."""
         return self.table("motions")

@@ -101,8 +101,8 @@ def mesh_figure(mesh_result, title, path):
                 if stem:
                     label = f"{stem}: {label}"
                 ax.annotate(label, (nodes["x"][mid], nodes["y"][mid]),
-                            xytext=(nodes["x"][mid] + 0.1 * size * nodes["nx"][mid],
-                                    nodes["y"][mid] + 0.1 * size * nodes["ny"][mid]),
+                            xytext=(nodes["x"][mid] + 0.06 * size * nodes["nx"][mid],
+                                    nodes["y"][mid] + 0.06 * size * nodes["ny"][mid]),
                             fontsize=8, color=colour, ha="center",
                             arrowprops={"arrowstyle": "-", "color": colour, "lw": 0.5})
     for name in mesh_result.names():
@@ -111,6 +111,7 @@ def mesh_figure(mesh_result, title, path):
             for k in range(len(pairs)):
                 ax.plot([pairs["x1"][k], pairs["x2"][k]], [pairs["y1"][k], pairs["y2"][k]], "-", color="0.5", lw=0.5)
     ax.set_aspect("equal")
+    ax.margins(0.1)  # room for the names written outside the boundary
     ax.set_title(f"{title}\nelements (| ends), nodes (o), outward normals, boundary names", fontsize=9)
     ax.set_xlabel("x (r)")
     ax.set_ylabel("y (z)")

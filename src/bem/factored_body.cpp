@@ -102,17 +102,26 @@ BoundarySolution FactoredBody::solve(const Vector& variable_data, bool with_fixe
   return recover(y.col(0), variable_data, with_fixed_data);
 }
 
+Matrix FactoredBody::unit_responses() const {
+  Matrix y = variable_rhs_;
+  lu_.solve_in_place(y);
+  return complementary_of(y);
+}
+
 Matrix FactoredBody::complementary_columns(const Matrix& variable_data, bool with_fixed_data) const {
-  const Matrix y = solve_unknowns(variable_data, with_fixed_data);
+  return complementary_of(solve_unknowns(variable_data, with_fixed_data));
+}
+
+Matrix FactoredBody::complementary_of(const Matrix& y) const {
   // At a variable node every component is of the node's kind, so the unknowns of its two
   // dofs are exactly the complementary field (global frame). On the axis the radial
   // unknown is the traction p_r = 0 and the radial displacement is 0.
-  Matrix out(variable_dofs(), variable_data.cols());
+  Matrix out(variable_dofs(), y.cols());
   for (std::size_t k = 0; k < variable_.size(); ++k)
     for (int c = 0; c < 2; ++c) {
       const Index node = variable_[k].node;
       out.row(2 * static_cast<Index>(k) + c) =
-          conditions_[node].on_axis && c == 0 ? Eigen::RowVectorXd::Zero(variable_data.cols())
+          conditions_[node].on_axis && c == 0 ? Eigen::RowVectorXd::Zero(y.cols())
                                               : Eigen::RowVectorXd(y.row(2 * node + c));
     }
   // Variable constraints: their reactions.

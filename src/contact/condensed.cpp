@@ -1,5 +1,7 @@
 #include "bemcontact/contact/condensed.hpp"
 
+#include <Eigen/Sparse>
+
 #include "bemcontact/contact/free_motions.hpp"
 #include "bemcontact/core/error.hpp"
 #include "bemcontact/dd/interface.hpp"
@@ -161,7 +163,7 @@ ContactModel::ContactModel(const ContactProblem& problem, const bem::ProgressCal
                         "with a force load (a rigid platen).");
     }
     const Index dofs = factored_[r]->variable_dofs();
-    flexibility[r] = factored_[r]->complementary_columns(Matrix::Identity(dofs, dofs), false);
+    flexibility[r] = factored_[r]->unit_responses();
     own_response[r] = Matrix::Zero(dofs, groups);
     for (int g = 0; g < factored_[r]->load_groups(); ++g) own_response[r].col(g) = factored_[r]->group_complementary(g);
     G[r] = Matrix::Zero(dofs, nq);
@@ -243,7 +245,10 @@ ContactModel::ContactModel(const ContactProblem& problem, const bem::ProgressCal
   std::vector<Matrix> response(region_count);
   std::vector<Matrix> response0(region_count);  // dofs x groups
   for (std::size_t r = 0; r < region_count; ++r) {
-    response[r] = flexibility[r] * data_map_[r];
+    // The data map is 2x2 pair frames and the transfer's few entries (bond rows aside): a
+    // sparse product, O(dofs x nonzeros) instead of O(dofs^2 x nq).
+    const Eigen::SparseMatrix<double> data_map = data_map_[r].sparseView();
+    response[r] = flexibility[r] * data_map;
     response0[r] = flexibility[r] * data_offset_[r] + own_response[r];
   }
 

@@ -33,7 +33,7 @@ InterfaceOperator::InterfaceOperator(const DecompositionProblem& problem,
   if (problem.options.explicit_operators)
     for (std::size_t s = 0; s < count; ++s) {
       const Index dofs = bodies_[s].variable_dofs();
-      maps_.push_back(bodies_[s].complementary_columns(Matrix::Identity(dofs, dofs), false));
+      maps_.push_back(bodies_[s].unit_responses());
       responses_.push_back(bodies_[s].complementary(Vector::Zero(dofs), true));
     }
   if (progress) progress("factorisation", 1.0);

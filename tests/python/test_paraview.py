@@ -114,10 +114,45 @@ def test_contact_pairs_dataset_and_time_series(examples, tmp_path):
             step = reader.GetOutput()
             if pvd == f"{name}.pvd":  # the pairs of that step, as in <contact>_step<k>.csv
                 k = int(entry.get("file").rsplit("_step", 1)[1].split(".")[0])
-                pairs_k = result.table(f"{name}_step{k}")
+                pairs_k = result.contact_step(k, name)
                 assert step.GetNumberOfVerts() == step.GetNumberOfPoints() == len(pairs_k)
                 np.testing.assert_allclose(point_array(step, "p_n"), pairs_k["p_n"], rtol=1e-15)
                 continue
             assert step.GetNumberOfPoints() > 0 and step.GetNumberOfLines() > 0
             assert step.GetCellData().GetArray("boundary") is not None
             assert step.GetPointData().GetArray("u") is not None
+
+
+def test_every_vtk_file_of_every_kind_reads_back(examples, tmp_path):
+    from vtkmodules.vtkIOLegacy import vtkDataSetReader
+
+    text = (examples / "fretting_cylinder.toml").read_text().replace("[solver]\n", "[solver]\nrecord_steps = true\n")
+    runs = [bc.run(examples / "plate_hole.toml"), bc.run(examples / "dd_two_layer_ring.toml"),
+            bc.run(examples / "contact_roller_plates.toml"), bc.Problem(text, "fretting.toml").run(),
+            bc.Problem.load(examples / "contact_roller_plates.toml").mesh(),
+            bc.Problem.load(examples / "plate_hole.toml").mesh()]
+    read = 0
+    for k, result in enumerate(runs):
+        folder = result.save(tmp_path / f"run{k}")
+        for name in result.names():
+            path = folder / name
+            if name.endswith(".vtk"):
+                reader = vtkDataSetReader()
+                reader.SetFileName(str(path))
+                reader.ReadAllScalarsOn()
+                reader.ReadAllVectorsOn()
+                reader.Update()
+                data = reader.GetOutput()
+                declared = int(result.text(name).split("POINTS ")[1].split()[0])
+            elif name.endswith(".vtp"):
+                reader = vtkXMLPolyDataReader()
+                reader.SetFileName(str(path))
+                reader.Update()
+                data = reader.GetOutput()
+                declared = int(result.text(name).split('NumberOfPoints="')[1].split('"')[0])
+            else:
+                continue
+            assert data is not None and data.GetNumberOfPoints() == declared > 0, name
+            assert data.GetNumberOfCells() > 0, name
+            read += 1
+    assert read >= 15

@@ -53,11 +53,17 @@ class FactoredBody {
   // prescribed and displacements where tractions are (2 per node).
   Vector complementary(const Vector& variable_data, bool with_fixed_data = true) const;
 
-  // The same for several data vectors at once (columns), e.g. unit data to form S or S^-1.
+  // The same for several data vectors at once (columns).
   Matrix complementary_columns(const Matrix& variable_data, bool with_fixed_data) const;
+  // The complementary field of each unit variable datum (variable_dofs() columns): the
+  // flexibility (or stiffness) map of the variable nodes, S or S^-1, without forming the
+  // identity's product with the right-hand sides.
+  Matrix unit_responses() const;
 
  private:
   Matrix solve_unknowns(const Matrix& variable_data, bool with_fixed_data) const;
+  // The complementary rows of solved unknowns y (one column per data vector).
+  Matrix complementary_of(const Matrix& y) const;
   BoundarySolution recover(const Vector& y, const Vector& variable_data, bool with_fixed_data) const;
 
   geometry::BoundaryMesh mesh_;
