@@ -1,5 +1,7 @@
 #include "bemcontact/dd/decomposition.hpp"
 
+#include <algorithm>
+
 namespace bemcontact::dd {
 
 const char* to_string(InterfaceMethod method) {
@@ -35,6 +37,12 @@ bem::ProblemDefinition subdomain_problem(const DecompositionProblem& problem, st
     if (!interfaces[p].empty()) one.body.pieces[p].fixed_mesh = true;
   one.interior_points = problem.subdomains[s].interior_points;
   return one;
+}
+
+int effective_restart(const DecompositionOptions& options, Index unknowns) {
+  if (options.restart > 0) return options.restart;
+  const double fits = kAutoRestartBytes / (8.0 * static_cast<double>(std::max<Index>(unknowns, 1)));
+  return static_cast<int>(std::clamp(fits, 1.0, static_cast<double>(std::max(options.max_iterations, 1))));
 }
 
 }  // namespace bemcontact::dd

@@ -78,7 +78,7 @@ DecompositionResult solve_decomposition(const DecompositionProblem& problem, con
   clock.lap("right-hand side");
 
   operators::GmresOptions options;
-  options.restart = problem.options.restart;
+  options.restart = effective_restart(problem.options, K.rows());
   options.tolerance = problem.options.tolerance;
   options.max_iterations = problem.options.max_iterations;
   operators::GmresMonitor monitor;

@@ -127,6 +127,16 @@ auto read_checked(Parse parse, std::string_view text, const std::string& file_na
   return file;
 }
 
+// What to change when the interface GMRES does not converge.
+std::string convergence_advice(const dd::DecompositionOptions& options, const dd::DecompositionResult& result) {
+  const int m = dd::effective_restart(options, result.interface_unknowns);
+  if (m < result.gmres.iterations)
+    return "GMRES(" + std::to_string(m) + ") restarts lose the Krylov space: remove 'restart' from [decomposition] "
+           "(full GMRES, the default) or raise it";
+  return "raise max_iterations in [decomposition] (now " + std::to_string(options.max_iterations) +
+         ") or loosen tolerance; method = \"conforming\" or \"mixed\" may converge faster on this problem";
+}
+
 // Several subdomains glued along interfaces (chapter IV).
 RunOutput run_decomposition(std::string_view text, const std::string& file_name, const RunOptions& options) {
   const auto started = Clock::now();
@@ -162,7 +172,8 @@ RunOutput run_decomposition(std::string_view text, const std::string& file_name,
   } else {
     // No answer from an unconverged iteration: only the diagnostics.
     output.files.add("gmres.csv", io::gmres_history_csv(result.gmres));
-    output.solver_failure = "the interface problem did not converge: " + result.gmres.message;
+    output.solver_failure = "the interface problem did not converge: " + result.gmres.message + "; " +
+                            convergence_advice(file.problem.options, result);
   }
   summary.timings = {{"total", seconds_since(started)}};
   add_summary(summary, output);
@@ -170,7 +181,8 @@ RunOutput run_decomposition(std::string_view text, const std::string& file_name,
   std::string& report = output.report;
   append(report, "%s\n  %zu subdomains, method %s, %ld interface unknowns\n", file.problem.title.c_str(),
          result.subdomains.size(), dd::to_string(result.method), static_cast<long>(result.interface_unknowns));
-  append(report, "  GMRES(%d): %d iterations, relative residual %.3g\n", file.problem.options.restart,
+  append(report, "  GMRES(%d): %d iterations, relative residual %.3g\n",
+         dd::effective_restart(file.problem.options, result.interface_unknowns),
          result.gmres.iterations, result.gmres.relative_residual);
   double jump_u = 0.0, jump_p = 0.0;
   for (const auto& j : result.jumps) jump_u = std::max(jump_u, j.jump_u), jump_p = std::max(jump_p, j.jump_p);

@@ -58,7 +58,7 @@ void read_options(const TableReader& root, const FileContext& context, dd::Decom
                    : method == "hybrid"   ? dd::InterfaceMethod::hybrid
                                           : dd::InterfaceMethod::mixed;
   options.restart = reader.integer_or("restart", options.restart);
-  if (options.restart < 1)
+  if (reader.has("restart") && options.restart < 1)
     reader.fail("restart", "the GMRES restart length m must be >= 1, found " + std::to_string(options.restart));
   options.max_iterations = reader.integer_or("max_iterations", options.max_iterations);
   if (options.max_iterations < 1)

@@ -137,7 +137,7 @@ nlohmann::json decomposition_summary_json(const dd::DecompositionProblem& proble
   j["interfaces"] = interfaces;
   j["interface_unknowns"] = result.interface_unknowns;
   j["displacement_scale"] = result.displacement_scale;
-  j["gmres"] = {{"restart", problem.options.restart},
+  j["gmres"] = {{"restart", dd::effective_restart(problem.options, result.interface_unknowns)},
                 {"tolerance", problem.options.tolerance},
                 {"max_iterations", problem.options.max_iterations},
                 {"status", operators::to_string(result.gmres.status)},

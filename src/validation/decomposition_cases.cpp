@@ -130,7 +130,7 @@ Params strips_params(const dd::DecompositionProblem& problem, int strips, int pe
   return {{"strips", std::to_string(strips)},
           {"h", "1/" + std::to_string(per_unit)},
           {"method", dd::to_string(problem.options.method)},
-          {"m", std::to_string(problem.options.restart)},
+          {"m", problem.options.restart > 0 ? std::to_string(problem.options.restart) : "full"},
           {"tolerance", text(problem.options.tolerance)},
           {"source", source}};
 }

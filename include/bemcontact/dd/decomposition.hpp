@@ -34,7 +34,11 @@ struct DecompositionOptions {
   // The mixed variant converges in the fewest iterations on the thesis' strips up to 8
   // strips (and keeps floating subdomains well posed), so it is the default.
   InterfaceMethod method = InterfaceMethod::mixed;
-  int restart = 20;                 // GMRES(m)
+  // GMRES(m). 0 (the default): no restart, m = max_iterations, when the Krylov basis
+  // (m vectors of the interface size) fits in kAutoRestartBytes, else the largest m that
+  // fits. Short restarts stall on stiff interfaces (a thin soft layer between stiff parts:
+  // GMRES(20) left 1.8e-2 after 500 iterations where full GMRES converged in 100).
+  int restart = 0;
   double tolerance = 1e-8;          // on ||r|| / ||r_00|| (Alg IV.4; thesis 1e-8)
   int max_iterations = 500;         // operator applications over all restarts
   // Facing nodes of an interface must coincide within this fraction of the geometry size.
@@ -49,6 +53,10 @@ struct DecompositionOptions {
   // GMRES needs more iterations than a subdomain has interface unknowns.
   bool explicit_operators = false;
 };
+
+inline constexpr double kAutoRestartBytes = 256e6;
+// The restart length used for `options` on an interface of `unknowns` unknowns.
+int effective_restart(const DecompositionOptions& options, Index unknowns);
 
 struct DecompositionProblem {
   std::string title;
