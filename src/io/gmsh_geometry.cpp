@@ -14,10 +14,12 @@
 #include "bemcontact/io/toml_reader.hpp"
 
 #ifdef BEMCONTACT_WITH_GMSH
-#include <gmsh.h>
+#include <dlfcn.h>
+#include <gmshc.h>
 
 #include <fstream>
 #include <mutex>
+#include <type_traits>
 #endif
 
 namespace bemcontact::io {
@@ -497,9 +499,66 @@ GmshBoundary boundary_from_curves(const GmshCurves& curves, bool axisymmetric, c
   return out;
 }
 
+#ifdef BEMCONTACT_WITH_GMSH
+namespace {
+
+// The Gmsh library, opened on first use only (a .geo file): the command starts without
+// loading it and its dependencies. The function types come from the C API header of the
+// version built against, whose library file (BEMCONTACT_GMSH_LIBRARY) is the one opened.
+struct GmshApi {
+  decltype(&gmshInitialize) initialize = nullptr;
+  decltype(&gmshFinalize) finalize = nullptr;
+  decltype(&gmshOpen) open = nullptr;
+  decltype(&gmshWrite) write = nullptr;
+  decltype(&gmshOptionSetNumber) set_number = nullptr;
+  decltype(&gmshModelMeshGenerate) generate = nullptr;
+  decltype(&gmshLoggerGetLastError) last_error = nullptr;
+  decltype(&gmshFree) free = nullptr;
+  std::string failure;  // why it could not be opened
+};
+
+const GmshApi& gmsh_library() {
+  static const GmshApi api = [] {
+    GmshApi out;
+    void* handle = ::dlopen(BEMCONTACT_GMSH_LIBRARY, RTLD_NOW | RTLD_LOCAL);
+    if (!handle) {
+      const char* error = ::dlerror();
+      out.failure = error ? error : "cannot open " BEMCONTACT_GMSH_LIBRARY;
+      return out;
+    }
+    const auto find = [&](auto& function, const char* name) {
+      function = reinterpret_cast<std::remove_reference_t<decltype(function)>>(::dlsym(handle, name));
+      if (!function && out.failure.empty()) out.failure = std::string("no ") + name + " in " BEMCONTACT_GMSH_LIBRARY;
+    };
+    find(out.initialize, "gmshInitialize");
+    find(out.finalize, "gmshFinalize");
+    find(out.open, "gmshOpen");
+    find(out.write, "gmshWrite");
+    find(out.set_number, "gmshOptionSetNumber");
+    find(out.generate, "gmshModelMeshGenerate");
+    find(out.last_error, "gmshLoggerGetLastError");
+    find(out.free, "gmshFree");
+    return out;
+  }();
+  return api;
+}
+
+// Gmsh's last error message, or `fallback`.
+std::string gmsh_error(const GmshApi& api, const std::string& fallback) {
+  char* text = nullptr;
+  int ierr = 0;
+  api.last_error(&text, &ierr);
+  std::string out = text && *text ? text : fallback;
+  if (text) api.free(text);
+  return out;
+}
+
+}  // namespace
+#endif
+
 bool gmsh_api_available() {
 #ifdef BEMCONTACT_WITH_GMSH
-  return true;
+  return gmsh_library().failure.empty();
 #else
   return false;
 #endif
@@ -507,42 +566,41 @@ bool gmsh_api_available() {
 
 GmshCurves mesh_geo(const std::filesystem::path& file) {
 #ifdef BEMCONTACT_WITH_GMSH
+  const GmshApi& api = gmsh_library();
+  if (!api.failure.empty())
+    throw InputError(SourceLocation{file.string(), 0, ""},
+                     "reading a .geo file needs the Gmsh library (" + api.failure + "; apt-get install libgmsh4.8), "
+                     "or mesh it with gmsh -1 " + file.filename().string() + " -format msh41 and give the .msh file");
   // The Gmsh API holds one global model: one file at a time.
   static std::mutex gmsh_mutex;
   const std::lock_guard<std::mutex> lock(gmsh_mutex);
   const auto temporary = std::filesystem::temp_directory_path() /
                          ("bemcontact-" + std::to_string(::getpid()) + "-" + file.stem().string() + ".msh");
-  std::string text, error;
-  try {
-    gmsh::initialize();
-    gmsh::option::setNumber("General.Terminal", 0);
-    gmsh::option::setNumber("Mesh.MshFileVersion", 4.1);
-    gmsh::option::setNumber("Mesh.Binary", 0);
-    gmsh::open(file.string());
-    gmsh::model::mesh::generate(1);
-    gmsh::write(temporary.string());
-  } catch (const std::exception& e) {
-    error = e.what();
-  } catch (...) {
-    error = "unknown error";
-  }
+  std::string error;
+  int ierr = 0;
+  char program[] = "bemcontact";
+  char* argv[] = {program, nullptr};
+  api.initialize(1, argv, 0, &ierr);
+  if (ierr) error = gmsh_error(api, "Gmsh did not start");
+  const auto step = [&](auto call, const char* what) {
+    if (!error.empty()) return;
+    call();
+    if (ierr) error = gmsh_error(api, what);
+  };
+  step([&] { api.set_number("General.Terminal", 0, &ierr); }, "cannot set General.Terminal");
+  step([&] { api.set_number("Mesh.MshFileVersion", 4.1, &ierr); }, "cannot set Mesh.MshFileVersion");
+  step([&] { api.set_number("Mesh.Binary", 0, &ierr); }, "cannot set Mesh.Binary");
+  step([&] { api.open(file.c_str(), &ierr); }, "cannot open the file");
+  step([&] { api.generate(1, &ierr); }, "cannot mesh the curves");
+  step([&] { api.write(temporary.c_str(), &ierr); }, "cannot write the mesh");
+  std::string text;
   if (error.empty()) {
     std::ifstream in(temporary);
     std::ostringstream content;
     content << in.rdbuf();
     text = content.str();
-  } else {
-    std::string last;
-    try {
-      gmsh::logger::getLastError(last);
-    } catch (...) {
-    }
-    if (!last.empty()) error = last;
   }
-  try {
-    gmsh::finalize();
-  } catch (...) {
-  }
+  api.finalize(&ierr);
   std::error_code ignored;
   std::filesystem::remove(temporary, ignored);
   if (!error.empty()) throw InputError(SourceLocation{file.string(), 0, ""}, "Gmsh could not mesh the file: " + error);

@@ -1,6 +1,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <string>
 
 #include "bemcontact/core/error.hpp"
@@ -152,6 +154,24 @@ TEST(GmshGeometry, FileErrorsNameTheFileAndLine) {
   std::string open_square = square_22;
   open_square.replace(open_square.find("5 1 2 4 4 4 1"), 13, "5 2 2 4 4 4 1");  // the left side is a triangle now
   EXPECT_THROW(boundary_from_curves(parse_msh(open_square, "open.msh"), false, "open.msh"), InputError);
+}
+
+TEST(GmshGeometry, GeoSyntaxErrorsCarryGmshsMessage) {
+  if (!gmsh_api_available()) GTEST_SKIP() << "built without the Gmsh library (.geo files refused)";
+  const auto file = std::filesystem::temp_directory_path() / "bemcontact_test_bad.geo";
+  {
+    std::ofstream out(file);
+    out << "Point(1) = {0, 0, 0};\nLine(1) = {1, 2;\n";
+  }
+  try {
+    read_gmsh_boundary(file, false);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("Gmsh could not mesh the file"), std::string::npos) << message;
+    EXPECT_NE(message.find("line 2"), std::string::npos) << message;
+  }
+  std::filesystem::remove(file);
 }
 
 TEST(GmshGeometry, ProblemFileTakesConditionsByCurveName) {
