@@ -45,6 +45,7 @@ test-sanitize: deps
 	  || (cat $(SANITIZE_DIR).configure.log; exit 1)
 	@cmake --build $(SANITIZE_DIR) -j $(JOBS) -- --no-print-directory
 	@cd $(SANITIZE_DIR) && OMP_NUM_THREADS=$(JOBS) ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 \
+	  LSAN_OPTIONS=suppressions=$(CURDIR)/scripts/lsan.supp:print_suppressions=0 \
 	  UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 ctest --output-on-failure -j $(JOBS)
 
 # A bounded libFuzzer run (clang); findings are copied into tests/fuzz_regressions/.
