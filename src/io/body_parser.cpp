@@ -406,8 +406,7 @@ void read_gmsh_pieces(const TableReader& body, const FileContext& context, bem::
     // The Gmsh file's own position, then the key that named it.
     throw InputError(body.where("geometry"), e.what());
   }
-  std::map<std::string, const toml::table*> conditions;
-  std::map<std::string, int> lines;
+  std::map<std::string, std::pair<const toml::table*, int>> conditions;  // by curve name: table, line
   if (const toml::array* boundaries = array_of_tables(body, "boundary", "[[boundary]]")) {
     int index = 0;
     for (const toml::node& node : *boundaries) {
@@ -429,17 +428,17 @@ void read_gmsh_pieces(const TableReader& body, const FileContext& context, bem::
         reader.fail("name", "'" + *name + "' has no physical curve named '" + *boundary_name + "'; its curves are " +
                                 names);
       }
-      if (!conditions.emplace(*boundary_name, node.as_table()).second)
+      const auto [existing, added] = conditions.emplace(*boundary_name, std::pair{node.as_table(), reader.line()});
+      if (!added)
         reader.fail("name", "the boundary '" + *boundary_name + "' already has conditions at line " +
-                                std::to_string(lines[*boundary_name]));
-      lines[*boundary_name] = reader.line();
+                                std::to_string(existing->second.second));
     }
   }
   const toml::table traction_free;
   for (auto& piece : gmsh.pieces) {
     const auto found = conditions.find(piece.name);
-    const int line = found != conditions.end() ? lines[piece.name] : body.where("geometry").line;
-    const TableReader reader(found != conditions.end() ? *found->second : traction_free,
+    const int line = found != conditions.end() ? found->second.second : body.where("geometry").line;
+    const TableReader reader(found != conditions.end() ? *found->second.first : traction_free,
                              body.key_path("boundary '" + piece.name + "'"), context, line);
     piece.where = SourceLocation{context.file, line, reader.path()};
     if (piece.elements > context.limits.max_elements)

@@ -49,6 +49,14 @@ class MshLines {
     return lines_[next_++];
   }
   std::istringstream read_words() { return std::istringstream(read()); }
+  // Reads `count` lines, handing each to `read_line` as words.
+  template <class ReadLine>
+  void each_line(long count, const ReadLine& read_line) {
+    for (long k = 0; k < count; ++k) {
+      auto words = read_words();
+      read_line(words);
+    }
+  }
   [[noreturn]] void fail(const std::string& message) const {
     throw InputError(SourceLocation{file_, line_number(), section_}, message);
   }
@@ -102,6 +110,116 @@ int element_node_count(int type) {
 
 }  // namespace
 
+namespace {
+
+// A format-4 section: "blocks count min_tag max_tag", then per block a line
+// "dim entity third count" (third: parametric flag or element type) and its lines,
+// which `read_block(dim, entity, third, count)` reads.
+template <class ReadBlock>
+void each_block(MshLines& lines, std::istringstream& words, const ReadBlock& read_block) {
+  long blocks = 0, count = 0, min_tag = 0, max_tag = 0;
+  read_values(lines, words, blocks, count, min_tag, max_tag);
+  for (long b = 0; b < blocks; ++b) {
+    auto block = lines.read_words();
+    int dim = 0, entity = 0, third = 0;
+    long in_block = 0;
+    read_values(lines, block, dim, entity, third, in_block);
+    read_block(dim, entity, third, in_block);
+  }
+}
+
+// $Entities (format 4): the physical groups of each curve.
+void read_entities(MshLines& lines, RawMesh& mesh) {
+  auto words = lines.read_words();
+  long points = 0, curves = 0, surfaces = 0, volumes = 0;
+  read_values(lines, words, points, curves, surfaces, volumes);
+  lines.each_line(points, [](std::istringstream&) {});
+  lines.each_line(curves, [&](std::istringstream& entry) {
+    int tag = 0, physicals = 0;
+    double box[6];
+    read_values(lines, entry, tag, box[0], box[1], box[2], box[3], box[4], box[5], physicals);
+    for (int p = 0; p < physicals; ++p) {
+      int physical = 0;
+      read_values(lines, entry, physical);
+      mesh.curve_physicals[tag].push_back(std::abs(physical));
+    }
+  });
+}
+
+void read_nodes(MshLines& lines, double version, RawMesh& mesh) {
+  auto words = lines.read_words();
+  if (version < 4.0) {  // count, then "tag x y z" per line
+    long count = 0;
+    read_values(lines, words, count);
+    lines.each_line(count, [&](std::istringstream& entry) {
+      long tag = 0;
+      double x = 0, y = 0, z = 0;
+      read_values(lines, entry, tag, x, y, z);
+      mesh.nodes.emplace_back(tag, Vec2(x, y));
+    });
+    return;
+  }
+  // Format 4: blocks of tags, then their coordinates.
+  each_block(lines, words, [&](int, int, int, long in_block) {
+    std::vector<long> tags;
+    lines.each_line(in_block, [&](std::istringstream& entry) {
+      read_values(lines, entry, tags.emplace_back());
+    });
+    for (const long tag : tags) {
+      auto entry = lines.read_words();
+      double x = 0, y = 0, z = 0;
+      read_values(lines, entry, x, y, z);
+      mesh.nodes.emplace_back(tag, Vec2(x, y));
+    }
+  });
+}
+
+// The end nodes of a line element (`count` nodes, ends first) from the rest of its line.
+std::array<long, 2> line_ends(MshLines& lines, std::istringstream& entry, int count) {
+  std::array<long, 3> nodes{};
+  for (int a = 0; a < count; ++a) read_values(lines, entry, nodes[a]);
+  return {nodes[0], nodes[1]};
+}
+
+void read_elements(MshLines& lines, double version, RawMesh& mesh) {
+  auto words = lines.read_words();
+  if (version < 4.0) {  // "tag type ntags tags... nodes..." per line, physical tag first
+    long count = 0;
+    read_values(lines, words, count);
+    lines.each_line(count, [&](std::istringstream& entry) {
+      long tag = 0;
+      int type = 0, tags = 0;
+      read_values(lines, entry, tag, type, tags);
+      std::vector<long> values(tags);
+      for (auto& v : values) read_values(lines, entry, v);
+      const int n = line_nodes(type);
+      if (n == 0) return;
+      const auto ends = line_ends(lines, entry, n);
+      if (tags < 1) lines.fail("a line element without a physical tag: give every boundary curve a physical name");
+      add_element(mesh, static_cast<int>(values[0]), ends[0], ends[1]);
+    });
+    return;
+  }
+  // Format 4: blocks per entity; a curve's physical groups come from $Entities.
+  each_block(lines, words, [&](int dim, int entity, int type, long in_block) {
+    const int n = dim == 1 ? line_nodes(type) : 0;
+    if (element_node_count(type) < 0) lines.fail("unknown element type " + std::to_string(type));
+    lines.each_line(in_block, [&](std::istringstream& entry) {
+      if (n == 0) return;
+      long tag = 0;
+      read_values(lines, entry, tag);
+      const auto ends = line_ends(lines, entry, n);
+      const auto physicals = mesh.curve_physicals.find(entity);
+      if (physicals == mesh.curve_physicals.end() || physicals->second.empty())
+        lines.fail("curve " + std::to_string(entity) +
+                   " has no physical group: give every boundary curve a physical name");
+      for (const int physical : physicals->second) add_element(mesh, physical, ends[0], ends[1]);
+    });
+  });
+}
+
+}  // namespace
+
 GmshCurves parse_msh(std::string_view text, const std::string& file) {
   MshLines lines(text, file);
   RawMesh mesh;
@@ -119,119 +237,25 @@ GmshCurves parse_msh(std::string_view text, const std::string& file) {
                    "format ASCII, or gmsh -1 FILE.geo -format msh41 -save)");
       if (!(version == 2.2 || (version >= 4.0 && version < 5.0)))
         lines.fail("mesh format " + std::to_string(version) + " is not read; use 2.2 or 4.1");
-      lines.skip_section();
     } else if (header == "$PhysicalNames") {
       auto words = lines.read_words();
-      int count = 0;
+      long count = 0;
       read_values(lines, words, count);
-      for (int k = 0; k < count; ++k) {
+      for (long k = 0; k < count; ++k) {
         const std::string& line = lines.read();
         std::istringstream entry(line);
         int dim = 0, tag = 0;
         read_values(lines, entry, dim, tag);
         if (dim == 1) mesh.physical_names[tag] = quoted_name(line);
       }
-      lines.skip_section();
     } else if (header == "$Entities" && version >= 4.0) {
-      auto words = lines.read_words();
-      long points = 0, curves = 0, surfaces = 0, volumes = 0;
-      read_values(lines, words, points, curves, surfaces, volumes);
-      for (long k = 0; k < points; ++k) lines.read();
-      for (long k = 0; k < curves; ++k) {
-        auto entry = lines.read_words();
-        int tag = 0, physicals = 0;
-        double box[6];
-        read_values(lines, entry, tag, box[0], box[1], box[2], box[3], box[4], box[5], physicals);
-        for (int p = 0; p < physicals; ++p) {
-          int physical = 0;
-          read_values(lines, entry, physical);
-          mesh.curve_physicals[tag].push_back(std::abs(physical));
-        }
-      }
-      lines.skip_section();
+      read_entities(lines, mesh);
     } else if (header == "$Nodes") {
-      auto words = lines.read_words();
-      if (version < 4.0) {
-        long count = 0;
-        read_values(lines, words, count);
-        for (long k = 0; k < count; ++k) {
-          auto entry = lines.read_words();
-          long tag = 0;
-          double x = 0, y = 0, z = 0;
-          read_values(lines, entry, tag, x, y, z);
-          mesh.nodes.emplace_back(tag, Vec2(x, y));
-        }
-      } else {
-        long blocks = 0, count = 0, min_tag = 0, max_tag = 0;
-        read_values(lines, words, blocks, count, min_tag, max_tag);
-        for (long b = 0; b < blocks; ++b) {
-          auto block = lines.read_words();
-          int dim = 0, entity = 0, parametric = 0;
-          long in_block = 0;
-          read_values(lines, block, dim, entity, parametric, in_block);
-          std::vector<long> tags(in_block);
-          for (auto& tag : tags) {
-            auto entry = lines.read_words();
-            read_values(lines, entry, tag);
-          }
-          for (const long tag : tags) {
-            auto entry = lines.read_words();
-            double x = 0, y = 0, z = 0;
-            read_values(lines, entry, x, y, z);
-            mesh.nodes.emplace_back(tag, Vec2(x, y));
-          }
-        }
-      }
-      lines.skip_section();
+      read_nodes(lines, version, mesh);
     } else if (header == "$Elements") {
-      auto words = lines.read_words();
-      if (version < 4.0) {
-        long count = 0;
-        read_values(lines, words, count);
-        for (long k = 0; k < count; ++k) {
-          auto entry = lines.read_words();
-          long tag = 0;
-          int type = 0, tags = 0;
-          read_values(lines, entry, tag, type, tags);
-          std::vector<long> values(tags);
-          for (auto& v : values) read_values(lines, entry, v);
-          const int n = line_nodes(type);
-          if (n == 0) continue;
-          std::array<long, 3> nodes{};
-          for (int a = 0; a < n; ++a) read_values(lines, entry, nodes[a]);
-          if (tags < 1)
-            lines.fail("a line element without a physical tag: give every boundary curve a physical name");
-          add_element(mesh, static_cast<int>(values[0]), nodes[0], nodes[1]);
-        }
-      } else {
-        long blocks = 0, count = 0, min_tag = 0, max_tag = 0;
-        read_values(lines, words, blocks, count, min_tag, max_tag);
-        for (long b = 0; b < blocks; ++b) {
-          auto block = lines.read_words();
-          int dim = 0, entity = 0, type = 0;
-          long in_block = 0;
-          read_values(lines, block, dim, entity, type, in_block);
-          const int n = dim == 1 ? line_nodes(type) : 0;
-          if (element_node_count(type) < 0) lines.fail("unknown element type " + std::to_string(type));
-          for (long k = 0; k < in_block; ++k) {
-            auto entry = lines.read_words();
-            if (n == 0) continue;
-            long tag = 0;
-            std::array<long, 3> nodes{};
-            read_values(lines, entry, tag);
-            for (int a = 0; a < n; ++a) read_values(lines, entry, nodes[a]);
-            const auto physicals = mesh.curve_physicals.find(entity);
-            if (physicals == mesh.curve_physicals.end() || physicals->second.empty())
-              lines.fail("curve " + std::to_string(entity) +
-                         " has no physical group: give every boundary curve a physical name");
-            for (const int physical : physicals->second) add_element(mesh, physical, nodes[0], nodes[1]);
-          }
-        }
-      }
-      lines.skip_section();
-    } else {
-      lines.skip_section();
+      read_elements(lines, version, mesh);
     }
+    lines.skip_section();
   }
   if (version == 0.0) lines.fail("not a Gmsh .msh file: no $MeshFormat section");
   GmshCurves out;
