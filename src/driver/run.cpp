@@ -62,13 +62,6 @@ void add_geometry_warnings(std::vector<std::string>& warnings, const bem::BodyDe
     warnings.push_back(label.empty() ? warning : label + ": " + warning);
 }
 
-json mesh_options_json(const geometry::MeshOptions& mesh) {
-  return {{"interpolation", to_string(mesh.interpolation)},
-          {"corner_shift", mesh.corner_shift},
-          {"corner_transition", mesh.corner_transition},
-          {"split_angle_radians", mesh.split_angle_radians}};
-}
-
 json mesh_json(const geometry::BoundaryMesh& mesh) {
   int split = 0;
   for (const auto& v : mesh.vertices) split += v.split;
@@ -150,7 +143,7 @@ RunOutput run_decomposition(std::string_view text, const std::string& file_name,
   auto summary = summary_envelope("decomposition", "run", text, file_name, file.problem.title, file.problem.analysis);
   summary.parameters = file.parameters;
   const auto& o = file.problem.options;
-  summary.options.update({{"mesh", mesh_options_json(file.problem.mesh)},
+  summary.options.update({{"mesh", io::mesh_options_json(file.problem.mesh)},
                           {"method", dd::to_string(o.method)},
                           {"restart", o.restart},
                           {"tolerance", o.tolerance},
@@ -264,7 +257,7 @@ RunOutput run_body(std::string_view text, const std::string& file_name, const Ru
   const auto& peak = result.mesh.nodes[max_vm_node].position;
   auto summary = summary_envelope("body", "run", text, file_name, file.problem.title, file.problem.analysis);
   summary.parameters = file.parameters;
-  summary.options.update({{"mesh", mesh_options_json(file.problem.mesh)}});
+  summary.options.update({{"mesh", io::mesh_options_json(file.problem.mesh)}});
   summary.problem = io::problem_echo_json(file);
   summary.mesh = meshes_json({{file.problem.body.name, &result.mesh}});
   summary.results = {{"solve", {{"unknowns", result.report.unknowns},
@@ -394,7 +387,7 @@ RunOutput mesh_problem(std::string_view text, const std::string& file_name, cons
          static_cast<long>(mesh.node_count()), static_cast<long>(mesh.element_count()));
   auto summary = summary_envelope("body", "mesh", text, file_name, file.problem.title, file.problem.analysis);
   summary.parameters = file.parameters;
-  summary.options.update({{"mesh", mesh_options_json(file.problem.mesh)}});
+  summary.options.update({{"mesh", io::mesh_options_json(file.problem.mesh)}});
   summary.problem = io::problem_echo_json(file);
   summary.mesh = meshes_json({{file.problem.body.name, &mesh}});
   add_summary(summary, output);

@@ -63,6 +63,15 @@ struct VertexPlan {
 
 }  // namespace
 
+double discontinuous_node_fraction(Interpolation interpolation) {
+  return interpolation == Interpolation::quadratic ? 0.5 * (1.0 - std::sqrt(0.6)) : 0.5 * (1.0 - 1.0 / std::sqrt(3.0));
+}
+
+void use_discontinuous_elements(MeshOptions& options) {
+  options.discontinuous = true;
+  options.corner_shift = discontinuous_node_fraction(options.interpolation);
+}
+
 BoundaryMesh mesh_boundary(const std::vector<BoundaryPiece>& input_pieces, const MeshOptions& options) {
   if (!(options.corner_shift > 0.0 && options.corner_shift < 0.5))
     throw GeometryError("corner_shift must lie in (0, 0.5), got " +
@@ -220,7 +229,12 @@ BoundaryMesh mesh_boundary(const std::vector<BoundaryPiece>& input_pieces, const
         } else {
           element.node_count = quadratic ? 3 : 2;
           // Start node.
-          if (k > 0) {
+          if (options.discontinuous) {
+            element.node_fraction[0] = options.corner_shift;
+            element.nodes[0] = add_node(shifted_position(options.corner_shift),
+                                        shifted_normal(k, options.corner_shift), p, true);
+            mesh.piece_nodes[p].push_back(element.nodes[0]);
+          } else if (k > 0) {
             element.nodes[0] = previous_end;
           } else if (first.split) {
             element.node_fraction[0] = options.corner_shift;
@@ -240,7 +254,11 @@ BoundaryMesh mesh_boundary(const std::vector<BoundaryPiece>& input_pieces, const
             mesh.piece_nodes[p].push_back(element.nodes[2]);
           }
           // End node.
-          if (k + 1 < n) {
+          if (options.discontinuous) {
+            element.node_fraction[1] = 1.0 - options.corner_shift;
+            element.nodes[1] = add_node(shifted_position(1.0 - options.corner_shift),
+                                        shifted_normal(k, 1.0 - options.corner_shift), p, true);
+          } else if (k + 1 < n) {
             element.nodes[1] = add_node(element.end, points[k + 1].outward_normal, p, false);
           } else if (last.split) {
             element.node_fraction[1] = 1.0 - options.corner_shift;

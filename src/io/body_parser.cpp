@@ -670,6 +670,18 @@ void read_mesh_options(const TableReader& root, FileContext& context, geometry::
   if (!table) return;
   const TableReader mesh(*table, "mesh", context, root.line());
   mesh.check_keys(schema::mesh_keys(), "the [mesh] table");
+  if (const auto continuity = mesh.optional_string("continuity")) {
+    if (*continuity != "continuous" && *continuity != "discontinuous")
+      mesh.fail("continuity", "continuity must be \"continuous\" (elements share their end nodes; split at "
+                              "corners) or \"discontinuous\" (every element has its own nodes), found \"" +
+                                  *continuity + "\"");
+    if (*continuity == "discontinuous") {
+      geometry::use_discontinuous_elements(options);
+      if (options.interpolation == Interpolation::constant)
+        context.warnings.push_back(SourceLocation{context.file, mesh.line(), "mesh.continuity"}.describe() +
+                                   ": continuity has no effect with constant elements (they are discontinuous)");
+    }
+  }
   if (const auto shift = mesh.optional_number("corner_shift")) {
     if (!(*shift > 0.0 && *shift < 0.5))
       mesh.fail("corner_shift", "the corner shift (position of a split corner node, as a fraction of its "

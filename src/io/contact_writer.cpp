@@ -330,10 +330,7 @@ void fill_contact_summary(RunSummary& summary, const contact::ContactProblem& pr
                      {"force_loads", problem.forces.size()}};
   const auto& solver = problem.solver;
   summary.options.update(
-      {{"mesh", {{"interpolation", to_string(problem.mesh.interpolation)},
-                 {"corner_shift", problem.mesh.corner_shift},
-                 {"corner_transition", problem.mesh.corner_transition},
-                 {"split_angle_radians", problem.mesh.split_angle_radians}}},
+      {{"mesh", mesh_options_json(problem.mesh)},
        {"law", {{"kind", contact::to_string(problem.kind)},
                 {"friction", problem.friction},
                 {"tangential_coupling", problem.tangential_coupling}}},

@@ -78,7 +78,7 @@ nlohmann::json problem_echo_json(const ProblemFile& file) {
           {"source_file", problem.source_file},
           {"analysis", to_string(problem.analysis)},
           {"interpolation", to_string(problem.mesh.interpolation)},
-          {"mesh", {{"corner_shift", problem.mesh.corner_shift}, {"corner_transition", problem.mesh.corner_transition}}},
+          {"mesh", mesh_options_json(problem.mesh)},
           {"material",
            {{"E", problem.body.material.young_modulus}, {"nu", problem.body.material.poisson_ratio}}},
           {"parameters", parameters},
@@ -86,6 +86,14 @@ nlohmann::json problem_echo_json(const ProblemFile& file) {
           {"constraints", constraints},
           {"interior_points", problem.interior_points.size()},
           {"output", {{"vtk", file.output.vtk}}}};
+}
+
+nlohmann::json mesh_options_json(const geometry::MeshOptions& mesh) {
+  return {{"interpolation", to_string(mesh.interpolation)},
+          {"continuity", mesh.discontinuous ? "discontinuous" : "continuous"},
+          {"corner_shift", mesh.corner_shift},
+          {"corner_transition", mesh.corner_transition},
+          {"split_angle_radians", mesh.split_angle_radians}};
 }
 
 nlohmann::json mesh_transitions_json(const geometry::BoundaryMesh& mesh) {

@@ -37,7 +37,7 @@ const std::vector<std::string>& grid_keys() {
   return keys;
 }
 const std::vector<std::string>& mesh_keys() {
-  static const std::vector<std::string> keys{"corner_shift", "corner_transition"};
+  static const std::vector<std::string> keys{"corner_shift", "corner_transition", "continuity"};
   return keys;
 }
 const std::vector<std::string>& output_keys() {

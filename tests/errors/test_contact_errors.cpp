@@ -46,6 +46,13 @@ TEST(ContactErrors, BoundariesThatDoNotFaceEachOther) {
   EXPECT_TRUE(contains(message, "boundary 'contact' of body 'support'")) << message;
 }
 
+TEST(ContactErrors, DiscontinuousElementsAreRefusedWithContactPairs) {
+  const auto message = input_error(example_text() + "\n[mesh]\ncontinuity = \"discontinuous\"\n");
+  EXPECT_TRUE(contains(message, "ball.toml:")) << message;
+  EXPECT_TRUE(contains(message, "key 'mesh.continuity'")) << message;
+  EXPECT_TRUE(contains(message, "not available in problems with contact pairs")) << message;
+}
+
 TEST(ContactErrors, NegativeInterferenceNamesTheKey) {
   const auto message = input_error(replaced(example_text(), "increments = 1", "increments = 1\ninterference = -0.01"));
   EXPECT_TRUE(contains(message, "key 'contact.interference'")) << message;

@@ -196,6 +196,8 @@ TEST(IoProblemFileErrors, InvalidValues) {
   expect_changed("elements = 4", "grading = 0.5", "grading", "boundary[1].grading", {">= 1", "refine = \"end\""});
   expect_changed("corner_shift = 0.2", "corner_shift = 0.6", "corner_shift", "mesh.corner_shift",
                  {"0 < corner_shift < 0.5"});
+  expect_changed("corner_shift = 0.2", "continuity = \"broken\"", "broken", "mesh.continuity",
+                 {"\"continuous\"", "\"discontinuous\"", "found \"broken\""});
   expect_changed("analysis = \"plane_stress\"", "analysis = \"plane_stres\"", "analysis", "analysis",
                  {"invalid value 'plane_stres'", "Did you mean 'plane_stress'?", "'axisymmetric'"});
   expect_changed("title = \"Plate\"", "interpolation = \"cubic\"", "interpolation", "interpolation",
@@ -417,6 +419,13 @@ TEST(IoProblemFileErrors, KeysWithoutEffectAreDocumentedWarnings) {
                     "case.toml");
   ASSERT_EQ(constant.warnings.size(), 1u);
   EXPECT_NE(constant.warnings[0].find("corner_shift has no effect"), std::string::npos) << constant.warnings[0];
+  const auto constant_discontinuous = parse_problem(
+      replace(replace(valid, "analysis = \"plane_stress\"", "analysis = \"plane_stress\"\ninterpolation = \"constant\""),
+              "corner_shift = 0.2", "continuity = \"discontinuous\""),
+      "case.toml");
+  ASSERT_EQ(constant_discontinuous.warnings.size(), 1u);
+  EXPECT_NE(constant_discontinuous.warnings[0].find("key 'mesh.continuity'"), std::string::npos);
+  EXPECT_NE(constant_discontinuous.warnings[0].find("no effect with constant elements"), std::string::npos);
   EXPECT_TRUE(parse_problem(valid, "case.toml").warnings.empty());
 }
 

@@ -26,7 +26,19 @@ struct MeshOptions {
   // Axisymmetry: straight pieces lying on the axis r = 0 close the meridian section but
   // are not part of the boundary; they carry no elements.
   bool skip_axis_pieces = false;
+  // Discontinuous elements: every element gets its own end nodes, moved `corner_shift`
+  // into it (collocation inside the element; docs/corners.md). With the Gauss points of
+  // the element as the shift (discontinuous_node_fraction) linear elements converge at
+  // second order for displacements on polygons, where continuous ones reach 1.6.
+  bool discontinuous = false;
 };
+
+// Fraction of the element where the end nodes of a discontinuous element go by default:
+// the Gauss-Legendre points, (1 - 1/sqrt 3) / 2 for linear elements and (1 - sqrt(3/5)) / 2
+// for quadratic ones (whose middle node stays at 1/2).
+double discontinuous_node_fraction(Interpolation interpolation);
+// Switches `options` to discontinuous elements with their nodes at those points.
+void use_discontinuous_elements(MeshOptions& options);
 
 // True for a straight piece lying on the axis r = 0 (within tolerance).
 bool lies_on_axis(const BoundaryPiece& piece, double tolerance);

@@ -26,6 +26,9 @@ nlohmann::json problem_echo_json(const ProblemFile& file);
 // and made.
 nlohmann::json mesh_transitions_json(const geometry::BoundaryMesh& mesh);
 
+// The [mesh] options in effect (interpolation, continuity, corner shift, transition).
+nlohmann::json mesh_options_json(const geometry::MeshOptions& mesh);
+
 // Resultant force (and moment in plane problems) of the tractions on each boundary
 // (BoundarySolution::resultants): [{"boundary", "prescribed_displacement", "force": [f1, f2], "moment"}].
 nlohmann::json resultants_json(const std::vector<bem::BoundaryResultant>& resultants, AnalysisType type);

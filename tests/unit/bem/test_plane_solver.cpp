@@ -75,6 +75,23 @@ TEST(BemPlaneSolver, LinearFieldIsExactForEveryCornerCondition) {
   }
 }
 
+// Discontinuous elements (every node inside its element, at the Gauss points) reproduce a
+// linear field to round-off too, linear and quadratic, under every corner condition.
+TEST(BemPlaneSolver, DiscontinuousElementsReproduceALinearField) {
+  const std::array<std::array<ConditionKind, 2>, 4> cases[] = {
+      {{{U, U}, {T, T}, {T, T}, {U, U}}}, {{{U, U}, {U, U}, {U, U}, {U, U}}}, {{{T, U}, {U, T}, {T, T}, {U, T}}}};
+  const auto field = sample_field(AnalysisType::plane_strain);
+  for (const auto interpolation : {Interpolation::linear, Interpolation::quadratic})
+    for (const auto& kinds : cases) {
+      auto problem = square(field, kinds, 3, interpolation);
+      geometry::use_discontinuous_elements(problem.mesh);
+      const auto result = bem::solve_body(problem);
+      EXPECT_EQ(result.mesh.node_count(), 12 * (interpolation == Interpolation::quadratic ? 3 : 2));
+      EXPECT_LT(max_error(result, field), 1e-12) << to_string(interpolation);
+      EXPECT_LT(result.report.relative_residual, 1e-11);
+    }
+}
+
 TEST(BemPlaneSolver, InteriorPointsOfALinearFieldAreExact) {
   const auto field = sample_field(AnalysisType::plane_strain);
   auto problem = square(field, {{{U, U}, {T, T}, {T, T}, {T, T}}}, 4);

@@ -55,6 +55,35 @@ TEST(GeometryMesh, SquareLinearSplitsEveryCorner) {
   }
 }
 
+TEST(GeometryMesh, DiscontinuousElementsOwnTheirNodesAtTheGaussPoints) {
+  for (const Interpolation interpolation : {Interpolation::linear, Interpolation::quadratic}) {
+    MeshOptions options;
+    options.interpolation = interpolation;
+    use_discontinuous_elements(options);
+    const auto mesh = mesh_boundary(unit_square(3), options);
+    const int per_element = interpolation == Interpolation::quadratic ? 3 : 2;
+    ASSERT_EQ(mesh.element_count(), 12);
+    EXPECT_EQ(mesh.node_count(), 12 * per_element);  // no node shared
+    const double gauss = interpolation == Interpolation::quadratic ? 0.5 - 0.5 * std::sqrt(0.6)
+                                                                   : 0.5 - 0.5 / std::sqrt(3.0);
+    for (const auto& e : mesh.elements) {
+      EXPECT_NEAR(e.node_fraction[0], gauss, 1e-15);
+      EXPECT_NEAR(e.node_fraction[1], 1.0 - gauss, 1e-15);
+      const Vec2 expected = e.start + gauss * (e.end - e.start);
+      EXPECT_NEAR((mesh.nodes[e.nodes[0]].position - expected).norm(), 0.0, 1e-15);
+      EXPECT_TRUE(mesh.nodes[e.nodes[0]].shifted && mesh.nodes[e.nodes[1]].shifted);
+      // Linear functions are reproduced: the shapes sum to one and interpolate x.
+      double sum = 0.0, x = 0.0;
+      for (int a = 0; a < e.node_count; ++a) {
+        sum += e.shape(a, 0.9);
+        x += e.shape(a, 0.9) * mesh.nodes[e.nodes[a]].position.x();
+      }
+      EXPECT_NEAR(sum, 1.0, 1e-14);
+      EXPECT_NEAR(x, e.point(0.9).x(), 1e-14);
+    }
+  }
+}
+
 TEST(GeometryMesh, CollinearPiecesWithEqualConditionsShareTheNode) {
   std::vector<BoundaryPiece> pieces = {
       line("b1", {0, 0}, {0.5, 0}, 2), line("b2", {0.5, 0}, {1, 0}, 2),
