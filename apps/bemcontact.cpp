@@ -61,6 +61,11 @@ int command_run(const std::string& input, const std::string& output_dir, bool qu
                 bool mesh_only) {
   const std::string text = io::read_problem_text(input);
   options.progress = make_progress(quiet);
+  if (!quiet && !mesh_only)
+    options.notice = [](const std::string& line) {
+      std::printf("%s\n", line.c_str());
+      std::fflush(stdout);
+    };
   const auto output = mesh_only ? driver::mesh_problem(text, input, options) : driver::run_problem(text, input, options);
   for (const auto& warning : output.warnings) std::fprintf(stderr, "bemcontact: warning: %s\n", warning.c_str());
   output.files.commit(output_dir);

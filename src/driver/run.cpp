@@ -98,6 +98,7 @@ io::RunSummary summary_envelope(const char* kind, const char* command, std::stri
 // summary.json, last, listing the files added before it.
 void add_summary(io::RunSummary& summary, RunOutput& output) {
   summary.warnings = output.warnings;
+  summary.estimate = output.estimate;
   summary.outputs = output.files.names();
   output.files.add("summary.json", io::write_json_string(io::summary_json(summary)));
 }
@@ -116,6 +117,13 @@ auto read_checked(Parse parse, std::string_view text, const std::string& file_na
                   RunOutput& output) {
   auto file = parse(text, file_name, options.overrides, options.limits);
   check_resources(file.problem, options.limits);
+  const ResourceEstimate estimate = estimate_resources(file.problem);
+  output.estimate = {{"unknowns", estimate.total_unknowns},
+                     {"largest_body_unknowns", estimate.unknowns},
+                     {"memory_bytes", estimate.bytes},
+                     {"seconds", estimate.seconds},
+                     {"threads", estimate.threads}};
+  if (options.notice) options.notice(describe(estimate));
   output.warnings = file.warnings;
   return file;
 }

@@ -94,6 +94,7 @@ nlohmann::json summary_json(const RunSummary& s) {
           {"mesh", s.mesh},
           {"results", s.results},
           {"reactions", s.reactions},
+          {"estimate", s.estimate},
           {"timings_seconds", s.timings},
           {"warnings", s.warnings},
           {"outputs", s.outputs}};

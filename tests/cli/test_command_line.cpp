@@ -97,6 +97,9 @@ TEST(CommandLine, RunWritesEveryOutputAndASummary) {
   EXPECT_LT(summary["results"]["solve"]["relative_residual"].get<double>(), 1e-12);
   EXPECT_TRUE(summary["timings_seconds"].contains("assembly"));
   EXPECT_TRUE(summary["timings_seconds"].contains("solve"));
+  // The estimate, printed before the result and kept in the summary.
+  EXPECT_LT(out.output.find("estimate: 40 unknowns"), out.output.find("time ")) << out.output;
+  EXPECT_EQ(summary["estimate"]["unknowns"], 2 * summary["mesh"]["nodes"].get<int>());
   fs::remove_all(dir);
 }
 

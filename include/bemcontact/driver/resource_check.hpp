@@ -9,11 +9,22 @@
 
 namespace bemcontact::driver {
 
-// Dense memory of the bodies' boundary systems, estimated from their element counts.
+// Dense memory and time of the bodies' boundary systems, estimated from their element
+// counts before anything is meshed. The time model (seconds on `threads` threads):
+// kernel integrals (nodes x elements of each body, and interior points x elements) at
+// per-pair costs, plus the LU factorisations at 2/3 n^3 flops; the constants were
+// measured on a 2-core x86-64 with OpenBLAS (docs/limits.md), so the figure is an order
+// of magnitude on other machines.
 struct ResourceEstimate {
   std::int64_t unknowns = 0;  // of the largest single body or subdomain
+  std::int64_t total_unknowns = 0;
   double bytes = 0.0;         // the peak of the run
+  double seconds = 0.0;       // assembly, factorisation and interior points, one solve
+  int threads = 1;
 };
+
+// One line for the terminal: "estimate: ... unknowns, about ... of memory and ... ".
+std::string describe(const ResourceEstimate& estimate);
 
 ResourceEstimate estimate_resources(const bem::ProblemDefinition& problem);
 ResourceEstimate estimate_resources(const dd::DecompositionProblem& problem);

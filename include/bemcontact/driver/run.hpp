@@ -2,6 +2,8 @@
 // The whole path of a run, from problem text to the files it writes, with nothing
 // touching the disk or the terminal: the command line, the fuzz target and the tests
 // all go through here. The caller commits `files` (OutputDirectory) and prints `report`.
+#include <functional>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -21,6 +23,8 @@ struct RunOptions {
   io::ParameterOverrides overrides;
   bem::ProgressCallback progress;
   ResourceLimits limits;
+  // Told, before anything is solved, the run's estimate (resource_check.hpp: describe).
+  std::function<void(const std::string&)> notice;
 };
 
 struct RunOutput {
@@ -30,6 +34,7 @@ struct RunOutput {
   // Set when the run wrote only diagnostics (an unconverged interface problem): the
   // command commits the files, prints this and exits with the solver's code.
   std::string solver_failure;
+  nlohmann::json estimate = nlohmann::json::object();  // summary.json "estimate"
 };
 
 // Parses and solves `text` (read from `file_name`, which messages name). Throws

@@ -24,6 +24,7 @@ struct RunSummary {
   nlohmann::json mesh = nlohmann::json::object();      // nodes, elements, regions {name: {...}}
   nlohmann::json results = nlohmann::json::object();   // kind-specific answers
   nlohmann::json reactions = nlohmann::json::object(); // per region: resultants of its boundaries
+  nlohmann::json estimate = nlohmann::json::object();  // unknowns, memory and time foreseen before the run
   nlohmann::json timings = nlohmann::json::object();   // seconds per phase, total
   std::vector<std::string> warnings;
   std::vector<std::string> outputs;                    // the other files of the folder

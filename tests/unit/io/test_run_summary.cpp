@@ -24,7 +24,7 @@ TEST(RunSummary, EveryBlockIsPresentWhateverTheKindFills) {
   s.input_text = "abc";
   const auto j = summary_json(s);
   for (const char* key : {"schema", "bemcontact_version", "kind", "command", "title", "analysis", "input",
-                          "parameters", "options", "problem", "mesh", "results", "reactions", "timings_seconds",
+                          "parameters", "options", "problem", "mesh", "results", "reactions", "estimate", "timings_seconds",
                           "warnings", "outputs"})
     EXPECT_TRUE(j.contains(key)) << key;
   EXPECT_EQ(j["schema"], summary_schema);

@@ -1,0 +1,46 @@
+// The estimate printed before a run: its node count is the mesher's (every element kind),
+// and its time model follows the documented constants.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "bemcontact/bem/analysis.hpp"
+#include "bemcontact/driver/resource_check.hpp"
+#include "bemcontact/io/problem_file.hpp"
+#include "support/example_text.hpp"
+
+namespace bemcontact::driver {
+namespace {
+
+TEST(ResourceEstimate, UnknownsAreTheMeshersForEveryElementKind) {
+  // cantilever.toml: four boundaries, split corners, no corner transition.
+  const auto file = io::parse_problem(test_support::example_text("cantilever.toml"), "cantilever.toml");
+  for (const auto interpolation : {Interpolation::linear, Interpolation::quadratic})
+    for (const bool discontinuous : {false, true}) {
+      auto problem = file.problem;
+      problem.mesh.interpolation = interpolation;
+      if (discontinuous) geometry::use_discontinuous_elements(problem.mesh);
+      const auto mesh = bem::mesh_body(problem);
+      ASSERT_TRUE(mesh.transitions.empty());
+      const auto estimate = estimate_resources(problem);
+      EXPECT_EQ(estimate.unknowns, 2 * mesh.node_count()) << to_string(interpolation) << discontinuous;
+      EXPECT_DOUBLE_EQ(estimate.bytes, 32.0 * std::pow(static_cast<double>(estimate.unknowns), 2));
+    }
+}
+
+TEST(ResourceEstimate, TimeGrowsWithTheCubeOfTheUnknownsAndIsDescribed) {
+  auto problem = io::parse_problem(test_support::example_text("plate_tension.toml"), "plate.toml").problem;
+  problem.interior_points.clear();
+  for (auto& piece : problem.body.pieces) piece.elements = 2000;
+  const auto estimate = estimate_resources(problem);
+  const double n = static_cast<double>(estimate.unknowns);  // 16 008
+  const double threads = estimate.threads;
+  const double expected = (8004.0 * 8000.0 * 0.27e-6 + 2.0 / 3.0 * n * n * n / 20e9) / threads;
+  EXPECT_NEAR(estimate.seconds, expected, 1e-9 * expected);
+  const std::string line = describe(estimate);
+  EXPECT_NE(line.find("estimate: 16008 unknowns"), std::string::npos) << line;
+  EXPECT_NE(line.find("GB of memory"), std::string::npos) << line;
+}
+
+}  // namespace
+}  // namespace bemcontact::driver
