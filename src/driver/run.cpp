@@ -14,6 +14,7 @@
 #include "bemcontact/core/error.hpp"
 #include "bemcontact/dd/solver.hpp"
 #include "bemcontact/driver/resource_check.hpp"
+#include "bemcontact/operators/dense_lu.hpp"
 #include "bemcontact/io/contact_file.hpp"
 #include "bemcontact/io/contact_writer.hpp"
 #include "bemcontact/io/decomposition_file.hpp"
@@ -92,6 +93,7 @@ io::RunSummary summary_envelope(const char* kind, const char* command, std::stri
   s.input_file = file_name;
   s.input_text = text;
   s.options["threads"] = omp_get_max_threads();
+  s.options["blas_kernels"] = operators::blas_core_name();
   return s;
 }
 

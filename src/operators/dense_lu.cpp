@@ -1,22 +1,47 @@
 #include "bemcontact/operators/dense_lu.hpp"
 
 #include <cblas.h>
-#include <lapacke.h>
 #include <omp.h>
+
+#include <cstddef>
+#include <string>
 
 #include <algorithm>
 #include <cmath>
 #include <mutex>
 #include <sstream>
+#include <vector>
 
 #include "bemcontact/core/error.hpp"
 
+// LAPACK's Fortran interface (LP64, gfortran's hidden string lengths last), called in
+// the serial OpenBLAS directly: LAPACKE would pull in the system's liblapack.so.3, by
+// default OpenBLAS's threaded build, whose idle worker spins for some 0.1 s after start
+// and stole a core from 13 of 30 small runs (CMakeLists.txt, docs/limits in
+// problem-file.md).
+extern "C" {
+void dgetrf_(const int* m, const int* n, double* a, const int* lda, int* ipiv, int* info);
+void dlaswp_(const int* n, double* a, const int* lda, const int* k1, const int* k2, const int* ipiv,
+             const int* incx);
+double dlange_(const char* norm, const int* m, const int* n, const double* a, const int* lda, double* work,
+               std::size_t norm_length);
+void dgecon_(const char* norm, const int* n, const double* a, const int* lda, const double* anorm, double* rcond,
+             double* work, int* iwork, int* info, std::size_t norm_length);
+void dgetrs_(const char* trans, const int* n, const int* nrhs, const double* a, const int* lda, const int* ipiv,
+             double* b, const int* ldb, int* info, std::size_t trans_length);
+}
+
 namespace bemcontact::operators {
+
+// OpenBLAS's kernel family (DYNAMIC_ARCH builds); weak, so that another BLAS links too.
+extern "C" char* openblas_get_corename(void) __attribute__((weak));
 
 void use_single_threaded_blas() {
   static std::once_flag once;
   std::call_once(once, [] { openblas_set_num_threads(1); });
 }
+
+std::string blas_core_name() { return openblas_get_corename ? std::string(openblas_get_corename()) : std::string(); }
 
 namespace {
 
@@ -25,18 +50,19 @@ namespace {
 // computed by single-threaded BLAS in the same way whatever the thread count, so the
 // factors are bit-identical for every --threads value (OpenBLAS's own threaded dgetrf
 // changes its blocking with the thread count). Returns LAPACK's info.
-lapack_int factor_in_tiles(Index n, double* a, lapack_int* pivots) {
+int factor_in_tiles(Index n, double* a, int* pivots) {
   constexpr Index panel_width = 128, tile_width = 256;
   const auto at = [&](Index row, Index column) { return a + row + column * n; };
-  lapack_int info = 0;
+  const int lda = static_cast<int>(n);
+  int info = 0;
   for (Index k = 0; k < n; k += panel_width) {
     const Index kb = std::min(panel_width, n - k);
-    const lapack_int panel_info = LAPACKE_dgetrf(LAPACK_COL_MAJOR, static_cast<lapack_int>(n - k),
-                                                 static_cast<lapack_int>(kb), at(k, k), static_cast<lapack_int>(n),
-                                                 pivots + k);
+    const int rows = static_cast<int>(n - k), panel_columns = static_cast<int>(kb);
+    int panel_info = 0;
+    dgetrf_(&rows, &panel_columns, at(k, k), &lda, pivots + k, &panel_info);
     if (panel_info < 0) return panel_info;
-    if (panel_info > 0 && info == 0) info = static_cast<lapack_int>(k) + panel_info;
-    for (Index i = k; i < k + kb; ++i) pivots[i] += static_cast<lapack_int>(k);
+    if (panel_info > 0 && info == 0) info = static_cast<int>(k) + panel_info;
+    for (Index i = k; i < k + kb; ++i) pivots[i] += static_cast<int>(k);
     // The row swaps of the panel on every other column, then U12 and the Schur complement.
     const Index tiles = (n + tile_width - 1) / tile_width;
 #pragma omp parallel for schedule(dynamic, 1)
@@ -45,9 +71,9 @@ lapack_int factor_in_tiles(Index n, double* a, lapack_int* pivots) {
       // Skip the panel's own columns (already swapped by dgetrf).
       const auto apply = [&](Index c0, Index c1) {
         if (c1 <= c0) return;
-        const auto cols = static_cast<lapack_int>(c1 - c0);
-        LAPACKE_dlaswp(LAPACK_COL_MAJOR, cols, at(0, c0), static_cast<lapack_int>(n), static_cast<lapack_int>(k + 1),
-                       static_cast<lapack_int>(k + kb), pivots, 1);
+        const int cols = static_cast<int>(c1 - c0);
+        const int k1 = static_cast<int>(k + 1), k2 = static_cast<int>(k + kb), increment = 1;
+        dlaswp_(&cols, at(0, c0), &lda, &k1, &k2, pivots, &increment);
         if (c0 < k) return;  // left of the panel: swaps only
         cblas_dtrsm(CblasColMajor, CblasLeft, CblasLower, CblasNoTrans, CblasUnit, static_cast<int>(kb), cols, 1.0,
                     at(k, k), static_cast<int>(n), at(k, c0), static_cast<int>(n));
@@ -84,17 +110,21 @@ DenseLU::DenseLU(Matrix matrix, const std::string& what, double singular_thresho
     column_scale_[j] = 1.0 / norm;
     factors_.col(j) *= column_scale_[j];
   }
-  const double anorm = LAPACKE_dlange(LAPACK_COL_MAJOR, '1', n, n, factors_.data(), n);
+  const int size = static_cast<int>(n);
+  const double anorm = dlange_("1", &size, &size, factors_.data(), &size, nullptr, 1);
   pivots_.resize(n);
   use_single_threaded_blas();
-  const lapack_int info = factor_in_tiles(n, factors_.data(), pivots_.data());
+  const int info = factor_in_tiles(n, factors_.data(), pivots_.data());
   if (info < 0) throw SolverError(what + ": LAPACK dgetrf rejected its arguments");
   if (info > 0) {
     rcond_ = 0.0;
   } else {
     double rcond = 0.0;
-    LAPACKE_dgecon(LAPACK_COL_MAJOR, '1', n, factors_.data(), n, anorm, &rcond);
-    rcond_ = rcond;
+    std::vector<double> work(4 * static_cast<std::size_t>(n));
+    std::vector<int> iwork(static_cast<std::size_t>(n));
+    int gecon_info = 0;
+    dgecon_("1", &size, factors_.data(), &size, &anorm, &rcond, work.data(), iwork.data(), &gecon_info, 1);
+    rcond_ = gecon_info == 0 ? rcond : 0.0;
   }
   if (!(rcond_ >= singular_threshold)) {
     std::ostringstream out;
@@ -141,9 +171,10 @@ void DenseLU::solve_columns(char transpose, Matrix& rhs) const {
 #pragma omp parallel for schedule(dynamic, 1) if (blocks > 1 && n >= 200)
   for (Index b = 0; b < blocks; ++b) {
     const Index first = b * block, count = std::min(block, columns - first);
-    LAPACKE_dgetrs(LAPACK_COL_MAJOR, transpose, static_cast<lapack_int>(n), static_cast<lapack_int>(count),
-                   factors_.data(), static_cast<lapack_int>(n), pivots_.data(), rhs.data() + first * n,
-                   static_cast<lapack_int>(n));
+    const int size = static_cast<int>(n), columns_here = static_cast<int>(count);
+    int info = 0;
+    dgetrs_(&transpose, &size, &columns_here, factors_.data(), &size, pivots_.data(), rhs.data() + first * n, &size,
+            &info, 1);
   }
 }
 

@@ -3,6 +3,8 @@
 // LAPACK/BLAS kernels: dgetrf panels, dtrsm, dgemm; dgetrs, dgecon),
 // with column equilibration so that displacement and traction unknowns, whose units
 // differ, weigh alike in the condition estimate.
+#include <string>
+
 #include "bemcontact/operators/linear_operator.hpp"
 
 namespace bemcontact::operators {
@@ -11,6 +13,9 @@ namespace bemcontact::operators {
 // thread count); the parallel work is ours, in fixed tiles, so results are the same for
 // every thread count. Called by every DenseLU; idempotent.
 void use_single_threaded_blas();
+// OpenBLAS's kernel family in use ("Haswell", "Cooperlake", ...; OPENBLAS_CORETYPE in the
+// environment forces one), or "" for another BLAS; reported in summary.json.
+std::string blas_core_name();
 
 class DenseLU {
  public:
