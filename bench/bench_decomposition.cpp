@@ -1,4 +1,5 @@
-// Domain decomposition against the monolithic multi-region solve: 2, 4 and 8 strips of
+// Domain decomposition against the monolithic multi-region solve (and a fibre composite of
+// 1 to 64 fibres, at the end): 2, 4 and 8 strips of
 // 500 linear elements each (200 across, 50 up; h = 0.01, strips 2 x 0.5, stacked), plate
 // in tension, mixed method, GMRES(20), tolerance 1e-8.
 //   BM_Decomposed:  assemble + factor each strip (n^3 per strip), GMRES on the interface
@@ -14,6 +15,7 @@
 
 #include <cmath>
 
+#include "bemcontact/dd/fibre_composite.hpp"
 #include "bemcontact/dd/monolithic.hpp"
 #include "bemcontact/dd/plate_strips.hpp"
 #include "bemcontact/dd/solver.hpp"
@@ -70,6 +72,25 @@ BENCHMARK(BM_Decomposed)
     ->Unit(benchmark::kMillisecond)
     ->Iterations(1);
 BENCHMARK(BM_Monolithic)->Arg(2)->Arg(4)->Arg(8)->Unit(benchmark::kMillisecond)->Iterations(1);
+
+// A fibre composite of n x n glass fibres in epoxy (dd/fibre_composite.hpp, pitch 4 R,
+// 8 elements per quarter arc, matrix half-width 30 R), mixed method, full GMRES: iterations
+// and time against the number of subdomains (n^2 + 1).
+void BM_FibreComposite(benchmark::State& state) {
+  dd::FibreCompositeSpec spec;
+  spec.fibres_per_side = static_cast<int>(state.range(0));
+  const auto problem = dd::fibre_composite(spec);
+  dd::DecompositionResult result;
+  for (auto _ : state) {
+    result = dd::solve_decomposition(problem);
+    benchmark::DoNotOptimize(result.gmres.x.data());
+  }
+  if (!result.converged()) state.SkipWithError(result.gmres.message.c_str());
+  state.counters["subdomains"] = static_cast<double>(problem.subdomains.size());
+  state.counters["interface_unknowns"] = static_cast<double>(result.interface_unknowns);
+  state.counters["iterations"] = result.gmres.iterations;
+}
+BENCHMARK(BM_FibreComposite)->Arg(1)->Arg(2)->Arg(4)->Arg(6)->Arg(8)->Unit(benchmark::kMillisecond)->Iterations(1);
 
 }  // namespace
 

@@ -163,7 +163,15 @@ template <class Names>
 void check_holes_inside(const std::vector<BoundaryPiece>& pieces, const std::vector<Contour>& contours,
                         const std::vector<Chord>& chords, const Names& names) {
   for (std::size_t h = 1; h < contours.size(); ++h) {
-    const Vec2 point = pieces[contours[h].pieces.front()].start;
+    // The middle of the hole's first chord: a vertex would sit on the horizontal line
+    // through other holes' vertices when holes are aligned (fibres on a grid), where the
+    // crossing count turns on rounding.
+    Vec2 point = pieces[contours[h].pieces.front()].start;
+    for (const auto& c : chords)
+      if (c.piece == contours[h].pieces.front()) {
+        point = 0.5 * (c.a + c.b);
+        break;
+      }
     if (!inside_contour(point, contours[0], chords))
       throw GeometryError("the hole made of " + names(contours[h]) + " lies outside the outer contour (" +
                           names(contours[0]) + "): a clockwise contour is a hole and must lie inside the body");

@@ -15,10 +15,9 @@
 #include "bemcontact/core/error.hpp"
 
 // LAPACK's Fortran interface (LP64, gfortran's hidden string lengths last), called in
-// the serial OpenBLAS directly: LAPACKE would pull in the system's liblapack.so.3, by
+// OpenBLAS's OpenMP build directly: LAPACKE would pull in the system's liblapack.so.3, by
 // default OpenBLAS's threaded build, whose idle worker spins for some 0.1 s after start
-// and stole a core from 13 of 30 small runs (CMakeLists.txt, docs/limits in
-// problem-file.md).
+// and stole a core from 13 of 30 small runs (CMakeLists.txt, problem-file.md).
 extern "C" {
 void dgetrf_(const int* m, const int* n, double* a, const int* lda, int* ipiv, int* info);
 void dlaswp_(const int* n, double* a, const int* lda, const int* k1, const int* k2, const int* ipiv,
