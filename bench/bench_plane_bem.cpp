@@ -80,8 +80,8 @@ BENCHMARK(BM_DenseLU)->Arg(250)->Arg(500)->Arg(1000)->Arg(2000)->Arg(4000)->Unit
     ->UseRealTime();
 
 // The machine's dgemm on all threads, the peak the tiled LU is measured against: OpenMP
-// over blocks of columns, each a single-threaded dgemm (the library links OpenBLAS's OpenMP build
-// and threads its own tiles, operators/dense_lu.cpp).
+// over blocks of columns, each a single-threaded dgemm (the library keeps OpenBLAS on one
+// thread and threads its own tiles, operators/dense_lu.cpp).
 void BM_Dgemm(benchmark::State& state) {
   const int n = static_cast<int>(state.range(0));
   Matrix a = Matrix::Random(n, n), b = Matrix::Random(n, n), c = Matrix::Zero(n, n);

@@ -15,9 +15,7 @@
 #include "bemcontact/core/error.hpp"
 
 // LAPACK's Fortran interface (LP64, gfortran's hidden string lengths last), called in
-// OpenBLAS's OpenMP build directly: LAPACKE would pull in the system's liblapack.so.3, by
-// default OpenBLAS's threaded build, whose idle worker spins for some 0.1 s after start
-// and stole a core from 13 of 30 small runs (CMakeLists.txt, problem-file.md).
+// OpenBLAS directly (it holds LAPACK): no LAPACKE layer and no liblapacke dependency.
 extern "C" {
 void dgetrf_(const int* m, const int* n, double* a, const int* lda, int* ipiv, int* info);
 void dlaswp_(const int* n, double* a, const int* lda, const int* k1, const int* k2, const int* ipiv,
@@ -35,9 +33,18 @@ namespace bemcontact::operators {
 // OpenBLAS's kernel family (DYNAMIC_ARCH builds); weak, so that another BLAS links too.
 extern "C" char* openblas_get_corename(void) __attribute__((weak));
 
+// OpenBLAS's threaded build starts its worker threads when it loads, and an idle worker
+// spins (sched_yield) for about 2^28 cycles, 0.1 s, before it sleeps: on 2 cores that
+// took a core from 12 of 30 runs of the Hertz example (0.11 -> 0.22 s). With BLAS on one
+// thread the workers are never used, so they are stopped; weak, for other BLAS builds.
+extern "C" int blas_thread_shutdown_(void) __attribute__((weak));
+
 void use_single_threaded_blas() {
   static std::once_flag once;
-  std::call_once(once, [] { openblas_set_num_threads(1); });
+  std::call_once(once, [] {
+    openblas_set_num_threads(1);
+    if (blas_thread_shutdown_) blas_thread_shutdown_();
+  });
 }
 
 std::string blas_core_name() { return openblas_get_corename ? std::string(openblas_get_corename()) : std::string(); }
