@@ -229,18 +229,13 @@ BoundaryMesh mesh_boundary(const std::vector<BoundaryPiece>& input_pieces, const
         } else {
           element.node_count = quadratic ? 3 : 2;
           // Start node.
-          if (options.discontinuous) {
+          if (options.discontinuous || (k == 0 && first.split)) {
             element.node_fraction[0] = options.corner_shift;
             element.nodes[0] = add_node(shifted_position(options.corner_shift),
                                         shifted_normal(k, options.corner_shift), p, true);
             mesh.piece_nodes[p].push_back(element.nodes[0]);
           } else if (k > 0) {
             element.nodes[0] = previous_end;
-          } else if (first.split) {
-            element.node_fraction[0] = options.corner_shift;
-            element.nodes[0] = add_node(shifted_position(options.corner_shift),
-                                        shifted_normal(k, options.corner_shift), p, true);
-            mesh.piece_nodes[p].push_back(element.nodes[0]);
           } else if (first.in_meshed && first.shared_node >= 0) {
             element.nodes[0] = first.shared_node;
             mesh.piece_nodes[p].push_back(element.nodes[0]);
@@ -254,16 +249,12 @@ BoundaryMesh mesh_boundary(const std::vector<BoundaryPiece>& input_pieces, const
             mesh.piece_nodes[p].push_back(element.nodes[2]);
           }
           // End node.
-          if (options.discontinuous) {
+          if (options.discontinuous || (k + 1 == n && last.split)) {
             element.node_fraction[1] = 1.0 - options.corner_shift;
             element.nodes[1] = add_node(shifted_position(1.0 - options.corner_shift),
                                         shifted_normal(k, 1.0 - options.corner_shift), p, true);
           } else if (k + 1 < n) {
             element.nodes[1] = add_node(element.end, points[k + 1].outward_normal, p, false);
-          } else if (last.split) {
-            element.node_fraction[1] = 1.0 - options.corner_shift;
-            element.nodes[1] = add_node(shifted_position(1.0 - options.corner_shift),
-                                        shifted_normal(k, 1.0 - options.corner_shift), p, true);
           } else if (last.out_meshed && last.shared_node >= 0) {
             element.nodes[1] = last.shared_node;
           } else {
