@@ -6,7 +6,7 @@
 #   install-deps.sh --fuzz   plus clang, libFuzzer and clang's OpenMP (`make fuzz`)
 set -euo pipefail
 cd "$(dirname "$0")/.."
-packages=(g++ cmake make pkg-config libeigen3-dev libopenblas-dev
+packages=(g++ cmake make pkg-config libeigen3-dev libopenblas-dev libhmat-oss-dev
   libtomlplusplus-dev libcli11-dev nlohmann-json3-dev)
 if [ "${1:-}" != "--core" ]; then
   packages+=(libgtest-dev libbenchmark-dev

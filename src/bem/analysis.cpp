@@ -6,7 +6,11 @@
 
 #include <chrono>
 
+#include <limits>
+#include <optional>
+
 #include "bemcontact/bem/boundary_system.hpp"
+#include "bemcontact/bem/compressed_system.hpp"
 #include "bemcontact/bem/resultants.hpp"
 #include "bemcontact/bem/rigid_modes.hpp"
 #include "bemcontact/core/error.hpp"
@@ -80,21 +84,45 @@ BodyResult solve_body(const ProblemDefinition& problem, const ProgressCallback& 
   clock.lap("mesh");
 
   const ElementIntegrator integrator(problem.analysis, body.material);
-  auto matrices = assemble_influence_matrices(result.mesh, integrator, progress);
-  clock.lap("assembly");
-
-  auto system = build_boundary_system(matrices, conditions, constraints);
-  result.report.unknowns = system.A.rows();
-  result.report.threads = omp_get_max_threads();
   const Index dofs = 2 * result.mesh.node_count();
   const bool rigid_only =
       constraints_fix_only_rigid_modes(free_rigid_modes(result.mesh, conditions, problem.analysis), constraints);
-  const Matrix reaction_columns = system.A.block(0, dofs, dofs, static_cast<Index>(constraints.size()));
-  if (progress) progress("factorisation", 0.0);
-  const operators::DenseLU lu(std::move(system.A), "the boundary element system of body '" + body.name + "'");
-  result.report.reciprocal_condition = lu.reciprocal_condition();
-  Vector y = lu.solve(system.b);
-  if (rigid_only) y = rigid_mode_consistent_solution(lu, reaction_columns, y);
+  result.report.threads = omp_get_max_threads();
+  result.report.unknowns = dofs + static_cast<Index>(constraints.size());
+  const std::string what = "the boundary element system of body '" + body.name + "'";
+  Vector y;
+  std::optional<InfluenceMatrices> matrices;  // dense path
+  std::optional<CompressedBoundarySystem> compressed;
+  if (use_compressed_operator(problem.operator_choice, problem.analysis, result.report.unknowns)) {
+    operators::HMatrixOptions options;
+    options.accuracy = problem.operator_choice.accuracy;
+    compressed.emplace(result.mesh, integrator, conditions, constraints, options, what);
+    clock.lap("assembly");
+    if (progress) progress("factorisation", 0.0);
+    compressed->factorize(rigid_only);
+    result.report.operator_kind = "compressed";
+    result.report.compression_ratio = compressed->compression_ratio();
+    result.report.reciprocal_condition = std::numeric_limits<double>::quiet_NaN();
+    const auto& system = *compressed;
+    Matrix rhs = system.rhs();
+    system.solve_in_place(rhs);
+    y = rhs.col(0);
+    if (rigid_only)
+      y = rigid_mode_consistent_solution(
+          FactoredSolver{system.size(), [&](Matrix& b) { system.solve_in_place(b); },
+                         [&](Matrix& b) { system.solve_transposed_in_place(b); }},
+          system.reaction_columns(), y);
+  } else {
+    matrices = assemble_influence_matrices(result.mesh, integrator, progress);
+    clock.lap("assembly");
+    auto system = build_boundary_system(*matrices, conditions, constraints);
+    const Matrix reaction_columns = system.A.block(0, dofs, dofs, static_cast<Index>(constraints.size()));
+    if (progress) progress("factorisation", 0.0);
+    const operators::DenseLU lu(std::move(system.A), what);
+    result.report.reciprocal_condition = lu.reciprocal_condition();
+    y = lu.solve(system.b);
+    if (rigid_only) y = rigid_mode_consistent_solution(lu, reaction_columns, y);
+  }
   if (!y.allFinite()) throw SolverError("the solution of body '" + body.name + "' is not finite");
   if (progress) progress("factorisation", 1.0);
   clock.lap("solve");
@@ -102,7 +130,8 @@ BodyResult solve_body(const ProblemDefinition& problem, const ProgressCallback& 
   // Constraints that only fix rigid modes carry no reaction (see rigid_modes.hpp).
   result.report.constraints_fix_rigid_modes_only = rigid_only;
   result.boundary = recover_boundary_values(y, conditions, rigid_only ? std::vector<ConstraintEquation>{} : constraints);
-  result.report.relative_residual = boundary_equation_residual(matrices, conditions, result.boundary);
+  result.report.relative_residual = compressed ? compressed->residual(result.boundary)
+                                               : boundary_equation_residual(*matrices, conditions, result.boundary);
   result.boundary.stress = boundary_stresses(result.mesh, problem.analysis, body.material, result.boundary);
   result.boundary.resultants = boundary_resultants(result.mesh, result.boundary, body, problem.analysis);
   clock.lap("boundary stress");

@@ -73,6 +73,16 @@ void add_body(ResourceEstimate& estimate, const bem::BodyDefinition& body, Analy
                       threads;
 }
 
+// A body on hierarchical matrices (plane, one body): memory and time grow as n log2 n,
+// fitted to plates with a hole at 8k-128k unknowns with the default accuracy 1e-8
+// (bench/scaling_compressed.sh; docs/problem-file.md, Limits).
+constexpr double compressed_bytes_per_nlogn = 1150.0;
+constexpr double compressed_seconds_per_nlogn = 2.0e-5;
+double n_log_n(std::int64_t unknowns) {
+  const double n = static_cast<double>(std::max<std::int64_t>(unknowns, 2));
+  return n * std::log2(n);
+}
+
 }  // namespace
 
 std::string describe(const ResourceEstimate& estimate) {
@@ -89,7 +99,7 @@ std::string describe(const ResourceEstimate& estimate) {
   return "estimate: " + std::to_string(estimate.total_unknowns) + " unknowns (" + std::to_string(estimate.unknowns) +
          " in the largest body), about " + format_bytes(estimate.bytes) + " of memory and " + time + " on " +
          std::to_string(estimate.threads) + (estimate.threads == 1 ? " thread" : " threads") +
-         " for one solve (dense)";
+         " for one solve" + (estimate.compressed ? " (compressed)" : " (dense)");
 }
 
 namespace {
@@ -105,14 +115,17 @@ void check_body(const bem::BodyDefinition& body, const std::string& what, const 
                          " (raise it with --max-elements if the machine has the memory)");
 }
 
-void check_memory(const ResourceEstimate& estimate, const ResourceLimits& limits, const std::string& file) {
+// `remedy`: the option that would make the run fit, if any.
+void check_memory(const ResourceEstimate& estimate, const ResourceLimits& limits, const std::string& file,
+                  const std::string& remedy = "") {
   const double limit = limits.memory_limit_bytes();
   if (estimate.bytes > limit)
     throw InputError(SourceLocation{file, 0, ""},
-                     "the dense boundary systems of this problem (" + std::to_string(estimate.unknowns) +
+                     std::string(estimate.compressed ? "the compressed" : "the dense") +
+                         " boundary systems of this problem (" + std::to_string(estimate.unknowns) +
                          " unknowns in the largest body) need about " + format_bytes(estimate.bytes) +
-                         " of memory, over the limit of " + format_bytes(limit) +
-                         "; use fewer elements, or raise the limit with --max-memory (GB) on a larger machine");
+                         " of memory, over the limit of " + format_bytes(limit) + "; " + remedy +
+                         "use fewer elements, or raise the limit with --max-memory (GB) on a larger machine");
 }
 
 void check_points(std::size_t points, const ResourceLimits& limits, const std::string& file) {
@@ -129,6 +142,14 @@ ResourceEstimate estimate_resources(const bem::ProblemDefinition& problem) {
   estimate.threads = omp_get_max_threads();
   add_body(estimate, problem.body, problem.analysis, problem.mesh, problem.interior_points.size());
   estimate.bytes = dense_body_bytes(estimate.unknowns);
+  estimate.compressed = bem::use_compressed_operator(problem.operator_choice, problem.analysis, estimate.unknowns);
+  if (estimate.compressed) {
+    const double elements = static_cast<double>(body_elements(problem.body));
+    estimate.bytes = compressed_bytes_per_nlogn * n_log_n(estimate.unknowns);
+    estimate.seconds = n_log_n(estimate.unknowns) * compressed_seconds_per_nlogn +
+                       static_cast<double>(problem.interior_points.size()) * elements *
+                           interior_pair_seconds(problem.analysis) / std::max(1, estimate.threads);
+  }
   return estimate;
 }
 
@@ -161,7 +182,12 @@ ResourceEstimate estimate_resources(const contact::ContactProblem& problem) {
 void check_resources(const bem::ProblemDefinition& problem, const ResourceLimits& limits) {
   check_body(problem.body, "the body", limits, problem.source_file);
   check_points(problem.interior_points.size(), limits, problem.source_file);
-  check_memory(estimate_resources(problem), limits, problem.source_file);
+  const auto estimate = estimate_resources(problem);
+  const bool could_compress = !estimate.compressed && problem.analysis != AnalysisType::axisymmetric;
+  check_memory(estimate, limits, problem.source_file,
+               could_compress ? "set [solver] operator = \"compressed\" (hierarchical matrices: about " +
+                                    format_bytes(compressed_bytes_per_nlogn * n_log_n(estimate.unknowns)) + "), or "
+                              : "");
 }
 
 void check_resources(const dd::DecompositionProblem& problem, const ResourceLimits& limits) {

@@ -271,7 +271,12 @@ RunOutput run_body(std::string_view text, const std::string& file_name, const Ru
   summary.problem = io::problem_echo_json(file);
   summary.mesh = meshes_json({{file.problem.body.name, &result.mesh}});
   summary.results = {{"solve", {{"unknowns", result.report.unknowns},
-                                {"reciprocal_condition_estimate", result.report.reciprocal_condition},
+                                {"operator", result.report.operator_kind},
+                                {"compression_ratio", result.report.compression_ratio},
+                                {"reciprocal_condition_estimate",
+                                 std::isnan(result.report.reciprocal_condition)
+                                     ? nlohmann::json(nullptr)
+                                     : nlohmann::json(result.report.reciprocal_condition)},
                                 {"relative_residual", result.report.relative_residual},
                                 {"constraints_fix_rigid_modes_only", result.report.constraints_fix_rigid_modes_only}}},
                      {"max_boundary_displacement", max_u},
@@ -290,8 +295,13 @@ RunOutput run_body(std::string_view text, const std::string& file_name, const Ru
          to_string(file.problem.mesh.interpolation), static_cast<long>(result.mesh.node_count()),
          static_cast<long>(result.mesh.element_count()), static_cast<long>(result.report.unknowns));
   append_transitions(report, result.mesh, "");
-  append(report, "  condition estimate 1/rcond = %.3g, relative residual = %.3g\n",
-         1.0 / result.report.reciprocal_condition, result.report.relative_residual);
+  if (result.report.operator_kind == "compressed")
+    append(report, "  compressed operator (accuracy %.3g): %.3g %% of the dense values stored, relative residual = %.3g\n",
+           file.problem.operator_choice.accuracy, 100.0 * result.report.compression_ratio,
+           result.report.relative_residual);
+  else
+    append(report, "  condition estimate 1/rcond = %.3g, relative residual = %.3g\n",
+           1.0 / result.report.reciprocal_condition, result.report.relative_residual);
   append(report, "  max |u| on the boundary = %.6g, max von Mises = %.6g at (%.6g, %.6g)\n", max_u, max_vm,
          peak.x(), peak.y());
   report += io::reactions_text(result.boundary.resultants, file.problem.analysis, "");

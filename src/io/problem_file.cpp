@@ -58,6 +58,31 @@ std::vector<bem::InteriorPoint> read_interior(const TableReader& root, const Fil
   return points;
 }
 
+// [solver]: the operator behind the boundary element system (docs/problem-file.md).
+bem::OperatorChoice read_operator_choice(const TableReader& root, AnalysisType analysis) {
+  bem::OperatorChoice choice;
+  const toml::table* table = root.optional_table("solver", "[solver]");
+  if (!table) return choice;
+  const TableReader solver(*table, "solver", root.context(), root.line());
+  solver.check_keys(schema::solver_keys(), "the [solver] table");
+  const std::string kind = solver.choice("operator", {"auto", "dense", "compressed"}, "auto");
+  choice.kind = kind == "dense" ? bem::OperatorKind::dense
+                : kind == "compressed" ? bem::OperatorKind::compressed
+                                       : bem::OperatorKind::automatic;
+  if (choice.kind == bem::OperatorKind::compressed && analysis == AnalysisType::axisymmetric)
+    solver.fail("operator", "the compressed operator is for plane problems (plane_strain, plane_stress) only; "
+                            "use operator = \"dense\" or \"auto\" for an axisymmetric body");
+  if (const auto accuracy = solver.optional_number("accuracy")) {
+    if (!(*accuracy >= 1e-14 && *accuracy <= 1e-2))
+      solver.fail("accuracy", "the accuracy of the compressed operator (relative) must lie in [1e-14, 1e-2], found " +
+                                  format_number(*accuracy));
+    if (choice.kind == bem::OperatorKind::dense)
+      solver.fail("accuracy", "accuracy sets the compressed operator; with operator = \"dense\" it has no effect");
+    choice.accuracy = *accuracy;
+  }
+  return choice;
+}
+
 }  // namespace
 
 ProblemFile parse_problem(std::string_view text, const std::string& file_name, const ParameterOverrides& overrides,
@@ -83,6 +108,7 @@ ProblemFile parse_problem(std::string_view text, const std::string& file_name, c
   problem.interior_points = read_interior(root, context);
 
   read_mesh_options(root, context, problem.mesh);
+  problem.operator_choice = read_operator_choice(root, problem.analysis);
   if (const toml::table* table = root.optional_table("output", "[output]")) {
     const TableReader output(*table, "output", context, root.line());
     output.check_keys(schema::output_keys(), "the [output] table");

@@ -7,7 +7,11 @@ namespace bemcontact::io::schema {
 
 const std::vector<std::string>& file_keys() {
   static const std::vector<std::string> keys{"title",    "analysis", "interpolation", "parameters",
-                                             "interior", "mesh",     "output"};
+                                             "interior", "mesh",     "output",       "solver"};
+  return keys;
+}
+const std::vector<std::string>& solver_keys() {
+  static const std::vector<std::string> keys{"operator", "accuracy"};
   return keys;
 }
 const std::vector<std::string>& body_keys() {
@@ -60,6 +64,7 @@ std::string section_of(std::string_view key, std::string_view section) {
       {"the [interior] table", &interior_keys()},
       {"the [mesh] table", &mesh_keys()},
       {"the [output] table", &output_keys()},
+      {"the [solver] table", &solver_keys()},
   };
   for (const auto& [name, keys] : sections) {
     if (section == name) continue;

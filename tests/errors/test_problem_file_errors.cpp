@@ -198,6 +198,14 @@ TEST(IoProblemFileErrors, InvalidValues) {
                  {"0 < corner_shift < 0.5"});
   expect_changed("corner_shift = 0.2", "continuity = \"broken\"", "broken", "mesh.continuity",
                  {"\"continuous\"", "\"discontinuous\"", "found \"broken\""});
+  expect_changed("vtk = true", "vtk = true\n[solver]\noperator = \"hmatrix\"", "hmatrix", "solver.operator",
+                 {"'auto', 'dense', 'compressed'"});
+  expect_changed("vtk = true", "vtk = true\n[solver]\naccuracy = 0.5", "accuracy", "solver.accuracy",
+                 {"[1e-14, 1e-2]", "found 0.5"});
+  expect_changed("vtk = true", "vtk = true\n[solver]\noperator = \"dense\"\naccuracy = 1e-6", "accuracy",
+                 "solver.accuracy", {"no effect"});
+  expect_changed("vtk = true", "vtk = true\n[solver]\noperatr = \"dense\"", "operatr", "solver.operatr",
+                 {"Did you mean 'operator'?"});
   expect_changed("analysis = \"plane_stress\"", "analysis = \"plane_stres\"", "analysis", "analysis",
                  {"invalid value 'plane_stres'", "Did you mean 'plane_stress'?", "'axisymmetric'"});
   expect_changed("title = \"Plate\"", "interpolation = \"cubic\"", "interpolation", "interpolation",

@@ -59,6 +59,17 @@ struct InteriorPoint {
   std::array<int, 2> grid_index = {-1, -1};  // column, row in its [interior] grid (-1: listed)
 };
 
+// Dense matrices and LU, or hierarchical matrices and H-LU (bem/compressed_system.hpp).
+enum class OperatorKind { automatic, dense, compressed };
+struct OperatorChoice {
+  OperatorKind kind = OperatorKind::automatic;
+  double accuracy = 1e-10;  // relative accuracy of the compressed blocks and of the H-LU
+  // `automatic` compresses plane problems from this many unknowns on (measured crossover:
+  // docs/problem-file.md, Limits).
+  static constexpr Index automatic_threshold = 8000;
+};
+const char* to_string(OperatorKind kind);
+
 struct ProblemDefinition {
   std::string title;
   std::string source_file;
@@ -66,6 +77,10 @@ struct ProblemDefinition {
   geometry::MeshOptions mesh;  // interpolation, corner shift
   BodyDefinition body;
   std::vector<InteriorPoint> interior_points;
+  OperatorChoice operator_choice;
 };
+
+// Whether a body of `unknowns` unknowns is solved on compressed operators.
+bool use_compressed_operator(const OperatorChoice& choice, AnalysisType analysis, Index unknowns);
 
 }  // namespace bemcontact::bem

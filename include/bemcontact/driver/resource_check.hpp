@@ -21,6 +21,7 @@ struct ResourceEstimate {
   double bytes = 0.0;         // the peak of the run
   double seconds = 0.0;       // assembly, factorisation and interior points, one solve
   int threads = 1;
+  bool compressed = false;    // hierarchical matrices (bem::use_compressed_operator)
 };
 
 // One line for the terminal: "estimate: ... unknowns, about ... of memory and ... ".

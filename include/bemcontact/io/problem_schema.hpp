@@ -17,6 +17,7 @@ const std::vector<std::string>& interior_keys();    // [interior]
 const std::vector<std::string>& grid_keys();        // [interior] grid = {...}
 const std::vector<std::string>& mesh_keys();        // [mesh]
 const std::vector<std::string>& output_keys();      // [output]
+const std::vector<std::string>& solver_keys();      // [solver] of a one-body file
 const std::vector<std::string>& tabulated_keys();   // t2 = { table = ..., along = ... }
 
 // "the [material] table" when `key` is a key of another table than `section`, else "".

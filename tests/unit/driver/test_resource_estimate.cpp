@@ -32,7 +32,9 @@ TEST(ResourceEstimate, TimeGrowsWithTheCubeOfTheUnknownsAndIsDescribed) {
   auto problem = io::parse_problem(test_support::example_text("plate_tension.toml"), "plate.toml").problem;
   problem.interior_points.clear();
   for (auto& piece : problem.body.pieces) piece.elements = 2000;
+  problem.operator_choice.kind = bem::OperatorKind::dense;
   const auto estimate = estimate_resources(problem);
+  EXPECT_FALSE(estimate.compressed);
   const double n = static_cast<double>(estimate.unknowns);  // 16 008
   const double threads = estimate.threads;
   const double expected = (8004.0 * 8000.0 * 0.27e-6 + 2.0 / 3.0 * n * n * n / 20e9) / threads;
@@ -40,6 +42,26 @@ TEST(ResourceEstimate, TimeGrowsWithTheCubeOfTheUnknownsAndIsDescribed) {
   const std::string line = describe(estimate);
   EXPECT_NE(line.find("estimate: 16008 unknowns"), std::string::npos) << line;
   EXPECT_NE(line.find("GB of memory"), std::string::npos) << line;
+}
+
+// Above the threshold a plane body goes to hierarchical matrices by default: its estimate
+// grows as n log n and says so; an axisymmetric body stays dense.
+TEST(ResourceEstimate, LargePlaneBodiesAreCompressedByDefault) {
+  auto problem = io::parse_problem(test_support::example_text("plate_tension.toml"), "plate.toml").problem;
+  problem.interior_points.clear();
+  for (auto& piece : problem.body.pieces) piece.elements = 2000;  // 16 008 unknowns
+  const auto large = estimate_resources(problem);
+  EXPECT_TRUE(large.compressed);
+  for (auto& piece : problem.body.pieces) piece.elements = 4000;
+  const auto larger = estimate_resources(problem);
+  const double n1 = static_cast<double>(large.unknowns), n2 = static_cast<double>(larger.unknowns);
+  EXPECT_NEAR(larger.bytes / large.bytes, n2 * std::log2(n2) / (n1 * std::log2(n1)), 1e-9);
+  EXPECT_NE(describe(large).find("(compressed)"), std::string::npos) << describe(large);
+  for (auto& piece : problem.body.pieces) piece.elements = 500;  // 4 008: under the threshold
+  EXPECT_FALSE(estimate_resources(problem).compressed);
+  for (auto& piece : problem.body.pieces) piece.elements = 2000;
+  problem.analysis = AnalysisType::axisymmetric;
+  EXPECT_FALSE(estimate_resources(problem).compressed);
 }
 
 }  // namespace

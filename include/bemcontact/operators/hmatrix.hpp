@@ -1,0 +1,65 @@
+#pragma once
+// Hierarchical matrices on hmat-oss (Debian's libhmat-oss-dev): the rows and columns are
+// clustered by the positions of their unknowns, far blocks are compressed by adaptive
+// cross approximation (ACA+) to a relative accuracy, near blocks stay dense, and the LU
+// factorisation runs on the compressed format (H-LU, truncated at the same accuracy).
+// Memory and time grow as N log N instead of N^2 and N^3.
+#include <cstddef>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "bemcontact/core/types.hpp"
+
+namespace bemcontact::operators {
+
+struct HMatrixOptions {
+  double accuracy = 1e-10;  // relative accuracy of compressed blocks and of the H-LU
+  double eta = 2.0;        // a block is compressed when min(diameters) <= eta * distance
+  int leaf_size = 64;      // largest cluster kept whole
+};
+
+// Entries of a block: out[r + c * rows.size()] = A(rows[r], cols[c]) (column-major), for
+// rows and columns in the caller's numbering. Called from several threads at once.
+using BlockFunction =
+    std::function<void(const std::vector<Index>& rows, const std::vector<Index>& cols, double* out)>;
+
+class HMatrix {
+ public:
+  // rows / cols: the position of each row / column unknown (several may share one).
+  HMatrix(const std::vector<Vec2>& row_points, const std::vector<Vec2>& col_points, const BlockFunction& entries,
+          const HMatrixOptions& options, std::string what);
+  ~HMatrix();
+  HMatrix(HMatrix&&) noexcept;
+  HMatrix& operator=(HMatrix&&) noexcept;
+  HMatrix(const HMatrix&) = delete;
+  HMatrix& operator=(const HMatrix&) = delete;
+
+  Index rows() const { return rows_; }
+  Index cols() const { return cols_; }
+  // y = A x (columns of x are separate vectors); before factorize() only.
+  Matrix apply(const Matrix& x) const;
+
+  // H-LU in place (square only). keep_transposed also factors A^T, for
+  // solve_transposed_in_place (twice the memory). Throws SolverError when a pivot
+  // vanishes or the factors are not finite.
+  void factorize(bool keep_transposed = false);
+  bool factorized() const { return factorized_; }
+  void solve_in_place(Matrix& rhs) const;
+  void solve_transposed_in_place(Matrix& rhs) const;
+
+  // Values stored (compressed and dense leaves), against rows * cols uncompressed.
+  std::size_t stored_values() const;
+  double compression_ratio() const;
+
+ private:
+  struct Handle;
+  std::unique_ptr<Handle> handle_;
+  std::unique_ptr<Handle> transposed_;
+  Index rows_ = 0, cols_ = 0;
+  bool factorized_ = false;
+  std::string what_;
+};
+
+}  // namespace bemcontact::operators

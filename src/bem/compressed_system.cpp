@@ -1,0 +1,317 @@
+#include "bemcontact/bem/compressed_system.hpp"
+
+#include <algorithm>
+
+#include "bemcontact/core/error.hpp"
+
+namespace bemcontact::bem {
+namespace {
+
+// Sorted (node, local index) pairs: lookups in a block's node list without O(N) tables.
+class NodeIndex {
+ public:
+  explicit NodeIndex(const std::vector<Index>& nodes) {
+    entries_.reserve(nodes.size());
+    for (std::size_t k = 0; k < nodes.size(); ++k) entries_.emplace_back(nodes[k], static_cast<Index>(k));
+    std::sort(entries_.begin(), entries_.end());
+  }
+  Index find(Index node) const {
+    auto it = std::lower_bound(entries_.begin(), entries_.end(), std::pair<Index, Index>{node, -1});
+    return it != entries_.end() && it->first == node ? it->second : -1;
+  }
+
+ private:
+  std::vector<std::pair<Index, Index>> entries_;
+};
+
+std::vector<Index> unique_nodes(std::vector<Index> nodes) {
+  std::sort(nodes.begin(), nodes.end());
+  nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+  return nodes;
+}
+
+}  // namespace
+
+InfluenceBlocks::InfluenceBlocks(const geometry::BoundaryMesh& mesh, const ElementIntegrator& integrator)
+    : mesh_(mesh), integrator_(integrator), node_elements_(mesh.node_count()) {
+  for (Index e = 0; e < mesh.element_count(); ++e)
+    for (int a = 0; a < mesh.elements[e].node_count; ++a) node_elements_[mesh.elements[e].nodes[a]].push_back(e);
+}
+
+void InfluenceBlocks::evaluate(const std::vector<Index>& row_nodes, const std::vector<Index>& col_nodes, Matrix& H,
+                               Matrix& G) const {
+  const Index rows = static_cast<Index>(row_nodes.size()), cols = static_cast<Index>(col_nodes.size());
+  H.setZero(2 * rows, 2 * cols);
+  G.setZero(2 * rows, 2 * cols);
+  const NodeIndex col_index(col_nodes);
+  std::vector<Index> elements;
+  for (Index j : col_nodes) elements.insert(elements.end(), node_elements_[j].begin(), node_elements_[j].end());
+  elements = unique_nodes(std::move(elements));
+  // Each row is independent (and summed in element order): the same for any thread count.
+#pragma omp parallel for schedule(dynamic, 4) if (rows * static_cast<Index>(elements.size()) > 4096)
+  for (Index r = 0; r < rows; ++r) {
+    const Index i = row_nodes[r];
+    for (Index e : elements) {
+      const auto& element = mesh_.elements[e];
+      int source_node = -1;
+      for (int a = 0; a < element.node_count; ++a)
+        if (element.nodes[a] == i) source_node = a;
+      const auto influence = integrator_.influence(mesh_.nodes[i].position, element, source_node);
+      for (int a = 0; a < element.node_count; ++a) {
+        const Index c = col_index.find(element.nodes[a]);
+        if (c < 0) continue;
+        G.block<2, 2>(2 * r, 2 * c) += influence.G[a];
+        if (a != source_node) H.block<2, 2>(2 * r, 2 * c) += influence.H[a];
+      }
+    }
+  }
+}
+
+CompressedBoundarySystem::CompressedBoundarySystem(const geometry::BoundaryMesh& mesh, const ElementIntegrator& integrator,
+                                                   std::vector<NodeCondition> conditions,
+                                                   std::vector<ConstraintEquation> constraints,
+                                                   const operators::HMatrixOptions& options, const std::string& what)
+    : mesh_(mesh),
+      traction_scale_(integrator.material().shear_modulus()),
+      node_scale_(Vector::Zero(mesh.node_count())),
+      conditions_((integrator.type() == AnalysisType::axisymmetric
+                        ? throw Error("the compressed operator is for plane problems only")
+                        : std::move(conditions))),
+      constraints_(std::move(constraints)),
+      blocks_(mesh, integrator),
+      influence_(assemble_influence(options, "the influence matrices of " + what)),
+      diagonal_(diagonal_blocks()),
+      system_(assemble_system(options, what)),
+      rhs_(prescribed_rhs()) {}
+
+operators::HMatrix CompressedBoundarySystem::assemble_influence(const operators::HMatrixOptions& options,
+                                                                const std::string& what) {
+  const Index n = mesh_.node_count();
+  for (const auto& element : mesh_.elements)
+    for (int a = 0; a < element.node_count; ++a) node_scale_[element.nodes[a]] += element.length;
+  node_scale_ = node_scale_.cwiseInverse();
+  std::vector<Vec2> row_points(2 * n), col_points(4 * n);
+  for (Index i = 0; i < n; ++i)
+    for (int c = 0; c < 2; ++c) {
+      row_points[2 * i + c] = mesh_.nodes[i].position;
+      col_points[2 * i + c] = col_points[2 * n + 2 * i + c] = mesh_.nodes[i].position;
+    }
+  // Columns 0 .. 2N-1: H' (u), 2N .. 4N-1: G (p).
+  const auto entries = [this, n](const std::vector<Index>& rows, const std::vector<Index>& cols, double* out) {
+    std::vector<Index> row_nodes(rows.size()), col_nodes(cols.size());
+    for (std::size_t r = 0; r < rows.size(); ++r) row_nodes[r] = rows[r] / 2;
+    for (std::size_t c = 0; c < cols.size(); ++c) col_nodes[c] = (cols[c] % (2 * n)) / 2;
+    row_nodes = unique_nodes(std::move(row_nodes));
+    col_nodes = unique_nodes(std::move(col_nodes));
+    Matrix H, G;
+    blocks_.evaluate(row_nodes, col_nodes, H, G);
+    const NodeIndex row_index(row_nodes), col_index(col_nodes);
+    const Index m = static_cast<Index>(rows.size());
+    for (std::size_t c = 0; c < cols.size(); ++c) {
+      const Index dof = cols[c] % (2 * n);
+      const bool g_column = cols[c] >= 2 * n;
+      const Matrix& source = g_column ? G : H;
+      const double scale = (g_column ? traction_scale_ : 1.0) * node_scale_[dof / 2];
+      const Index lc = 2 * col_index.find(dof / 2) + dof % 2;
+      for (Index r = 0; r < m; ++r)
+        out[r + static_cast<Index>(c) * m] = scale * source(2 * row_index.find(rows[r] / 2) + rows[r] % 2, lc);
+    }
+  };
+  return operators::HMatrix(row_points, col_points, entries, options, what);
+}
+
+std::vector<Mat2> CompressedBoundarySystem::diagonal_blocks() const {
+  // Rigid translations give no traction: H_ii = -sum_{j != i} H_ij (section I.4.2, remark).
+  const Index n = mesh_.node_count();
+  Matrix translations = Matrix::Zero(4 * n, 2);
+  for (Index j = 0; j < n; ++j) {
+    translations(2 * j, 0) = 1.0 / node_scale_[j];
+    translations(2 * j + 1, 1) = 1.0 / node_scale_[j];
+  }
+  const Matrix sums = influence_.apply(translations);
+  std::vector<Mat2> diagonal(n);
+  for (Index i = 0; i < n; ++i) diagonal[i] = -sums.middleRows<2>(2 * i);
+  return diagonal;
+}
+
+operators::HMatrix CompressedBoundarySystem::assemble_system(const operators::HMatrixOptions& options,
+                                                             const std::string& what) const {
+  const Index n = mesh_.node_count(), dofs = 2 * n, extra = static_cast<Index>(constraints_.size());
+  std::vector<Vec2> points(dofs + extra);
+  for (Index d = 0; d < dofs; ++d) points[d] = mesh_.nodes[d / 2].position;
+  for (Index q = 0; q < extra; ++q) points[dofs + q] = mesh_.nodes[constraints_[q].reaction_node].position;
+  // Node of each row or column unknown (-1: a constraint row).
+  const auto column_node = [this, dofs](Index col) {
+    return col < dofs ? col / 2 : constraints_[col - dofs].reaction_node;
+  };
+  // Unknown tractions (prescribed displacement) and reactions: columns of -G.
+  const auto traction_column_of = [this, dofs](Index col) {
+    return col >= dofs || conditions_[col / 2].kind[col % 2] == ConditionKind::displacement;
+  };
+  const auto entries = [this, n, dofs, column_node, traction_column_of](const std::vector<Index>& rows, const std::vector<Index>& cols,
+                                                      double* out) {
+    const Index m = static_cast<Index>(rows.size());
+    std::vector<Index> row_nodes, col_nodes;
+    for (Index r : rows)
+      if (r < dofs) row_nodes.push_back(r / 2);
+    for (Index c : cols) col_nodes.push_back(column_node(c));
+    row_nodes = unique_nodes(std::move(row_nodes));
+    col_nodes = unique_nodes(std::move(col_nodes));
+    Matrix H, G;
+    if (!row_nodes.empty()) blocks_.evaluate(row_nodes, col_nodes, H, G);
+    const NodeIndex row_index(row_nodes), col_index(col_nodes);
+    for (std::size_t cc = 0; cc < cols.size(); ++cc) {
+      const Index col = cols[cc];
+      double* column = out + static_cast<Index>(cc) * m;
+      const Index j = column_node(col);
+      const Index lc = 2 * col_index.find(j);
+      // The column's 2 global components (rows of the node block) to combine.
+      const bool traction_column = traction_column_of(col);  // -G, or H (unknown displacement)
+      // The column's scale (unknown_scale): A_s = A S.
+      const double scale = node_scale_[j] * (traction_column ? traction_scale_ : 1.0);
+      const Vec2 weights = col < dofs ? Vec2(conditions_[j].frame.col(col % 2))  // the frame's axis
+                                      : constraints_[col - dofs].reaction_component == 0 ? Vec2(1.0, 0.0)
+                                                                                         : Vec2(0.0, 1.0);
+      for (Index rr = 0; rr < m; ++rr) {
+        const Index row = rows[rr];
+        if (row >= dofs) {  // a constraint row: its displacement terms
+          double value = 0.0;
+          if (col < dofs)
+            for (const auto& [d, coefficient] : constraints_[row - dofs].displacement_terms)
+              if (d == col) value += coefficient;
+          column[rr] = scale * value;
+          continue;
+        }
+        const Index i = row / 2;
+        if (conditions_[i].on_axis && row % 2 == 0) {  // replaced by p_r = 0
+          column[rr] = row == col ? scale : 0.0;
+          continue;
+        }
+        const Index lr = 2 * row_index.find(i) + row % 2;
+        if (traction_column) {
+          column[rr] = -scale * (G(lr, lc) * weights[0] + G(lr, lc + 1) * weights[1]);
+        } else {
+          const Vec2 h_row = i == j ? Vec2(diagonal_[i].row(row % 2).transpose())
+                                    : Vec2(H(lr, lc), H(lr, lc + 1));
+          column[rr] = scale * h_row.dot(weights);
+        }
+      }
+    }
+  };
+  return operators::HMatrix(points, points, entries, options, what);
+}
+
+Vector CompressedBoundarySystem::apply_h_minus_g(const Vector& u, const Vector& p) const {
+  const Index n = mesh_.node_count();
+  Vector y = influence_.apply(influence_input(u, -p));
+  for (Index i = 0; i < n; ++i) y.segment<2>(2 * i) += diagonal_[i] * u.segment<2>(2 * i);
+  return y;
+}
+
+Vector CompressedBoundarySystem::prescribed_rhs() const {
+  const Index n = mesh_.node_count(), dofs = 2 * n;
+  Vector u = Vector::Zero(dofs), p = Vector::Zero(dofs);
+  for (Index i = 0; i < n; ++i) {
+    Vec2 u_frame = Vec2::Zero(), p_frame = Vec2::Zero();
+    for (int c = 0; c < 2; ++c)
+      (conditions_[i].kind[c] == ConditionKind::displacement ? u_frame : p_frame)[c] = conditions_[i].value[c];
+    u.segment<2>(2 * i) = conditions_[i].frame * u_frame;
+    p.segment<2>(2 * i) = conditions_[i].frame * p_frame;
+  }
+  Vector b(dofs + static_cast<Index>(constraints_.size()));
+  b.head(dofs) = -apply_h_minus_g(u, p);  // G p - H u
+  for (std::size_t k = 0; k < constraints_.size(); ++k) b[dofs + static_cast<Index>(k)] = constraints_[k].value;
+  for (Index i = 0; i < n; ++i)
+    if (conditions_[i].on_axis) b[2 * i] = 0.0;
+  return b;
+}
+
+Matrix CompressedBoundarySystem::reaction_columns() const {
+  const Index n = mesh_.node_count(), k = static_cast<Index>(constraints_.size());
+  Matrix x = Matrix::Zero(4 * n, k);
+  for (Index q = 0; q < k; ++q) {
+    const Index node = constraints_[q].reaction_node;
+    x(2 * n + 2 * node + constraints_[q].reaction_component, q) = 1.0 / (traction_scale_ * node_scale_[node]);
+  }
+  return -influence_.apply(x);
+}
+
+Vector CompressedBoundarySystem::unknown_scale() const {
+  const Index n = mesh_.node_count();
+  Vector scale(2 * n + static_cast<Index>(constraints_.size()));
+  for (Index i = 0; i < n; ++i)
+    for (int c = 0; c < 2; ++c)  // a displacement unknown where the traction is prescribed (H column)
+      scale[2 * i + c] = node_scale_[i] * (conditions_[i].kind[c] == ConditionKind::traction ? 1.0 : traction_scale_);
+  for (std::size_t q = 0; q < constraints_.size(); ++q)
+    scale[2 * n + static_cast<Index>(q)] = node_scale_[constraints_[q].reaction_node] * traction_scale_;
+  return scale;
+}
+
+Vector CompressedBoundarySystem::influence_input(const Vector& u, const Vector& p) const {
+  const Index n = mesh_.node_count();
+  Vector x(4 * n);
+  for (Index i = 0; i < n; ++i) {
+    x.segment<2>(2 * i) = u.segment<2>(2 * i) / node_scale_[i];
+    x.segment<2>(2 * n + 2 * i) = p.segment<2>(2 * i) / (traction_scale_ * node_scale_[i]);
+  }
+  return x;
+}
+
+Vector CompressedBoundarySystem::apply(const Vector& y) const {
+  return system_.apply(y.cwiseQuotient(unknown_scale())).col(0);
+}
+
+void CompressedBoundarySystem::solve_in_place(Matrix& rhs) const {
+  system_.solve_in_place(rhs);  // A = A_s S^-1: y = S A_s^-1 b
+  rhs = unknown_scale().asDiagonal() * rhs;
+}
+
+void CompressedBoundarySystem::solve_transposed_in_place(Matrix& rhs) const {
+  rhs = unknown_scale().asDiagonal() * rhs;  // A^T x = b: A_s^T x = S b
+  system_.solve_transposed_in_place(rhs);
+}
+
+double CompressedBoundarySystem::residual(const BoundarySolution& solution) const {
+  const Index n = mesh_.node_count();
+  Vector u(2 * n), p(2 * n);
+  for (Index i = 0; i < n; ++i) {
+    u.segment<2>(2 * i) = solution.displacement[i];
+    p.segment<2>(2 * i) = solution.traction[i];
+  }
+  Matrix x(4 * n, 2);
+  x.col(0) = influence_input(u, Vector::Zero(2 * n));
+  x.col(1) = influence_input(Vector::Zero(2 * n), p);
+  Matrix y = influence_.apply(x);
+  for (Index i = 0; i < n; ++i) y.block<2, 1>(2 * i, 0) += diagonal_[i] * u.segment<2>(2 * i);
+  for (Index i = 0; i < n; ++i)
+    if (conditions_[i].on_axis) y(2 * i, 0) = y(2 * i, 1) = 0.0;
+  const Vector r = y.col(0) - y.col(1);
+  const double scale = std::max(y.col(0).norm(), y.col(1).norm());
+  return scale > 0.0 ? r.norm() / scale : r.norm();
+}
+
+double CompressedBoundarySystem::compression_ratio() const {
+  const double n = 2.0 * static_cast<double>(mesh_.node_count());
+  return static_cast<double>(influence_.stored_values() + system_.stored_values()) / (2.0 * n * n);
+}
+
+}  // namespace bemcontact::bem
+
+namespace bemcontact::bem {
+
+const char* to_string(OperatorKind kind) {
+  switch (kind) {
+    case OperatorKind::automatic: return "auto";
+    case OperatorKind::dense: return "dense";
+    case OperatorKind::compressed: return "compressed";
+  }
+  return "?";
+}
+
+bool use_compressed_operator(const OperatorChoice& choice, AnalysisType analysis, Index unknowns) {
+  if (choice.kind == OperatorKind::compressed) return true;
+  return choice.kind == OperatorKind::automatic && analysis != AnalysisType::axisymmetric &&
+         unknowns >= OperatorChoice::automatic_threshold;
+}
+
+}  // namespace bemcontact::bem

@@ -1,0 +1,223 @@
+#include "bemcontact/operators/hmatrix.hpp"
+
+#include <hmat/hmat.h>
+
+#include <cmath>
+#include <exception>
+#include <mutex>
+
+#include "bemcontact/core/error.hpp"
+
+namespace bemcontact::operators {
+namespace {
+
+// One interface for the program (hmat's init/finalize are global); its settings are
+// global too, so they are set under a lock just before a cluster tree is built.
+hmat_interface_t& hmat_interface() {
+  static hmat_interface_t* instance = [] {
+    auto* i = new hmat_interface_t;  // never finalized: other matrices may still live
+    hmat_init_default_interface(i, HMAT_DOUBLE_PRECISION);
+    if (i->init() != 0) throw Error("hmat-oss failed to initialise");
+    return i;
+  }();
+  return *instance;
+}
+std::mutex& settings_mutex() {
+  static std::mutex m;
+  return m;
+}
+
+struct ClusterTree {
+  hmat_cluster_tree_t* tree = nullptr;
+  std::vector<double> coordinates;
+  ~ClusterTree() {
+    if (tree) hmat_delete_cluster_tree(tree);
+  }
+};
+
+// The data of one assembly, shared by the prepare and compute callbacks.
+struct AssemblyContext {
+  const BlockFunction* entries = nullptr;
+  std::mutex error_mutex;
+  std::exception_ptr error;
+};
+
+struct BlockData {
+  AssemblyContext* context;
+  std::vector<Index> rows, cols;  // caller's numbering of the block's rows and columns
+};
+
+void release_block(void* data) { delete static_cast<BlockData*>(data); }
+
+void prepare_block(int row_start, int row_count, int col_start, int col_count, int* row_hmat2client,
+                   int* /*row_client2hmat*/, int* col_hmat2client, int* /*col_client2hmat*/, void* context,
+                   hmat_block_info_t* info) {
+  auto* data = new BlockData{static_cast<AssemblyContext*>(context), {}, {}};
+  data->rows.resize(row_count);
+  data->cols.resize(col_count);
+  for (int r = 0; r < row_count; ++r) data->rows[r] = row_hmat2client[row_start + r];
+  for (int c = 0; c < col_count; ++c) data->cols[c] = col_hmat2client[col_start + c];
+  info->user_data = data;
+  info->release_user_data = release_block;
+  info->block_type = hmat_block_full;
+}
+
+void compute_block(void* v_data, int row_start, int row_count, int col_start, int col_count, void* block) {
+  auto* data = static_cast<BlockData*>(v_data);
+  double* out = static_cast<double*>(block);
+  const std::vector<Index> rows(data->rows.begin() + row_start, data->rows.begin() + row_start + row_count);
+  const std::vector<Index> cols(data->cols.begin() + col_start, data->cols.begin() + col_start + col_count);
+  try {
+    (*data->context->entries)(rows, cols, out);
+  } catch (...) {
+    // No exception may cross hmat-oss; the first one is rethrown after the assembly.
+    std::fill(out, out + static_cast<std::size_t>(row_count) * col_count, 0.0);
+    std::lock_guard<std::mutex> lock(data->context->error_mutex);
+    if (!data->context->error) data->context->error = std::current_exception();
+  }
+}
+
+void build_tree(ClusterTree& out, const std::vector<Vec2>& points) {
+  out.coordinates.resize(2 * points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    out.coordinates[2 * i] = points[i].x();
+    out.coordinates[2 * i + 1] = points[i].y();
+  }
+  hmat_clustering_algorithm_t* median = hmat_create_clustering_median();
+  out.tree = hmat_create_cluster_tree(out.coordinates.data(), 2, static_cast<int>(points.size()), median);
+  hmat_delete_clustering(median);
+  if (!out.tree) throw Error("hmat-oss could not cluster the unknowns");
+}
+
+}  // namespace
+
+struct HMatrix::Handle {
+  ClusterTree row_tree, col_tree;
+  hmat_matrix_t* matrix = nullptr;
+  ~Handle() {
+    if (matrix) hmat_interface().destroy(matrix);
+  }
+};
+
+HMatrix::HMatrix(const std::vector<Vec2>& row_points, const std::vector<Vec2>& col_points,
+                 const BlockFunction& entries, const HMatrixOptions& options, std::string what)
+    : handle_(std::make_unique<Handle>()),
+      rows_(static_cast<Index>(row_points.size())),
+      cols_(static_cast<Index>(col_points.size())),
+      what_(std::move(what)) {
+  if (rows_ == 0 || cols_ == 0) throw Error("HMatrix: empty matrix");
+  if (!(options.accuracy > 0.0 && options.accuracy < 1.0)) throw Error("HMatrix: accuracy must lie in (0, 1)");
+  hmat_interface_t& hi = hmat_interface();
+  {
+    std::lock_guard<std::mutex> lock(settings_mutex());
+    hmat_settings_t settings;
+    hmat_get_parameters(&settings);
+    settings.maxLeafSize = options.leaf_size;
+    settings.compressionMinLeafSize = options.leaf_size;
+    settings.coarsening = 0;
+    hmat_set_parameters(&settings);
+    build_tree(handle_->row_tree, row_points);
+    build_tree(handle_->col_tree, col_points);
+  }
+  hmat_admissibility_param_t admissibility_param;
+  hmat_init_admissibility_param(&admissibility_param);
+  admissibility_param.eta = options.eta;
+  hmat_admissibility_t* admissibility = hmat_create_admissibility(&admissibility_param);
+  handle_->matrix = hi.create_empty_hmatrix_admissibility(handle_->row_tree.tree, handle_->col_tree.tree, 0, admissibility);
+  hmat_delete_admissibility(admissibility);
+  if (!handle_->matrix) throw Error("hmat-oss could not build the block structure of " + what_);
+  hi.set_low_rank_epsilon(handle_->matrix, options.accuracy);
+
+  AssemblyContext context;
+  context.entries = &entries;
+  hmat_assemble_context_t assemble;
+  hmat_assemble_context_init(&assemble);
+  assemble.user_context = &context;
+  assemble.prepare = prepare_block;
+  assemble.block_compute = compute_block;
+  assemble.compression = hmat_create_compression_aca_plus(options.accuracy);
+  assemble.lower_symmetric = 0;
+  assemble.factorization = hmat_factorization_none;
+  assemble.progress = nullptr;
+  const int status = hi.assemble_generic(handle_->matrix, &assemble);
+  hmat_delete_compression(assemble.compression);
+  if (context.error) std::rethrow_exception(context.error);
+  if (status != 0) throw SolverError("hmat-oss failed to assemble " + what_);
+}
+
+HMatrix::~HMatrix() = default;
+HMatrix::HMatrix(HMatrix&&) noexcept = default;
+HMatrix& HMatrix::operator=(HMatrix&&) noexcept = default;
+
+Matrix HMatrix::apply(const Matrix& x) const {
+  if (factorized_) throw Error("HMatrix: apply after factorisation");
+  if (x.rows() != cols_) throw Error("HMatrix: vector of the wrong size");
+  Matrix in = x;  // hmat reorders its input in place and back
+  Matrix out = Matrix::Zero(rows_, x.cols());
+  double one = 1.0, zero = 0.0;
+  if (hmat_interface().gemv('N', &one, handle_->matrix, in.data(), &zero, out.data(), static_cast<int>(x.cols())) != 0)
+    throw SolverError("hmat-oss failed to multiply " + what_);
+  return out;
+}
+
+void HMatrix::factorize(bool keep_transposed) {
+  if (rows_ != cols_) throw Error("HMatrix: factorisation of a rectangular matrix");
+  hmat_interface_t& hi = hmat_interface();
+  auto factor = [&](hmat_matrix_t* m) {
+    hmat_factorization_context_t context;
+    hmat_factorization_context_init(&context);
+    context.factorization = hmat_factorization_lu;
+    context.progress = nullptr;
+    if (hi.factorize_generic(m, &context) != 0) throw SolverError("hmat-oss failed to factor " + what_);
+  };
+  if (keep_transposed) {
+    transposed_ = std::make_unique<Handle>();
+    transposed_->matrix = hi.copy(handle_->matrix);
+    if (!transposed_->matrix || hi.transpose(transposed_->matrix) != 0)
+      throw SolverError("hmat-oss failed to transpose " + what_);
+  }
+  try {
+    factor(handle_->matrix);
+    if (transposed_) factor(transposed_->matrix);
+  } catch (const std::exception& e) {
+    throw SolverError(std::string(e.what()).find("hmat") != std::string::npos
+                          ? std::string(e.what())
+                          : "the hierarchical LU of " + what_ + " failed: " + e.what());
+  }
+  factorized_ = true;
+}
+
+void HMatrix::solve_in_place(Matrix& rhs) const {
+  if (!factorized_) throw Error("HMatrix: solve before factorisation");
+  if (rhs.rows() != rows_) throw Error("HMatrix: right-hand side of the wrong size");
+  if (hmat_interface().solve_systems(handle_->matrix, rhs.data(), static_cast<int>(rhs.cols())) != 0)
+    throw SolverError("hmat-oss failed to solve with " + what_);
+  if (!rhs.allFinite())
+    throw SolverError(what_ + " is singular: its hierarchical LU gave a non-finite solution");
+}
+
+void HMatrix::solve_transposed_in_place(Matrix& rhs) const {
+  if (!transposed_) throw Error("HMatrix: no transposed factors (factorize(true))");
+  if (rhs.rows() != rows_) throw Error("HMatrix: right-hand side of the wrong size");
+  if (hmat_interface().solve_systems(transposed_->matrix, rhs.data(), static_cast<int>(rhs.cols())) != 0)
+    throw SolverError("hmat-oss failed to solve with the transpose of " + what_);
+  if (!rhs.allFinite())
+    throw SolverError(what_ + " is singular: its hierarchical LU gave a non-finite solution");
+}
+
+std::size_t HMatrix::stored_values() const {
+  hmat_info_t info;
+  hmat_interface().get_info(handle_->matrix, &info);
+  std::size_t total = info.compressed_size;
+  if (transposed_) {
+    hmat_interface().get_info(transposed_->matrix, &info);
+    total += info.compressed_size;
+  }
+  return total;
+}
+
+double HMatrix::compression_ratio() const {
+  return static_cast<double>(stored_values()) / (static_cast<double>(rows_) * static_cast<double>(cols_));
+}
+
+}  // namespace bemcontact::operators

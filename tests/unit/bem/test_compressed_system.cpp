@@ -1,0 +1,117 @@
+// The compressed boundary element system against the dense one, entry for entry (as
+// operators) and solution for solution, and its error against the accuracy parameter.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "bemcontact/bem/analysis.hpp"
+#include "bemcontact/bem/compressed_system.hpp"
+#include "support/problems.hpp"
+
+using namespace bemcontact;
+using bemcontact::bem::ConditionKind;
+
+namespace {
+
+constexpr auto U = ConditionKind::displacement;
+constexpr auto T = ConditionKind::traction;
+
+// A 4 x 1 strip: clamped at x = 0, sheared and stretched at x = 4, free sides; or, with
+// `free_body`, loaded by balanced tractions only and held by point constraints.
+bem::ProblemDefinition strip(int per_unit, bool free_body = false) {
+  bem::ProblemDefinition problem;
+  problem.analysis = AnalysisType::plane_strain;
+  problem.body.material = {200e3, 0.3};
+  const auto zero = [](const Vec2&) { return Vec2(0.0, 0.0); };
+  // Clamped: tension and a parabolic shear at the end; free: a balanced parabolic tension.
+  const auto end_load = [free_body](const Vec2& x) {
+    const double parabola = 3.0 * (x.y() - 0.5) * (x.y() - 0.5);
+    return free_body ? Vec2(10.0 + parabola, 0.0) : Vec2(10.0, parabola + 1.0);
+  };
+  const auto start_load = [end_load](const Vec2& x) { return Vec2(-end_load(x)); };
+  test_support::add_piece(problem, "bottom", {0, 0}, {4, 0}, 4 * per_unit, {T, T}, zero, zero);
+  test_support::add_piece(problem, "end", {4, 0}, {4, 1}, per_unit, {T, T}, zero, end_load);
+  test_support::add_piece(problem, "top", {4, 1}, {0, 1}, 4 * per_unit, {T, T}, zero, zero);
+  if (free_body) {
+    test_support::add_piece(problem, "start", {0, 1}, {0, 0}, per_unit, {T, T}, zero, start_load);
+    bem::PointConstraint origin, corner;
+    origin.position = {0, 0};
+    origin.displacement = {0.0, 0.0};
+    origin.label = "origin";
+    corner.position = {4, 0};
+    corner.displacement[1] = 0.0;
+    corner.label = "corner";
+    problem.body.constraints = {origin, corner};
+  } else {
+    test_support::add_piece(problem, "start", {0, 1}, {0, 0}, per_unit, {U, U}, zero, zero);
+  }
+  return problem;
+}
+
+double relative_difference(const bem::BoundarySolution& a, const bem::BoundarySolution& b, bool traction) {
+  double diff = 0.0, scale = 0.0;
+  for (std::size_t i = 0; i < a.displacement.size(); ++i) {
+    const Vec2 x = traction ? a.traction[i] : a.displacement[i];
+    const Vec2 y = traction ? b.traction[i] : b.displacement[i];
+    diff = std::max(diff, (x - y).norm());
+    scale = std::max(scale, y.norm());
+  }
+  return diff / scale;
+}
+
+}  // namespace
+
+// The compressed [H' | G] and A act on vectors as the dense H, G and A do, to about the
+// accuracy asked (ACA+ stops when its next cross is below it, relative to the block).
+TEST(CompressedSystem, OperatorsMatchTheDenseMatrices) {
+  auto problem = strip(40);
+  const auto mesh = bem::mesh_body(problem);
+  const auto conditions = bem::resolve_node_conditions(mesh, problem.body, problem.analysis);
+  const auto constraints = bem::resolve_point_constraints(mesh, problem.body, conditions);
+  const bem::ElementIntegrator integrator(problem.analysis, problem.body.material);
+  for (double accuracy : {1e-4, 1e-6, 1e-8}) {
+    operators::HMatrixOptions options;
+    options.accuracy = accuracy;
+    bem::CompressedBoundarySystem compressed(mesh, integrator, conditions, constraints, options, "the strip");
+    auto matrices = bem::assemble_influence_matrices(mesh, integrator);
+    const auto dense = bem::build_boundary_system(matrices, conditions, constraints);
+    std::mt19937 random(7);
+    std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+    Vector x(dense.A.cols());
+    for (Index k = 0; k < x.size(); ++k) x[k] = uniform(random);
+    const Vector exact = dense.A * x;
+    const double operator_error = (compressed.apply(x) - exact).norm() / exact.norm();
+    const double rhs_error = (compressed.rhs() - dense.b).norm() / dense.b.norm();
+    EXPECT_LT(operator_error, 10.0 * accuracy) << accuracy;
+    EXPECT_LT(rhs_error, 10.0 * accuracy) << accuracy;
+    EXPECT_LT(compressed.compression_ratio(), 1.0);
+  }
+}
+
+// The whole solve on compressed operators against the dense solve: displacements and
+// tractions within a small multiple of the accuracy asked, falling with it; also for a free
+// body held by point constraints (the transposed H-LU of the rigid-mode treatment).
+TEST(CompressedSystem, SolutionFollowsTheAccuracyAsked) {
+  for (bool free_body : {false, true}) {
+    auto problem = strip(40, free_body);
+    problem.operator_choice.kind = bem::OperatorKind::dense;
+    const auto dense = bem::solve_body(problem);
+    double previous = 1.0;
+    for (double accuracy : {1e-4, 1e-6, 1e-8}) {
+      problem.operator_choice.kind = bem::OperatorKind::compressed;
+      problem.operator_choice.accuracy = accuracy;
+      const auto compressed = bem::solve_body(problem);
+      EXPECT_EQ(compressed.report.operator_kind, "compressed");
+      EXPECT_EQ(compressed.report.constraints_fix_rigid_modes_only, free_body);
+      const double du = relative_difference(compressed.boundary, dense.boundary, false);
+      const double dp = relative_difference(compressed.boundary, dense.boundary, true);
+      std::printf("free_body %d accuracy %.0e: u %.2e, p %.2e, residual %.2e, stored %.1f %%\n", free_body, accuracy,
+                  du, dp, compressed.report.relative_residual, 100.0 * compressed.report.compression_ratio);
+      EXPECT_LT(du, 100.0 * accuracy) << accuracy;
+      EXPECT_LT(dp, 100.0 * accuracy) << accuracy;
+      EXPECT_LT(std::max(du, dp), previous);
+      EXPECT_LT(compressed.report.relative_residual, 10.0 * accuracy);
+      previous = std::max(du, dp);
+    }
+  }
+}
