@@ -67,6 +67,17 @@ void InfluenceBlocks::evaluate(const std::vector<Index>& row_nodes, const std::v
   }
 }
 
+namespace {
+
+// Axisymmetric diagonal blocks need the radial-expansion traction integral, not rigid translations.
+std::vector<NodeCondition> plane_only(const ElementIntegrator& integrator, std::vector<NodeCondition> conditions) {
+  if (integrator.type() == AnalysisType::axisymmetric)
+    throw Error("the compressed operator is for plane problems only");
+  return conditions;
+}
+
+}  // namespace
+
 CompressedBoundarySystem::CompressedBoundarySystem(const geometry::BoundaryMesh& mesh, const ElementIntegrator& integrator,
                                                    std::vector<NodeCondition> conditions,
                                                    std::vector<ConstraintEquation> constraints,
@@ -74,9 +85,7 @@ CompressedBoundarySystem::CompressedBoundarySystem(const geometry::BoundaryMesh&
     : mesh_(mesh),
       traction_scale_(integrator.material().shear_modulus()),
       node_scale_(Vector::Zero(mesh.node_count())),
-      conditions_((integrator.type() == AnalysisType::axisymmetric
-                        ? throw Error("the compressed operator is for plane problems only")
-                        : std::move(conditions))),
+      conditions_(plane_only(integrator, std::move(conditions))),
       constraints_(std::move(constraints)),
       blocks_(mesh, integrator),
       influence_(assemble_influence(options, "the influence matrices of " + what)),
@@ -183,10 +192,6 @@ operators::HMatrix CompressedBoundarySystem::assemble_system(const operators::HM
           continue;
         }
         const Index i = row / 2;
-        if (conditions_[i].on_axis && row % 2 == 0) {  // replaced by p_r = 0
-          column[rr] = row == col ? scale : 0.0;
-          continue;
-        }
         const Index lr = 2 * row_index.find(i) + row % 2;
         if (traction_column) {
           column[rr] = -scale * (G(lr, lc) * weights[0] + G(lr, lc + 1) * weights[1]);
@@ -221,8 +226,6 @@ Vector CompressedBoundarySystem::prescribed_rhs() const {
   Vector b(dofs + static_cast<Index>(constraints_.size()));
   b.head(dofs) = -apply_h_minus_g(u, p);  // G p - H u
   for (std::size_t k = 0; k < constraints_.size(); ++k) b[dofs + static_cast<Index>(k)] = constraints_[k].value;
-  for (Index i = 0; i < n; ++i)
-    if (conditions_[i].on_axis) b[2 * i] = 0.0;
   return b;
 }
 
@@ -283,8 +286,6 @@ double CompressedBoundarySystem::residual(const BoundarySolution& solution) cons
   x.col(1) = influence_input(Vector::Zero(2 * n), p);
   Matrix y = influence_.apply(x);
   for (Index i = 0; i < n; ++i) y.block<2, 1>(2 * i, 0) += diagonal_[i] * u.segment<2>(2 * i);
-  for (Index i = 0; i < n; ++i)
-    if (conditions_[i].on_axis) y(2 * i, 0) = y(2 * i, 1) = 0.0;
   const Vector r = y.col(0) - y.col(1);
   const double scale = std::max(y.col(0).norm(), y.col(1).norm());
   return scale > 0.0 ? r.norm() / scale : r.norm();

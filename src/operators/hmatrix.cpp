@@ -187,22 +187,27 @@ void HMatrix::factorize(bool keep_transposed) {
   factorized_ = true;
 }
 
+namespace {
+
+// Solves with one set of hierarchical LU factors; `which` names the matrix in messages.
+void solve_with_factors(hmat_matrix_t* factors, Matrix& rhs, Index rows, const std::string& which) {
+  if (rhs.rows() != rows) throw Error("HMatrix: right-hand side of the wrong size");
+  if (hmat_interface().solve_systems(factors, rhs.data(), static_cast<int>(rhs.cols())) != 0)
+    throw SolverError("hmat-oss failed to solve with " + which);
+  if (!rhs.allFinite())
+    throw SolverError(which + " is singular: its hierarchical LU gave a non-finite solution");
+}
+
+}  // namespace
+
 void HMatrix::solve_in_place(Matrix& rhs) const {
   if (!factorized_) throw Error("HMatrix: solve before factorisation");
-  if (rhs.rows() != rows_) throw Error("HMatrix: right-hand side of the wrong size");
-  if (hmat_interface().solve_systems(handle_->matrix, rhs.data(), static_cast<int>(rhs.cols())) != 0)
-    throw SolverError("hmat-oss failed to solve with " + what_);
-  if (!rhs.allFinite())
-    throw SolverError(what_ + " is singular: its hierarchical LU gave a non-finite solution");
+  solve_with_factors(handle_->matrix, rhs, rows_, what_);
 }
 
 void HMatrix::solve_transposed_in_place(Matrix& rhs) const {
   if (!transposed_) throw Error("HMatrix: no transposed factors (factorize(true))");
-  if (rhs.rows() != rows_) throw Error("HMatrix: right-hand side of the wrong size");
-  if (hmat_interface().solve_systems(transposed_->matrix, rhs.data(), static_cast<int>(rhs.cols())) != 0)
-    throw SolverError("hmat-oss failed to solve with the transpose of " + what_);
-  if (!rhs.allFinite())
-    throw SolverError(what_ + " is singular: its hierarchical LU gave a non-finite solution");
+  solve_with_factors(transposed_->matrix, rhs, rows_, "the transpose of " + what_);
 }
 
 std::size_t HMatrix::stored_values() const {
