@@ -1,5 +1,6 @@
-// Domain decomposition against the monolithic multi-region solve (and a fibre composite of
-// 1 to 64 fibres, at the end): 2, 4 and 8 strips of
+// Domain decomposition against the monolithic multi-region solve (then iterations against
+// the number of subdomains, with and without the balancing preconditioner, on 2 to 64
+// strips and on a fibre composite of 1 to 64 fibres): 2, 4 and 8 strips of
 // 500 linear elements each (200 across, 50 up; h = 0.01, strips 2 x 0.5, stacked), plate
 // in tension, mixed method, GMRES(20), tolerance 1e-8.
 //   BM_Decomposed:  assemble + factor each strip (n^3 per strip), GMRES on the interface
@@ -14,6 +15,7 @@
 #include <benchmark/benchmark.h>
 
 #include <cmath>
+#include <cstdint>
 
 #include "bemcontact/dd/fibre_composite.hpp"
 #include "bemcontact/dd/monolithic.hpp"
@@ -73,13 +75,17 @@ BENCHMARK(BM_Decomposed)
     ->Iterations(1);
 BENCHMARK(BM_Monolithic)->Arg(2)->Arg(4)->Arg(8)->Unit(benchmark::kMillisecond)->Iterations(1);
 
-// A fibre composite of n x n glass fibres in epoxy (dd/fibre_composite.hpp, pitch 4 R,
-// 8 elements per quarter arc, matrix half-width 30 R), mixed method, full GMRES: iterations
-// and time against the number of subdomains (n^2 + 1).
-void BM_FibreComposite(benchmark::State& state) {
-  dd::FibreCompositeSpec spec;
-  spec.fibres_per_side = static_cast<int>(state.range(0));
-  const auto problem = dd::fibre_composite(spec);
+// The preconditioner variants compared below: 0 the thesis' mixed method unpreconditioned,
+// 1 conforming unpreconditioned, 2 conforming with balancing (the default).
+void set_variant(dd::DecompositionProblem& problem, std::int64_t variant) {
+  problem.options.set_method(variant == 0 ? dd::InterfaceMethod::mixed : dd::InterfaceMethod::conforming);
+  if (variant == 1) problem.options.preconditioner = dd::InterfacePreconditioner::none;
+  problem.options.max_iterations = 2000;
+}
+
+// Solves `problem` in the given variant and reports its counters.
+void solve_variant(benchmark::State& state, dd::DecompositionProblem problem, std::int64_t variant) {
+  set_variant(problem, variant);
   dd::DecompositionResult result;
   for (auto _ : state) {
     result = dd::solve_decomposition(problem);
@@ -89,8 +95,35 @@ void BM_FibreComposite(benchmark::State& state) {
   state.counters["subdomains"] = static_cast<double>(problem.subdomains.size());
   state.counters["interface_unknowns"] = static_cast<double>(result.interface_unknowns);
   state.counters["iterations"] = result.gmres.iterations;
+  state.counters["coarse_dimension"] = static_cast<double>(result.coarse_dimension);
 }
-BENCHMARK(BM_FibreComposite)->Arg(1)->Arg(2)->Arg(4)->Arg(6)->Arg(8)->Unit(benchmark::kMillisecond)->Iterations(1);
+
+// The thesis' strips (h = 1/6, unit thickness, stacked): iterations against strips.
+void BM_StripsIterations(benchmark::State& state) {
+  dd::PlateStripsSpec spec;
+  spec.strips = static_cast<int>(state.range(0));
+  spec.height = spec.strips;
+  solve_variant(state, dd::plate_strips(spec), state.range(1));
+}
+BENCHMARK(BM_StripsIterations)
+    ->ArgsProduct({{2, 4, 8, 16, 32, 64}, {0, 1, 2}})
+    ->ArgNames({"strips", "variant"})
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
+
+// A fibre composite of n x n glass fibres in epoxy (dd/fibre_composite.hpp, pitch 4 R,
+// 8 elements per quarter arc, matrix half-width 30 R), full GMRES: iterations and time
+// against the number of subdomains (n^2 + 1), per variant.
+void BM_FibreComposite(benchmark::State& state) {
+  dd::FibreCompositeSpec spec;
+  spec.fibres_per_side = static_cast<int>(state.range(0));
+  solve_variant(state, dd::fibre_composite(spec), state.range(1));
+}
+BENCHMARK(BM_FibreComposite)
+    ->ArgsProduct({{1, 2, 4, 6, 8}, {0, 2}})
+    ->ArgNames({"per_side", "variant"})
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
 
 }  // namespace
 

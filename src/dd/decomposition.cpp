@@ -13,6 +13,14 @@ const char* to_string(InterfaceMethod method) {
   return "unknown";
 }
 
+const char* to_string(InterfacePreconditioner preconditioner) {
+  switch (preconditioner) {
+    case InterfacePreconditioner::none: return "none";
+    case InterfacePreconditioner::balancing: return "balancing";
+  }
+  return "unknown";
+}
+
 void mark_interface(Subdomain& subdomain, std::size_t piece, const std::string& name) {
   auto& body = subdomain.body;
   if (subdomain.piece_interface.size() < body.pieces.size()) subdomain.piece_interface.resize(body.pieces.size());

@@ -40,7 +40,7 @@ DecompositionProblem fibre_composite(const FibreCompositeSpec& spec) {
   problem.title = "fibre composite, " + std::to_string(n * n) + " fibres";
   problem.source_file = "fibre_composite";
   problem.analysis = spec.analysis;
-  problem.options.method = spec.method;
+  problem.options.set_method(spec.method);
 
   Subdomain matrix;
   matrix.body.name = "matrix";

@@ -30,7 +30,7 @@ InterfaceOperator::InterfaceOperator(const DecompositionProblem& problem,
                         "own): " + advice + ". (" + error.what() + ")");
     }
   }
-  if (problem.options.explicit_operators)
+  if (problem.options.explicit_operators || problem.options.preconditioner == InterfacePreconditioner::balancing)
     for (std::size_t s = 0; s < count; ++s) {
       const Index dofs = bodies_[s].variable_dofs();
       maps_.push_back(bodies_[s].unit_responses());
@@ -97,6 +97,22 @@ Vector InterfaceOperator::residual(const Vector& y, bool with_fixed_data) const 
 void InterfaceOperator::apply(const Vector& y, Vector& ky) const { ky = residual(y, false); }
 
 Vector InterfaceOperator::right_hand_side() const { return -residual(Vector::Zero(rows()), true); }
+
+Matrix InterfaceOperator::local_operator(std::size_t s) const {
+  if (maps_.empty()) throw Error("InterfaceOperator: no explicit interface maps");
+  const auto& slots = connectivity_.slots[s];
+  const Index k = 2 * static_cast<Index>(slots.size());
+  Matrix local = maps_[s].topLeftCorner(k, k);
+  // Columns: data from unknowns (subdomain_data); rows: contributions to residuals (residual).
+  for (std::size_t a = 0; a < slots.size(); ++a) {
+    const auto kind = connectivity_.interfaces[slots[a].interface].pairs[slots[a].pair].kind;
+    const double column = kind == bem::ConditionKind::displacement ? 1.0 / scale_ : (slots[a].side == 1 ? -1.0 : 1.0);
+    const double row = kind == bem::ConditionKind::displacement ? 1.0 : (slots[a].side == 0 ? scale_ : -scale_);
+    local.middleCols<2>(2 * static_cast<Index>(a)) *= column;
+    local.middleRows<2>(2 * static_cast<Index>(a)) *= row;
+  }
+  return local;
+}
 
 bem::BoundarySolution InterfaceOperator::subdomain_solution(std::size_t s, const Vector& y) const {
   return bodies_[s].solve(subdomain_data(s, y), true);

@@ -25,10 +25,9 @@ DecompositionProblem plate_strips(const PlateStripsSpec& spec) {
   DecompositionProblem problem;
   problem.title = "plate in tension, " + std::to_string(spec.strips) + " strips, h = 1/" +
                   std::to_string(spec.elements_per_unit);
-  problem.options.method = spec.method;
   problem.source_file = "plate_strips";
   problem.analysis = spec.analysis;
-  problem.options.method = spec.method;
+  problem.options.set_method(spec.method);
   const int n = spec.strips;
   const double T = spec.height / n;
   const int across = 2 * spec.elements_per_unit;

@@ -1,11 +1,13 @@
 #include "bemcontact/dd/solver.hpp"
 
 #include <chrono>
+#include <memory>
 
 #include "bemcontact/bem/resultants.hpp"
 #include "bemcontact/bem/assembly.hpp"
 #include "bemcontact/bem/postprocess.hpp"
 #include "bemcontact/core/error.hpp"
+#include "bemcontact/dd/balancing.hpp"
 #include "bemcontact/dd/interface_operator.hpp"
 
 namespace bemcontact::dd {
@@ -61,8 +63,12 @@ std::vector<InterfaceJump> interface_jumps(const Connectivity& connectivity,
 
 DecompositionResult solve_decomposition(const DecompositionProblem& problem, const bem::ProgressCallback& progress) {
   if (problem.subdomains.empty()) throw Error("solve_decomposition: no subdomains");
+  if (problem.options.preconditioner == InterfacePreconditioner::balancing &&
+      problem.options.method != InterfaceMethod::conforming)
+    throw Error("solve_decomposition: the balancing preconditioner is for the conforming method");
   DecompositionResult result;
   result.method = problem.options.method;
+  result.preconditioner = problem.options.preconditioner;
   PhaseClock clock(result.timings);
   const std::vector<geometry::BoundaryMesh> meshes = mesh_subdomains(problem);
   result.connectivity = build_connectivity(problem, meshes);
@@ -76,6 +82,13 @@ DecompositionResult solve_decomposition(const DecompositionProblem& problem, con
 
   const Vector F = K.right_hand_side();  // Alg IV.2
   clock.lap("right-hand side");
+  std::unique_ptr<BalancingPreconditioner> preconditioner;
+  if (problem.options.preconditioner == InterfacePreconditioner::balancing && K.rows() > 0) {
+    preconditioner = std::make_unique<BalancingPreconditioner>(K, result.connectivity, problem.analysis);
+    result.coarse_dimension = preconditioner->coarse_dimension();
+    result.floating_modes = preconditioner->floating_modes();
+    clock.lap("preconditioner");
+  }
 
   operators::GmresOptions options;
   options.restart = effective_restart(problem.options, K.rows());
@@ -87,7 +100,7 @@ DecompositionResult solve_decomposition(const DecompositionProblem& problem, con
       progress("gmres", std::min(1.0, static_cast<double>(iteration) / std::max(1, options.max_iterations)));
     };
   if (K.rows() > 0) {
-    result.gmres = operators::gmres(K, F, options, Vector(), monitor);  // Alg IV.4
+    result.gmres = operators::gmres(K, F, options, Vector(), monitor, preconditioner.get());  // Alg IV.4
   } else {
     result.gmres.x = Vector();
     result.gmres.status = operators::GmresStatus::converged;

@@ -136,8 +136,12 @@ std::string convergence_advice(const dd::DecompositionOptions& options, const dd
   if (m < result.gmres.iterations)
     return "GMRES(" + std::to_string(m) + ") restarts lose the Krylov space: remove 'restart' from [decomposition] "
            "(full GMRES, the default) or raise it";
+  if (options.preconditioner == dd::InterfacePreconditioner::none)
+    return "raise max_iterations in [decomposition] (now " + std::to_string(options.max_iterations) +
+           ") or use method = \"conforming\" with the balancing preconditioner (the default)";
   return "raise max_iterations in [decomposition] (now " + std::to_string(options.max_iterations) +
-         ") or loosen tolerance; method = \"conforming\" or \"mixed\" may converge faster on this problem";
+         ") or loosen tolerance; the balanced iteration stalling usually means the subdomains' rigid motions are "
+         "held by a very soft part: check the materials and conditions";
 }
 
 // Several subdomains glued along interfaces (chapter IV).
@@ -155,6 +159,7 @@ RunOutput run_decomposition(std::string_view text, const std::string& file_name,
   const auto& o = file.problem.options;
   summary.options.update({{"mesh", io::mesh_options_json(file.problem.mesh)},
                           {"method", dd::to_string(o.method)},
+                          {"preconditioner", dd::to_string(o.preconditioner)},
                           {"restart", o.restart},
                           {"tolerance", o.tolerance},
                           {"max_iterations", o.max_iterations},
@@ -184,9 +189,11 @@ RunOutput run_decomposition(std::string_view text, const std::string& file_name,
   std::string& report = output.report;
   append(report, "%s\n  %zu subdomains, method %s, %ld interface unknowns\n", file.problem.title.c_str(),
          result.subdomains.size(), dd::to_string(result.method), static_cast<long>(result.interface_unknowns));
-  append(report, "  GMRES(%d): %d iterations, relative residual %.3g\n",
+  append(report, "  GMRES(%d), preconditioner %s: %d iterations, relative residual %.3g\n",
          dd::effective_restart(file.problem.options, result.interface_unknowns),
-         result.gmres.iterations, result.gmres.relative_residual);
+         dd::to_string(result.preconditioner), result.gmres.iterations, result.gmres.relative_residual);
+  if (result.preconditioner == dd::InterfacePreconditioner::balancing)
+    append(report, "  coarse space: %ld rigid modes\n", static_cast<long>(result.coarse_dimension));
   double jump_u = 0.0, jump_p = 0.0;
   for (const auto& j : result.jumps) jump_u = std::max(jump_u, j.jump_u), jump_p = std::max(jump_p, j.jump_p);
   append(report, "  max interface jumps: [u] = %.3g, [p] = %.3g\n", jump_u, jump_p);

@@ -25,7 +25,7 @@ const std::vector<std::string>& root_keys() {
 const std::vector<std::string>& decomposition_keys() {
   static const std::vector<std::string> keys{"method",         "restart",             "tolerance",
                                              "max_iterations", "interface_tolerance", "displacement_nodes",
-                                             "explicit_operators"};
+                                             "explicit_operators", "preconditioner"};
   return keys;
 }
 const std::vector<std::string>& subdomain_keys() {
@@ -53,10 +53,18 @@ void read_options(const TableReader& root, const FileContext& context, dd::Decom
   if (!table) return;
   const TableReader reader(*table, "decomposition", context, root.line());
   reader.check_keys(decomposition_keys(), "the [decomposition] table");
-  const std::string method = reader.choice("method", {"mixed", "conforming", "hybrid"}, "mixed");
-  options.method = method == "conforming" ? dd::InterfaceMethod::conforming
-                   : method == "hybrid"   ? dd::InterfaceMethod::hybrid
-                                          : dd::InterfaceMethod::mixed;
+  const std::string method = reader.choice("method", {"conforming", "mixed", "hybrid"}, "conforming");
+  options.set_method(method == "conforming" ? dd::InterfaceMethod::conforming
+                     : method == "hybrid"   ? dd::InterfaceMethod::hybrid
+                                            : dd::InterfaceMethod::mixed);
+  if (reader.has("preconditioner")) {
+    const bool balancing = reader.choice("preconditioner", {"balancing", "none"}, "balancing") == "balancing";
+    if (balancing && options.method != dd::InterfaceMethod::conforming)
+      reader.fail("preconditioner", "the balancing preconditioner is for method = \"conforming\" (its unknowns are "
+                                    "the interface displacements); use preconditioner = \"none\" with method = \"" +
+                                        method + "\"");
+    options.preconditioner = balancing ? dd::InterfacePreconditioner::balancing : dd::InterfacePreconditioner::none;
+  }
   options.restart = reader.integer_or("restart", options.restart);
   if (reader.has("restart") && options.restart < 1)
     reader.fail("restart", "the GMRES restart length m must be >= 1, found " + std::to_string(options.restart));
@@ -81,6 +89,10 @@ void read_options(const TableReader& root, const FileContext& context, dd::Decom
                                       "mixed method) must be >= 1, found " +
                                           std::to_string(options.displacement_nodes));
   options.explicit_operators = reader.boolean_or("explicit_operators", options.explicit_operators);
+  if (reader.has("explicit_operators") && !options.explicit_operators &&
+      options.preconditioner == dd::InterfacePreconditioner::balancing)
+    reader.fail("explicit_operators", "the balancing preconditioner needs every subdomain's interface map, so it "
+                                      "forms them: explicit_operators = false applies with preconditioner = \"none\"");
   if (reader.has("displacement_nodes") && options.method != dd::InterfaceMethod::mixed)
     reader.fail("displacement_nodes", "displacement_nodes applies to method = \"mixed\" only");
 }

@@ -109,6 +109,11 @@ nlohmann::json decomposition_summary_json(const dd::DecompositionProblem& proble
                                           const dd::DecompositionResult& result) {
   nlohmann::json j;
   j["method"] = dd::to_string(result.method);
+  j["preconditioner"] = dd::to_string(result.preconditioner);
+  if (result.preconditioner == dd::InterfacePreconditioner::balancing) {
+    j["coarse_dimension"] = result.coarse_dimension;
+    j["floating_modes"] = result.floating_modes;
+  }
   nlohmann::json subs = nlohmann::json::array();
   for (std::size_t s = 0; s < result.subdomains.size(); ++s) {
     const auto& sub = result.subdomains[s];

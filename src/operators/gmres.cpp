@@ -41,16 +41,24 @@ void givens(double a, double b, double& c, double& s) {
 }  // namespace
 
 GmresResult gmres(const LinearOperator& A, const Vector& b, const GmresOptions& options, const Vector& x0,
-                  const GmresMonitor& monitor) {
+                  const GmresMonitor& monitor, const LinearOperator* right_preconditioner) {
   const Index n = A.rows();
   if (A.cols() != n || b.size() != n) throw Error("gmres: the operator must be square and match the right-hand side");
   if (options.restart < 1) throw Error("gmres: the restart length m must be >= 1");
   if (!(options.tolerance > 0.0)) throw Error("gmres: the tolerance must be > 0");
+  if (right_preconditioner && (right_preconditioner->rows() != n || right_preconditioner->cols() != n))
+    throw Error("gmres: the preconditioner must be square and match the operator");
   const int m = static_cast<int>(std::min<Index>(options.restart, std::max<Index>(n, 1)));
 
   GmresResult result;
   result.x = x0.size() == n ? x0 : Vector::Zero(n);
-  Vector r(n), w(n);
+  Vector r(n), w(n), z(n);
+  // A M^-1 on a Krylov vector: right preconditioning keeps the residual the true one.
+  const auto apply_preconditioned = [&](const Vector& v, Vector& out) {
+    if (!right_preconditioner) return A.apply(v, out);
+    right_preconditioner->apply(v, z);
+    A.apply(z, out);
+  };
   A.apply(result.x, w);
   r = b - w;
   const double r00 = r.norm();
@@ -80,7 +88,7 @@ GmresResult gmres(const LinearOperator& A, const Vector& b, const GmresOptions& 
     int steps = 0;
     bool invariant = false;
     for (int j = 0; j < m && result.iterations < options.max_iterations; ++j) {
-      A.apply(V.col(j), w);
+      apply_preconditioned(V.col(j), w);
       ++result.iterations;
       const double w_norm = w.norm();
       if (!std::isfinite(w_norm)) throw SolverError("gmres: the operator returned a non-finite vector");
@@ -131,7 +139,12 @@ GmresResult gmres(const LinearOperator& A, const Vector& b, const GmresOptions& 
     const bool singular = usable < steps;
     if (usable > 0) {
       const Vector y = H.topLeftCorner(usable, usable).triangularView<Eigen::Upper>().solve(g.head(usable));
-      result.x += V.leftCols(usable) * y;
+      if (right_preconditioner) {
+        right_preconditioner->apply(V.leftCols(usable) * y, z);
+        result.x += z;
+      } else {
+        result.x += V.leftCols(usable) * y;
+      }
     }
     A.apply(result.x, w);
     r = b - w;

@@ -85,6 +85,28 @@ TEST(DdErrors, BadDecompositionOptions) {
       [] { parse_decomposition(two_squares("elements = 4\ninterface = \"mid\"\n", "elements = 4\ninterface = \"mid\"\n",
                                            "[decomposition]\ntolerence = 1e-6\n"), "t.toml"); });
   expect_contains(message, {"t.toml:3", "tolerence", "Did you mean 'tolerance'"});
+  message = message_of<InputError>(
+      [] { parse_decomposition(two_squares("elements = 4\ninterface = \"mid\"\n", "elements = 4\ninterface = \"mid\"\n",
+                                           "[decomposition]\nmethod = \"mixed\"\npreconditioner = \"balancing\"\n"),
+                               "p.toml"); });
+  expect_contains(message, {"p.toml:4", "decomposition.preconditioner", "method = \"conforming\"",
+                            "preconditioner = \"none\""});
+  message = message_of<InputError>(
+      [] { parse_decomposition(two_squares("elements = 4\ninterface = \"mid\"\n", "elements = 4\ninterface = \"mid\"\n",
+                                           "[decomposition]\nexplicit_operators = false\n"),
+                               "e.toml"); });
+  expect_contains(message, {"e.toml:3", "decomposition.explicit_operators", "balancing"});
+}
+
+// The default: conforming unknowns with the balancing preconditioner; another method
+// without a preconditioner key is unpreconditioned.
+TEST(DdErrors, DefaultPreconditionerFollowsTheMethod) {
+  const std::string pieces = "elements = 4\ninterface = \"mid\"\n";
+  auto file = parse_decomposition(two_squares(pieces, pieces), "d.toml");
+  EXPECT_EQ(file.problem.options.method, dd::InterfaceMethod::conforming);
+  EXPECT_EQ(file.problem.options.preconditioner, dd::InterfacePreconditioner::balancing);
+  file = parse_decomposition(two_squares(pieces, pieces, "[decomposition]\nmethod = \"mixed\"\n"), "d.toml");
+  EXPECT_EQ(file.problem.options.preconditioner, dd::InterfacePreconditioner::none);
 }
 
 TEST(DdErrors, BodyKeysAtTheTopLevel) {

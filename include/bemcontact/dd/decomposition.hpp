@@ -24,6 +24,13 @@ enum class InterfaceMethod {
 };
 const char* to_string(InterfaceMethod method);
 
+// How the interface iteration is preconditioned.
+enum class InterfacePreconditioner {
+  none,       // plain GMRES on K (the thesis' Alg IV.4)
+  balancing,  // balancing Neumann-Neumann with a rigid-mode coarse space (conforming only)
+};
+const char* to_string(InterfacePreconditioner preconditioner);
+
 struct Subdomain {
   bem::BodyDefinition body;                    // name, material, pieces, conditions, constraints
   std::vector<std::string> piece_interface;    // per piece: interface name, "" for outer pieces
@@ -31,9 +38,11 @@ struct Subdomain {
 };
 
 struct DecompositionOptions {
-  // The mixed variant converges in the fewest iterations on the thesis' strips up to 8
-  // strips (and keeps floating subdomains well posed), so it is the default.
-  InterfaceMethod method = InterfaceMethod::mixed;
+  // Conforming unknowns with the balancing preconditioner: iterations nearly independent of
+  // the number of subdomains and of the materials' contrast (the thesis' mixed variant, the
+  // fastest unpreconditioned method on its strips, needs 8x more on 64 strips).
+  InterfaceMethod method = InterfaceMethod::conforming;
+  InterfacePreconditioner preconditioner = InterfacePreconditioner::balancing;
   // GMRES(m). 0 (the default): no restart, m = max_iterations, when the Krylov basis
   // (m vectors of the interface size) fits in kAutoRestartBytes, else the largest m that
   // fits. Short restarts stall on stiff interfaces (a thin soft layer between stiff parts:
@@ -48,10 +57,16 @@ struct DecompositionOptions {
   // motion of a floating subdomain; 3 converged fastest on the strips of IV.5.
   int displacement_nodes = 3;
   // false: K applied matrix-free, one subdomain solve per application (Alg IV.1).
-  // true: each subdomain's interface map (S, S^-1 or mixed) is formed once by a block solve
+  // true (always with the balancing preconditioner, which needs the maps): each subdomain's interface map (S, S^-1 or mixed) is formed once by a block solve
   // with unit data (one BLAS-3 solve), then K costs small dense products: worth it when
   // GMRES needs more iterations than a subdomain has interface unknowns.
   bool explicit_operators = false;
+
+  // The method with its natural preconditioner: balancing for conforming, none otherwise.
+  void set_method(InterfaceMethod m) {
+    method = m;
+    preconditioner = m == InterfaceMethod::conforming ? InterfacePreconditioner::balancing : InterfacePreconditioner::none;
+  }
 };
 
 inline constexpr double kAutoRestartBytes = 256e6;

@@ -22,7 +22,7 @@ struct FibreCompositeSpec {
   Material matrix{3000.0, 0.35};
   Material fibre{70000.0, 0.22};
   AnalysisType analysis = AnalysisType::plane_strain;
-  InterfaceMethod method = InterfaceMethod::mixed;
+  InterfaceMethod method = InterfaceMethod::conforming;  // with the balancing preconditioner
 };
 
 DecompositionProblem fibre_composite(const FibreCompositeSpec& spec);

@@ -43,6 +43,10 @@ class InterfaceOperator : public operators::LinearOperator {
   // The full boundary solution of subdomain s for interface unknowns y.
   bem::BoundarySolution subdomain_solution(std::size_t s, const Vector& y) const;
 
+  // Subdomain s's explicit interface map in the units of the unknowns and residuals (the
+  // contribution R_s^T K_s R_s of s to K); needs explicit maps.
+  Matrix local_operator(std::size_t s) const;
+
   double displacement_scale() const { return scale_; }
   const bem::FactoredBody& body(std::size_t s) const { return bodies_[s]; }
   std::size_t subdomain_count() const { return bodies_.size(); }

@@ -1,6 +1,7 @@
 #pragma once
 // Solving a decomposed body (chapter IV): mesh the subdomains, build the connection table,
-// factor each subdomain once, solve the interface problem by GMRES(m) (Alg IV.4), then
+// factor each subdomain once, solve the interface problem by GMRES(m) (Alg IV.4; with the
+// conforming method preconditioned by balancing, dd/balancing.hpp), then
 // recover every subdomain's boundary solution, boundary stresses and interior points.
 #include <string>
 #include <vector>
@@ -34,6 +35,9 @@ struct InterfaceJump {
 
 struct DecompositionResult {
   InterfaceMethod method = InterfaceMethod::conforming;
+  InterfacePreconditioner preconditioner = InterfacePreconditioner::none;
+  Index coarse_dimension = 0;      // balancing: rigid modes in the coarse space
+  std::vector<int> floating_modes; // balancing: per subdomain, rigid modes its interface map leaves free
   std::vector<SubdomainResult> subdomains;
   Connectivity connectivity;
   std::vector<InterfaceJump> jumps;

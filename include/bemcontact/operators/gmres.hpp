@@ -48,9 +48,12 @@ struct GmresResult {
 // Called after every Arnoldi step with (iteration, relative residual estimate).
 using GmresMonitor = std::function<void(int iteration, double relative_residual)>;
 
-// Solves A x = b from x0 (zero when empty). A must be square.
+// Solves A x = b from x0 (zero when empty). A must be square. With a right preconditioner
+// M^-1 the Krylov space is that of A M^-1 and x = x0 + M^-1 (V y): the residual tested and
+// reported stays the true ||b - A x||.
 GmresResult gmres(const LinearOperator& A, const Vector& b, const GmresOptions& options,
-                  const Vector& x0 = Vector(), const GmresMonitor& monitor = {});
+                  const Vector& x0 = Vector(), const GmresMonitor& monitor = {},
+                  const LinearOperator* right_preconditioner = nullptr);
 
 // A dense matrix as a LinearOperator (tests, small problems).
 class DenseOperator : public LinearOperator {

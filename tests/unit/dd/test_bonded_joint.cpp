@@ -8,14 +8,17 @@
 
 namespace bemcontact::dd {
 
-// The thin-layer joint converges with the default settings (full GMRES) to the solution of
-// the monolithic multi-region system, an independent direct solve of the same equations.
+// The thin-layer joint converges with the default settings (conforming method, balancing
+// preconditioner, full GMRES) to the solution of the monolithic multi-region system, an
+// independent direct solve of the same equations. Measured: 39 iterations (the mixed method
+// unpreconditioned: 100).
 TEST(DdBondedJoint, ConvergesWithDefaultsToTheMonolithicSolution) {
   const auto file = io::read_decomposition_file(std::string(BEMCONTACT_EXAMPLES_DIR) + "/dd_bonded_joint.toml");
   EXPECT_EQ(file.problem.options.restart, 0);  // automatic
   const auto result = solve_decomposition(file.problem);
   ASSERT_TRUE(result.converged()) << result.gmres.message;
-  EXPECT_LT(result.gmres.iterations, 200);
+  EXPECT_EQ(result.preconditioner, InterfacePreconditioner::balancing);
+  EXPECT_LT(result.gmres.iterations, 60);
   std::vector<geometry::BoundaryMesh> meshes;
   for (const auto& sub : result.subdomains) meshes.push_back(sub.mesh);
   const auto mono = solve_monolithic(file.problem, meshes, result.connectivity);
@@ -33,9 +36,13 @@ TEST(DdBondedJoint, ConvergesWithDefaultsToTheMonolithicSolution) {
   EXPECT_LT(dp / ps, 1e-6);
 }
 
-TEST(DdBondedJoint, ShortRestartsStallWithAdviceInTheMessage) {
+// Unpreconditioned (the thesis' mixed method), GMRES(20) stalls on the joint; balanced, it
+// converges even with that restart (measured 70 iterations).
+TEST(DdBondedJoint, ShortRestartsStallWithoutThePreconditioner) {
   auto file = io::read_decomposition_file(std::string(BEMCONTACT_EXAMPLES_DIR) + "/dd_bonded_joint.toml");
   file.problem.options.restart = 20;
+  EXPECT_TRUE(solve_decomposition(file.problem).converged());
+  file.problem.options.set_method(InterfaceMethod::mixed);
   const auto result = solve_decomposition(file.problem);
   EXPECT_FALSE(result.converged());
   EXPECT_EQ(effective_restart(file.problem.options, result.interface_unknowns), 20);

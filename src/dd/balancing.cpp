@@ -1,0 +1,170 @@
+#include "bemcontact/dd/balancing.hpp"
+
+#include <cmath>
+
+#include "bemcontact/core/error.hpp"
+#include "bemcontact/dd/interface_operator.hpp"
+
+namespace bemcontact::dd {
+
+namespace {
+
+// A rigid mode is a null mode of K_s when K_s moves it by less than this fraction of K_s's
+// RMS singular value. Free subdomains' rotations measure 1e-9..1e-7 (quadrature only: the
+// linear elements carry rigid motions exactly); a held subdomain's weakest mode 1e-3 and
+// more (its interface is at least one element of a body whose size is at most 10^3
+// elements).
+constexpr double kNullModeFraction = 1e-5;
+
+// The rigid modes of the interface dofs of one subdomain, orthonormal columns.
+Matrix interface_rigid_modes(const std::vector<Vec2>& positions, AnalysisType analysis) {
+  const Index k = static_cast<Index>(positions.size());
+  if (analysis == AnalysisType::axisymmetric) {  // only the axial translation is rigid
+    Matrix z = Matrix::Zero(2 * k, 1);
+    for (Index i = 0; i < k; ++i) z(2 * i + 1, 0) = 1.0;
+    return z / std::sqrt(static_cast<double>(k));
+  }
+  Vec2 centre = Vec2::Zero();
+  for (const auto& p : positions) centre += p;
+  centre /= static_cast<double>(k);
+  Matrix z = Matrix::Zero(2 * k, 3);
+  for (Index i = 0; i < k; ++i) {
+    const Vec2 d = positions[i] - centre;
+    z(2 * i, 0) = 1.0;
+    z(2 * i + 1, 1) = 1.0;
+    z(2 * i, 2) = -d.y();
+    z(2 * i + 1, 2) = d.x();
+  }
+  // The rotation about the centroid is orthogonal to both translations; on one point it vanishes.
+  const Eigen::HouseholderQR<Matrix> qr(z);
+  const Index rank = z.col(2).norm() > 0.0 ? 3 : 2;
+  return qr.householderQ() * Matrix::Identity(2 * k, rank);
+}
+
+}  // namespace
+
+BalancingPreconditioner::BalancingPreconditioner(const InterfaceOperator& K, const Connectivity& connectivity,
+                                                 AnalysisType analysis)
+    : K_(K), unknowns_(connectivity.unknowns) {
+  const std::size_t count = K.subdomain_count();
+  locals_.resize(count);
+  floating_modes_.assign(count, 0);
+  std::vector<Matrix> operators(count), modes(count);
+  Vector diagonal_sum = Vector::Zero(unknowns_);
+  for (std::size_t s = 0; s < count; ++s) {
+    auto& local = locals_[s];
+    const auto& slots = connectivity.slots[s];
+    std::vector<Vec2> positions;
+    for (const auto& slot : slots) {
+      const Index i = connectivity.unknown_of(slot);
+      local.dofs.push_back(i);
+      local.dofs.push_back(i + 1);
+      positions.push_back(connectivity.interfaces[slot.interface].pairs[slot.pair].position);
+      if (connectivity.interfaces[slot.interface].pairs[slot.pair].kind != bem::ConditionKind::displacement)
+        throw Error("BalancingPreconditioner: the conforming method's unknowns are displacements");
+    }
+    if (slots.empty()) continue;
+    operators[s] = K.local_operator(s);
+    modes[s] = interface_rigid_modes(positions, analysis);
+    const Vector d = operators[s].diagonal().cwiseAbs();
+    for (std::size_t a = 0; a < local.dofs.size(); ++a) diagonal_sum[local.dofs[a]] += d[static_cast<Index>(a)];
+  }
+  // D_s: stiffness-weighted partition of unity (every dof is shared by exactly two subdomains).
+  for (std::size_t s = 0; s < count; ++s) {
+    auto& local = locals_[s];
+    const Index k = static_cast<Index>(local.dofs.size());
+    if (k == 0) continue;
+    local.weights.resize(k);
+    const Vector d = operators[s].diagonal().cwiseAbs();
+    for (Index a = 0; a < k; ++a) {
+      const double total = diagonal_sum[local.dofs[static_cast<std::size_t>(a)]];
+      local.weights[a] = total > 0.0 ? d[a] / total : 0.5;
+    }
+  }
+  // Coarse space: D_s Z_s of every subdomain, an orthonormal basis of their span.
+  Index columns = 0;
+  for (const auto& z : modes) columns += z.cols();
+  Matrix W = Matrix::Zero(unknowns_, columns);
+  Index column = 0;
+  for (std::size_t s = 0; s < count; ++s) {
+    const auto& local = locals_[s];
+    for (Index c = 0; c < modes[s].cols(); ++c, ++column)
+      for (std::size_t a = 0; a < local.dofs.size(); ++a)
+        W(local.dofs[a], column) += local.weights[static_cast<Index>(a)] * modes[s](static_cast<Index>(a), c);
+  }
+  if (columns > 0) {
+    Eigen::ColPivHouseholderQR<Matrix> qr(W);
+    qr.setThreshold(1e-10);
+    const Index rank = qr.rank();
+    coarse_basis_ = qr.householderQ() * Matrix::Identity(unknowns_, rank);
+    coarse_image_.resize(unknowns_, rank);
+    Vector image;
+    for (Index c = 0; c < rank; ++c) {
+      K.apply(coarse_basis_.col(c), image);
+      coarse_image_.col(c) = image;
+    }
+    const Matrix coarse_matrix = coarse_basis_.transpose() * coarse_image_;
+    coarse_.compute(coarse_matrix);
+    if (rank > 0 && !(coarse_.rcond() > 1e-14))
+      throw SolverError("the balancing preconditioner's coarse problem (the subdomains' rigid motions, " +
+                        std::to_string(rank) + " modes) is singular: some motion of the whole body is held by "
+                        "nothing; prescribe displacements that hold it");
+  }
+  // Local Neumann problems, singular on a floating subdomain's rigid modes.
+  for (std::size_t s = 0; s < count; ++s) {
+    auto& local = locals_[s];
+    const Index k = static_cast<Index>(local.dofs.size());
+    if (k == 0) continue;
+    const Matrix& Ks = operators[s];
+    const double rms = Ks.norm() / std::sqrt(static_cast<double>(k));
+    const Eigen::JacobiSVD<Matrix> svd(Ks * modes[s], Eigen::ComputeThinV);
+    std::vector<Index> null_columns;
+    for (Index j = 0; j < svd.singularValues().size(); ++j)
+      if (svd.singularValues()[j] < kNullModeFraction * rms) null_columns.push_back(j);
+    const Index m = static_cast<Index>(null_columns.size());
+    floating_modes_[s] = static_cast<int>(m);
+    local.null_modes = m;
+    Matrix system = Matrix::Zero(k + m, k + m);
+    system.topLeftCorner(k, k) = Ks;
+    for (Index j = 0; j < m; ++j) {
+      const Vector z = modes[s] * svd.matrixV().col(null_columns[static_cast<std::size_t>(j)]);
+      system.block(0, k + j, k, 1) = rms * z;
+      system.block(k + j, 0, 1, k) = rms * z.transpose();
+    }
+    local.neumann.compute(system);
+    if (!(local.neumann.rcond() > 1e-14))
+      throw SolverError("the balancing preconditioner's Neumann problem of subdomain " + std::to_string(s + 1) +
+                        " is singular beyond its rigid motions");
+  }
+}
+
+void BalancingPreconditioner::apply(const Vector& r, Vector& z) const {
+  if (r.size() != unknowns_) throw Error("BalancingPreconditioner: wrong number of interface unknowns");
+  // Coarse part Q r, and the residual it leaves, balanced: W^T (r - K Q r) = 0.
+  Vector balanced = r;
+  z = Vector::Zero(unknowns_);
+  if (coarse_basis_.cols() > 0) {
+    const Vector lambda = coarse_.solve(coarse_basis_.transpose() * r);
+    z = coarse_basis_ * lambda;
+    balanced -= coarse_image_ * lambda;
+  }
+  // Weighted local Neumann solves.
+  Vector local_sum = Vector::Zero(unknowns_);
+  for (const auto& local : locals_) {
+    const Index k = static_cast<Index>(local.dofs.size());
+    if (k == 0) continue;
+    Vector rhs = Vector::Zero(k + local.null_modes);
+    for (Index a = 0; a < k; ++a) rhs[a] = local.weights[a] * balanced[local.dofs[static_cast<std::size_t>(a)]];
+    const Vector x = local.neumann.solve(rhs);
+    for (Index a = 0; a < k; ++a) local_sum[local.dofs[static_cast<std::size_t>(a)]] += local.weights[a] * x[a];
+  }
+  // (I - Q K) on the local part keeps the coarse component exact.
+  if (coarse_basis_.cols() > 0) {
+    Vector image;
+    K_.apply(local_sum, image);
+    local_sum -= coarse_basis_ * coarse_.solve(coarse_basis_.transpose() * image);
+  }
+  z += local_sum;
+}
+
+}  // namespace bemcontact::dd
