@@ -5,7 +5,7 @@ JOBS ?= 2
 DEMO ?= examples/contact_hertz_sphere.toml
 FUZZ_SECONDS ?= 300
 
-.PHONY: deps deps-core configure build demo test test-sanitize fuzz bench clean
+.PHONY: deps deps-core deps-mpi configure build demo test test-sanitize test-mpi fuzz bench clean
 
 # Everything the tests need (Python module, figures, VTK read-back, Gmsh), or only what the
 # library and the command need (the demo).
@@ -15,9 +15,12 @@ deps:
 deps-core:
 	@bash scripts/install-deps.sh --core
 
+deps-mpi:
+	@bash scripts/install-deps.sh --mpi
+
 configure: deps
 	@cmake -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=Release -DBEMCONTACT_BUILD_TESTS=ON -DBEMCONTACT_BUILD_BENCH=ON \
-	  -DBEMCONTACT_REQUIRE_PYTHON=ON \
+	  -DBEMCONTACT_REQUIRE_PYTHON=ON -DBEMCONTACT_WITH_MPI=OFF \
 	  > $(BUILD_DIR).configure.log 2>&1 || (cat $(BUILD_DIR).configure.log; exit 1)
 
 build: configure
@@ -27,7 +30,7 @@ build: configure
 # shown only when the build fails.
 demo: deps-core
 	@cmake -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=Release -DBEMCONTACT_BUILD_TESTS=OFF -DBEMCONTACT_BUILD_BENCH=OFF \
-	  -DBEMCONTACT_REQUIRE_PYTHON=OFF > $(BUILD_DIR).configure.log 2>&1 \
+	  -DBEMCONTACT_REQUIRE_PYTHON=OFF -DBEMCONTACT_WITH_MPI=OFF > $(BUILD_DIR).configure.log 2>&1 \
 	  || (cat $(BUILD_DIR).configure.log; exit 1)
 	@echo "bemcontact: building the library and the command (a few minutes the first time; log in $(BUILD_DIR).build.log)"
 	@cmake --build $(BUILD_DIR) -j $(JOBS) --target bemcontact -- --no-print-directory > $(BUILD_DIR).build.log 2>&1 \
@@ -47,6 +50,17 @@ test-sanitize: deps
 	@cd $(SANITIZE_DIR) && OMP_NUM_THREADS=$(JOBS) ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 \
 	  LSAN_OPTIONS=suppressions=$(CURDIR)/scripts/lsan.supp:print_suppressions=0 \
 	  UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 ctest --output-on-failure -j $(JOBS)
+
+# Distributed runs (not needed by the two README commands): OpenMPI and PETSc, the command
+# rebuilt in the same tree with BEMCONTACT_WITH_MPI (only the MPI layer and the command
+# compile: the library is the one `make test` built), then 1- and 2-process runs compared
+# (tests/mpi/run.sh). `make test` or `make demo` afterwards rebuild the serial command.
+test-mpi: deps deps-mpi
+	@cmake -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=Release -DBEMCONTACT_BUILD_TESTS=ON -DBEMCONTACT_BUILD_BENCH=ON \
+	  -DBEMCONTACT_REQUIRE_PYTHON=ON -DBEMCONTACT_WITH_MPI=ON > $(BUILD_DIR).configure.log 2>&1 \
+	  || (cat $(BUILD_DIR).configure.log; exit 1)
+	@cmake --build $(BUILD_DIR) -j $(JOBS) --target bemcontact -- --no-print-directory
+	@bash tests/mpi/run.sh $(BUILD_DIR)/bemcontact
 
 # A bounded libFuzzer run (clang); findings are copied into tests/fuzz_regressions/.
 fuzz:

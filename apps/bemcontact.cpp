@@ -20,6 +20,9 @@
 #include "bemcontact/io/toml_reader.hpp"
 #include "bemcontact/operators/dense_lu.hpp"
 #include "bemcontact/validation/validation.hpp"
+#ifdef BEMCONTACT_WITH_MPI
+#include "bemcontact/parallel/session.hpp"
+#endif
 
 #ifndef BEMCONTACT_EXAMPLES_DIR
 #define BEMCONTACT_EXAMPLES_DIR "examples"
@@ -60,6 +63,9 @@ void print_written(const std::string& output_dir, const io::OutputDirectory& out
 int command_run(const std::string& input, const std::string& output_dir, bool quiet, driver::RunOptions options,
                 bool mesh_only) {
   const std::string text = io::read_problem_text(input);
+  // Under mpirun every process solves its share; the root alone prints and writes.
+  const bool root = options.parallel.distribution.root();
+  quiet = quiet || !root;
   options.progress = make_progress(quiet);
   if (!quiet && !mesh_only)
     options.notice = [](const std::string& line) {
@@ -67,6 +73,7 @@ int command_run(const std::string& input, const std::string& output_dir, bool qu
       std::fflush(stdout);
     };
   const auto output = mesh_only ? driver::mesh_problem(text, input, options) : driver::run_problem(text, input, options);
+  if (!root) return output.solver_failure.empty() ? ok : solver_failed;
   for (const auto& warning : output.warnings) std::fprintf(stderr, "bemcontact: warning: %s\n", warning.c_str());
   output.files.commit(output_dir);
   if (!output.solver_failure.empty()) {
@@ -251,7 +258,30 @@ int main(int argc, char** argv) {
   }
   if (threads > 0) omp_set_num_threads(threads);
   operators::use_single_threaded_blas();
+#ifdef BEMCONTACT_WITH_MPI
+  const parallel::MpiSession session;
+  run_options.parallel = session.decomposition_run();
+  const bool distributed = session.size() > 1;
+  // Input and geometry errors arise alike on every process (each reads the whole file): the
+  // root reports them. A failure on one process ends all of them (the others would wait for
+  // it in the next sum).
+  const auto report_on_root = [&](auto&& print) {
+    if (session.rank() == 0) print();
+  };
+  const auto end_all = [&](int code) {
+    if (distributed) session.abort(code);
+    return code;
+  };
+#else
+  const bool distributed = false;
+  const auto report_on_root = [](auto&& print) { print(); };
+  const auto end_all = [](int code) { return code; };
+#endif
   try {
+    if (distributed && !*run)
+      throw InputError(SourceLocation{input, 0, ""}, "only `run` works on several processes (mpirun -n N); run `" +
+                                             std::string(*mesh ? "mesh" : *validate ? "validate" : "plot") +
+                                             "` on one process");
     for (const auto& assignment : assignments) io::add_parameter_override(run_options.overrides, assignment);
     run_options.limits.max_memory_bytes = max_memory_gb * 1e9;
     if (*run) return command_run(input, output_dir, quiet, run_options, false);
@@ -270,17 +300,17 @@ int main(int argc, char** argv) {
       return run_python_module("bemcontact.plot", arguments);
     }
   } catch (const InputError& e) {
-    std::fprintf(stderr, "bemcontact: error: %s\n", e.what());
+    report_on_root([&] { std::fprintf(stderr, "bemcontact: error: %s\n", e.what()); });
     return bad_input;
   } catch (const GeometryError& e) {
-    std::fprintf(stderr, "bemcontact: geometry error in %s: %s\n", input.c_str(), e.what());
+    report_on_root([&] { std::fprintf(stderr, "bemcontact: geometry error in %s: %s\n", input.c_str(), e.what()); });
     return bad_input;
   } catch (const SolverError& e) {
     std::fprintf(stderr, "bemcontact: solver error: %s\n", e.what());
-    return solver_failed;
+    return end_all(solver_failed);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "bemcontact: error: %s\n", e.what());
-    return internal;
+    return end_all(internal);
   }
   return ok;
 }

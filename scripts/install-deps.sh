@@ -4,6 +4,7 @@
 #                            VTK read-back, Gmsh)
 #   install-deps.sh --core   only the library and the command (`make demo`)
 #   install-deps.sh --fuzz   plus clang, libFuzzer and clang's OpenMP (`make fuzz`)
+#   install-deps.sh --mpi    plus OpenMPI and PETSc (`make test-mpi`, distributed runs)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 packages=(g++ cmake make pkg-config libeigen3-dev libopenblas-dev libhmat-oss-dev
@@ -15,6 +16,9 @@ if [ "${1:-}" != "--core" ]; then
 fi
 if [ "${1:-}" = "--fuzz" ]; then
   packages+=(clang libclang-rt-14-dev libomp-14-dev)
+fi
+if [ "${1:-}" = "--mpi" ]; then
+  packages+=(libopenmpi-dev openmpi-bin petsc-dev)
 fi
 missing=()
 for p in "${packages[@]}"; do

@@ -46,6 +46,9 @@ Matrix interface_rigid_modes(const std::vector<Vec2>& positions, AnalysisType an
 BalancingPreconditioner::BalancingPreconditioner(const InterfaceOperator& K, const Connectivity& connectivity,
                                                  AnalysisType analysis)
     : K_(K), unknowns_(connectivity.unknowns) {
+  // Each process builds the local parts of the subdomains it owns; the sums over processes
+  // (diagonals, coarse basis, products with K) make the rest identical everywhere.
+  const Distribution& distribution = K.distribution();
   const std::size_t count = K.subdomain_count();
   locals_.resize(count);
   floating_modes_.assign(count, 0);
@@ -64,16 +67,18 @@ BalancingPreconditioner::BalancingPreconditioner(const InterfaceOperator& K, con
         throw Error("BalancingPreconditioner: the conforming method's unknowns are displacements");
     }
     if (slots.empty()) continue;
-    operators[s] = K.local_operator(s);
     modes[s] = interface_rigid_modes(positions, analysis);
+    if (!distribution.owns(s)) continue;
+    operators[s] = K.local_operator(s);
     const Vector d = operators[s].diagonal().cwiseAbs();
     for (std::size_t a = 0; a < local.dofs.size(); ++a) diagonal_sum[local.dofs[a]] += d[static_cast<Index>(a)];
   }
+  distribution.sum(diagonal_sum);
   // D_s: stiffness-weighted partition of unity (every dof is shared by exactly two subdomains).
   for (std::size_t s = 0; s < count; ++s) {
     auto& local = locals_[s];
     const Index k = static_cast<Index>(local.dofs.size());
-    if (k == 0) continue;
+    if (k == 0 || !distribution.owns(s)) continue;
     local.weights.resize(k);
     const Vector d = operators[s].diagonal().cwiseAbs();
     for (Index a = 0; a < k; ++a) {
@@ -89,9 +94,12 @@ BalancingPreconditioner::BalancingPreconditioner(const InterfaceOperator& K, con
   for (std::size_t s = 0; s < count; ++s) {
     const auto& local = locals_[s];
     for (Index c = 0; c < modes[s].cols(); ++c, ++column)
-      for (std::size_t a = 0; a < local.dofs.size(); ++a)
-        W(local.dofs[a], column) += local.weights[static_cast<Index>(a)] * modes[s](static_cast<Index>(a), c);
+      if (distribution.owns(s))
+        for (std::size_t a = 0; a < local.dofs.size(); ++a)
+          W(local.dofs[a], column) += local.weights[static_cast<Index>(a)] * modes[s](static_cast<Index>(a), c);
   }
+  distribution.sum(W);
+  distribution.broadcast_from_root(W);  // the same rank and basis on every process
   if (columns > 0) {
     Eigen::ColPivHouseholderQR<Matrix> qr(W);
     qr.setThreshold(1e-10);
@@ -114,7 +122,7 @@ BalancingPreconditioner::BalancingPreconditioner(const InterfaceOperator& K, con
   for (std::size_t s = 0; s < count; ++s) {
     auto& local = locals_[s];
     const Index k = static_cast<Index>(local.dofs.size());
-    if (k == 0) continue;
+    if (k == 0 || !distribution.owns(s)) continue;
     const Matrix& Ks = operators[s];
     const double rms = Ks.norm() / std::sqrt(static_cast<double>(k));
     const Eigen::JacobiSVD<Matrix> svd(Ks * modes[s], Eigen::ComputeThinV);
@@ -136,6 +144,10 @@ BalancingPreconditioner::BalancingPreconditioner(const InterfaceOperator& K, con
       throw SolverError("the balancing preconditioner's Neumann problem of subdomain " + std::to_string(s + 1) +
                         " is singular beyond its rigid motions");
   }
+  Vector floating(static_cast<Index>(count));
+  for (std::size_t s = 0; s < count; ++s) floating[static_cast<Index>(s)] = floating_modes_[s];
+  distribution.sum(floating);
+  for (std::size_t s = 0; s < count; ++s) floating_modes_[s] = static_cast<int>(floating[static_cast<Index>(s)]);
 }
 
 void BalancingPreconditioner::apply(const Vector& r, Vector& z) const {
@@ -152,12 +164,13 @@ void BalancingPreconditioner::apply(const Vector& r, Vector& z) const {
   Vector local_sum = Vector::Zero(unknowns_);
   for (const auto& local : locals_) {
     const Index k = static_cast<Index>(local.dofs.size());
-    if (k == 0) continue;
+    if (k == 0 || local.weights.size() == 0) continue;  // not owned here
     Vector rhs = Vector::Zero(k + local.null_modes);
     for (Index a = 0; a < k; ++a) rhs[a] = local.weights[a] * balanced[local.dofs[static_cast<std::size_t>(a)]];
     const Vector x = local.neumann.solve(rhs);
     for (Index a = 0; a < k; ++a) local_sum[local.dofs[static_cast<std::size_t>(a)]] += local.weights[a] * x[a];
   }
+  K_.distribution().sum(local_sum);
   // (I - Q K) on the local part keeps the coarse component exact.
   if (coarse_basis_.cols() > 0) {
     Vector image;

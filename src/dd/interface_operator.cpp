@@ -6,17 +6,19 @@ namespace bemcontact::dd {
 
 InterfaceOperator::InterfaceOperator(const DecompositionProblem& problem,
                                      const std::vector<geometry::BoundaryMesh>& meshes,
-                                     const Connectivity& connectivity, const bem::ProgressCallback& progress)
-    : connectivity_(connectivity) {
+                                     const Connectivity& connectivity, const bem::ProgressCallback& progress,
+                                     const Distribution& distribution)
+    : connectivity_(connectivity), distribution_(distribution) {
   const std::size_t count = problem.subdomains.size();
-  bodies_.reserve(count);
+  bodies_.resize(count);
   double shear_sum = 0.0;
   for (std::size_t s = 0; s < count; ++s) {
     const auto& body = problem.subdomains[s].body;
     shear_sum += body.material.shear_modulus();
+    if (!distribution_.owns(s)) continue;
     if (progress) progress("factorisation", static_cast<double>(s) / count);
     try {
-      bodies_.emplace_back(meshes[s], body, problem.analysis, connectivity.variable_nodes[s]);
+      bodies_[s].emplace(meshes[s], body, problem.analysis, connectivity.variable_nodes[s]);
     } catch (const SolverError& error) {
       const std::string advice =
           problem.options.method == InterfaceMethod::mixed
@@ -30,12 +32,16 @@ InterfaceOperator::InterfaceOperator(const DecompositionProblem& problem,
                         "own): " + advice + ". (" + error.what() + ")");
     }
   }
-  if (problem.options.explicit_operators || problem.options.preconditioner == InterfacePreconditioner::balancing)
+  if (problem.options.explicit_operators || problem.options.preconditioner == InterfacePreconditioner::balancing) {
+    maps_.resize(count);
+    responses_.resize(count);
     for (std::size_t s = 0; s < count; ++s) {
-      const Index dofs = bodies_[s].variable_dofs();
-      maps_.push_back(bodies_[s].unit_responses());
-      responses_.push_back(bodies_[s].complementary(Vector::Zero(dofs), true));
+      if (!bodies_[s]) continue;
+      const Index dofs = bodies_[s]->variable_dofs();
+      maps_[s] = bodies_[s]->unit_responses();
+      responses_[s] = bodies_[s]->complementary(Vector::Zero(dofs), true);
     }
+  }
   if (progress) progress("factorisation", 1.0);
   // Mean spacing of facing nodes along the interfaces (see the header).
   double spacing = 0.0;
@@ -71,10 +77,10 @@ Vector InterfaceOperator::residual(const Vector& y, bool with_fixed_data) const 
   Vector r = Vector::Zero(rows());
   for (std::size_t s = 0; s < bodies_.size(); ++s) {
     const auto& slots = connectivity_.slots[s];
-    if (slots.empty()) continue;
+    if (slots.empty() || !bodies_[s]) continue;
     Vector complementary;
     if (maps_.empty()) {
-      complementary = bodies_[s].complementary(subdomain_data(s, y), with_fixed_data);
+      complementary = bodies_[s]->complementary(subdomain_data(s, y), with_fixed_data);
       ++solves_;
     } else {
       complementary = maps_[s] * subdomain_data(s, y);
@@ -91,6 +97,7 @@ Vector InterfaceOperator::residual(const Vector& y, bool with_fixed_data) const 
         r.segment<2>(i) += (slot.side == 0 ? scale_ : -scale_) * value;  // u_a - u_b (IV.7, gamma_c)
     }
   }
+  distribution_.sum(r);
   return r;
 }
 
@@ -99,7 +106,7 @@ void InterfaceOperator::apply(const Vector& y, Vector& ky) const { ky = residual
 Vector InterfaceOperator::right_hand_side() const { return -residual(Vector::Zero(rows()), true); }
 
 Matrix InterfaceOperator::local_operator(std::size_t s) const {
-  if (maps_.empty()) throw Error("InterfaceOperator: no explicit interface maps");
+  if (maps_.empty() || !bodies_[s]) throw Error("InterfaceOperator: no explicit interface map of this subdomain here");
   const auto& slots = connectivity_.slots[s];
   const Index k = 2 * static_cast<Index>(slots.size());
   Matrix local = maps_[s].topLeftCorner(k, k);
@@ -115,14 +122,15 @@ Matrix InterfaceOperator::local_operator(std::size_t s) const {
 }
 
 bem::BoundarySolution InterfaceOperator::subdomain_solution(std::size_t s, const Vector& y) const {
-  return bodies_[s].solve(subdomain_data(s, y), true);
+  return bodies_[s]->solve(subdomain_data(s, y), true);
 }
 
 std::size_t InterfaceOperator::memory_bytes() const {
   std::size_t bytes = 0;
   for (const auto& body : bodies_) {
-    const std::size_t n = 2 * static_cast<std::size_t>(body.mesh().node_count());
-    bytes += sizeof(double) * (n * n + n * static_cast<std::size_t>(body.variable_dofs()) + 2 * n);
+    if (!body) continue;
+    const std::size_t n = 2 * static_cast<std::size_t>(body->mesh().node_count());
+    bytes += sizeof(double) * (n * n + n * static_cast<std::size_t>(body->variable_dofs()) + 2 * n);
   }
   for (const auto& map : maps_) bytes += sizeof(double) * static_cast<std::size_t>(map.size());
   return bytes;

@@ -1,6 +1,7 @@
 #include "bemcontact/dd/solver.hpp"
 
 #include <chrono>
+#include <cmath>
 #include <memory>
 
 #include "bemcontact/bem/resultants.hpp"
@@ -61,7 +62,46 @@ std::vector<InterfaceJump> interface_jumps(const Connectivity& connectivity,
   return jumps;
 }
 
-DecompositionResult solve_decomposition(const DecompositionProblem& problem, const bem::ProgressCallback& progress) {
+namespace {
+
+// Boundary displacements and tractions of every subdomain, and the condition estimates,
+// summed over the processes (each fills the subdomains it owns).
+void share_boundary_solutions(const Distribution& distribution, std::vector<SubdomainResult>& subdomains) {
+  if (!distribution.sum_over_processes) return;
+  Index size = 0;
+  for (const auto& sub : subdomains) size += 4 * sub.mesh.node_count() + 1;
+  Vector packed = Vector::Zero(size);
+  Index at = 0;
+  for (std::size_t s = 0; s < subdomains.size(); ++s) {
+    const Index n = subdomains[s].mesh.node_count();
+    if (distribution.owns(s)) {
+      for (Index i = 0; i < n; ++i) {
+        packed.segment<2>(at + 4 * i) = subdomains[s].boundary.displacement[i];
+        packed.segment<2>(at + 4 * i + 2) = subdomains[s].boundary.traction[i];
+      }
+      packed[at + 4 * n] = subdomains[s].reciprocal_condition;
+    }
+    at += 4 * n + 1;
+  }
+  distribution.sum(packed);
+  at = 0;
+  for (auto& sub : subdomains) {
+    const Index n = sub.mesh.node_count();
+    sub.boundary.displacement.resize(static_cast<std::size_t>(n));
+    sub.boundary.traction.resize(static_cast<std::size_t>(n));
+    for (Index i = 0; i < n; ++i) {
+      sub.boundary.displacement[i] = packed.segment<2>(at + 4 * i);
+      sub.boundary.traction[i] = packed.segment<2>(at + 4 * i + 2);
+    }
+    sub.reciprocal_condition = packed[at + 4 * n];
+    at += 4 * n + 1;
+  }
+}
+
+}  // namespace
+
+DecompositionResult solve_decomposition(const DecompositionProblem& problem, const bem::ProgressCallback& progress,
+                                        const ParallelRun& parallel) {
   if (problem.subdomains.empty()) throw Error("solve_decomposition: no subdomains");
   if (problem.options.preconditioner == InterfacePreconditioner::balancing &&
       problem.options.method != InterfaceMethod::conforming)
@@ -75,9 +115,19 @@ DecompositionResult solve_decomposition(const DecompositionProblem& problem, con
   result.interface_unknowns = result.connectivity.unknowns;
   clock.lap("mesh and interfaces");
 
-  const InterfaceOperator K(problem, meshes, result.connectivity, progress);
+  Distribution distribution = parallel.distribution;
+  if (distribution.size > 1 && distribution.owner.empty()) {
+    std::vector<double> costs;
+    for (const auto& mesh : meshes) costs.push_back(std::pow(2.0 * static_cast<double>(mesh.node_count()), 3));
+    distribution.owner = assign_subdomains(costs, distribution.size);
+  }
+  result.processes = distribution.size;
+  result.owner = distribution.owner.empty() ? std::vector<int>(meshes.size(), 0) : distribution.owner;
+  const InterfaceOperator K(problem, meshes, result.connectivity, progress, distribution);
   result.displacement_scale = K.displacement_scale();
-  result.factor_memory_bytes = K.memory_bytes();
+  double memory = static_cast<double>(K.memory_bytes());
+  distribution.sum(&memory, 1);
+  result.factor_memory_bytes = static_cast<std::size_t>(memory);
   clock.lap("assembly and factorisation");
 
   const Vector F = K.right_hand_side();  // Alg IV.2
@@ -100,7 +150,8 @@ DecompositionResult solve_decomposition(const DecompositionProblem& problem, con
       progress("gmres", std::min(1.0, static_cast<double>(iteration) / std::max(1, options.max_iterations)));
     };
   if (K.rows() > 0) {
-    result.gmres = operators::gmres(K, F, options, Vector(), monitor, preconditioner.get());  // Alg IV.4
+    result.gmres = parallel.krylov ? parallel.krylov(K, F, options, monitor, preconditioner.get())
+                                   : operators::gmres(K, F, options, Vector(), monitor, preconditioner.get());  // Alg IV.4
   } else {
     result.gmres.x = Vector();
     result.gmres.status = operators::GmresStatus::converged;
@@ -114,17 +165,26 @@ DecompositionResult solve_decomposition(const DecompositionProblem& problem, con
     SubdomainResult sub;
     sub.name = problem.subdomains[s].body.name;
     sub.mesh = meshes[s];
-    sub.boundary = K.subdomain_solution(s, result.gmres.x);
-    sub.reciprocal_condition = K.body(s).reciprocal_condition();
+    if (distribution.owns(s)) {
+      sub.boundary = K.subdomain_solution(s, result.gmres.x);
+      sub.reciprocal_condition = K.body(s).reciprocal_condition();
+    }
+    result.subdomains.push_back(std::move(sub));
+  }
+  share_boundary_solutions(distribution, result.subdomains);
+  for (std::size_t s = 0; s < problem.subdomains.size(); ++s) {
+    auto& sub = result.subdomains[s];
     sub.boundary.stress = bem::boundary_stresses(sub.mesh, problem.analysis, problem.subdomains[s].body.material,
                                                  sub.boundary);
     sub.boundary.resultants =
         bem::boundary_resultants(sub.mesh, sub.boundary, problem.subdomains[s].body, problem.analysis);
-    result.subdomains.push_back(std::move(sub));
   }
   result.jumps = interface_jumps(result.connectivity, result.subdomains);
-  result.subdomain_solves = K.solves() + static_cast<long>(problem.subdomains.size());
+  double solves = static_cast<double>(K.solves());
+  distribution.sum(&solves, 1);
+  result.subdomain_solves = static_cast<long>(solves) + static_cast<long>(problem.subdomains.size());
   clock.lap("recovery and boundary stress");
+  if (!distribution.root()) return result;  // the root evaluates the interior points and writes
 
   bool any_interior = false;
   for (std::size_t s = 0; s < problem.subdomains.size(); ++s) {

@@ -151,7 +151,7 @@ RunOutput run_decomposition(std::string_view text, const std::string& file_name,
   const auto file = read_checked(io::parse_decomposition, text, file_name, options, output);
   for (const auto& subdomain : file.problem.subdomains)
     add_geometry_warnings(output.warnings, subdomain.body, "subdomain '" + subdomain.body.name + "'");
-  const auto result = dd::solve_decomposition(file.problem, options.progress);
+  const auto result = dd::solve_decomposition(file.problem, options.progress, options.parallel);
   for (const auto& subdomain : result.subdomains)
     add_mesh_warnings(output.warnings, subdomain.mesh, "subdomain '" + subdomain.name + "'");
   auto summary = summary_envelope("decomposition", "run", text, file_name, file.problem.title, file.problem.analysis);
@@ -189,6 +189,7 @@ RunOutput run_decomposition(std::string_view text, const std::string& file_name,
   std::string& report = output.report;
   append(report, "%s\n  %zu subdomains, method %s, %ld interface unknowns\n", file.problem.title.c_str(),
          result.subdomains.size(), dd::to_string(result.method), static_cast<long>(result.interface_unknowns));
+  if (result.processes > 1) append(report, "  %d processes (MPI), PETSc GMRES\n", result.processes);
   append(report, "  GMRES(%d), preconditioner %s: %d iterations, relative residual %.3g\n",
          dd::effective_restart(file.problem.options, result.interface_unknowns),
          dd::to_string(result.preconditioner), result.gmres.iterations, result.gmres.relative_residual);
@@ -340,7 +341,13 @@ ProblemKind problem_kind(std::string_view text) {
 
 RunOutput run_problem(std::string_view text, const std::string& file_name, const RunOptions& options) {
   RunOutput output;
-  switch (problem_kind(text)) {
+  const ProblemKind kind = problem_kind(text);
+  if (options.parallel.distribution.size > 1 && kind != ProblemKind::decomposition)
+    throw InputError(SourceLocation{file_name, 0, ""},
+                     "runs on several processes (mpirun -n " + std::to_string(options.parallel.distribution.size) +
+                         ") serve decomposition files ([[subdomain]] tables); run this " +
+                         (kind == ProblemKind::contact ? "contact" : "one-body") + " file on one process");
+  switch (kind) {
     case ProblemKind::decomposition: output = run_decomposition(text, file_name, options); break;
     case ProblemKind::contact: output = run_contact(text, file_name, options); break;
     case ProblemKind::body: output = run_body(text, file_name, options); break;

@@ -124,7 +124,8 @@ nlohmann::json decomposition_summary_json(const dd::DecompositionProblem& proble
                     {"graded_toward_vertices", mesh_transitions_json(sub.mesh)},
                     {"boundary_resultants", resultants_json(sub.boundary.resultants, problem.analysis)},
                     {"material", {{"E", material.young_modulus}, {"nu", material.poisson_ratio}}},
-                    {"reciprocal_condition", sub.reciprocal_condition}});
+                    {"reciprocal_condition", sub.reciprocal_condition},
+                    {"process", s < result.owner.size() ? result.owner[s] : 0}});
   }
   j["subdomains"] = subs;
   nlohmann::json interfaces = nlohmann::json::array();
@@ -154,6 +155,7 @@ nlohmann::json decomposition_summary_json(const dd::DecompositionProblem& proble
     j["displacement_nodes"] = problem.options.displacement_nodes;
   j["explicit_operators"] = problem.options.explicit_operators;
   j["subdomain_solves"] = result.subdomain_solves;
+  j["processes"] = result.processes;
   j["factor_memory_bytes"] = result.factor_memory_bytes;
   j["timings"] = timings_json(result.timings);
   return j;

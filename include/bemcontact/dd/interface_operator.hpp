@@ -17,9 +17,11 @@
 // Euclidean residual ignores one of them. mu / h is the size of S on the finest mode the
 // mesh carries; on the strips of IV.5 it gives the fewest iterations of the scales tried
 // (mu/L, 0.3, 3 and 10 times mu/h; L the geometry size).
+#include <optional>
 #include <vector>
 
 #include "bemcontact/bem/factored_body.hpp"
+#include "bemcontact/dd/distribution.hpp"
 #include "bemcontact/dd/interface.hpp"
 #include "bemcontact/operators/linear_operator.hpp"
 
@@ -27,9 +29,11 @@ namespace bemcontact::dd {
 
 class InterfaceOperator : public operators::LinearOperator {
  public:
-  // Assembles and factors every subdomain (the expensive part); progress as "factorisation".
+  // Assembles and factors every subdomain this process owns (the expensive part); progress
+  // as "factorisation". Products and residuals are summed over the processes.
   InterfaceOperator(const DecompositionProblem& problem, const std::vector<geometry::BoundaryMesh>& meshes,
-                    const Connectivity& connectivity, const bem::ProgressCallback& progress = {});
+                    const Connectivity& connectivity, const bem::ProgressCallback& progress = {},
+                    const Distribution& distribution = {});
 
   Index rows() const override { return connectivity_.unknowns; }
   Index cols() const override { return connectivity_.unknowns; }
@@ -40,25 +44,27 @@ class InterfaceOperator : public operators::LinearOperator {
   Vector residual(const Vector& y, bool with_fixed_data) const;
   // The variable data of subdomain s for interface unknowns y (FactoredBody's order).
   Vector subdomain_data(std::size_t s, const Vector& y) const;
-  // The full boundary solution of subdomain s for interface unknowns y.
+  // The full boundary solution of an owned subdomain s for interface unknowns y.
   bem::BoundarySolution subdomain_solution(std::size_t s, const Vector& y) const;
+  const Distribution& distribution() const { return distribution_; }
 
   // Subdomain s's explicit interface map in the units of the unknowns and residuals (the
   // contribution R_s^T K_s R_s of s to K); needs explicit maps.
   Matrix local_operator(std::size_t s) const;
 
   double displacement_scale() const { return scale_; }
-  const bem::FactoredBody& body(std::size_t s) const { return bodies_[s]; }
+  const bem::FactoredBody& body(std::size_t s) const { return *bodies_[s]; }  // owned only
   std::size_t subdomain_count() const { return bodies_.size(); }
-  // Number of subdomain solves done by apply/residual so far (for reports).
+  // Number of subdomain solves done by apply/residual so far on this process (for reports).
   long solves() const { return solves_; }
-  // Bytes held by the factored subdomains (LU factors, right-hand-side columns and, with
-  // explicit_operators, the interface maps).
+  // Bytes held by this process's factored subdomains (LU factors, right-hand-side columns
+  // and, with explicit_operators, the interface maps).
   std::size_t memory_bytes() const;
 
  private:
   const Connectivity& connectivity_;
-  std::vector<bem::FactoredBody> bodies_;
+  Distribution distribution_;
+  std::vector<std::optional<bem::FactoredBody>> bodies_;  // empty where another process owns it
   // explicit_operators: per subdomain, complementary field = maps_[s] * data + responses_[s]
   // (the response to the subdomain's own data).
   std::vector<Matrix> maps_;

@@ -8,6 +8,7 @@
 
 #include "bemcontact/bem/progress.hpp"
 #include "bemcontact/bem/solution.hpp"
+#include "bemcontact/dd/distribution.hpp"
 #include "bemcontact/dd/interface.hpp"
 #include "bemcontact/operators/gmres.hpp"
 
@@ -45,7 +46,9 @@ struct DecompositionResult {
   Index interface_unknowns = 0;
   double displacement_scale = 1.0;
   long subdomain_solves = 0;
-  std::size_t factor_memory_bytes = 0;
+  std::size_t factor_memory_bytes = 0;  // over all processes
+  int processes = 1;
+  std::vector<int> owner;  // per subdomain, its process
   bem::PhaseTimings timings;
   bool converged() const { return gmres.converged(); }
 };
@@ -59,7 +62,14 @@ std::vector<InterfaceJump> interface_jumps(const Connectivity& connectivity,
 // and the subdomain solutions of the last iterate. Input and geometry errors throw
 // InputError / GeometryError; a subdomain left free to move by its interface conditions
 // throws SolverError naming it and suggesting another method.
+//
+// With `parallel` spread over several processes (parallel.distribution.size > 1), every
+// process calls this with the same problem: subdomains are assigned by their n^3 cost, each
+// process factors and solves its own, the interface problem is solved by parallel.krylov,
+// and every process ends with every subdomain's boundary solution; interior points are
+// evaluated on the root process only (the one that writes the outputs).
 DecompositionResult solve_decomposition(const DecompositionProblem& problem,
-                                        const bem::ProgressCallback& progress = {});
+                                        const bem::ProgressCallback& progress = {},
+                                        const ParallelRun& parallel = {});
 
 }  // namespace bemcontact::dd

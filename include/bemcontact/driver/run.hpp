@@ -10,6 +10,7 @@
 
 #include "bemcontact/bem/progress.hpp"
 #include "bemcontact/core/limits.hpp"
+#include "bemcontact/dd/distribution.hpp"
 #include "bemcontact/io/output_directory.hpp"
 #include "bemcontact/io/parameter_overrides.hpp"
 
@@ -25,6 +26,10 @@ struct RunOptions {
   ResourceLimits limits;
   // Told, before anything is solved, the run's estimate (resource_check.hpp: describe).
   std::function<void(const std::string&)> notice;
+  // Under mpirun (parallel/session.hpp): this process's place and the Krylov solver. Only
+  // decomposition files run on several processes; every process returns the same RunOutput
+  // summary, and only the root's files are whole (the root writes them).
+  dd::ParallelRun parallel;
 };
 
 struct RunOutput {
