@@ -206,11 +206,19 @@ operators::HMatrix CompressedBoundarySystem::assemble_system(const operators::HM
   return operators::HMatrix(points, points, entries, options, what);
 }
 
-Vector CompressedBoundarySystem::apply_h_minus_g(const Vector& u, const Vector& p) const {
+Matrix CompressedBoundarySystem::apply_h_minus_g(const Matrix& U, const Matrix& P) const {
   const Index n = mesh_.node_count();
-  Vector y = influence_.apply(influence_input(u, -p));
-  for (Index i = 0; i < n; ++i) y.segment<2>(2 * i) += diagonal_[i] * u.segment<2>(2 * i);
+  Matrix x(4 * n, U.cols());
+  for (Index j = 0; j < U.cols(); ++j) x.col(j) = influence_input(U.col(j), -P.col(j));
+  Matrix y = influence_.apply(x);
+  for (Index i = 0; i < n; ++i) y.middleRows<2>(2 * i) += diagonal_[i] * U.middleRows<2>(2 * i);
   return y;
+}
+
+Matrix CompressedBoundarySystem::boundary_rhs(const Matrix& U, const Matrix& P) const {
+  if (U.rows() != 2 * mesh_.node_count() || P.rows() != U.rows() || P.cols() != U.cols())
+    throw Error("CompressedBoundarySystem: boundary values of the wrong size");
+  return -apply_h_minus_g(U, P);
 }
 
 Vector CompressedBoundarySystem::prescribed_rhs() const {
@@ -224,7 +232,7 @@ Vector CompressedBoundarySystem::prescribed_rhs() const {
     p.segment<2>(2 * i) = conditions_[i].frame * p_frame;
   }
   Vector b(dofs + static_cast<Index>(constraints_.size()));
-  b.head(dofs) = -apply_h_minus_g(u, p);  // G p - H u
+  b.head(dofs) = boundary_rhs(u, p);  // G p - H u
   for (std::size_t k = 0; k < constraints_.size(); ++k) b[dofs + static_cast<Index>(k)] = constraints_[k].value;
   return b;
 }

@@ -1,12 +1,43 @@
 #include "bemcontact/bem/factored_body.hpp"
 
+#include <limits>
+
+#include "bemcontact/bem/compressed_system.hpp"
 #include "bemcontact/core/error.hpp"
 
 namespace bemcontact::bem {
 
+// Heap-held so that the system's references to the mesh and the integrator survive moves.
+struct FactoredBody::Compressed {
+  geometry::BoundaryMesh mesh;
+  ElementIntegrator integrator;
+  CompressedBoundarySystem system;
+  Compressed(const geometry::BoundaryMesh& m, AnalysisType type, const Material& material,
+             const std::vector<NodeCondition>& conditions, const std::vector<ConstraintEquation>& constraints,
+             const OperatorChoice& choice, const std::string& what)
+      : mesh(m),
+        integrator(type, material),
+        system(mesh, integrator, conditions, constraints, operators::HMatrixOptions{choice.accuracy}, what) {}
+};
+
+FactoredBody::FactoredBody(FactoredBody&&) noexcept = default;
+FactoredBody& FactoredBody::operator=(FactoredBody&&) noexcept = default;
+FactoredBody::~FactoredBody() = default;
+
+double FactoredBody::reciprocal_condition() const {
+  return compressed_ ? std::numeric_limits<double>::quiet_NaN() : lu_.reciprocal_condition();
+}
+
+void FactoredBody::solve_in_place(Matrix& rhs) const {
+  if (compressed_)
+    compressed_->system.solve_in_place(rhs);
+  else
+    lu_.solve_in_place(rhs);
+}
+
 FactoredBody::FactoredBody(const geometry::BoundaryMesh& mesh, const BodyDefinition& body, AnalysisType type,
                            std::vector<VariableNode> variable_nodes, const ProgressCallback& progress,
-                           std::vector<PointConstraint> variable_constraints)
+                           std::vector<PointConstraint> variable_constraints, const OperatorChoice& choice)
     : mesh_(mesh), variable_(std::move(variable_nodes)), variable_constraints_(static_cast<Index>(variable_constraints.size())) {
   conditions_ = resolve_node_conditions(mesh_, body, type);
   for (const auto& v : variable_) {
@@ -27,6 +58,12 @@ FactoredBody::FactoredBody(const geometry::BoundaryMesh& mesh, const BodyDefinit
     constrained.constraints.push_back(std::move(constraint));
   }
   constraints_ = resolve_point_constraints(mesh_, constrained, conditions_);
+  const std::string what = "the boundary element system of body '" + body.name + "'";
+  const Index unknowns = 2 * mesh_.node_count() + static_cast<Index>(constraints_.size());
+  if (use_compressed_operator(choice, type, unknowns)) {
+    build_compressed(body, type, choice, what);
+    return;
+  }
   const ElementIntegrator integrator(type, body.material);
   auto matrices = assemble_influence_matrices(mesh_, integrator, progress);
   auto system = build_boundary_system(matrices, conditions_, constraints_);
@@ -73,7 +110,51 @@ FactoredBody::FactoredBody(const geometry::BoundaryMesh& mesh, const BodyDefinit
   }
   for (Index i = 0; i < mesh_.node_count(); ++i)
     if (conditions_[i].on_axis) variable_rhs_.row(2 * i).setZero();
-  lu_ = operators::DenseLU(std::move(system.A), "the boundary element system of body '" + body.name + "'");
+  lu_ = operators::DenseLU(std::move(system.A), what);
+}
+
+void FactoredBody::build_compressed(const BodyDefinition& body, AnalysisType type, const OperatorChoice& choice,
+                                    const std::string& what) {
+  compressed_ = std::make_unique<Compressed>(mesh_, type, body.material, conditions_, constraints_, choice, what);
+  const auto& system = compressed_->system;
+  const Index n = mesh_.node_count(), dofs = 2 * n, rows = system.size();
+  int groups = 1;
+  for (const auto& c : conditions_) groups = std::max(groups, c.load_group + 1);
+  // Each load group's prescribed values (in their frames) as global components.
+  Matrix U = Matrix::Zero(dofs, groups), P = Matrix::Zero(dofs, groups);
+  for (Index i = 0; i < n; ++i) {
+    Vec2 u_frame = Vec2::Zero(), p_frame = Vec2::Zero();
+    for (int c = 0; c < 2; ++c)
+      (conditions_[i].kind[c] == ConditionKind::displacement ? u_frame : p_frame)[c] = conditions_[i].value[c];
+    U.block<2, 1>(2 * i, conditions_[i].load_group) = conditions_[i].frame * u_frame;
+    P.block<2, 1>(2 * i, conditions_[i].load_group) = conditions_[i].frame * p_frame;
+  }
+  const Matrix group_b = system.boundary_rhs(U, P);
+  fixed_rhs_ = system.rhs();
+  for (int g = 0; g < groups; ++g) {
+    Vector b = Vector::Zero(rows);
+    b.head(dofs) = group_b.col(g);
+    if (g == 0) b.tail(rows - dofs) = fixed_rhs_.tail(rows - dofs);
+    group_rhs_.push_back(std::move(b));
+  }
+  // A unit datum at a variable dof: -H e_d (displacement) or G e_d (traction); variable
+  // nodes are in the global frame.
+  const Index columns = variable_dofs();
+  Matrix unit_u = Matrix::Zero(dofs, columns), unit_p = Matrix::Zero(dofs, columns);
+  for (std::size_t k = 0; k < variable_.size(); ++k)
+    for (int c = 0; c < 2; ++c) {
+      const Index col = 2 * static_cast<Index>(k) + c;
+      (variable_[k].kind == ConditionKind::displacement ? unit_u : unit_p)(2 * variable_[k].node + c, col) = 1.0;
+    }
+  variable_rhs_ = Matrix::Zero(rows, columns);
+  variable_rhs_.topRows(dofs) = system.boundary_rhs(unit_u, unit_p);
+  const Index first_variable = static_cast<Index>(constraints_.size()) - variable_constraints_;
+  for (Index q = 0; q < variable_constraints_; ++q) {
+    variable_rhs_(dofs + first_variable + q, 2 * static_cast<Index>(variable_.size()) + q) = 1.0;
+    fixed_rhs_[dofs + first_variable + q] = 0.0;
+    group_rhs_[0][dofs + first_variable + q] = 0.0;
+  }
+  compressed_->system.factorize();
 }
 
 Matrix FactoredBody::solve_unknowns(const Matrix& variable_data, bool with_fixed_data) const {
@@ -81,7 +162,7 @@ Matrix FactoredBody::solve_unknowns(const Matrix& variable_data, bool with_fixed
     throw Error("FactoredBody: expected " + std::to_string(variable_dofs()) + " variable data");
   Matrix rhs = variable_rhs_ * variable_data;
   if (with_fixed_data) rhs.colwise() += fixed_rhs_;
-  lu_.solve_in_place(rhs);
+  solve_in_place(rhs);
   return rhs;
 }
 
@@ -104,7 +185,7 @@ BoundarySolution FactoredBody::solve(const Vector& variable_data, bool with_fixe
 
 Matrix FactoredBody::unit_responses() const {
   Matrix y = variable_rhs_;
-  lu_.solve_in_place(y);
+  solve_in_place(y);
   return complementary_of(y);
 }
 
@@ -139,7 +220,7 @@ Matrix FactoredBody::complementary_of(const Matrix& y) const {
 
 Vector FactoredBody::group_complementary(int group) const {
   Matrix rhs = group_rhs_.at(group);
-  lu_.solve_in_place(rhs);
+  solve_in_place(rhs);
   Vector out(variable_dofs());
   const Index n = mesh_.node_count(), first_variable = static_cast<Index>(constraints_.size()) - variable_constraints_;
   for (std::size_t k = 0; k < variable_.size(); ++k)
@@ -162,7 +243,11 @@ BoundarySolution FactoredBody::solve_with_amplitudes(const Vector& variable_data
     throw Error("FactoredBody: expected " + std::to_string(variable_dofs()) + " variable data");
   Vector rhs = variable_rhs_ * variable_data;
   for (std::size_t g = 0; g < group_rhs_.size(); ++g) rhs += amplitudes.at(g) * group_rhs_[g];
-  rhs = lu_.solve(rhs);
+  {
+    Matrix column = rhs;
+    solve_in_place(column);
+    rhs = column.col(0);
+  }
   std::vector<NodeCondition> conditions = conditions_;
   for (auto& c : conditions) c.value = {amplitudes.at(c.load_group) * c.value[0], amplitudes.at(c.load_group) * c.value[1]};
   for (std::size_t k = 0; k < variable_.size(); ++k) {

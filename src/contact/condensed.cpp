@@ -153,7 +153,8 @@ ContactModel::ContactModel(const ContactProblem& problem, const bem::ProgressCal
       };
     try {
       factored_[r] = std::make_unique<bem::FactoredBody>(regions[r].mesh, regions[r].definition, problem.analysis,
-                                                         variables[r].nodes, region_progress, pins[r]);
+                                                         variables[r].nodes, region_progress, pins[r],
+                                                         problem.operator_choice);
     } catch (const SolverError& error) {
       // The hint is for a singular region; a matrix that is not finite has another cause.
       if (std::string(error.what()).find("is singular") == std::string::npos) throw;

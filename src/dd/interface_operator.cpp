@@ -18,7 +18,8 @@ InterfaceOperator::InterfaceOperator(const DecompositionProblem& problem,
     if (!distribution_.owns(s)) continue;
     if (progress) progress("factorisation", static_cast<double>(s) / count);
     try {
-      bodies_[s].emplace(meshes[s], body, problem.analysis, connectivity.variable_nodes[s]);
+      bodies_[s].emplace(meshes[s], body, problem.analysis, connectivity.variable_nodes[s], bem::ProgressCallback{},
+                         std::vector<bem::PointConstraint>{}, problem.operator_choice);
     } catch (const SolverError& error) {
       const std::string advice =
           problem.options.method == InterfaceMethod::mixed

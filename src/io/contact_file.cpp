@@ -26,7 +26,7 @@ constexpr double kPi = 3.141592653589793;
 const std::vector<std::string>& solver_keys() {
   static const std::vector<std::string> keys{"increments", "algorithm", "gmres_restart", "max_gmres_cycles", "xi",
                                              "tolerance", "max_iterations", "record_steps", "adaptive",
-                                             "max_state_changes", "max_steps"};
+                                             "max_state_changes", "max_steps", "operator", "accuracy"};
   return keys;
 }
 const std::vector<std::string>& law_keys() {
@@ -361,6 +361,7 @@ void read_pairing(const TableReader& reader, contact::ContactInterface& contact)
 }
 
 void read_solver(const TableReader& reader, contact::ContactProblem& problem) {
+  problem.operator_choice = read_operator_keys(reader, problem.analysis);
   problem.increments = reader.integer_or("increments", problem.friction > 0.0 ? 16 : 1);
   if (problem.increments < 1) reader.fail("increments", "the number of load increments must be >= 1");
   if (problem.increments > 100000)
@@ -586,8 +587,15 @@ ContactFile parse_contact_problem(std::string_view text, const std::string& file
   std::optional<TableReader> single;
   if (!contact_node) {
     // Bodies without contacts: each solved on its own (its bonds included).
-    if (root.has("solver"))
-      root.fail("solver", "[solver] sets the contact solver; without [[contact]] tables it has no effect");
+    if (const toml::table* table = root.optional_table("solver", "[solver]")) {
+      // Only the operator applies: the other keys set the contact solver.
+      const TableReader solver(*table, "solver", context, root.line());
+      for (const auto& key : solver_keys())
+        if (key != "operator" && key != "accuracy" && solver.has(key))
+          solver.fail(key, "'" + key + "' sets the contact solver; without [[contact]] tables it has no effect");
+      solver.check_keys(solver_keys(), "the [solver] table");
+      problem.operator_choice = read_operator_keys(solver, problem.analysis);
+    }
     read_force_loads(root, context, problem);
   } else if (problem.mesh.discontinuous) {
     // Measured on the Hertz ball: p0 +0.54 % against +0.02 % with continuous elements (the

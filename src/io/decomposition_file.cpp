@@ -19,7 +19,7 @@ namespace {
 const std::vector<std::string>& root_keys() {
   static const std::vector<std::string> keys{"title",  "analysis", "interpolation", "parameters",
                                              "mesh",   "output",   "decomposition", "vertices",
-                                             "subdomain"};
+                                             "subdomain", "solver"};
   return keys;
 }
 const std::vector<std::string>& decomposition_keys() {
@@ -209,6 +209,11 @@ DecompositionFile parse_decomposition(std::string_view text, const std::string& 
   read_file_header(root, context, file_name, problem.analysis, problem.title, problem.mesh.interpolation);
   result.parameters = context.parameters;
   read_options(root, context, problem.options);
+  if (const toml::table* table = root.optional_table("solver", "[solver]")) {
+    const TableReader solver(*table, "solver", context, root.line());
+    solver.check_keys(schema::solver_keys(), "the [solver] table");
+    problem.operator_choice = read_operator_keys(solver, problem.analysis);
+  }
   read_mesh_options(root, context, problem.mesh);
   if (const toml::table* table = root.optional_table("output", "[output]")) {
     const TableReader output(*table, "output", context, root.line());

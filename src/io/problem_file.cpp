@@ -60,27 +60,11 @@ std::vector<bem::InteriorPoint> read_interior(const TableReader& root, const Fil
 
 // [solver]: the operator behind the boundary element system (docs/problem-file.md).
 bem::OperatorChoice read_operator_choice(const TableReader& root, AnalysisType analysis) {
-  bem::OperatorChoice choice;
   const toml::table* table = root.optional_table("solver", "[solver]");
-  if (!table) return choice;
+  if (!table) return {};
   const TableReader solver(*table, "solver", root.context(), root.line());
   solver.check_keys(schema::solver_keys(), "the [solver] table");
-  const std::string kind = solver.choice("operator", {"auto", "dense", "compressed"}, "auto");
-  choice.kind = kind == "dense" ? bem::OperatorKind::dense
-                : kind == "compressed" ? bem::OperatorKind::compressed
-                                       : bem::OperatorKind::automatic;
-  if (choice.kind == bem::OperatorKind::compressed && analysis == AnalysisType::axisymmetric)
-    solver.fail("operator", "the compressed operator is for plane problems (plane_strain, plane_stress) only; "
-                            "use operator = \"dense\" or \"auto\" for an axisymmetric body");
-  if (const auto accuracy = solver.optional_number("accuracy")) {
-    if (!(*accuracy >= 1e-14 && *accuracy <= 1e-2))
-      solver.fail("accuracy", "the accuracy of the compressed operator (relative) must lie in [1e-14, 1e-2], found " +
-                                  format_number(*accuracy));
-    if (choice.kind == bem::OperatorKind::dense)
-      solver.fail("accuracy", "accuracy sets the compressed operator; with operator = \"dense\" it has no effect");
-    choice.accuracy = *accuracy;
-  }
-  return choice;
+  return read_operator_keys(solver, analysis);
 }
 
 }  // namespace

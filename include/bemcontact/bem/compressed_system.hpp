@@ -49,6 +49,8 @@ class CompressedBoundarySystem {
   Vector apply(const Vector& y) const;
   void solve_in_place(Matrix& rhs) const;
   void solve_transposed_in_place(Matrix& rhs) const;
+  // G P - H U (2N rows) for boundary values in global components, one set per column.
+  Matrix boundary_rhs(const Matrix& U, const Matrix& P) const;
   // || H u - G p || / max(|| G p ||, || H u ||), as boundary_equation_residual.
   double residual(const BoundarySolution& solution) const;
 
@@ -56,8 +58,8 @@ class CompressedBoundarySystem {
   double compression_ratio() const;
 
  private:
-  // [H' | G] x for x = [u; p] (global components), plus the diagonal blocks' D u.
-  Vector apply_h_minus_g(const Vector& u, const Vector& p) const;
+  // H U - G P through [H' | G] and the diagonal blocks (global components, per column).
+  Matrix apply_h_minus_g(const Matrix& U, const Matrix& P) const;
 
   // Columns are stored scaled, so that every column weighs alike in a block's relative
   // accuracy: a node's columns divided by the length of its elements (an integral over a

@@ -9,9 +9,11 @@
 // solve returns their displacements: Neumann-to-Dirichlet). All other nodes keep the
 // body's own conditions, whose data can be switched off to get the response to the
 // variable data alone.
+#include <memory>
 #include <vector>
 
 #include "bemcontact/bem/boundary_system.hpp"
+#include "bemcontact/bem/problem.hpp"
 #include "bemcontact/operators/dense_lu.hpp"
 
 namespace bemcontact::bem {
@@ -27,14 +29,21 @@ struct VariableNode {
 // reaction traction it adds at its node.
 class FactoredBody {
  public:
+  // `choice` as for one body (use_compressed_operator): a plane body from 8 000 unknowns on
+  // is held on hierarchical matrices (bem/compressed_system.hpp), factored by H-LU.
   FactoredBody(const geometry::BoundaryMesh& mesh, const BodyDefinition& body, AnalysisType type,
                std::vector<VariableNode> variable_nodes, const ProgressCallback& progress = {},
-               std::vector<PointConstraint> variable_constraints = {});
+               std::vector<PointConstraint> variable_constraints = {}, const OperatorChoice& choice = {});
+  FactoredBody(FactoredBody&&) noexcept;
+  FactoredBody& operator=(FactoredBody&&) noexcept;
+  ~FactoredBody();
 
   const geometry::BoundaryMesh& mesh() const { return mesh_; }
   const std::vector<VariableNode>& variable_nodes() const { return variable_; }
   Index variable_dofs() const { return 2 * static_cast<Index>(variable_.size()) + variable_constraints_; }
-  double reciprocal_condition() const { return lu_.reciprocal_condition(); }
+  // NaN on compressed operators (no condition estimate of an H-LU).
+  double reciprocal_condition() const;
+  bool compressed() const { return compressed_ != nullptr; }
 
   // Full boundary solution for the given data at the variable nodes (2 per node, global
   // components, in the order of variable_nodes()). with_fixed_data = false switches off
@@ -65,6 +74,9 @@ class FactoredBody {
   // The complementary rows of solved unknowns y (one column per data vector).
   Matrix complementary_of(const Matrix& y) const;
   BoundarySolution recover(const Vector& y, const Vector& variable_data, bool with_fixed_data) const;
+  void solve_in_place(Matrix& rhs) const;  // with the dense LU or the H-LU
+  void build_compressed(const BodyDefinition& body, AnalysisType type, const OperatorChoice& choice,
+                        const std::string& what);
 
   geometry::BoundaryMesh mesh_;
   std::vector<VariableNode> variable_;
@@ -74,7 +86,9 @@ class FactoredBody {
   Vector fixed_rhs_;
   std::vector<Vector> group_rhs_;  // fixed_rhs_ split by load group (they sum to it)
   Matrix variable_rhs_;  // columns: right-hand side per unit variable datum
-  operators::DenseLU lu_;
+  operators::DenseLU lu_;  // dense path
+  struct Compressed;       // the mesh copy, integrator and system it refers to
+  std::unique_ptr<Compressed> compressed_;
 };
 
 }  // namespace bemcontact::bem

@@ -132,6 +132,7 @@ struct ContactProblem {
   std::string source_file;
   AnalysisType analysis = AnalysisType::plane_strain;
   geometry::MeshOptions mesh;
+  bem::OperatorChoice operator_choice;  // every region's boundary element system
   std::vector<Body> bodies;
   std::vector<ContactInterface> contacts;
   ContactKind kind = ContactKind::unilateral;

@@ -78,6 +78,7 @@ struct DecompositionProblem {
   std::string source_file;
   AnalysisType analysis = AnalysisType::plane_strain;
   geometry::MeshOptions mesh;
+  bem::OperatorChoice operator_choice;  // every subdomain's boundary element system
   std::vector<Subdomain> subdomains;
   DecompositionOptions options;
   std::string part_word = "subdomain";  // in messages: "region" when they are a body's regions

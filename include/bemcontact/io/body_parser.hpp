@@ -51,4 +51,8 @@ void read_file_header(const TableReader& root, FileContext& context, const std::
 // interpolation get a warning.
 void read_mesh_options(const TableReader& root, FileContext& context, geometry::MeshOptions& options);
 
+// The keys `operator` ("auto" | "dense" | "compressed") and `accuracy` of a [solver]
+// table: the operator behind every body's boundary element system (docs/problem-file.md).
+bem::OperatorChoice read_operator_keys(const TableReader& solver, AnalysisType analysis);
+
 }  // namespace bemcontact::io

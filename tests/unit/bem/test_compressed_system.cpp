@@ -2,10 +2,12 @@
 // operators) and solution for solution, and its error against the accuracy parameter.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 
 #include "bemcontact/bem/analysis.hpp"
 #include "bemcontact/bem/compressed_system.hpp"
+#include "bemcontact/bem/factored_body.hpp"
 #include "support/problems.hpp"
 
 using namespace bemcontact;
@@ -114,4 +116,38 @@ TEST(CompressedSystem, SolutionFollowsTheAccuracyAsked) {
       previous = std::max(du, dp);
     }
   }
+}
+
+// A factored body (the decomposition's and the contact model's building block) on
+// compressed operators against the same body dense: its interface maps (unit responses),
+// the response to its own loads, a load group's and the whole solution, within 100 x the
+// accuracy asked. Variable nodes of both kinds: the bottom's displacements, the top's
+// tractions; the loaded end and the clamped start keep their own data.
+TEST(CompressedSystem, FactoredBodyMatchesTheDenseOne) {
+  auto problem = strip(20);
+  const auto reference = bem::solve_body(problem);  // for the mesh
+  const auto& mesh = reference.mesh;
+  std::vector<bem::VariableNode> variable;
+  for (Index node : mesh.piece_nodes[0]) variable.push_back({node, U});
+  for (Index node : mesh.piece_nodes[2]) variable.push_back({node, T});
+  bem::OperatorChoice dense_choice, compressed_choice;
+  dense_choice.kind = bem::OperatorKind::dense;
+  compressed_choice.kind = bem::OperatorKind::compressed;
+  compressed_choice.accuracy = 1e-8;
+  const bem::FactoredBody dense(mesh, problem.body, problem.analysis, variable, {}, {}, dense_choice);
+  const bem::FactoredBody compressed(mesh, problem.body, problem.analysis, variable, {}, {}, compressed_choice);
+  EXPECT_FALSE(dense.compressed());
+  EXPECT_TRUE(compressed.compressed());
+  EXPECT_TRUE(std::isnan(compressed.reciprocal_condition()));
+  const auto relative = [](const Matrix& a, const Matrix& b) { return (a - b).norm() / b.norm(); };
+  EXPECT_LT(relative(compressed.unit_responses(), dense.unit_responses()), 100.0 * compressed_choice.accuracy);
+  const Vector zero = Vector::Zero(dense.variable_dofs());
+  EXPECT_LT(relative(compressed.complementary(zero, true), dense.complementary(zero, true)),
+            100.0 * compressed_choice.accuracy);
+  ASSERT_EQ(compressed.load_groups(), dense.load_groups());
+  EXPECT_LT(relative(compressed.group_complementary(0), dense.group_complementary(0)), 100.0 * compressed_choice.accuracy);
+  Vector data = Vector::Zero(dense.variable_dofs());
+  for (Index i = 0; i < data.size(); ++i) data[i] = 1e-3 * std::sin(0.7 * static_cast<double>(i));
+  EXPECT_LT(relative_difference(compressed.solve(data), dense.solve(data), false), 100.0 * compressed_choice.accuracy);
+  EXPECT_LT(relative_difference(compressed.solve(data), dense.solve(data), true), 100.0 * compressed_choice.accuracy);
 }
