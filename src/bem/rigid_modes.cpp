@@ -1,6 +1,7 @@
 #include "bemcontact/bem/rigid_modes.hpp"
 
-#include <Eigen/SVD>
+#include "bemcontact/operators/dense_subspaces.hpp"
+
 
 namespace bemcontact::bem {
 
@@ -31,13 +32,7 @@ Matrix free_rigid_modes(const geometry::BoundaryMesh& mesh, const std::vector<No
   if (prescribed.empty()) return modes;
   Matrix restricted(static_cast<Index>(prescribed.size()), mode_count);
   for (std::size_t k = 0; k < prescribed.size(); ++k) restricted.row(static_cast<Index>(k)) = modes.row(prescribed[k]);
-  Eigen::JacobiSVD<Matrix> svd(restricted, Eigen::ComputeFullV);
-  const auto& sigma = svd.singularValues();
-  const double scale = std::max(1.0, sigma.size() > 0 ? sigma[0] : 1.0);
-  int rank = 0;
-  for (Index k = 0; k < sigma.size(); ++k) rank += sigma[k] > 1e-10 * scale;
-  const Matrix null_basis = svd.matrixV().rightCols(mode_count - rank);
-  return modes * null_basis;
+  return modes * operators::null_space(restricted, 1e-10, 1.0);
 }
 
 bool constraints_fix_only_rigid_modes(const Matrix& free_modes, const std::vector<ConstraintEquation>& constraints) {
@@ -50,8 +45,7 @@ bool constraints_fix_only_rigid_modes(const Matrix& free_modes, const std::vecto
       for (const auto& [dof, coefficient] : constraints[q].displacement_terms) sum += coefficient * free_modes(dof, m);
       c(q, m) = sum;
     }
-  Eigen::JacobiSVD<Matrix> svd(c);
-  const auto& s = svd.singularValues();
+  const Vector s = operators::singular_values(c);
   return s[k - 1] > 1e-8 * s[0];
 }
 

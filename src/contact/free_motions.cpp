@@ -1,9 +1,9 @@
 #include "bemcontact/contact/free_motions.hpp"
 
-#include <Eigen/SVD>
 
 #include "bemcontact/bem/boundary_system.hpp"
 #include "bemcontact/core/error.hpp"
+#include "bemcontact/operators/dense_subspaces.hpp"
 
 namespace bemcontact::contact {
 namespace {
@@ -23,15 +23,10 @@ const char* mode_name(Index mode, AnalysisType type) {
   return mode == 0 ? "translation x" : mode == 1 ? "translation y" : "rotation";
 }
 
-// Orthonormal basis of the null space of rows (columns of the result), within `space`.
+// Orthonormal basis of the null space of rows (columns of the result).
 Matrix null_space(const Matrix& rows, Index columns) {
   if (rows.rows() == 0) return Matrix::Identity(columns, columns);
-  Eigen::JacobiSVD<Matrix> svd(rows, Eigen::ComputeFullV);
-  const auto& sigma = svd.singularValues();
-  const double top = sigma.size() > 0 ? sigma[0] : 0.0;
-  Index rank = 0;
-  for (Index k = 0; k < sigma.size(); ++k) rank += sigma[k] > 1e-8 * std::max(top, 1e-300);
-  return svd.matrixV().rightCols(columns - rank);
+  return operators::null_space(rows, 1e-8);
 }
 
 }  // namespace

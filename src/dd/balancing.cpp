@@ -4,6 +4,7 @@
 
 #include "bemcontact/core/error.hpp"
 #include "bemcontact/dd/interface_operator.hpp"
+#include "bemcontact/operators/dense_subspaces.hpp"
 
 namespace bemcontact::dd {
 
@@ -35,10 +36,7 @@ Matrix interface_rigid_modes(const std::vector<Vec2>& positions, AnalysisType an
     z(2 * i, 2) = -d.y();
     z(2 * i + 1, 2) = d.x();
   }
-  // The rotation about the centroid is orthogonal to both translations; on one point it vanishes.
-  const Eigen::HouseholderQR<Matrix> qr(z);
-  const Index rank = z.col(2).norm() > 0.0 ? 3 : 2;
-  return qr.householderQ() * Matrix::Identity(2 * k, rank);
+  return operators::column_space(z, 1e-12);  // (on one point the rotation vanishes)
 }
 
 }  // namespace
@@ -101,22 +99,19 @@ BalancingPreconditioner::BalancingPreconditioner(const InterfaceOperator& K, con
   distribution.sum(W);
   distribution.broadcast_from_root(W);  // the same rank and basis on every process
   if (columns > 0) {
-    Eigen::ColPivHouseholderQR<Matrix> qr(W);
-    qr.setThreshold(1e-10);
-    const Index rank = qr.rank();
-    coarse_basis_ = qr.householderQ() * Matrix::Identity(unknowns_, rank);
+    coarse_basis_ = operators::column_space(W, 1e-10);
+    const Index rank = coarse_basis_.cols();
     coarse_image_.resize(unknowns_, rank);
     Vector image;
     for (Index c = 0; c < rank; ++c) {
       K.apply(coarse_basis_.col(c), image);
       coarse_image_.col(c) = image;
     }
-    const Matrix coarse_matrix = coarse_basis_.transpose() * coarse_image_;
-    coarse_.compute(coarse_matrix);
-    if (rank > 0 && !(coarse_.rcond() > 1e-14))
-      throw SolverError("the balancing preconditioner's coarse problem (the subdomains' rigid motions, " +
-                        std::to_string(rank) + " modes) is singular: some motion of the whole body is held by "
-                        "nothing; prescribe displacements that hold it");
+    if (rank > 0)
+      coarse_ = operators::DenseLU(coarse_basis_.transpose() * coarse_image_,
+                                   "the balancing preconditioner's coarse problem (the subdomains' rigid motions, " +
+                                       std::to_string(rank) + " modes; a motion of the whole body held by nothing)",
+                                   1e-14);
   }
   // Local Neumann problems, singular on a floating subdomain's rigid modes.
   for (std::size_t s = 0; s < count; ++s) {
@@ -125,24 +120,24 @@ BalancingPreconditioner::BalancingPreconditioner(const InterfaceOperator& K, con
     if (k == 0 || !distribution.owns(s)) continue;
     const Matrix& Ks = operators[s];
     const double rms = Ks.norm() / std::sqrt(static_cast<double>(k));
-    const Eigen::JacobiSVD<Matrix> svd(Ks * modes[s], Eigen::ComputeThinV);
+    const auto svd = operators::right_singular_vectors(Ks * modes[s]);
     std::vector<Index> null_columns;
-    for (Index j = 0; j < svd.singularValues().size(); ++j)
-      if (svd.singularValues()[j] < kNullModeFraction * rms) null_columns.push_back(j);
+    for (Index j = 0; j < svd.values.size(); ++j)
+      if (svd.values[j] < kNullModeFraction * rms) null_columns.push_back(j);
     const Index m = static_cast<Index>(null_columns.size());
     floating_modes_[s] = static_cast<int>(m);
     local.null_modes = m;
     Matrix system = Matrix::Zero(k + m, k + m);
     system.topLeftCorner(k, k) = Ks;
     for (Index j = 0; j < m; ++j) {
-      const Vector z = modes[s] * svd.matrixV().col(null_columns[static_cast<std::size_t>(j)]);
+      const Vector z = modes[s] * svd.V.col(null_columns[static_cast<std::size_t>(j)]);
       system.block(0, k + j, k, 1) = rms * z;
       system.block(k + j, 0, 1, k) = rms * z.transpose();
     }
-    local.neumann.compute(system);
-    if (!(local.neumann.rcond() > 1e-14))
-      throw SolverError("the balancing preconditioner's Neumann problem of subdomain " + std::to_string(s + 1) +
-                        " is singular beyond its rigid motions");
+    local.neumann = operators::DenseLU(std::move(system),
+                                       "the balancing preconditioner's Neumann problem of subdomain " +
+                                           std::to_string(s + 1) + " (singular beyond its rigid motions)",
+                                       1e-14);
   }
   Vector floating(static_cast<Index>(count));
   for (std::size_t s = 0; s < count; ++s) floating[static_cast<Index>(s)] = floating_modes_[s];

@@ -18,6 +18,7 @@
 
 #include "bemcontact/core/types.hpp"
 #include "bemcontact/dd/interface.hpp"
+#include "bemcontact/operators/dense_lu.hpp"
 #include "bemcontact/operators/linear_operator.hpp"
 
 namespace bemcontact::dd {
@@ -43,7 +44,7 @@ class BalancingPreconditioner : public operators::LinearOperator {
     std::vector<Index> dofs;              // global unknown of each local dof (R_s)
     Vector weights;                       // D_s
     Index null_modes = 0;                 // Lagrange multipliers after the k dofs
-    Eigen::PartialPivLU<Matrix> neumann;  // [K_s Z; Z^T 0] or K_s
+    operators::DenseLU neumann;           // [K_s Z; Z^T 0] or K_s
   };
   const InterfaceOperator& K_;
   Index unknowns_ = 0;
@@ -51,7 +52,7 @@ class BalancingPreconditioner : public operators::LinearOperator {
   std::vector<int> floating_modes_;
   Matrix coarse_basis_;  // W (orthonormal columns)
   Matrix coarse_image_;  // K W
-  Eigen::PartialPivLU<Matrix> coarse_;
+  operators::DenseLU coarse_;
 };
 
 }  // namespace bemcontact::dd
