@@ -18,14 +18,14 @@ import json, sys
 s = json.load(open(sys.argv[1]))
 d = s["results"]["decomposition"]
 t = d["timings"]
-print("  ".join(f"{k} {v:.2f}" for k, v in t.items()), f"| iterations {d['gmres']['iterations']}")
+print("  ".join(f"{p['name']} {p['seconds']:.2f}" for p in t["phases"]), f"| iterations {d['gmres']['iterations']}")
 PY
 }
 for problem in strips fibres; do
   for run in "1 1" "1 2" "2 1"; do
     set -- $run
     start=$(date +%s.%N)
-    OMP_NUM_THREADS=$2 mpirun -n "$1" --oversubscribe "$binary" run "$work/$problem.toml" -o "$work/out" -q
+    OMP_NUM_THREADS=$2 mpirun -n "$1" --oversubscribe --bind-to none "$binary" run "$work/$problem.toml" -o "$work/out" -q
     end=$(date +%s.%N)
     printf '%-7s processes %s threads %s: %6.2f s  ' "$problem" "$1" "$2" "$(echo "$end - $start" | bc)"
     phases "$work/out/summary.json"
