@@ -57,30 +57,54 @@ double pair_seconds(AnalysisType type, const geometry::MeshOptions& mesh) {
 double interior_pair_seconds(AnalysisType type) { return type == AnalysisType::axisymmetric ? 4.0e-6 : 0.5e-6; }
 constexpr double lu_flops_per_thread_second = 20e9;
 
-// Adds one body (region, subdomain) solved densely: assembly, factorisation, interior.
-void add_body(ResourceEstimate& estimate, const bem::BodyDefinition& body, AnalysisType type,
-              const geometry::MeshOptions& mesh, std::size_t interior_points) {
-  const std::int64_t n = body_unknowns(body, mesh);
-  const double nodes = static_cast<double>(body_nodes(body, mesh));
-  const double elements = static_cast<double>(body_elements(body));
-  estimate.unknowns = std::max(estimate.unknowns, n);
-  estimate.total_unknowns += n;
-  const double threads = std::max(1, estimate.threads);
-  const double lu_flops = 2.0 / 3.0 * std::pow(static_cast<double>(n), 3);
-  estimate.seconds += (nodes * elements * pair_seconds(type, mesh) +
-                       static_cast<double>(interior_points) * elements * interior_pair_seconds(type) +
-                       lu_flops / lu_flops_per_thread_second) /
-                      threads;
-}
-
-// A body on hierarchical matrices (plane, one body): memory and time grow as n log2 n,
-// fitted to plates with a hole at 8k-128k unknowns with the default accuracy 1e-8
-// (bench/scaling_compressed.sh; docs/problem-file.md, Limits).
+// A body on hierarchical matrices: memory and time grow as n log2 n, fitted to plates with
+// a hole at 8k-128k unknowns with the accuracy 1e-8 (bench/scaling_compressed.sh;
+// docs/problem-file.md, Limits).
 constexpr double compressed_bytes_per_nlogn = 1150.0;
 constexpr double compressed_seconds_per_nlogn = 2.0e-5;
 double n_log_n(std::int64_t unknowns) {
   const double n = static_cast<double>(std::max<std::int64_t>(unknowns, 2));
   return n * std::log2(n);
+}
+
+// One body (region, subdomain), dense or compressed as `choice` decides for its size.
+struct BodyCost {
+  std::int64_t unknowns = 0;
+  double peak_bytes = 0.0;  // while it is assembled and factored
+  double held_bytes = 0.0;  // kept factored for repeated solves (decomposition, contact)
+  double seconds = 0.0;     // assembly, factorisation, interior points (thread-seconds / threads)
+  bool compressed = false;
+  bool could_compress = false;  // dense now, but plane: operator = "compressed" applies
+};
+
+BodyCost body_cost(const bem::BodyDefinition& body, AnalysisType type, const geometry::MeshOptions& mesh,
+                   std::size_t interior_points, const bem::OperatorChoice& choice, int threads) {
+  BodyCost cost;
+  cost.unknowns = body_unknowns(body, mesh);
+  const double n = static_cast<double>(cost.unknowns);
+  const double elements = static_cast<double>(body_elements(body));
+  const double interior = static_cast<double>(interior_points) * elements * interior_pair_seconds(type);
+  const double t = std::max(1, threads);
+  cost.compressed = bem::use_compressed_operator(choice, type, cost.unknowns);
+  if (cost.compressed) {
+    cost.peak_bytes = cost.held_bytes = compressed_bytes_per_nlogn * n_log_n(cost.unknowns);
+    cost.seconds = n_log_n(cost.unknowns) * compressed_seconds_per_nlogn + interior / t;
+    return cost;
+  }
+  cost.could_compress = type != AnalysisType::axisymmetric;
+  cost.peak_bytes = dense_body_bytes(cost.unknowns);
+  cost.held_bytes = 2.0 * 8.0 * n * n;  // LU factors and right-hand-side columns
+  const double lu_flops = 2.0 / 3.0 * n * n * n;
+  cost.seconds = (static_cast<double>(body_nodes(body, mesh)) * elements * pair_seconds(type, mesh) + interior +
+                  lu_flops / lu_flops_per_thread_second) / t;
+  return cost;
+}
+
+void add_body(ResourceEstimate& estimate, const BodyCost& cost) {
+  estimate.unknowns = std::max(estimate.unknowns, cost.unknowns);
+  estimate.total_unknowns += cost.unknowns;
+  estimate.seconds += cost.seconds;
+  estimate.compressed = estimate.compressed || cost.compressed;
 }
 
 }  // namespace
@@ -115,10 +139,14 @@ void check_body(const bem::BodyDefinition& body, const std::string& what, const 
                          " (raise it with --max-elements if the machine has the memory)");
 }
 
-// `remedy`: the option that would make the run fit, if any.
-void check_memory(const ResourceEstimate& estimate, const ResourceLimits& limits, const std::string& file,
-                  const std::string& remedy = "") {
+// Over the limit: names the compressed operator when a dense plane body could use it.
+void check_memory(const ResourceEstimate& estimate, const ResourceLimits& limits, const std::string& file) {
   const double limit = limits.memory_limit_bytes();
+  const std::string remedy =
+      estimate.could_compress ? "set [solver] operator = \"compressed\" (hierarchical matrices: about " +
+                                    format_bytes(compressed_bytes_per_nlogn * n_log_n(estimate.unknowns)) +
+                                    " for the largest body), or "
+                              : "";
   if (estimate.bytes > limit)
     throw InputError(SourceLocation{file, 0, ""},
                      std::string(estimate.compressed ? "the compressed" : "the dense") +
@@ -140,31 +168,29 @@ void check_points(std::size_t points, const ResourceLimits& limits, const std::s
 ResourceEstimate estimate_resources(const bem::ProblemDefinition& problem) {
   ResourceEstimate estimate;
   estimate.threads = omp_get_max_threads();
-  add_body(estimate, problem.body, problem.analysis, problem.mesh, problem.interior_points.size());
-  estimate.bytes = dense_body_bytes(estimate.unknowns);
-  estimate.compressed = bem::use_compressed_operator(problem.operator_choice, problem.analysis, estimate.unknowns);
-  if (estimate.compressed) {
-    const double elements = static_cast<double>(body_elements(problem.body));
-    estimate.bytes = compressed_bytes_per_nlogn * n_log_n(estimate.unknowns);
-    estimate.seconds = n_log_n(estimate.unknowns) * compressed_seconds_per_nlogn +
-                       static_cast<double>(problem.interior_points.size()) * elements *
-                           interior_pair_seconds(problem.analysis) / std::max(1, estimate.threads);
-  }
+  const auto cost = body_cost(problem.body, problem.analysis, problem.mesh, problem.interior_points.size(),
+                              problem.operator_choice, estimate.threads);
+  add_body(estimate, cost);
+  estimate.bytes = cost.peak_bytes;
+  estimate.could_compress = cost.could_compress;
   return estimate;
 }
 
 ResourceEstimate estimate_resources(const dd::DecompositionProblem& problem) {
-  // Every subdomain stays factored while the interface problem is solved.
+  // Every subdomain stays factored while the interface problem is solved; one at a time is
+  // at its assembly peak.
   ResourceEstimate estimate;
   estimate.threads = omp_get_max_threads();
-  double factored = 0.0, largest = 0.0;
+  double held = 0.0, extra_peak = 0.0;
   for (const auto& subdomain : problem.subdomains) {
-    add_body(estimate, subdomain.body, problem.analysis, problem.mesh, subdomain.interior_points.size());
-    const std::int64_t n = body_unknowns(subdomain.body, problem.mesh);
-    factored += 2.0 * 8.0 * static_cast<double>(n) * static_cast<double>(n);
-    largest = std::max(largest, dense_body_bytes(n));
+    const auto cost = body_cost(subdomain.body, problem.analysis, problem.mesh, subdomain.interior_points.size(),
+                                problem.operator_choice, estimate.threads);
+    add_body(estimate, cost);
+    held += cost.held_bytes;
+    extra_peak = std::max(extra_peak, cost.peak_bytes);
+    estimate.could_compress = estimate.could_compress || cost.could_compress;
   }
-  estimate.bytes = factored + largest;
+  estimate.bytes = held + extra_peak;
   return estimate;
 }
 
@@ -173,8 +199,11 @@ ResourceEstimate estimate_resources(const contact::ContactProblem& problem) {
   estimate.threads = omp_get_max_threads();
   for (const auto& body : problem.bodies)
     for (const auto& region : body.regions) {
-      add_body(estimate, region.body, problem.analysis, problem.mesh, region.interior_points.size());
-      estimate.bytes += dense_body_bytes(body_unknowns(region.body, problem.mesh));
+      const auto cost = body_cost(region.body, problem.analysis, problem.mesh, region.interior_points.size(),
+                                  problem.operator_choice, estimate.threads);
+      add_body(estimate, cost);
+      estimate.bytes += cost.peak_bytes;
+      estimate.could_compress = estimate.could_compress || cost.could_compress;
     }
   return estimate;
 }
@@ -182,12 +211,7 @@ ResourceEstimate estimate_resources(const contact::ContactProblem& problem) {
 void check_resources(const bem::ProblemDefinition& problem, const ResourceLimits& limits) {
   check_body(problem.body, "the body", limits, problem.source_file);
   check_points(problem.interior_points.size(), limits, problem.source_file);
-  const auto estimate = estimate_resources(problem);
-  const bool could_compress = !estimate.compressed && problem.analysis != AnalysisType::axisymmetric;
-  check_memory(estimate, limits, problem.source_file,
-               could_compress ? "set [solver] operator = \"compressed\" (hierarchical matrices: about " +
-                                    format_bytes(compressed_bytes_per_nlogn * n_log_n(estimate.unknowns)) + "), or "
-                              : "");
+  check_memory(estimate_resources(problem), limits, problem.source_file);
 }
 
 void check_resources(const dd::DecompositionProblem& problem, const ResourceLimits& limits) {

@@ -21,7 +21,8 @@ struct ResourceEstimate {
   double bytes = 0.0;         // the peak of the run
   double seconds = 0.0;       // assembly, factorisation and interior points, one solve
   int threads = 1;
-  bool compressed = false;    // hierarchical matrices (bem::use_compressed_operator)
+  bool compressed = false;    // some body on hierarchical matrices (bem::use_compressed_operator)
+  bool could_compress = false;  // some dense plane body that operator = "compressed" would take
 };
 
 // One line for the terminal: "estimate: ... unknowns, about ... of memory and ... ".

@@ -5,6 +5,8 @@
 #include <cmath>
 
 #include "bemcontact/bem/analysis.hpp"
+#include "bemcontact/core/error.hpp"
+#include "bemcontact/dd/plate_strips.hpp"
 #include "bemcontact/driver/resource_check.hpp"
 #include "bemcontact/io/problem_file.hpp"
 #include "support/example_text.hpp"
@@ -62,6 +64,33 @@ TEST(ResourceEstimate, LargePlaneBodiesAreCompressedByDefault) {
   for (auto& piece : problem.body.pieces) piece.elements = 2000;
   problem.analysis = AnalysisType::axisymmetric;
   EXPECT_FALSE(estimate_resources(problem).compressed);
+}
+
+// A decomposition's subdomains (and a contact model's regions) decide as one body does: a
+// large plane subdomain is estimated compressed (n log n, not 32 n^2) under "auto", so the
+// memory check does not refuse what the run would compress; forced dense, the refusal names
+// the compressed operator.
+TEST(ResourceEstimate, LargeSubdomainsAreCompressedAndTheRefusalNamesTheOption) {
+  auto problem = dd::plate_strips({2, 6});
+  for (auto& subdomain : problem.subdomains)
+    for (auto& piece : subdomain.body.pieces) piece.elements = 2500;  // 20 008 unknowns each
+  const auto estimate = estimate_resources(problem);
+  EXPECT_TRUE(estimate.compressed);
+  const double n = static_cast<double>(estimate.unknowns);
+  EXPECT_NEAR(estimate.bytes, 3.0 * 1150.0 * n * std::log2(n), 1e-6 * estimate.bytes);  // two held + one peak
+  ResourceLimits limits;
+  limits.max_memory_bytes = 1e9;
+  EXPECT_NO_THROW(check_resources(problem, limits));
+  problem.operator_choice.kind = bem::OperatorKind::dense;
+  const auto dense = estimate_resources(problem);
+  EXPECT_FALSE(dense.compressed);
+  EXPECT_TRUE(dense.could_compress);
+  try {
+    check_resources(problem, limits);
+    ADD_FAILURE() << "a 20 000-unknown dense pair of subdomains fits in 1 GB?";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("operator = \"compressed\""), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace
