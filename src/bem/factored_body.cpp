@@ -1,11 +1,18 @@
 #include "bemcontact/bem/factored_body.hpp"
 
+#include <algorithm>
 #include <limits>
 
 #include "bemcontact/bem/compressed_system.hpp"
 #include "bemcontact/core/error.hpp"
 
 namespace bemcontact::bem {
+
+namespace {
+// Right-hand sides formed and solved this many at a time (transient memory of a batch:
+// a few 2N x 512 matrices).
+constexpr Index kColumnBatch = 512;
+}  // namespace
 
 // Heap-held so that the system's references to the mesh and the integrator survive moves.
 struct FactoredBody::Compressed {
@@ -139,15 +146,17 @@ void FactoredBody::build_compressed(const BodyDefinition& body, AnalysisType typ
   }
   // A unit datum at a variable dof: -H e_d (displacement) or G e_d (traction); variable
   // nodes are in the global frame.
-  const Index columns = variable_dofs();
-  Matrix unit_u = Matrix::Zero(dofs, columns), unit_p = Matrix::Zero(dofs, columns);
-  for (std::size_t k = 0; k < variable_.size(); ++k)
-    for (int c = 0; c < 2; ++c) {
-      const Index col = 2 * static_cast<Index>(k) + c;
-      (variable_[k].kind == ConditionKind::displacement ? unit_u : unit_p)(2 * variable_[k].node + c, col) = 1.0;
-    }
+  const Index columns = variable_dofs(), node_columns = 2 * static_cast<Index>(variable_.size());
   variable_rhs_ = Matrix::Zero(rows, columns);
-  variable_rhs_.topRows(dofs) = system.boundary_rhs(unit_u, unit_p);
+  for (Index first = 0; first < node_columns; first += kColumnBatch) {
+    const Index count = std::min(kColumnBatch, node_columns - first);
+    Matrix unit_u = Matrix::Zero(dofs, count), unit_p = Matrix::Zero(dofs, count);
+    for (Index col = first; col < first + count; ++col) {
+      const auto& v = variable_[static_cast<std::size_t>(col / 2)];
+      (v.kind == ConditionKind::displacement ? unit_u : unit_p)(2 * v.node + col % 2, col - first) = 1.0;
+    }
+    variable_rhs_.block(0, first, dofs, count) = system.boundary_rhs(unit_u, unit_p);
+  }
   const Index first_variable = static_cast<Index>(constraints_.size()) - variable_constraints_;
   for (Index q = 0; q < variable_constraints_; ++q) {
     variable_rhs_(dofs + first_variable + q, 2 * static_cast<Index>(variable_.size()) + q) = 1.0;
@@ -184,9 +193,17 @@ BoundarySolution FactoredBody::solve(const Vector& variable_data, bool with_fixe
 }
 
 Matrix FactoredBody::unit_responses() const {
-  Matrix y = variable_rhs_;
-  solve_in_place(y);
-  return complementary_of(y);
+  // In batches of columns: a whole copy of the right-hand sides (2N x variable dofs) is
+  // what the solve would otherwise add to the body's memory.
+  const Index columns = variable_dofs();
+  Matrix out(columns, columns);
+  for (Index first = 0; first < columns; first += kColumnBatch) {
+    const Index count = std::min(kColumnBatch, columns - first);
+    Matrix y = variable_rhs_.middleCols(first, count);
+    solve_in_place(y);
+    out.middleCols(first, count) = complementary_of(y);
+  }
+  return out;
 }
 
 Matrix FactoredBody::complementary_columns(const Matrix& variable_data, bool with_fixed_data) const {

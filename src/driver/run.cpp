@@ -281,10 +281,7 @@ RunOutput run_body(std::string_view text, const std::string& file_name, const Ru
   summary.results = {{"solve", {{"unknowns", result.report.unknowns},
                                 {"operator", result.report.operator_kind},
                                 {"compression_ratio", result.report.compression_ratio},
-                                {"reciprocal_condition_estimate",
-                                 std::isnan(result.report.reciprocal_condition)
-                                     ? nlohmann::json(nullptr)
-                                     : nlohmann::json(result.report.reciprocal_condition)},
+                                {"reciprocal_condition_estimate", io::condition_json(result.report.reciprocal_condition)},
                                 {"relative_residual", result.report.relative_residual},
                                 {"constraints_fix_rigid_modes_only", result.report.constraints_fix_rigid_modes_only}}},
                      {"max_boundary_displacement", max_u},

@@ -124,7 +124,7 @@ nlohmann::json decomposition_summary_json(const dd::DecompositionProblem& proble
                     {"graded_toward_vertices", mesh_transitions_json(sub.mesh)},
                     {"boundary_resultants", resultants_json(sub.boundary.resultants, problem.analysis)},
                     {"material", {{"E", material.young_modulus}, {"nu", material.poisson_ratio}}},
-                    {"reciprocal_condition", sub.reciprocal_condition},
+                    {"reciprocal_condition", condition_json(sub.reciprocal_condition)},
                     {"process", s < result.owner.size() ? result.owner[s] : 0}});
   }
   j["subdomains"] = subs;

@@ -36,9 +36,13 @@ nlohmann::json timings_json(const bem::PhaseTimings& timings) {
   return {{"phases", phases}, {"total", timings.total()}};
 }
 
+nlohmann::json condition_json(double reciprocal_condition) {
+  return std::isnan(reciprocal_condition) ? nlohmann::json(nullptr) : nlohmann::json(reciprocal_condition);
+}
+
 nlohmann::json solve_report_json(const bem::SolveReport& report) {
   return {{"unknowns", report.unknowns},
-          {"reciprocal_condition", report.reciprocal_condition},
+          {"reciprocal_condition", condition_json(report.reciprocal_condition)},
           {"relative_residual", report.relative_residual},
           {"threads", report.threads}};
 }

@@ -17,6 +17,9 @@ std::string write_json_string(const nlohmann::json& value, int indent = 2);
 nlohmann::json timings_json(const bem::PhaseTimings& timings);
 // {"unknowns", "reciprocal_condition", "relative_residual", "threads"}.
 nlohmann::json solve_report_json(const bem::SolveReport& report);
+
+// A condition estimate, or null where there is none (NaN: a compressed operator's H-LU).
+nlohmann::json condition_json(double reciprocal_condition);
 // The options actually used, defaults included: analysis, interpolation, mesh,
 // material, parameters, every boundary (elements, grading, condition), constraints,
 // interior point count, outputs.
