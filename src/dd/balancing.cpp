@@ -68,8 +68,9 @@ BalancingPreconditioner::BalancingPreconditioner(const InterfaceOperator& K, con
     modes[s] = interface_rigid_modes(positions, analysis);
     if (!distribution.owns(s)) continue;
     operators[s] = K.local_operator(s);
-    const Vector d = operators[s].diagonal().cwiseAbs();
-    for (std::size_t a = 0; a < local.dofs.size(); ++a) diagonal_sum[local.dofs[a]] += d[static_cast<Index>(a)];
+    local.weights = operators[s].diagonal().cwiseAbs();  // divided by the sums below
+    for (std::size_t a = 0; a < local.dofs.size(); ++a)
+      diagonal_sum[local.dofs[a]] += local.weights[static_cast<Index>(a)];
   }
   distribution.sum(diagonal_sum);
   // D_s: stiffness-weighted partition of unity (every dof is shared by exactly two subdomains).
@@ -77,11 +78,9 @@ BalancingPreconditioner::BalancingPreconditioner(const InterfaceOperator& K, con
     auto& local = locals_[s];
     const Index k = static_cast<Index>(local.dofs.size());
     if (k == 0 || !distribution.owns(s)) continue;
-    local.weights.resize(k);
-    const Vector d = operators[s].diagonal().cwiseAbs();
     for (Index a = 0; a < k; ++a) {
       const double total = diagonal_sum[local.dofs[static_cast<std::size_t>(a)]];
-      local.weights[a] = total > 0.0 ? d[a] / total : 0.5;
+      local.weights[a] = total > 0.0 ? local.weights[a] / total : 0.5;
     }
   }
   // Coarse space: D_s Z_s of every subdomain, an orthonormal basis of their span.

@@ -77,27 +77,6 @@ struct BodyCost {
   bool could_compress = false;  // dense now, but plane: operator = "compressed" applies
 };
 
-BodyCost body_cost_alone(const bem::BodyDefinition& body, AnalysisType type, const geometry::MeshOptions& mesh,
-                         std::size_t interior_points, const bem::OperatorChoice& choice, int threads);
-
-// Per column of a factored body's interface map (its right-hand side through [H' | G] and an
-// H-LU solve), per n log2 n: 25 s for 3 202 columns of a 16 008-unknown strip.
-constexpr double compressed_column_seconds_per_nlogn = 3.5e-8;
-
-// `interface_dofs`: the variable data of a factored body (a subdomain's interface), whose
-// right-hand sides (2N each) and map (k x k) it holds.
-BodyCost body_cost(const bem::BodyDefinition& body, AnalysisType type, const geometry::MeshOptions& mesh,
-                   std::size_t interior_points, const bem::OperatorChoice& choice, int threads,
-                   std::int64_t interface_dofs = 0) {
-  BodyCost cost = body_cost_alone(body, type, mesh, interior_points, choice, threads);
-  const double n = static_cast<double>(cost.unknowns), k = static_cast<double>(interface_dofs);
-  const double interface_bytes = 8.0 * (n * k + 2.0 * k * k);
-  cost.held_bytes += interface_bytes;
-  cost.peak_bytes += interface_bytes;
-  if (cost.compressed) cost.seconds += k * n_log_n(cost.unknowns) * compressed_column_seconds_per_nlogn;
-  return cost;
-}
-
 // The body's own solve: assembly, factorisation, interior points.
 BodyCost body_cost_alone(const bem::BodyDefinition& body, AnalysisType type, const geometry::MeshOptions& mesh,
                          std::size_t interior_points, const bem::OperatorChoice& choice, int threads) {
@@ -119,6 +98,24 @@ BodyCost body_cost_alone(const bem::BodyDefinition& body, AnalysisType type, con
   const double lu_flops = 2.0 / 3.0 * n * n * n;
   cost.seconds = (static_cast<double>(body_nodes(body, mesh)) * elements * pair_seconds(type, mesh) + interior +
                   lu_flops / lu_flops_per_thread_second) / t;
+  return cost;
+}
+
+// Per column of a factored body's interface map (its right-hand side through [H' | G] and an
+// H-LU solve), per n log2 n: 25 s for 3 202 columns of a 16 008-unknown strip.
+constexpr double compressed_column_seconds_per_nlogn = 3.5e-8;
+
+// `interface_dofs`: the variable data of a factored body (a subdomain's interface), whose
+// right-hand sides (2N each) and map (k x k) it holds.
+BodyCost body_cost(const bem::BodyDefinition& body, AnalysisType type, const geometry::MeshOptions& mesh,
+                   std::size_t interior_points, const bem::OperatorChoice& choice, int threads,
+                   std::int64_t interface_dofs = 0) {
+  BodyCost cost = body_cost_alone(body, type, mesh, interior_points, choice, threads);
+  const double n = static_cast<double>(cost.unknowns), k = static_cast<double>(interface_dofs);
+  const double interface_bytes = 8.0 * (n * k + 2.0 * k * k);
+  cost.held_bytes += interface_bytes;
+  cost.peak_bytes += interface_bytes;
+  if (cost.compressed) cost.seconds += k * n_log_n(cost.unknowns) * compressed_column_seconds_per_nlogn;
   return cost;
 }
 
