@@ -41,9 +41,13 @@ test: build
 	@cd $(BUILD_DIR) && OMP_NUM_THREADS=$(JOBS) ctest --output-on-failure -j $(JOBS)
 
 # The whole test suite again under AddressSanitizer + UndefinedBehaviorSanitizer, with
-# libstdc++'s assertions and the library's own debug checks (no NDEBUG).
+# libstdc++'s assertions and the library's own debug checks (no NDEBUG). A unity build
+# (16 sources per compiler run: the headers are parsed once per batch) takes 6 min here
+# against 10; the Release build above stays one file per run, so a missing #include still
+# fails there.
 test-sanitize: deps
 	@cmake -S . -B $(SANITIZE_DIR) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" \
+	  -DCMAKE_UNITY_BUILD=ON -DCMAKE_UNITY_BUILD_BATCH_SIZE=16 \
 	  -DBEMCONTACT_SANITIZE=ON -DBEMCONTACT_BUILD_BENCH=OFF > $(SANITIZE_DIR).configure.log 2>&1 \
 	  || (cat $(SANITIZE_DIR).configure.log; exit 1)
 	@cmake --build $(SANITIZE_DIR) -j $(JOBS) -- --no-print-directory

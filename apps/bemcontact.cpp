@@ -120,6 +120,12 @@ int run_python_module(const std::string& module, std::vector<std::string> argume
 #endif
 }
 
+std::string number_text(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", value);
+  return text;
+}
+
 std::string params_text(const validation::Record& r) {
   std::string text;
   for (const auto& [key, value] : r.params) text += (text.empty() ? "" : " ") + key + "=" + value;
@@ -127,7 +133,7 @@ std::string params_text(const validation::Record& r) {
 }
 
 int command_validate(std::vector<std::string> names, const std::vector<std::string>& skip, const std::string& json_path,
-                     const std::string& examples, bool quiet, bool list) {
+                     const validation::Context& context, bool list) {
   const auto& all = validation::cases();
   if (list) {
     for (const auto& c : all) std::printf("%-26s %-8s %s\n", c.name.c_str(), c.section.c_str(), c.description.c_str());
@@ -149,7 +155,6 @@ int command_validate(std::vector<std::string> names, const std::vector<std::stri
     }
     selected.push_back(found);
   }
-  validation::Context context{examples, make_progress(quiet)};
   json records = json::array();
   int failed = 0, total = 0;
   std::printf("%-24s %-34s %-22s %14s %14s %10s %10s  %s\n", "case", "params", "quantity", "computed", "reference",
@@ -167,6 +172,12 @@ int command_validate(std::vector<std::string> names, const std::vector<std::stri
                          {"passed", false}, {"message", e.what()}});
       continue;
     }
+    if (context.operator_kind != bem::OperatorKind::automatic)
+      for (auto& r : results)
+        if (std::none_of(r.params.begin(), r.params.end(), [](const auto& p) { return p.first == "operator"; })) {
+          r.params.emplace_back("operator", bem::to_string(context.operator_kind));
+          if (context.operator_accuracy > 0.0) r.params.emplace_back("accuracy", number_text(context.operator_accuracy));
+        }
     for (const auto& r : results) {
       const bool counted = r.comparison != validation::Comparison::report;
       total += counted;
@@ -238,6 +249,16 @@ int main(int argc, char** argv) {
   validate->add_flag("--list", list, "list the cases");
   validate->add_option("--skip", skip, "cases to leave out of a full run");
   validate->add_flag("-q,--quiet", quiet, "no progress");
+  std::string validate_operator = "auto";
+  validate->add_option("--operator", validate_operator,
+                       "the operator of every problem whose case leaves it to auto: auto, dense or compressed "
+                       "(the records then carry params.operator)")
+      ->check(CLI::IsMember({"auto", "dense", "compressed"}));
+  double validate_accuracy = 0.0;
+  auto* accuracy_option =
+      validate->add_option("--accuracy", validate_accuracy,
+                           "with --operator compressed: the compressed operator's accuracy (default: each problem's, 1e-10)")
+          ->check(CLI::Range(1e-14, 1e-2));
   std::string report_dir;
   validate->add_option("--report", report_dir, "write an HTML page with the table and one figure per case to this folder");
 
@@ -289,7 +310,17 @@ int main(int argc, char** argv) {
     if (*validate) {
       if (!report_dir.empty() && json_path.empty()) json_path = (std::filesystem::path(report_dir) / "validate.json").string();
       if (!report_dir.empty()) std::filesystem::create_directories(report_dir);
-      const int code = command_validate(cases, skip, json_path, examples, quiet, list);
+      const auto kind = validate_operator == "dense"        ? bem::OperatorKind::dense
+                        : validate_operator == "compressed" ? bem::OperatorKind::compressed
+                                                            : bem::OperatorKind::automatic;
+      if (accuracy_option->count() > 0 && kind != bem::OperatorKind::compressed)
+      {
+        std::fprintf(stderr, "bemcontact validate: --accuracy sets the compressed operator; give it with --operator "
+                             "compressed\n");
+        return bad_input;
+      }
+      const validation::Context context{examples, make_progress(quiet), kind, validate_accuracy};
+      const int code = command_validate(cases, skip, json_path, context, list);
       if (report_dir.empty() || list) return code;
       const int drawn = run_python_module("bemcontact.report", {json_path, report_dir});
       return code != ok ? code : drawn;

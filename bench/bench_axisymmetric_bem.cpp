@@ -1,5 +1,6 @@
 // Axisymmetric BEM: assembly time per element pair next to the plane (analytic) assembly
-// at equal size, 250 ... 2000 elements, and the cost of the kernels' elliptic integrals.
+// at equal size, 250 ... 2000 elements, the cost of the kernels' elliptic integrals, and the
+// whole solve dense against compressed.
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -52,6 +53,28 @@ void BM_AssemblyAxisymmetricQuadratic(benchmark::State& state) {
 BENCHMARK(BM_AssemblyAxisymmetricQuadratic)->Arg(124)->Arg(248)->Arg(500)->Arg(1000)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_AssemblyPlane)->Arg(250)->Arg(500)->Arg(1000)->Arg(2000)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_AssemblyAxisymmetric)->Arg(250)->Arg(500)->Arg(1000)->Arg(2000)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// The whole axisymmetric solve dense against compressed (accuracy 1e-10, the default) on
+// the hollow section: where the compressed operator starts to pay (the ring kernels cost
+// 6x the plane ones per pair, so earlier than in plane). Counters: unknowns, stored share.
+void BM_WholeSolveAxisymmetric(benchmark::State& state) {
+  auto problem = hollow_section(static_cast<int>(state.range(0)), AnalysisType::axisymmetric);
+  problem.operator_choice.kind = state.range(1) != 0 ? bem::OperatorKind::compressed : bem::OperatorKind::dense;
+  bem::BodyResult result;
+  for (auto _ : state) {
+    result = bem::solve_body(problem);
+    benchmark::DoNotOptimize(result.boundary.displacement.data());
+  }
+  state.counters["unknowns"] = static_cast<double>(result.report.unknowns);
+  state.counters["stored_fraction"] = state.range(1) != 0 ? result.report.compression_ratio : 1.0;
+}
+BENCHMARK(BM_WholeSolveAxisymmetric)
+    ->Args({1000, 0})->Args({1000, 1})->Args({2000, 0})->Args({2000, 1})->Args({4000, 0})->Args({4000, 1})
+    ->Args({8000, 1})
+    ->ArgNames({"elements", "compressed"})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->Iterations(1);
 
 // One evaluation of K and E (arithmetic-geometric mean), the unit the kernels pay per
 // quadrature point; compare with ns_per_pair above to see the elliptic share.

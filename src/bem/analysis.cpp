@@ -56,16 +56,6 @@ geometry::BoundaryMesh mesh_body(const ProblemDefinition& problem) {
   return geometry::mesh_boundary(body.pieces, effective_mesh_options(problem));
 }
 
-namespace {
-
-std::string point_label(const Vec2& p) {
-  std::ostringstream out;
-  out << "(" << p.x() << ", " << p.y() << ")";
-  return out.str();
-}
-
-}  // namespace
-
 BodyResult solve_body(const ProblemDefinition& problem, const ProgressCallback& progress) {
   BodyResult result;
   PhaseClock clock(result.timings);
@@ -79,7 +69,7 @@ BodyResult solve_body(const ProblemDefinition& problem, const ProgressCallback& 
   if (!selection.listed_outside.empty()) {
     const auto& p = *selection.listed_outside.front();
     throw InputError(p.where.file.empty() ? SourceLocation{problem.source_file, 0, "interior.points"} : p.where,
-                     "point " + point_label(p.position) + " is not inside the body");
+                     "point " + point_text(p.position) + " is not inside the body");
   }
   clock.lap("mesh");
 

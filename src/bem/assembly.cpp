@@ -44,6 +44,42 @@ Mat2 radial_expansion_stress(const Material& material) {
   return sigma;
 }
 
+}  // namespace
+
+std::array<Vec2, geometry::kMaxElementNodes> radial_expansion_traction(const Material& material,
+                                                                        const geometry::BoundaryElement& element) {
+  const Mat2 sigma = radial_expansion_stress(material);
+  std::array<Vec2, geometry::kMaxElementNodes> traction;
+  for (int a = 0; a < element.node_count; ++a)
+    traction[a] = sigma * (element.arc ? element.normal_at(element.node_fraction[a]) : element.normal);
+  return traction;
+}
+
+std::vector<Mat2> diagonal_blocks_from_exact_fields(const geometry::BoundaryMesh& mesh, AnalysisType type,
+                                                    const Matrix& translation_sums, const Vector& radial_residual) {
+  const Index n = mesh.node_count();
+  std::vector<Mat2> diagonal(n);
+  if (type != AnalysisType::axisymmetric) {
+    for (Index i = 0; i < n; ++i) diagonal[i] = -translation_sums.middleRows<2>(2 * i);
+    return diagonal;
+  }
+  // The radial expansion's traction is taken on the elements (sigma n_e, constant on a
+  // straight one), not interpolated from the nodes' true normals: on the polygon the field
+  // then satisfies every row exactly. Nodal tractions on curved pieces would leave an
+  // O(h^2 / R^2) residual everywhere, which the division by r_i blows up near the axis (and
+  // which the axis rows, r_i = 0, cannot absorb at all).
+  for (Index i = 0; i < n; ++i) {
+    diagonal[i].col(1) = -translation_sums.block<2, 1>(2 * i, 1);
+    if (node_on_axis(mesh, i))
+      diagonal[i].col(0).setZero();  // multiplies u_r = 0
+    else
+      diagonal[i].col(0) = radial_residual.segment<2>(2 * i) / mesh.nodes[i].position.x();
+  }
+  return diagonal;
+}
+
+namespace {
+
 // Sum over all node columns of each 2-row block, by columns (contiguous in memory); the
 // diagonal blocks are still zero here, so this is the sum over j != i.
 Matrix column_sums(const Matrix& h) {
@@ -60,36 +96,6 @@ Matrix column_sums(const Matrix& h) {
     }
   }
   return sums;
-}
-
-// radial_traction_integral: int U p over the boundary for the traction p = sigma n_e of the
-// radial expansion on each straight element (axisymmetry only).
-void set_diagonal_blocks(const geometry::BoundaryMesh& mesh, const ElementIntegrator& integrator,
-                         const Vector& radial_traction_integral, InfluenceMatrices& m) {
-  const Index n = mesh.node_count();
-  const Matrix off_diagonal = column_sums(m.H);  // (2n x 2): sum over j != i of H_ij
-  if (integrator.type() != AnalysisType::axisymmetric) {
-    // Rigid translations give zero traction: sum_j H_ij = 0 (section I.4.2, remark).
-    for (Index i = 0; i < n; ++i) m.H.block<2, 2>(2 * i, 2 * i) = -off_diagonal.middleRows<2>(2 * i);
-    return;
-  }
-  // Axial translation (only rigid mode of axisymmetry, section II.3.3) gives the z column;
-  // the radial expansion u_r = r gives the r column: H_ii[:, r] r_i = (int U p - H' u)_i.
-  // Its traction is taken on the straight elements (sigma n_e, constant on each), not
-  // interpolated from the nodes' true normals: on the polygon the field then satisfies every
-  // row exactly. Nodal tractions on curved pieces would leave an O(h^2 / R^2) residual
-  // everywhere, which the division by r_i blows up near the axis (and which the axis rows,
-  // r_i = 0, cannot absorb at all).
-  Vector radial_u = Vector::Zero(2 * n);
-  for (Index j = 0; j < n; ++j) radial_u[2 * j] = mesh.nodes[j].position.x();
-  const Vector residual = radial_traction_integral - m.H * radial_u;  // H_ii still zero
-  for (Index i = 0; i < n; ++i) {
-    m.H.block<2, 1>(2 * i, 2 * i + 1) = -off_diagonal.block<2, 1>(2 * i, 1);
-    if (node_on_axis(mesh, i))
-      m.H.block<2, 1>(2 * i, 2 * i).setZero();  // multiplies u_r = 0
-    else
-      m.H.block<2, 1>(2 * i, 2 * i) = residual.segment<2>(2 * i) / mesh.nodes[i].position.x();
-  }
 }
 
 // Elements in groups that share no node, so that each group can fill its columns of H and
@@ -134,7 +140,6 @@ InfluenceMatrices assemble_influence_matrices(const geometry::BoundaryMesh& mesh
   std::atomic<Index> elements_done{0};
   ParallelErrors errors;
   const bool axisymmetric = integrator.type() == AnalysisType::axisymmetric;
-  const Mat2 sigma = radial_expansion_stress(integrator.material());
   Vector radial_traction_integral = Vector::Zero(axisymmetric ? 2 * n : 0);
   // Element by element, all sources: each element fills the columns of its nodes from top
   // to bottom (contiguous in column-major storage). Elements of one colour share no node,
@@ -154,12 +159,7 @@ InfluenceMatrices assemble_influence_matrices(const geometry::BoundaryMesh& mesh
         if (errors.failed()) continue;
         errors.run([&] {
           const auto& element = mesh.elements[group[first + k]];
-          // The radial expansion's traction at the element's nodes: sigma n_e on a straight
-          // element; on a curved one it follows the normal, through its nodal values (O(h^3),
-          // as the interpolation of the element).
-          std::array<Vec2, geometry::kMaxElementNodes> nodal_traction;
-          for (int a = 0; a < element.node_count; ++a)
-            nodal_traction[a] = sigma * (element.arc ? element.normal_at(element.node_fraction[a]) : element.normal);
+          const auto nodal_traction = radial_expansion_traction(integrator.material(), element);
           for (Index i = 0; i < n; ++i) {
             int source_node = -1;
             for (int a = 0; a < element.node_count; ++a)
@@ -184,7 +184,15 @@ InfluenceMatrices assemble_influence_matrices(const geometry::BoundaryMesh& mesh
         for (std::size_t k = 0; k < count; ++k) radial_traction_integral += contributions.col(static_cast<Index>(k));
     }
   }
-  set_diagonal_blocks(mesh, integrator, radial_traction_integral, m);
+  const Matrix translation_sums = column_sums(m.H);  // the diagonal blocks are still zero
+  Vector radial_residual;
+  if (axisymmetric) {
+    Vector radial_u = Vector::Zero(2 * n);
+    for (Index j = 0; j < n; ++j) radial_u[2 * j] = mesh.nodes[j].position.x();
+    radial_residual = radial_traction_integral - m.H * radial_u;
+  }
+  const auto diagonal = diagonal_blocks_from_exact_fields(mesh, integrator.type(), translation_sums, radial_residual);
+  for (Index i = 0; i < n; ++i) m.H.block<2, 2>(2 * i, 2 * i) = diagonal[i];
   if (progress) progress("assembly", 1.0);
   return m;
 }

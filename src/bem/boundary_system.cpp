@@ -9,12 +9,6 @@
 namespace bemcontact::bem {
 namespace {
 
-std::string point_text(const Vec2& p) {
-  std::ostringstream out;
-  out << "(" << p.x() << ", " << p.y() << ")";
-  return out.str();
-}
-
 const char* component_key(ConditionFrame frame, ConditionKind kind, int c) {
   static const char* global_keys[2][2] = {{"u1", "u2"}, {"t1", "t2"}};
   static const char* local_keys[2][2] = {{"un", "ut"}, {"tn", "tt"}};

@@ -1,6 +1,7 @@
 #include "bemcontact/bem/compressed_system.hpp"
 
 #include <algorithm>
+#include <array>
 
 #include "bemcontact/core/error.hpp"
 
@@ -67,16 +68,25 @@ void InfluenceBlocks::evaluate(const std::vector<Index>& row_nodes, const std::v
   }
 }
 
-namespace {
-
-// Axisymmetric diagonal blocks need the radial-expansion traction integral, not rigid translations.
-std::vector<NodeCondition> plane_only(const ElementIntegrator& integrator, std::vector<NodeCondition> conditions) {
-  if (integrator.type() == AnalysisType::axisymmetric)
-    throw Error("the compressed operator is for plane problems only");
-  return conditions;
+Matrix InfluenceBlocks::radial_traction(const std::vector<Index>& row_nodes, const std::vector<Index>& elements) const {
+  const Index rows = static_cast<Index>(row_nodes.size()), cols = static_cast<Index>(elements.size());
+  Matrix out = Matrix::Zero(2 * rows, cols);
+  std::vector<std::array<Vec2, geometry::kMaxElementNodes>> tractions(elements.size());
+  for (Index c = 0; c < cols; ++c) tractions[c] = radial_expansion_traction(integrator_.material(), mesh_.elements[elements[c]]);
+#pragma omp parallel for schedule(dynamic, 4) if (rows * cols > 4096)
+  for (Index r = 0; r < rows; ++r) {
+    const Index i = row_nodes[r];
+    for (Index c = 0; c < cols; ++c) {
+      const auto& element = mesh_.elements[elements[c]];
+      int source_node = -1;
+      for (int a = 0; a < element.node_count; ++a)
+        if (element.nodes[a] == i) source_node = a;
+      const auto influence = integrator_.influence(mesh_.nodes[i].position, element, source_node);
+      for (int a = 0; a < element.node_count; ++a) out.block<2, 1>(2 * r, c) += influence.G[a] * tractions[c][a];
+    }
+  }
+  return out;
 }
-
-}  // namespace
 
 CompressedBoundarySystem::CompressedBoundarySystem(const geometry::BoundaryMesh& mesh, const ElementIntegrator& integrator,
                                                    std::vector<NodeCondition> conditions,
@@ -85,11 +95,12 @@ CompressedBoundarySystem::CompressedBoundarySystem(const geometry::BoundaryMesh&
     : mesh_(mesh),
       traction_scale_(integrator.material().shear_modulus()),
       node_scale_(Vector::Zero(mesh.node_count())),
-      conditions_(plane_only(integrator, std::move(conditions))),
+      conditions_(std::move(conditions)),
       constraints_(std::move(constraints)),
+      type_(integrator.type()),
       blocks_(mesh, integrator),
       influence_(assemble_influence(options, "the influence matrices of " + what)),
-      diagonal_(diagonal_blocks()),
+      diagonal_(diagonal_blocks(options, what)),
       system_(assemble_system(options, what)),
       rhs_(prescribed_rhs()) {}
 
@@ -129,18 +140,53 @@ operators::HMatrix CompressedBoundarySystem::assemble_influence(const operators:
   return operators::HMatrix(row_points, col_points, entries, options, what);
 }
 
-std::vector<Mat2> CompressedBoundarySystem::diagonal_blocks() const {
-  // Rigid translations give no traction: H_ii = -sum_{j != i} H_ij (section I.4.2, remark).
+std::vector<Mat2> CompressedBoundarySystem::diagonal_blocks(const operators::HMatrixOptions& options,
+                                                             const std::string& what) const {
+  // H' times the rigid translations (columns 0, 1) and, in axisymmetry, the radial
+  // expansion u_r = r (column 2), in one product.
   const Index n = mesh_.node_count();
-  Matrix translations = Matrix::Zero(4 * n, 2);
+  const bool axisymmetric = type_ == AnalysisType::axisymmetric;
+  Matrix fields = Matrix::Zero(4 * n, axisymmetric ? 3 : 2);
   for (Index j = 0; j < n; ++j) {
-    translations(2 * j, 0) = 1.0 / node_scale_[j];
-    translations(2 * j + 1, 1) = 1.0 / node_scale_[j];
+    fields(2 * j, 0) = fields(2 * j + 1, 1) = 1.0 / node_scale_[j];
+    if (axisymmetric) fields(2 * j, 2) = mesh_.nodes[j].position.x() / node_scale_[j];
   }
-  const Matrix sums = influence_.apply(translations);
-  std::vector<Mat2> diagonal(n);
-  for (Index i = 0; i < n; ++i) diagonal[i] = -sums.middleRows<2>(2 * i);
-  return diagonal;
+  const Matrix products = influence_.apply(fields);
+  Vector radial_residual;
+  if (axisymmetric) radial_residual = radial_traction_integral(options, what) - products.col(2);
+  return diagonal_blocks_from_exact_fields(mesh_, type_, products.leftCols(2), radial_residual);
+}
+
+Vector CompressedBoundarySystem::radial_traction_integral(const operators::HMatrixOptions& options,
+                                                          const std::string& what) const {
+  // sum_e int_e U p_e as the product of a compressed (2N x elements) matrix with the
+  // elements' lengths; its columns are stored divided by the length, like those of H and G.
+  const Index n = mesh_.node_count(), elements = mesh_.element_count();
+  std::vector<Vec2> row_points(2 * n), col_points(elements);
+  for (Index i = 0; i < n; ++i) row_points[2 * i] = row_points[2 * i + 1] = mesh_.nodes[i].position;
+  Matrix lengths(elements, 1);
+  for (Index e = 0; e < elements; ++e) {
+    const auto& element = mesh_.elements[e];
+    Vec2 centre = Vec2::Zero();
+    for (int a = 0; a < element.node_count; ++a) centre += mesh_.nodes[element.nodes[a]].position;
+    col_points[e] = centre / element.node_count;
+    lengths(e, 0) = element.length;
+  }
+  const auto entries = [this, &lengths](const std::vector<Index>& rows, const std::vector<Index>& cols, double* out) {
+    std::vector<Index> row_nodes(rows.size());
+    for (std::size_t r = 0; r < rows.size(); ++r) row_nodes[r] = rows[r] / 2;
+    row_nodes = unique_nodes(std::move(row_nodes));
+    const Matrix values = blocks_.radial_traction(row_nodes, cols);
+    const NodeIndex row_index(row_nodes);
+    const Index m = static_cast<Index>(rows.size());
+    for (std::size_t c = 0; c < cols.size(); ++c)
+      for (Index r = 0; r < m; ++r)
+        out[r + static_cast<Index>(c) * m] =
+            values(2 * row_index.find(rows[r] / 2) + rows[r] % 2, static_cast<Index>(c)) / lengths(cols[c], 0);
+  };
+  const operators::HMatrix integrals(row_points, col_points, entries, options,
+                                     "the radial expansion's traction integrals of " + what);
+  return integrals.apply(lengths).col(0);
 }
 
 operators::HMatrix CompressedBoundarySystem::assemble_system(const operators::HMatrixOptions& options,
@@ -192,6 +238,10 @@ operators::HMatrix CompressedBoundarySystem::assemble_system(const operators::HM
           continue;
         }
         const Index i = row / 2;
+        if (row % 2 == 0 && conditions_[i].on_axis) {  // p_r = 0 (u_r = 0) on the axis, as build_boundary_system
+          column[rr] = col == row ? scale : 0.0;
+          continue;
+        }
         const Index lr = 2 * row_index.find(i) + row % 2;
         if (traction_column) {
           column[rr] = -scale * (G(lr, lc) * weights[0] + G(lr, lc + 1) * weights[1]);
@@ -218,7 +268,10 @@ Matrix CompressedBoundarySystem::apply_h_minus_g(const Matrix& U, const Matrix& 
 Matrix CompressedBoundarySystem::boundary_rhs(const Matrix& U, const Matrix& P) const {
   if (U.rows() != 2 * mesh_.node_count() || P.rows() != U.rows() || P.cols() != U.cols())
     throw Error("CompressedBoundarySystem: boundary values of the wrong size");
-  return -apply_h_minus_g(U, P);
+  Matrix rhs = -apply_h_minus_g(U, P);
+  for (Index i = 0; i < mesh_.node_count(); ++i)
+    if (conditions_[i].on_axis) rhs.row(2 * i).setZero();  // the axis rows' equation p_r = 0
+  return rhs;
 }
 
 Vector CompressedBoundarySystem::prescribed_rhs() const {
@@ -294,6 +347,8 @@ double CompressedBoundarySystem::residual(const BoundarySolution& solution) cons
   x.col(1) = influence_input(Vector::Zero(2 * n), p);
   Matrix y = influence_.apply(x);
   for (Index i = 0; i < n; ++i) y.block<2, 1>(2 * i, 0) += diagonal_[i] * u.segment<2>(2 * i);
+  for (Index i = 0; i < n; ++i)
+    if (conditions_[i].on_axis) y.row(2 * i).setZero();  // degenerate, replaced in the system
   const Vector r = y.col(0) - y.col(1);
   const double scale = std::max(y.col(0).norm(), y.col(1).norm());
   return scale > 0.0 ? r.norm() / scale : r.norm();
@@ -319,8 +374,7 @@ const char* to_string(OperatorKind kind) {
 
 bool use_compressed_operator(const OperatorChoice& choice, AnalysisType analysis, Index unknowns) {
   if (choice.kind == OperatorKind::compressed) return true;
-  return choice.kind == OperatorKind::automatic && analysis != AnalysisType::axisymmetric &&
-         unknowns >= OperatorChoice::automatic_threshold;
+  return choice.kind == OperatorKind::automatic && unknowns >= OperatorChoice::automatic_threshold;
 }
 
 }  // namespace bemcontact::bem

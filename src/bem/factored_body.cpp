@@ -153,6 +153,7 @@ void FactoredBody::build_compressed(const BodyDefinition& body, AnalysisType typ
     Matrix unit_u = Matrix::Zero(dofs, count), unit_p = Matrix::Zero(dofs, count);
     for (Index col = first; col < first + count; ++col) {
       const auto& v = variable_[static_cast<std::size_t>(col / 2)];
+      if (conditions_[v.node].on_axis && col % 2 == 0) continue;  // radial datum fixed at 0
       (v.kind == ConditionKind::displacement ? unit_u : unit_p)(2 * v.node + col % 2, col - first) = 1.0;
     }
     variable_rhs_.block(0, first, dofs, count) = system.boundary_rhs(unit_u, unit_p);

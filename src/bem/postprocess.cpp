@@ -40,12 +40,6 @@ bool stress_is_finite(const StressTensor& s) {
   return std::isfinite(s.s11) && std::isfinite(s.s22) && std::isfinite(s.s12) && std::isfinite(s.s33);
 }
 
-std::string point_label(const Vec2& p) {
-  std::ostringstream out;
-  out << "(" << p.x() << ", " << p.y() << ")";
-  return out.str();
-}
-
 }  // namespace
 
 std::vector<StressTensor> boundary_stresses(const geometry::BoundaryMesh& mesh, AnalysisType type,
@@ -124,7 +118,7 @@ std::vector<StressTensor> boundary_stresses(const geometry::BoundaryMesh& mesh, 
   for (Index i = 0; i < mesh.node_count(); ++i)
     if (!solution.displacement[i].allFinite() || !solution.traction[i].allFinite() || !stress_is_finite(stresses[i]))
       throw SolverError("the boundary values at node " + std::to_string(i) + " " +
-                        point_label(mesh.nodes[i].position) + " are not finite (check the data for extreme values)");
+                        point_text(mesh.nodes[i].position) + " are not finite (check the data for extreme values)");
   return stresses;
 }
 
@@ -356,7 +350,7 @@ InteriorSolution interior_values(const geometry::BoundaryMesh& mesh, const Eleme
   errors.rethrow();
   for (std::size_t i = 0; i < result.points.size(); ++i)
     if (!result.displacement[i].allFinite() || !stress_is_finite(result.stress[i]))
-      throw SolverError("the interior values at " + point_label(result.points[i]) +
+      throw SolverError("the interior values at " + point_text(result.points[i]) +
                         " are not finite: the boundary solution broke down or the point lies on the boundary");
   return result;
 }

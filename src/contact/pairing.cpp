@@ -17,13 +17,6 @@
 namespace bemcontact::contact {
 namespace {
 
-std::string point_text(const Vec2& p) {
-  std::ostringstream out;
-  out.precision(6);
-  out << "(" << p.x() << ", " << p.y() << ")";
-  return out.str();
-}
-
 // Fraction along the piece of a point on (or near) it.
 double fraction_on_piece(const geometry::BoundaryPiece& piece, const Vec2& point) {
   if (piece.shape == geometry::PieceShape::line) {

@@ -1,5 +1,7 @@
 #include "bemcontact/core/types.hpp"
 
+#include <sstream>
+
 namespace bemcontact {
 
 const char* to_string(AnalysisType type) {
@@ -18,6 +20,13 @@ const char* to_string(Interpolation interpolation) {
     case Interpolation::quadratic: return "quadratic";
   }
   return "?";
+}
+
+std::string point_text(const Vec2& p) {
+  std::ostringstream out;
+  out.precision(6);
+  out << "(" << p.x() << ", " << p.y() << ")";
+  return out.str();
 }
 
 double kernel_poisson_ratio(AnalysisType type, const Material& material) {

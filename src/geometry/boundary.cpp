@@ -11,12 +11,6 @@ namespace {
 
 constexpr double two_pi = 2.0 * std::numbers::pi;
 
-std::string point_text(const Vec2& p) {
-  std::ostringstream out;
-  out << "(" << p.x() << ", " << p.y() << ")";
-  return out.str();
-}
-
 std::string piece_text(const BoundaryPiece& piece) {
   std::string text = "boundary '" + piece.name + "'";
   if (piece.where.line > 0) text += " (" + piece.where.describe() + ")";
@@ -34,7 +28,6 @@ bool segments_cross(const Vec2& p1, const Vec2& p2, const Vec2& q1, const Vec2& 
   const double u = cross(qp, r) / denom;
   return t > tol && t < 1.0 - tol && u > tol && u < 1.0 - tol;
 }
-
 
 // The polyline through every element end (and 32 points at least per arc) of each piece.
 struct Chord {
@@ -206,7 +199,6 @@ double arc_sweep(const BoundaryPiece& piece) {
 }
 
 double arc_radius(const BoundaryPiece& piece) { return (piece.start - piece.center).norm(); }
-
 
 double piece_length(const BoundaryPiece& piece) {
   if (piece.shape == PieceShape::line) return (piece.end - piece.start).norm();

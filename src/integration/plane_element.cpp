@@ -15,7 +15,7 @@ namespace bemcontact::integration {
 
 namespace {
 
-constexpr double pi = std::numbers::pi;
+using std::numbers::pi;
 
 // Local 2x2 block [[tt, tn], [nt, nn]] in the (t, n) frame.
 struct Local {

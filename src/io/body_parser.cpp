@@ -703,15 +703,12 @@ void read_mesh_options(const TableReader& root, FileContext& context, geometry::
   }
 }
 
-bem::OperatorChoice read_operator_keys(const TableReader& solver, AnalysisType analysis) {
+bem::OperatorChoice read_operator_keys(const TableReader& solver) {
   bem::OperatorChoice choice;
   const std::string kind = solver.choice("operator", {"auto", "dense", "compressed"}, "auto");
   choice.kind = kind == "dense" ? bem::OperatorKind::dense
                 : kind == "compressed" ? bem::OperatorKind::compressed
                                        : bem::OperatorKind::automatic;
-  if (choice.kind == bem::OperatorKind::compressed && analysis == AnalysisType::axisymmetric)
-    solver.fail("operator", "the compressed operator is for plane problems (plane_strain, plane_stress) only; "
-                            "use operator = \"dense\" or \"auto\" for an axisymmetric body");
   if (const auto accuracy = solver.optional_number("accuracy")) {
     if (!(*accuracy >= 1e-14 && *accuracy <= 1e-2))
       solver.fail("accuracy", "the accuracy of the compressed operator (relative) must lie in [1e-14, 1e-2], found " +

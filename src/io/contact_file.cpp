@@ -361,7 +361,7 @@ void read_pairing(const TableReader& reader, contact::ContactInterface& contact)
 }
 
 void read_solver(const TableReader& reader, contact::ContactProblem& problem) {
-  problem.operator_choice = read_operator_keys(reader, problem.analysis);
+  problem.operator_choice = read_operator_keys(reader);
   problem.increments = reader.integer_or("increments", problem.friction > 0.0 ? 16 : 1);
   if (problem.increments < 1) reader.fail("increments", "the number of load increments must be >= 1");
   if (problem.increments > 100000)
@@ -594,7 +594,7 @@ ContactFile parse_contact_problem(std::string_view text, const std::string& file
         if (key != "operator" && key != "accuracy" && solver.has(key))
           solver.fail(key, "'" + key + "' sets the contact solver; without [[contact]] tables it has no effect");
       solver.check_keys(solver_keys(), "the [solver] table");
-      problem.operator_choice = read_operator_keys(solver, problem.analysis);
+      problem.operator_choice = read_operator_keys(solver);
     }
     read_force_loads(root, context, problem);
   } else if (problem.mesh.discontinuous) {

@@ -212,7 +212,7 @@ DecompositionFile parse_decomposition(std::string_view text, const std::string& 
   if (const toml::table* table = root.optional_table("solver", "[solver]")) {
     const TableReader solver(*table, "solver", context, root.line());
     solver.check_keys(schema::solver_keys(), "the [solver] table");
-    problem.operator_choice = read_operator_keys(solver, problem.analysis);
+    problem.operator_choice = read_operator_keys(solver);
   }
   read_mesh_options(root, context, problem.mesh);
   if (const toml::table* table = root.optional_table("output", "[output]")) {

@@ -59,12 +59,12 @@ std::vector<bem::InteriorPoint> read_interior(const TableReader& root, const Fil
 }
 
 // [solver]: the operator behind the boundary element system (docs/problem-file.md).
-bem::OperatorChoice read_operator_choice(const TableReader& root, AnalysisType analysis) {
+bem::OperatorChoice read_operator_choice(const TableReader& root) {
   const toml::table* table = root.optional_table("solver", "[solver]");
   if (!table) return {};
   const TableReader solver(*table, "solver", root.context(), root.line());
   solver.check_keys(schema::solver_keys(), "the [solver] table");
-  return read_operator_keys(solver, analysis);
+  return read_operator_keys(solver);
 }
 
 }  // namespace
@@ -92,7 +92,7 @@ ProblemFile parse_problem(std::string_view text, const std::string& file_name, c
   problem.interior_points = read_interior(root, context);
 
   read_mesh_options(root, context, problem.mesh);
-  problem.operator_choice = read_operator_choice(root, problem.analysis);
+  problem.operator_choice = read_operator_choice(root);
   if (const toml::table* table = root.optional_table("output", "[output]")) {
     const TableReader output(*table, "output", context, root.line());
     output.check_keys(schema::output_keys(), "the [output] table");

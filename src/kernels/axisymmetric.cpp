@@ -9,7 +9,7 @@
 namespace bemcontact::kernels {
 namespace {
 
-constexpr double pi = std::numbers::pi;
+using std::numbers::pi;
 
 // Polynomial in u = (1 - cos theta)/2 of degree D <= 4, the numerators of the 3D kernels on
 // the ring; the degree is a template parameter so products cost only what they need.

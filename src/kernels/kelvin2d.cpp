@@ -11,7 +11,7 @@ namespace bemcontact::kernels {
 
 namespace {
 
-constexpr double pi = std::numbers::pi;
+using std::numbers::pi;
 
 inline double delta(int i, int j) { return i == j ? 1.0 : 0.0; }
 

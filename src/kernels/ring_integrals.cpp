@@ -8,7 +8,7 @@
 namespace bemcontact::kernels {
 namespace {
 
-constexpr double pi = std::numbers::pi;
+using std::numbers::pi;
 constexpr int kMaxJ = kRingMaxP + 1;
 
 // beta_j = int_0^{pi/2} cos^{2j} psi dpsi = (pi/2) (2j-1)!! / (2j)!!  (the value of H at m = 0).

@@ -9,7 +9,7 @@
 namespace bemcontact::reference {
 namespace {
 
-constexpr double pi = std::numbers::pi;
+using std::numbers::pi;
 
 // 1 - zeta atan(1/zeta), without the cancellation of the direct form at large depth:
 // there it is the series sum_k (-1)^(k+1) / ((2k+1) zeta^(2k)), whose terms fall by

@@ -21,7 +21,7 @@ std::vector<Record> run_cylinder_tension(const Context& context) {
   const double P = file.parameters.at("P");
   const reference::CylinderInTension exact{P, problem.body.material};
   return for_each_interpolation("cylinder-tension", problem, [&](const bem::ProblemDefinition& variant, std::vector<Record>& records) {
-    const auto result = bem::solve_body(variant, context.progress);
+    const auto result = bem::solve_body(with_operator(context, variant), context.progress);
     const Index n10 = node_at(result.mesh, Vec2(10.0, 0.0));
     records.push_back(compare_relative("ur_r10", result.boundary.displacement[n10].x(),
                                        exact.displacement(10.0, 0.0).x(), 1e-5));
@@ -54,7 +54,7 @@ std::vector<Record> run_thick_cylinder(const Context& context) {
   const double a = file.parameters.at("a"), b = file.parameters.at("b"), P = file.parameters.at("P");
   const reference::ThickCylinder exact{a, b, P, 0.0, problem.body.material, reference::CylinderEnds::open};
   return for_each_interpolation("thick-cylinder", problem, [&](const bem::ProblemDefinition& variant, std::vector<Record>& records) {
-    const auto result = bem::solve_body(variant, context.progress);
+    const auto result = bem::solve_body(with_operator(context, variant), context.progress);
     const double H = file.parameters.at("H");
     const Index ia = node_at(result.mesh, Vec2(a, H / 2)), ib = node_at(result.mesh, Vec2(b, H / 2));
     records.push_back(compare_relative("ur_a", result.boundary.displacement[ia].x(), exact.radial_displacement(a), 1e-3));
@@ -97,7 +97,7 @@ std::vector<Record> run_thick_sphere(const Context& context) {
     problem.mesh.interpolation = interpolation;
     for (auto& piece : problem.body.pieces) piece.elements = std::max(1, piece.elements * factor / 2);
     problem.interior_points.clear();
-    const auto result = bem::solve_body(problem, context.progress);
+    const auto result = bem::solve_body(with_operator(context, problem), context.progress);
     const double c = std::sqrt(0.5);
     const Index ia = node_at(result.mesh, Vec2(a * c, a * c)), ib = node_at(result.mesh, Vec2(b * c, b * c));
     const Vec2 er(c, c);

@@ -96,7 +96,7 @@ std::vector<Record> run_hertz_sphere(const Context& context) {
     const double a = hertz.contact_radius(), p0 = hertz.max_pressure();
     if (last)
       for (int k = 1; k <= 16; ++k) problem.bodies[1].regions[0].interior_points.push_back({Vec2(0.02 * a, -k * a / 8.0), true, {}});
-    const auto result = contact::solve_contact(problem, context.progress);
+    const auto result = contact::solve_contact(with_operator(context, problem), context.progress);
     const std::size_t first = records.size();
     records.push_back(compare_relative("a", result.summary.contact_radius, a, 0.02));
     // p0 from the profile (fitted_p0); the pair on the axis on its own: collocation at r = 0
@@ -137,7 +137,7 @@ std::vector<Record> run_hertz_sphere(const Context& context) {
       auto thesis = problem;
       thesis.solver.algorithm = contact::Algorithm::thesis;
       thesis.drop_interior_points();
-      const auto other = contact::solve_contact(thesis, context.progress);
+      const auto other = contact::solve_contact(with_operator(context, thesis), context.progress);
       // xi = 1e-8 on relative changes: the algorithms agree to ~1e-6 of the peak pressure.
       records.push_back(compare_scaled("thesis_vs_newton_max_difference", algorithm_difference(result, other), 0.0, 1.0, 1e-4));
       records.push_back(require_at_least("thesis_kalker_iterations", other.summary.kalker_iterations, 1));
@@ -161,21 +161,21 @@ std::vector<Record> run_spence_sphere(const Context& context) {
   auto frictionless = file.problem;
   frictionless.friction = 0.0;
   frictionless.increments = 1;
-  const auto reference_result = contact::solve_contact(frictionless, context.progress);
+  const auto reference_result = contact::solve_contact(with_operator(context, frictionless), context.progress);
   const double gamma = reference::spence_gamma(file.problem.elastic(0).material, file.problem.elastic(1).material);
   for (const double beta : {0.1, 0.6}) {
     const std::size_t first = records.size();
     const double spence = reference::spence_stick_ratio(beta, std::abs(gamma));
     auto problem = file.problem;
     problem.friction = beta;
-    const auto result = contact::solve_contact(problem, context.progress);
+    const auto result = contact::solve_contact(with_operator(context, problem), context.progress);
     const double c_over_a = result.summary.stick_ratio();
     const double coupled = beta == 0.1 ? 0.513 : 0.9997;  // DESIGN.md section 6, 640 steps
     records.push_back(compare_scaled("c_over_a", c_over_a, coupled, 1.0, 0.03));
     records.push_back(report_only("steps_taken_adaptive", result.steps_taken, 0.0));
     auto uncoupled = problem;
     uncoupled.tangential_coupling = false;
-    const auto u = contact::solve_contact(uncoupled, context.progress);
+    const auto u = contact::solve_contact(with_operator(context, uncoupled), context.progress);
     records.push_back(compare_scaled("c_over_a_uncoupled_vs_E1", u.summary.stick_ratio(),
                                      spence, 1.0, 0.03));
     records.push_back(require_at_least("a_decrease_with_friction",
@@ -185,7 +185,7 @@ std::vector<Record> run_spence_sphere(const Context& context) {
     for (const int steps : {1, 4, 64}) {
       auto history = problem;
       history.increments = steps;
-      const auto h = contact::solve_contact(history, context.progress);
+      const auto h = contact::solve_contact(with_operator(context, history), context.progress);
       const double ratio = h.summary.stick_ratio();
       // The history matters only until the steps resolve the growth of the stick zone:
       // 64 steps must agree with 16 to 0.01; 1 and 4 steps are reported against 16.
@@ -199,12 +199,12 @@ std::vector<Record> run_spence_sphere(const Context& context) {
       auto flatter = load_contact_example(context, "contact_spence_sphere.toml", {{"R", 4.0 * R}, {"P", P / 4.0}}).problem;
       flatter.drop_interior_points();
       flatter.friction = beta;
-      const auto f = contact::solve_contact(flatter, context.progress);
+      const auto f = contact::solve_contact(with_operator(context, flatter), context.progress);
       records.push_back(compare_scaled("c_over_a_R4", f.summary.stick_ratio(), coupled, 1.0,
                                        0.01));
       auto thesis = problem;
       thesis.solver.algorithm = contact::Algorithm::thesis;
-      const auto other = contact::solve_contact(thesis, context.progress);
+      const auto other = contact::solve_contact(with_operator(context, thesis), context.progress);
       records.push_back(compare_scaled("thesis_vs_newton_max_difference", algorithm_difference(result, other), 0.0, 1.0, 1e-4));
       records.push_back(compare_scaled("thesis_c_over_a", other.summary.stick_ratio(), c_over_a, 1.0, 1e-3));
     }
@@ -276,13 +276,13 @@ std::vector<Record> run_flat_punch(const Context& context) {
     const std::size_t first = records.size();
     auto problem = file.problem;
     problem.friction = t.beta;
-    const auto result = contact::solve_contact(problem, context.progress);
+    const auto result = contact::solve_contact(with_operator(context, problem), context.progress);
     records.push_back(report_only("p_n_at_0_vs_thesis", pressure_at(result.pairs, 0.0), t.p0));
     records.push_back(report_only("p_n_at_4.68_vs_thesis", pressure_at(result.pairs, 4.68), t.pI));
     records.push_back(report_only("c_vs_thesis", result.summary.stick_radius, t.c));
     auto thesis = problem;
     thesis.solver.algorithm = contact::Algorithm::thesis;
-    const auto other = contact::solve_contact(thesis, context.progress);
+    const auto other = contact::solve_contact(with_operator(context, thesis), context.progress);
     records.push_back(compare_scaled("thesis_vs_newton_max_difference", algorithm_difference(result, other), 0.0, 1.0, 1e-4));
     tag(records, first, "flat-punch", {{"beta", number_text(t.beta)}});
   }
@@ -294,7 +294,7 @@ std::vector<Record> run_flat_punch(const Context& context) {
   for (Interpolation interpolation : {Interpolation::linear, Interpolation::quadratic}) {
     auto problem = half_plane.problem;
     problem.mesh.interpolation = interpolation;
-    const auto result = contact::solve_contact(problem, context.progress);
+    const auto result = contact::solve_contact(with_operator(context, problem), context.progress);
     const double worst = flat_punch_max_error(result.pairs, exact);
     const std::size_t first = records.size();
     records.push_back(compare_scaled("pressure_max_relative_error", worst, 0.0, 1.0, 0.03));
@@ -313,7 +313,7 @@ void hertz_ball_records(const Context& context, const io::ContactFile& file, con
   const double R = file.parameters.at("R"), P = file.parameters.at("P");
   const auto hertz = reference::hertz_point_contact(P, R, problem.elastic(0).material,
                                                     std::numeric_limits<double>::infinity(), problem.elastic(1).material);
-  const auto result = contact::solve_contact(problem, context.progress);
+  const auto result = contact::solve_contact(with_operator(context, problem), context.progress);
   records.push_back(compare_relative("a", result.summary.contact_radius, hertz.contact_radius(), 0.02));
   records.push_back(compare_relative("p0", fitted_p0(result.pairs, hertz.contact_radius()), hertz.max_pressure(), 0.02));
   records.push_back(report_only("p0_axis_node", result.summary.centre_pressure, hertz.max_pressure()));
@@ -345,7 +345,7 @@ std::vector<Record> run_non_matching(const Context& context) {
     auto spence_file = load_contact_example(context, "contact_spence_sphere.toml", overrides);
     spence_file.problem.drop_interior_points();
     spence_file.problem.friction = 0.1;
-    const auto spence = contact::solve_contact(spence_file.problem, context.progress);
+    const auto spence = contact::solve_contact(with_operator(context, spence_file.problem), context.progress);
     const std::size_t second = records.size();
     records.push_back(compare_scaled("c_over_a", spence.summary.stick_ratio(), 0.513, 1.0, 0.03));
     tag(records, second, "spence-sphere",
@@ -386,7 +386,7 @@ std::vector<Record> run_shrink_fit(const Context& context) {
     const double expected = shrink_fit_pressure(a, b, c, file.parameters.at("delta"), problem.elastic(0).material,
                                                 problem.elastic(1).material,
                                                 axisymmetric ? AnalysisType::plane_stress : type);
-    const auto result = contact::solve_contact(problem, context.progress);
+    const auto result = contact::solve_contact(with_operator(context, problem), context.progress);
     double worst = 0.0, sum = 0.0;
     int count = 0;
     for (const auto& pair : result.pairs) {
@@ -423,7 +423,7 @@ std::vector<Record> run_contact_quadratic(const Context& context) {
   spence.friction = 0.1;
   first = records.size();
   records.push_back(
-      compare_scaled("c_over_a", contact::solve_contact(spence, context.progress).summary.stick_ratio(), 0.513, 1.0, 0.03));
+      compare_scaled("c_over_a", contact::solve_contact(with_operator(context, spence), context.progress).summary.stick_ratio(), 0.513, 1.0, 0.03));
   tag(records, first, "spence-sphere", {{"interpolation", "quadratic"}, {"beta", "0.1"}});
 
   auto half_file = load_contact_example(context, "contact_hertz_cylinder_half.toml");
@@ -433,7 +433,7 @@ std::vector<Record> run_contact_quadratic(const Context& context) {
   const reference::HertzLineContact line{half_file.parameters.at("P"), half_file.parameters.at("R"),
                                          reference::contact_modulus(half.elastic(0).material, half.elastic(1).material,
                                                                     half.analysis)};
-  const auto half_result = contact::solve_contact(half, context.progress);
+  const auto half_result = contact::solve_contact(with_operator(context, half), context.progress);
   double worst = 0.0;
   for (const auto& pair : half_result.pairs)
     if (pair.coordinate <= 0.8 * line.half_width())
@@ -459,7 +459,7 @@ std::vector<Record> run_hertz_cylinder_half(const Context& context) {
     const reference::HertzLineContact hertz{
         P, R, reference::contact_modulus(problem.elastic(0).material, problem.elastic(1).material, problem.analysis)};
     const double a = hertz.half_width();
-    const auto result = contact::solve_contact(problem, context.progress);
+    const auto result = contact::solve_contact(with_operator(context, problem), context.progress);
     double worst = 0.0;
     for (const auto& pair : result.pairs)
       if (pair.coordinate <= 0.8 * a)

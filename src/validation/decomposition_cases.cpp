@@ -95,7 +95,7 @@ std::vector<Record> strips_records(const dd::DecompositionProblem& problem, cons
                                    bool with_monolithic, double* seconds = nullptr, bool slender = false) {
   std::vector<Record> records;
   const auto start = std::chrono::steady_clock::now();
-  const auto result = dd::solve_decomposition(problem, context.progress);
+  const auto result = dd::solve_decomposition(with_operator(context, problem), context.progress);
   if (seconds) *seconds = seconds_since(start);
   const double P = 1.0;
   const reference::PlateInTension exact{P, problem.subdomains[0].body.material, problem.analysis};
@@ -198,7 +198,7 @@ std::vector<Record> run_gmres_restart(const Context& context) {
         problem.options.preconditioner = dd::InterfacePreconditioner::none;  // the thesis' study
         problem.options.restart = m;
         const auto start = std::chrono::steady_clock::now();
-        const auto result = dd::solve_decomposition(problem, context.progress);
+        const auto result = dd::solve_decomposition(with_operator(context, problem), context.progress);
         const double ms = 1e3 * seconds_since(start);
         const std::size_t first = records.size();
         records.push_back(compare_scaled("relative_residual", result.gmres.relative_residual, 0.0, 1.0,
@@ -271,7 +271,7 @@ std::vector<Record> run_many_strips(const Context& context) {
   }
   auto problem = dd::plate_strips({12, 6});
   problem.options.max_iterations = 30;
-  const auto result = dd::solve_decomposition(problem, context.progress);
+  const auto result = dd::solve_decomposition(with_operator(context, problem), context.progress);
   const bool reported = !result.converged() && result.gmres.status == operators::GmresStatus::max_iterations &&
                         result.gmres.relative_residual > problem.options.tolerance &&
                         result.gmres.message.find("not converged") != std::string::npos;
@@ -294,7 +294,7 @@ std::vector<Record> run_two_layer_ring(const Context& context) {
   const auto file = io::read_decomposition_file(context.examples_dir + "/dd_two_layer_ring.toml");
   const auto exact = two_layer_reference(file, file.problem.analysis);
   const auto check = [&](const dd::DecompositionProblem& problem, Params params) {
-    const auto result = dd::solve_decomposition(problem, context.progress);
+    const auto result = dd::solve_decomposition(with_operator(context, problem), context.progress);
     double u_error = 0, u_scale = 0;
     for (const auto& sub : result.subdomains)
       for (Index i = 0; i < sub.mesh.node_count(); ++i) {
@@ -362,7 +362,7 @@ std::vector<Record> run_two_layer_tube(const Context& context) {
     auto problem = file.problem;
     problem.mesh.interpolation = interpolation;
     problem.options.set_method(method);
-    const auto result = dd::solve_decomposition(problem, context.progress);
+    const auto result = dd::solve_decomposition(with_operator(context, problem), context.progress);
     double u_error = 0, u_scale = 0, hoop_error = 0;
     for (const auto& sub : result.subdomains)
       for (Index i = 0; i < sub.mesh.node_count(); ++i) {
@@ -413,7 +413,7 @@ std::vector<Record> run_fibre_composite(const Context& context) {
     auto problem = dd::fibre_composite(spec);
     const double R = spec.fibre_radius;
     problem.subdomains[1].interior_points.push_back({Vec2(0.4 * R, 0.3 * R), false, {}, {-1, -1}});
-    const auto result = dd::solve_decomposition(problem, context.progress);
+    const auto result = dd::solve_decomposition(with_operator(context, problem), context.progress);
     reference::CircularInclusion exact;
     exact.matrix = spec.matrix;
     exact.fibre = spec.fibre;
@@ -435,7 +435,7 @@ std::vector<Record> run_fibre_composite(const Context& context) {
     spec.fibres_per_side = per_side;
     const auto problem = dd::fibre_composite(spec);
     const auto started = std::chrono::steady_clock::now();
-    const auto result = dd::solve_decomposition(problem, context.progress);
+    const auto result = dd::solve_decomposition(with_operator(context, problem), context.progress);
     const double seconds = seconds_since(started);
     const std::size_t first = records.size();
     const auto [du, dp] = monolithic_difference(problem, result);

@@ -82,7 +82,7 @@ std::vector<Record> run_cattaneo_mindlin(const Context& context) {
   std::vector<Record> records;
   for (const double ratio : {0.3, 0.6, 0.9}) {
     const auto f = load_fretting(context, ratio, {{0.0, 0.0}, {1.0, 0.0}, {2.0, 1.0}}, 60);
-    const auto result = contact::solve_contact(f.file.problem, context.progress);
+    const auto result = contact::solve_contact(with_operator(context, f.file.problem), context.progress);
     const double a = f.theory.hertz.half_width();
     const std::size_t first = records.size();
     records.push_back(compare_scaled("c_over_a", stick_half_width(result.summary) / a, f.theory.stick_ratio(f.Q_star), 1.0, 0.02));
@@ -106,7 +106,7 @@ std::vector<Record> run_mindlin_unloading(const Context& context) {
   const double ratio = 0.6;
   const auto f = load_fretting(context, ratio,
                                {{0.0, 0.0}, {1.0, 0.0}, {2.0, 1.0}, {2.5, 0.0}, {3.0, -1.0}, {3.5, 0.0}, {4.0, 1.0}}, 60);
-  const auto result = contact::solve_contact(f.file.problem, context.progress);
+  const auto result = contact::solve_contact(with_operator(context, f.file.problem), context.progress);
   const auto& contact = only(result);
   const double a = f.theory.hertz.half_width();
   for (const double Q_over : {0.0, -1.0}) {
@@ -153,7 +153,7 @@ std::vector<Record> run_nowell_hills(const Context& context) {
   theory.friction = problem.friction;
   const double a = theory.hertz.half_width(), mu_p0 = theory.friction * theory.hertz.max_pressure();
   const double sigma_B = file.parameters.at("sigma_B");
-  const auto result = contact::solve_contact(problem, context.progress);
+  const auto result = contact::solve_contact(with_operator(context, problem), context.progress);
   const double start = result.summary.stick_start, end = result.summary.stick_end;
   std::vector<Record> records;
   records.push_back(compare_scaled("e_over_a", 0.5 * (start + end) / a, sigma_B / (4.0 * mu_p0), 1.0, 0.02));

@@ -35,7 +35,7 @@ std::vector<Record> run_rigid_punch(const Context& context) {
   for (Interpolation interpolation : {Interpolation::linear, Interpolation::quadratic}) {
     auto problem = punch.problem;
     problem.mesh.interpolation = interpolation;
-    const auto result = contact::solve_contact(problem, context.progress);
+    const auto result = contact::solve_contact(with_operator(context, problem), context.progress);
     const double worst = flat_punch_max_error(result.pairs, exact);
     const std::size_t first = records.size();
     records.push_back(compare_scaled("pressure_max_relative_error", worst, 0.0, 1.0, 0.01));
@@ -49,7 +49,7 @@ std::vector<Record> run_rigid_punch(const Context& context) {
   for (Interpolation interpolation : {Interpolation::linear, Interpolation::quadratic}) {
     auto problem = ball.problem;
     problem.mesh.interpolation = interpolation;
-    const auto result = contact::solve_contact(problem, context.progress);
+    const auto result = contact::solve_contact(with_operator(context, problem), context.progress);
     const auto fit = fit_hertz_profile(result.pairs, 0.8 * result.summary.contact_radius);
     const std::size_t first = records.size();
     records.push_back(compare_relative("a", fit.a, hertz.contact_radius(), 0.01));
@@ -67,7 +67,7 @@ std::vector<Record> run_rigid_punch(const Context& context) {
   flat.bodies[1].rigid->contour = contact::rigid_contour(face);
   flat.bodies[1].rigid->profile = "flat";
   flat.contacts.front().initial_gap = [R](const Vec2& x) { return x.x() * x.x() / (2.0 * R); };
-  const auto result = contact::solve_contact(flat, context.progress);
+  const auto result = contact::solve_contact(with_operator(context, flat), context.progress);
   const auto fit = fit_hertz_profile(result.pairs, 0.8 * result.summary.contact_radius);
   const std::size_t first = records.size();
   records.push_back(compare_relative("a", fit.a, hertz.contact_radius(), 0.01));
@@ -97,7 +97,7 @@ std::vector<Record> run_coated_indentation(const Context& context) {
     overrides["t"] = t;
     overrides["E_coat"] = E_coat;
     const auto file = load_contact_example(context, "contact_coated_indentation.toml", overrides);
-    const auto result = contact::solve_contact(file.problem, context.progress);
+    const auto result = contact::solve_contact(with_operator(context, file.problem), context.progress);
     return fit_hertz_profile(result.pairs, 0.8 * result.summary.contact_radius);
   };
   struct Limit {
@@ -146,7 +146,7 @@ std::vector<Record> run_roller_between_plates(const Context& context) {
   const double P = file.parameters.at("P"), R = file.parameters.at("R");
   const reference::HertzLineContact hertz{
       P, R, reference::contact_modulus(problem.elastic(1).material, problem.elastic(0).material, problem.analysis)};
-  const auto result = contact::solve_contact(problem, context.progress);
+  const auto result = contact::solve_contact(with_operator(context, problem), context.progress);
   for (const auto& contact : result.contacts) {
     const auto fit = fit_hertz_profile(contact.pairs, 0.8 * contact.summary.contact_radius);
     const std::size_t first = records.size();
@@ -164,7 +164,7 @@ std::vector<Record> run_roller_between_plates(const Context& context) {
   // times the contact problem's conditioning; measured below 1e-8).
   auto forced = problem;
   forced.operator_choice.kind = bem::OperatorKind::compressed;
-  const auto compressed = contact::solve_contact(forced, context.progress);
+  const auto compressed = contact::solve_contact(with_operator(context, forced), context.progress);
   double pressure_difference = 0.0;
   for (std::size_t c = 0; c < result.contacts.size(); ++c)
     for (std::size_t k = 0; k < result.contacts[c].pairs.size(); ++k)
@@ -193,7 +193,7 @@ std::vector<Record> run_bonded_regions(const Context& context) {
       const auto monolithic = dd::solve_monolithic(problem, meshes, dd::build_connectivity(problem, meshes));
       auto model = contact::model_of(problem);
       model.drop_interior_points();
-      const auto result = contact::solve_contact(model, context.progress);
+      const auto result = contact::solve_contact(with_operator(context, model), context.progress);
       double du = 0.0, dp = 0.0, u_scale = 0.0, p_scale = 0.0;
       for (std::size_t s = 0; s < meshes.size(); ++s)
         for (Index i = 0; i < meshes[s].node_count(); ++i) {
@@ -228,7 +228,7 @@ std::vector<Record> run_pin_in_hole(const Context& context) {
     const auto file = load_contact_example(context, "contact_pin_in_hole.toml", {{"P", P}, {"th", std::max(0.06, 5.25 * a)}});
     const reference::HertzLineContact hertz{P, R, reference::contact_modulus(file.problem.elastic(0).material, Material{kRigid, 0.3},
                                                                              file.problem.analysis)};
-    const auto result = contact::solve_contact(file.problem, context.progress);
+    const auto result = contact::solve_contact(with_operator(context, file.problem), context.progress);
     const auto fit = fit_hertz_profile(result.pairs, 0.8 * result.summary.contact_radius);
     const std::size_t first = records.size();
     if (a == 0.025) {

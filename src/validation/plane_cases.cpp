@@ -48,7 +48,7 @@ std::vector<Record> run_plate_tension(const Context& context) {
     auto p = problem;
     p.mesh.interpolation = interpolation;
     for (auto& piece : p.body.pieces) piece.elements = per_side;
-    const auto result = bem::solve_body(p, context.progress);
+    const auto result = bem::solve_body(with_operator(context, p), context.progress);
     Errors e{0, 0, 0, 0, 0};
     double u_scale = 0.0, p_sum = 0.0, p_ref = 0.0;
     for (Index i = 0; i < result.mesh.node_count(); ++i) {
@@ -149,7 +149,7 @@ std::vector<Record> run_cantilever(const Context& context) {
       const double h = L / std::pow(2.0, m + 1);
       for (auto& piece : problem.body.pieces)
         piece.elements = std::max(1, static_cast<int>(std::lround(geometry::piece_length(piece) / h)));
-      const auto result = bem::solve_body(problem, context.progress);
+      const auto result = bem::solve_body(with_operator(context, problem), context.progress);
       const Vec2 uB = bem::vector_at_vertex(result.mesh, vertex_at(result.mesh, B), result.boundary.displacement);
       const auto sC = bem::stress_at_vertex(result.mesh, problem.body, problem.analysis, vertex_at(result.mesh, C), result.boundary.stress);
       const auto sO = bem::stress_at_vertex(result.mesh, problem.body, problem.analysis, vertex_at(result.mesh, O), result.boundary.stress);
@@ -248,7 +248,7 @@ std::vector<Record> run_corner_refinement(const Context& context) {
     problem.mesh.corner_transition = transition;
     for (auto& piece : problem.body.pieces)
       if (piece.name == "OA") piece.elements *= ratio;
-    const auto result = bem::solve_body(problem, context.progress);
+    const auto result = bem::solve_body(with_operator(context, problem), context.progress);
     double worst = 0.0;
     for (Index i = 0; i < result.mesh.node_count(); ++i) {
       const Vec2& x = result.mesh.nodes[i].position;
@@ -296,7 +296,7 @@ std::vector<Record> run_curved_beam(const Context& context) {
     problem.mesh.interpolation = v.interpolation;
     const std::map<std::string, int> per_n{{"end0", 1}, {"outer", 4}, {"end90", 1}, {"inner", 2}};
     for (auto& piece : problem.body.pieces) piece.elements = per_n.at(piece.name) * n;
-    const auto result = bem::solve_body(problem, context.progress);
+    const auto result = bem::solve_body(with_operator(context, problem), context.progress);
     double worst = 0.0, u_error = 0.0, u_scale = 0.0;
     for (Index i = 0; i < result.mesh.node_count(); ++i) {
       const Vec2& x = result.mesh.nodes[i].position;
@@ -360,7 +360,7 @@ std::vector<Record> run_plate_hole(const Context& context) {
     records.push_back(compare_scaled("stt_hole_max_error", stt_error, 0.0, 3.0 * P, 0.01));
   };
   auto records = for_each_interpolation("plate-hole", problem, [&](const bem::ProblemDefinition& variant, std::vector<Record>& out) {
-    const auto result = bem::solve_body(variant, context.progress);
+    const auto result = bem::solve_body(with_operator(context, variant), context.progress);
     kirsch_checks(result, out);
     return result.mesh.element_count();
   });
@@ -369,9 +369,9 @@ std::vector<Record> run_plate_hole(const Context& context) {
   // solution against the dense one within 1e-6 (measured u 4e-9, t 3e-8).
   bem::ProblemDefinition fine = problem;
   for (auto& piece : fine.body.pieces) piece.elements *= 4;
-  const auto dense = bem::solve_body(fine, context.progress);
+  const auto dense = bem::solve_body(with_operator(context, fine), context.progress);
   fine.operator_choice.kind = bem::OperatorKind::compressed;
-  const auto compressed = bem::solve_body(fine, context.progress);
+  const auto compressed = bem::solve_body(with_operator(context, fine), context.progress);
   const std::size_t first = records.size();
   kirsch_checks(compressed, records);
   double du = 0.0, dp = 0.0, u_scale = 0.0, p_scale = 0.0;
@@ -397,7 +397,7 @@ std::vector<Record> run_thick_ring_plane_strain(const Context& context) {
   const double a = file.parameters.at("a"), b = file.parameters.at("b"), p = file.parameters.at("p");
   const reference::ThickCylinder exact{a, b, p, 0.0, problem.body.material, reference::CylinderEnds::plane_strain};
   return for_each_interpolation("thick-ring-plane-strain", problem, [&](const bem::ProblemDefinition& variant, std::vector<Record>& records) {
-    const auto result = bem::solve_body(variant, context.progress);
+    const auto result = bem::solve_body(with_operator(context, variant), context.progress);
     const double c = std::sqrt(0.5);
     const Index ia = node_at(result.mesh, Vec2(a * c, a * c)), ib = node_at(result.mesh, Vec2(b * c, b * c));
     const Vec2 er(c, c), et(-c, c);

@@ -223,6 +223,25 @@ TEST(CommandLine, ValidateWritesJsonRecordsWithTheDocumentedKeys) {
   fs::remove_all(dir);
 }
 
+// --operator compressed tags the records of the cases it applies to; --accuracy alone (no
+// compressed operator to set) is refused.
+TEST(CommandLine, ValidateOnTheCompressedOperatorTagsItsRecords) {
+  const auto dir = scratch("validate-compressed");
+  const auto out =
+      run("validate thick-cylinder -q --operator compressed --accuracy 1e-12 --json " + (dir / "records.json").string());
+  ASSERT_EQ(out.exit_code, 0) << out.output;
+  std::ifstream in(dir / "records.json");
+  const auto records = nlohmann::json::parse(in);
+  ASSERT_GT(records.size(), 0u);
+  for (const auto& record : records) {
+    EXPECT_EQ(record["params"]["operator"], "compressed");
+    EXPECT_EQ(record["params"]["accuracy"], "1e-12");
+  }
+  EXPECT_EQ(run("validate thick-cylinder --accuracy 1e-12").exit_code, 2);
+  EXPECT_EQ(run("validate thick-cylinder --operator sparse").exit_code, 2);
+  fs::remove_all(dir);
+}
+
 TEST(CommandLine, RunSolvesADecompositionFile) {
   const auto dir = scratch("dd");
   const auto out = run("run " + example("dd_strips_2.toml") + " -o " + dir.string() + " -q");

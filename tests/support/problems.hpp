@@ -6,6 +6,10 @@
 
 namespace bemcontact::test_support {
 
+// Short names for a component's condition kind in the tables of the tests.
+inline constexpr bem::ConditionKind U = bem::ConditionKind::displacement;
+inline constexpr bem::ConditionKind T = bem::ConditionKind::traction;
+
 using VectorField = std::function<Vec2(const Vec2&)>;
 
 // A piece with a global-frame condition: kinds per component and values from fields.

@@ -1,4 +1,6 @@
 #pragma once
+#include <array>
+#include <vector>
 // Assembly of the influence matrices H and G of (II.11): H u = G p, with 2 x 2 blocks per
 // (source node, field node) pair and unknowns ordered (node 0: 1, 2; node 1: 1, 2; ...).
 #include "bemcontact/bem/progress.hpp"
@@ -40,5 +42,21 @@ InfluenceMatrices assemble_influence_matrices(const geometry::BoundaryMesh& mesh
 
 // Nodes on the axis r = 0 (axisymmetry only).
 bool node_on_axis(const geometry::BoundaryMesh& mesh, Index node);
+
+// The traction of the uniform radial expansion u_r = r, u_z = 0 (axisymmetry) at each node
+// of an element: sigma n_e on a straight element (constant); on a curved one it follows the
+// normal through its nodal values.
+std::array<Vec2, geometry::kMaxElementNodes> radial_expansion_traction(const Material& material,
+                                                                        const geometry::BoundaryElement& element);
+
+// The diagonal blocks H_ii (free term + principal value) from exact elastic fields, given
+//   translation_sums (2N x 2): sum over j != i of H_ij, i.e. H' times the rigid translations;
+//   radial_residual (2N, axisymmetry only): int U p - H' u for the radial expansion, its
+//   traction taken element by element (radial_expansion_traction).
+// Plane: rigid translations give no traction, H_ii = -sum_{j != i} H_ij (section I.4.2,
+// remark). Axisymmetry: the axial translation (its only rigid mode, section II.3.3) gives the
+// z column, the radial expansion the r column: H_ii[:, r] r_i = (int U p - H' u)_i.
+std::vector<Mat2> diagonal_blocks_from_exact_fields(const geometry::BoundaryMesh& mesh, AnalysisType type,
+                                                    const Matrix& translation_sums, const Vector& radial_residual);
 
 }  // namespace bemcontact::bem

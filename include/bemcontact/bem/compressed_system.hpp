@@ -1,8 +1,10 @@
 #pragma once
 // The boundary element system A y = b of (II.12) on hierarchical matrices, for bodies too
-// large for dense matrices (plane problems). Nothing of size N^2 is formed:
+// large for dense matrices. Nothing of size N^2 is formed:
 //   - [H' | G] (H without its diagonal blocks, and G) is one compressed matrix: it gives the
-//     diagonal blocks from rigid translations (H_ii = -sum_{j != i} H_ij, section I.4.2),
+//     diagonal blocks from exact fields (diagonal_blocks_from_exact_fields; in axisymmetry
+//     with the radial expansion's traction integral, a compressed matrix of its own formed
+//     and dropped during construction),
 //     the right-hand side b = G p - H u of the prescribed values, and the residual;
 //   - A, whose columns are those of H or -G by each unknown's kind in its node's frame,
 //     plus the point constraints' rows and reaction columns (as in build_boundary_system),
@@ -23,6 +25,9 @@ class InfluenceBlocks {
  public:
   InfluenceBlocks(const geometry::BoundaryMesh& mesh, const ElementIntegrator& integrator);
   void evaluate(const std::vector<Index>& row_nodes, const std::vector<Index>& col_nodes, Matrix& H, Matrix& G) const;
+  // int_e U p_e (2 rows per source node, one column per element) for the radial expansion's
+  // traction p_e on each element (radial_expansion_traction; axisymmetry).
+  Matrix radial_traction(const std::vector<Index>& row_nodes, const std::vector<Index>& elements) const;
 
  private:
   const geometry::BoundaryMesh& mesh_;
@@ -32,8 +37,7 @@ class InfluenceBlocks {
 
 class CompressedBoundarySystem {
  public:
-  // Plane problems only (axisymmetry's diagonal blocks need the radial expansion's
-  // traction integral, not provided here). `what` names the system in messages.
+  // Plane or axisymmetric. `what` names the system in messages.
   CompressedBoundarySystem(const geometry::BoundaryMesh& mesh, const ElementIntegrator& integrator,
                            std::vector<NodeCondition> conditions, std::vector<ConstraintEquation> constraints,
                            const operators::HMatrixOptions& options, const std::string& what);
@@ -76,6 +80,7 @@ class CompressedBoundarySystem {
   Vector node_scale_;  // 1 / (length of the node's elements)
   std::vector<NodeCondition> conditions_;
   std::vector<ConstraintEquation> constraints_;
+  AnalysisType type_;
   InfluenceBlocks blocks_;
   operators::HMatrix influence_;  // [H' | G]
   std::vector<Mat2> diagonal_;    // H_ii
@@ -83,7 +88,8 @@ class CompressedBoundarySystem {
   Vector rhs_;
 
   operators::HMatrix assemble_influence(const operators::HMatrixOptions& options, const std::string& what);
-  std::vector<Mat2> diagonal_blocks() const;
+  std::vector<Mat2> diagonal_blocks(const operators::HMatrixOptions& options, const std::string& what) const;
+  Vector radial_traction_integral(const operators::HMatrixOptions& options, const std::string& what) const;
   operators::HMatrix assemble_system(const operators::HMatrixOptions& options, const std::string& what) const;
   Vector prescribed_rhs() const;
 };

@@ -2,6 +2,7 @@
 // Scalar, index and small vector types shared by every layer.
 #include <Eigen/Dense>
 #include <cstddef>
+#include <string>
 
 namespace bemcontact {
 
@@ -20,6 +21,8 @@ enum class Interpolation { constant, linear, quadratic };
 
 const char* to_string(AnalysisType type);
 const char* to_string(Interpolation interpolation);
+// "(x, y)" for messages that name a point.
+std::string point_text(const Vec2& p);
 
 // Isotropic linear-elastic material (I.5).
 struct Material {

@@ -53,6 +53,6 @@ void read_mesh_options(const TableReader& root, FileContext& context, geometry::
 
 // The keys `operator` ("auto" | "dense" | "compressed") and `accuracy` of a [solver]
 // table: the operator behind every body's boundary element system (docs/problem-file.md).
-bem::OperatorChoice read_operator_keys(const TableReader& solver, AnalysisType analysis);
+bem::OperatorChoice read_operator_keys(const TableReader& solver);
 
 }  // namespace bemcontact::io

@@ -6,6 +6,7 @@
 #include <utility>
 #include <vector>
 
+#include "bemcontact/bem/problem.hpp"
 #include "bemcontact/bem/progress.hpp"
 
 namespace bemcontact::validation {
@@ -33,6 +34,10 @@ struct Record {
 struct Context {
   std::string examples_dir;
   bem::ProgressCallback progress;
+  // `validate --operator`: the operator of every problem whose case leaves it to "auto"
+  // (with_operator below); cases that compare dense with compressed keep theirs.
+  bem::OperatorKind operator_kind = bem::OperatorKind::automatic;
+  double operator_accuracy = 0.0;  // `validate --accuracy` with it (0: the problem's own)
 };
 
 struct Case {
@@ -43,6 +48,16 @@ struct Case {
 };
 
 const std::vector<Case>& cases();
+
+// The problem (one body, decomposition or contact) with the operator of `validate
+// --operator` where the case leaves it to "auto". Every case solves through it.
+template <class Problem>
+Problem with_operator(const Context& context, Problem problem) {
+  if (problem.operator_choice.kind != bem::OperatorKind::automatic) return problem;
+  problem.operator_choice.kind = context.operator_kind;
+  if (context.operator_accuracy > 0.0) problem.operator_choice.accuracy = context.operator_accuracy;
+  return problem;
+}
 
 // Record constructors that fill error and passed.
 Record compare_relative(std::string quantity, double computed, double reference, double tolerance);

@@ -11,10 +11,10 @@ using namespace bemcontact;
 using bemcontact::bem::ConditionKind;
 using bemcontact::test_support::LinearField;
 
-namespace {
+using bemcontact::test_support::T;
+using bemcontact::test_support::U;
 
-constexpr auto U = ConditionKind::displacement;
-constexpr auto T = ConditionKind::traction;
+namespace {
 
 // Unit square, sides bottom, right, top, left with the given kinds, data from `field`.
 bem::ProblemDefinition square(const LinearField& field, std::array<std::array<ConditionKind, 2>, 4> kinds,

@@ -24,7 +24,7 @@ namespace bemcontact::integration {
 namespace {
 
 using geometry::BoundaryElement;
-constexpr double pi = std::numbers::pi;
+using std::numbers::pi;
 
 BoundaryElement make_element(const Vec2& start, const Vec2& end, int node_count = 2,
                              std::array<double, 2> fractions = {0.0, 1.0}) {

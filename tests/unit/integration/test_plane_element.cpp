@@ -22,7 +22,7 @@ namespace {
 
 using geometry::BoundaryElement;
 using kernels::KelvinPlane;
-constexpr double pi = std::numbers::pi;
+using std::numbers::pi;
 
 // ---------------------------------------------------------------------------------------
 // Reference quadrature.

@@ -20,7 +20,7 @@ namespace {
 
 using Vec3 = Eigen::Vector3d;
 using Mat3 = Eigen::Matrix3d;
-constexpr double pi = std::numbers::pi;
+using std::numbers::pi;
 
 // ---------------------------------------------------------------------------------------
 // 3D Kelvin solution, x = source, y = field, d = y - x: U3(k, j) = displacement j at y from

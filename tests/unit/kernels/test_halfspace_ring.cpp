@@ -12,7 +12,7 @@
 namespace bemcontact::kernels {
 namespace {
 
-constexpr double pi = std::numbers::pi;
+using std::numbers::pi;
 
 // Plain composite midpoint rule on a very fine grid, for smooth integrands (r far from s).
 template <class F>

@@ -17,7 +17,7 @@
 namespace bemcontact::kernels {
 namespace {
 
-constexpr double pi = std::numbers::pi;
+using std::numbers::pi;
 
 // Three materials: incompressible-ish, common, zero Poisson ratio.
 const std::array<KelvinPlane, 3> kMaterials{KelvinPlane{1.0, 0.3}, KelvinPlane{80.0, 0.49},

@@ -16,13 +16,13 @@ namespace bemcontact::kernels {
 namespace {
 
 using Real = long double;
-constexpr Real pi_l = std::numbers::pi_v<Real>;
+constexpr Real pi_long = std::numbers::pi_v<Real>;
 
 struct LongGauss {
   std::vector<Real> x, w;  // on [0, 1]
   explicit LongGauss(int n) : x(n), w(n) {
     for (int i = 0; i < n; ++i) {
-      Real z = std::cos(pi_l * (i + 0.75L) / (n + 0.5L)), dp = 1.0L;
+      Real z = std::cos(pi_long * (i + 0.75L) / (n + 0.5L)), dp = 1.0L;
       for (int it = 0; it < 100; ++it) {
         Real p0 = 1.0L, p1 = z;
         for (int k = 2; k <= n; ++k) {
@@ -51,8 +51,8 @@ Real reference_h(Real m, Real m1, int p, int j) {
     return std::pow(s2, j) * std::pow(m1 + m * s2, -q);
   };
   std::vector<Real> cuts = {0.0L};
-  for (Real c = 1e-3L * std::sqrt(m1); c < pi_l / 2; c *= 2) cuts.push_back(c);
-  cuts.push_back(pi_l / 2);
+  for (Real c = 1e-3L * std::sqrt(m1); c < pi_long / 2; c *= 2) cuts.push_back(c);
+  cuts.push_back(pi_long / 2);
   Real sum = 0.0L;
   for (size_t k = 0; k + 1 < cuts.size(); ++k) {
     const Real a = cuts[k], h = cuts[k + 1] - cuts[k];

@@ -24,7 +24,7 @@ using bemcontact::Material;
 
 namespace {
 
-constexpr double pi = std::numbers::pi;
+using std::numbers::pi;
 
 // tanh-sinh quadrature of f on [a, b]. Nodes are formed from their distance to the nearer
 // end so that points next to an end are not rounded onto it; nodes that still land on an
