@@ -273,8 +273,11 @@ def figures(source, out_dir=None, fmt="png"):
             written.append(interior_figure(result, stem, title, out / f"{_file(stem, 'interior')}.{fmt}"))
         contacts = result.contact_names()
         reference = summary.get("results", {}).get("contact", {}).get("reference")
-        friction = summary.get("options", {}).get("law", {}).get("friction", 0.0)
+        law = summary.get("options", {}).get("law", {})
+        # Each contact's friction (options.law.contacts), or the one law of all of them.
+        frictions = {c["name"]: c["friction"] for c in law.get("contacts", [])}
         for k, name in enumerate(contacts):
+            friction = frictions.get(name, law.get("friction") or 0.0)
             written.append(contact_figure(result, name, reference if k == 0 else None, friction, title,
                                           out / f"contact_{name}.{fmt}"))
         if contacts and len(result.contact_steps(contacts[0])) > 1:

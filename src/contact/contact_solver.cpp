@@ -31,8 +31,27 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
+// The law of every pair: its contact's (`groups`: the pair offsets of the contacts), or,
+// when the groups are not the problem's contacts, the problem's.
+struct PairLaws {
+  std::vector<ContactKind> kind;
+  Vector friction;
+};
+PairLaws pair_laws(const ContactProblem& problem, const std::vector<Index>& groups) {
+  const Index n = groups.back();
+  PairLaws laws{std::vector<ContactKind>(static_cast<std::size_t>(n), problem.kind), Vector::Constant(n, problem.friction)};
+  if (groups.size() != problem.contacts.size() + 1) return laws;
+  for (std::size_t c = 0; c < problem.contacts.size(); ++c)
+    for (Index i = groups[c]; i < groups[c + 1]; ++i) {
+      laws.kind[static_cast<std::size_t>(i)] = problem.contact_kind(c);
+      laws.friction[i] = problem.contact_friction(c);
+    }
+  return laws;
+}
+
+// Results of the pairs [first, first + pairs.size()) of `laws`.
 std::vector<PairResult> pair_results(const std::vector<ContactPair>& pairs, const StepOutput& step,
-                                     const ContactProblem& problem) {
+                                     const PairLaws& laws, Index first) {
   double scale = 0.0;
   for (Index i = 0; i < static_cast<Index>(pairs.size()); ++i) scale = std::max(scale, std::abs(step.x[2 * i]));
   std::vector<PairResult> out;
@@ -47,11 +66,12 @@ std::vector<PairResult> pair_results(const std::vector<ContactPair>& pairs, cons
     r.p_t = step.x[2 * i + 1];
     r.jump_n = step.w[2 * i];
     r.jump_t = step.w[2 * i + 1];
-    const double g = problem.friction * std::abs(lambda);
+    const double friction = laws.friction[first + i];
+    const double g = friction * std::abs(lambda);
     r.slip_ratio = g > 0.0 ? std::abs(r.p_t) / g : 0.0;
-    const bool open = problem.kind == ContactKind::unilateral && lambda <= 1e-12 * scale;
+    const bool open = laws.kind[static_cast<std::size_t>(first + i)] == ContactKind::unilateral && lambda <= 1e-12 * scale;
     if (open) r.status = PairStatus::open;
-    else if (problem.friction == 0.0 || pairs[i].on_axis) r.status = problem.friction == 0.0 ? PairStatus::slip : PairStatus::stick;
+    else if (friction == 0.0 || pairs[i].on_axis) r.status = friction == 0.0 ? PairStatus::slip : PairStatus::stick;
     // Slip within 1e-3 of the threshold: the thesis algorithm meets |p_t| = g only to the
     // accuracy of its stopping tests (xi, sqrt(xi) for g).
     else r.status = r.slip_ratio >= 1.0 - 1e-3 ? PairStatus::slip : PairStatus::stick;
@@ -160,6 +180,9 @@ void check_history_options(const ContactProblem& problem) {
   if (!(problem.end_time > 0.0)) throw Error("contact: the history's end_time must be > 0");
   if (problem.max_steps < problem.increments) throw Error("contact: max_steps must be >= increments");
   if (problem.friction < 0.0) throw Error("contact: the friction coefficient must be >= 0");
+  for (const auto& contact : problem.contacts)
+    if (contact.friction && !(*contact.friction >= 0.0))
+      throw Error("contact '" + contact.name + "': the friction coefficient must be >= 0");
 }
 
 std::string format_residual(double value) {
@@ -182,12 +205,13 @@ void add_iterations(ContactSummary& totals, const StepOutput& step) {
 
 // Records one step in a result of pairs [first, last).
 void record_step(ContactInterfaceResult& out, const std::vector<ContactPair>& pairs, const StepOutput& step,
-                 const ContactProblem& problem, double load, double approach, Index first, Index last) {
+                 const ContactProblem& problem, const PairLaws& laws, double load, double approach, Index first,
+                 Index last) {
   const std::vector<ContactPair> group(pairs.begin() + first, pairs.begin() + last);
   StepOutput part = step;
   part.x = step.x.segment(2 * first, 2 * (last - first));
   part.w = step.w.segment(2 * first, 2 * (last - first));
-  out.pairs = pair_results(group, part, problem);
+  out.pairs = pair_results(group, part, laws, first);
   out.steps.push_back(summarise(group, out.pairs, part, load));
   out.steps.back().approach = approach;
   if (problem.record_steps) out.step_pairs.push_back(out.pairs);
@@ -229,10 +253,9 @@ int state_changes(const std::vector<PairStatus>& before, const std::vector<PairS
   return changes;
 }
 
-std::vector<PairStatus> statuses(const std::vector<ContactPair>& pairs, const StepOutput& step,
-                                 const ContactProblem& problem) {
+std::vector<PairStatus> statuses(const std::vector<ContactPair>& pairs, const StepOutput& step, const PairLaws& laws) {
   std::vector<PairStatus> out;
-  for (const auto& r : pair_results(pairs, step, problem)) out.push_back(r.status);
+  for (const auto& r : pair_results(pairs, step, laws, 0)) out.push_back(r.status);
   return out;
 }
 
@@ -251,11 +274,12 @@ LoadHistory solve_load_history(const CondensedProblem& condensed, const std::vec
   const double base_step = end / problem.increments;
   const double min_step = end / problem.max_steps;
   // Adaptive stepping matters for friction: frictionless contact does not depend on the path.
-  const bool adaptive = problem.adaptive && problem.friction > 0.0;
+  const bool adaptive = problem.adaptive && problem.has_friction();
+  const PairLaws laws = pair_laws(problem, all_groups);
 
   StepInput previous = step_input(condensed, 0.0);
-  previous.kind = problem.kind;
-  previous.friction = problem.friction;
+  previous.kind = laws.kind;
+  previous.friction = laws.friction;
   previous.previous_tangential_jump = Vector::Zero(n);
   previous.x_start = Vector::Zero(2 * n);
   previous.delta_start = Vector::Zero(condensed.motions);
@@ -272,8 +296,8 @@ LoadHistory solve_load_history(const CondensedProblem& condensed, const std::vec
     while (corner < corners.size() && corners[corner] <= t * (1.0 + 1e-12)) ++corner;
     const double t_next = std::min(t + dt, corners[corner]);
     StepInput input = step_input(condensed, t_next);
-    input.kind = problem.kind;
-    input.friction = problem.friction;
+    input.kind = laws.kind;
+    input.friction = laws.friction;
     input.previous_tangential_jump = previous.previous_tangential_jump;
     input.x_start = previous.x_start;
     input.delta_start = previous.delta_start;
@@ -313,7 +337,7 @@ LoadHistory solve_load_history(const CondensedProblem& condensed, const std::vec
       }
       throw SolverError(message.str());
     }
-    const auto trial_state = statuses(pairs, trial, problem);
+    const auto trial_state = statuses(pairs, trial, laws);
     if (adaptive && h > 2.0 * min_step) {
       bool too_fast = false;
       for (std::size_t g = 0; g + 1 < all_groups.size(); ++g)
@@ -334,10 +358,10 @@ LoadHistory solve_load_history(const CondensedProblem& condensed, const std::vec
     t = t_next;
     state = trial_state;
     const double approach = condensed.motions > 0 && condensed.force[0] != 0.0 ? step.delta[0] : 0.0;
-    record_step(history, pairs, step, problem, t, approach, 0, n);
+    record_step(history, pairs, step, problem, laws, t, approach, 0, n);
     history.steps.back().dissipated_energy = dissipated.sum();
     for (std::size_t c = 0; c < history.contacts.size(); ++c) {
-      record_step(history.contacts[c], pairs, step, problem, t, approach, groups[c], groups[c + 1]);
+      record_step(history.contacts[c], pairs, step, problem, laws, t, approach, groups[c], groups[c + 1]);
       history.contacts[c].steps.back().dissipated_energy = dissipated[static_cast<Index>(c)];
     }
     StepRecord record;

@@ -16,8 +16,8 @@ double penalty_scale(const CondensedProblem& p) {
   return sum > 0.0 ? p.M.rows() / sum : 1.0;
 }
 
-double threshold(const StepInput& in, double lambda_n) {
-  return in.friction * (in.kind == ContactKind::unilateral ? std::max(lambda_n, 0.0) : std::abs(lambda_n));
+double threshold(const StepInput& in, Index i, double lambda_n) {
+  return in.friction[i] * (in.kind[i] == ContactKind::unilateral ? std::max(lambda_n, 0.0) : std::abs(lambda_n));
 }
 
 }  // namespace
@@ -49,9 +49,9 @@ double complementarity_residual(const StepInput& in, const Vector& x, const Vect
   for (Index i = 0; i < p.pairs; ++i) {
     const double lambda = x[2 * i], tau = x[2 * i + 1];
     const double normal_gap = p.gap[i] - w[2 * i];
-    const double cn = in.kind == ContactKind::unilateral ? lambda - std::max(0.0, lambda - c * normal_gap)
+    const double cn = in.kind[i] == ContactKind::unilateral ? lambda - std::max(0.0, lambda - c * normal_gap)
                                                          : c * normal_gap;
-    const double g = threshold(in, lambda);
+    const double g = threshold(in, i, lambda);
     const double slip = w[2 * i + 1] - in.previous_tangential_jump[i];
     const double ct = p.on_axis[i] ? tau : tau - std::clamp(tau - c * slip, -g, g);
     worst = std::max({worst, std::abs(cn) / scale, std::abs(ct) / scale});
@@ -84,7 +84,7 @@ StepOutput solve_step_newton(const StepInput& in, const SolverOptions& options) 
     bool any_active = false;
     for (Index i = 0; i < n; ++i) {
       const double lambda = x[2 * i];
-      const bool active = in.kind == ContactKind::bilateral || lambda - c * (p.gap[i] - w[2 * i]) > 0.0;
+      const bool active = in.kind[i] == ContactKind::bilateral || lambda - c * (p.gap[i] - w[2 * i]) > 0.0;
       state[2 * i] = active ? 1 : 0;
       any_active = any_active || active;
     }
@@ -106,11 +106,11 @@ StepOutput solve_step_newton(const StepInput& in, const SolverOptions& options) 
     }
     for (Index i = 0; i < n; ++i) {
       const double lambda = x[2 * i], tau = x[2 * i + 1];
-      if (p.on_axis[i] || in.friction == 0.0 || state[2 * i] == 0) {
+      if (p.on_axis[i] || in.friction[i] == 0.0 || state[2 * i] == 0) {
         state[2 * i + 1] = 0;  // tau = 0
         continue;
       }
-      const double g = threshold(in, lambda);
+      const double g = threshold(in, i, lambda);
       const double z = tau - c * (w[2 * i + 1] - in.previous_tangential_jump[i]);
       // A pair just closing (lambda = 0: g = 0, z = 0) starts sticking.
       if (std::abs(z) <= g) state[2 * i + 1] = 1;  // stick
@@ -138,8 +138,8 @@ StepOutput solve_step_newton(const StepInput& in, const SolverOptions& options) 
       if (state[2 * i + 1] == 1) free_dofs.push_back(2 * i + 1);
       if (state[2 * i + 1] >= 2) {
         const double s = state[2 * i + 1] == 2 ? 1.0 : -1.0;
-        const double sigma = in.kind == ContactKind::bilateral && x[2 * i] < 0.0 ? -1.0 : 1.0;
-        slip_factor[i] = in.friction * s * sigma;
+        const double sigma = in.kind[i] == ContactKind::bilateral && x[2 * i] < 0.0 ? -1.0 : 1.0;
+        slip_factor[i] = in.friction[i] * s * sigma;
       }
     }
     const Index reduced = static_cast<Index>(free_dofs.size());

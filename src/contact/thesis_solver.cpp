@@ -182,13 +182,15 @@ bool projected_gmres(const StepInput& in, const Restricted& r, const Vector& g, 
   return false;
 }
 
+bool has_friction(const Vector& friction) { return (friction.array() > 0.0).any(); }
+
 struct BilateralResult {
   bool converged = true;
   std::string failure;
 };
 
 // Alg V.2 on the pairs in contact; x and delta in/out.
-BilateralResult successive_thresholds(const StepInput& in, const std::vector<bool>& in_contact, double friction,
+BilateralResult successive_thresholds(const StepInput& in, const std::vector<bool>& in_contact, const Vector& friction,
                                       const Vector& slip_sign, const SolverOptions& options, Vector& x, Vector& delta,
                                       StepOutput& out) {
   const auto& p = *in.problem;
@@ -209,9 +211,9 @@ BilateralResult successive_thresholds(const StepInput& in, const std::vector<boo
                        "default algorithm = \"newton\")";
       break;
     }
-    if (friction == 0.0) break;
+    if (!has_friction(friction)) break;
     Vector g_new = Vector::Zero(p.pairs);
-    for (Index a = 0; a < m; a += 2) g_new[r.dofs[a] / 2] = friction * std::abs(y[a]);
+    for (Index a = 0; a < m; a += 2) g_new[r.dofs[a] / 2] = friction[r.dofs[a] / 2] * std::abs(y[a]);
     const double change = (g_new - g).norm() / std::max(g_new.norm(), 1e-300);
     g = g_new;
     // (V.19), with sqrt(xi) (1e-4, the thesis' value, for the default xi = 1e-8): the threshold
@@ -231,7 +233,7 @@ BilateralResult successive_thresholds(const StepInput& in, const std::vector<boo
 }
 
 // Alg V.3 (or one bilateral solve); returns the final contact set through in_contact.
-BilateralResult kalker(const StepInput& in, double friction, const Vector& slip_sign, const SolverOptions& options,
+BilateralResult kalker(const StepInput& in, const Vector& friction, const Vector& slip_sign, const SolverOptions& options,
                        std::vector<bool>& in_contact, Vector& x, Vector& delta, StepOutput& out) {
   const auto& p = *in.problem;
   StepInput step = in;
@@ -239,12 +241,15 @@ BilateralResult kalker(const StepInput& in, double friction, const Vector& slip_
   for (int iteration = 1; iteration <= options.max_iterations; ++iteration) {
     ++out.kalker_iterations;
     const auto result = successive_thresholds(step, in_contact, friction, slip_sign, options, x, delta, out);
-    if (!result.converged || in.kind == ContactKind::bilateral) return result;
+    const bool all_bilateral =
+        std::all_of(in.kind.begin(), in.kind.end(), [](ContactKind k) { return k == ContactKind::bilateral; });
+    if (!result.converged || all_bilateral) return result;
     const Vector w = relative_displacement(step, x, delta);
     std::vector<bool> next = in_contact;
     double gap_scale = 0.0;
     for (Index i = 0; i < p.pairs; ++i) gap_scale = std::max({gap_scale, std::abs(w[2 * i]), p.gap[i]});
     for (Index i = 0; i < p.pairs; ++i) {
+      if (in.kind[i] == ContactKind::bilateral) continue;  // always in contact
       if (in_contact[i] && x[2 * i] < 0.0) next[i] = false;                            // tension: release
       if (!in_contact[i] && w[2 * i] - p.gap[i] > 1e-12 * gap_scale) next[i] = true;  // penetration: admit
     }
@@ -274,8 +279,8 @@ StepOutput solve_step_thesis(const StepInput& in, const SolverOptions& options) 
   std::vector<bool> in_contact(p.pairs, true);  // Alg V.3, step 0: Gamma_rc^0 = Gamma_c
   // V.3.4: frictionless solution first, for the slip direction.
   const Vector no_sign = Vector::Zero(p.pairs);
-  auto result = kalker(in, 0.0, no_sign, options, in_contact, x, delta, out);
-  if (result.converged && in.friction > 0.0) {
+  auto result = kalker(in, Vector::Zero(p.pairs), no_sign, options, in_contact, x, delta, out);
+  if (result.converged && has_friction(in.friction)) {
     const Vector w = relative_displacement(in, x, delta);
     Vector slip_sign(p.pairs);
     for (Index i = 0; i < p.pairs; ++i) {
@@ -283,7 +288,7 @@ StepOutput solve_step_thesis(const StepInput& in, const SolverOptions& options) 
       slip_sign[i] = slip > 0.0 ? -1.0 : (slip < 0.0 ? 1.0 : 0.0);  // p_t opposes [u_t]
     }
     for (Index i = 0; i < p.pairs; ++i)
-      if (!p.on_axis[i]) x[2 * i + 1] = slip_sign[i] * in.friction * std::abs(x[2 * i]);
+      if (!p.on_axis[i]) x[2 * i + 1] = slip_sign[i] * in.friction[i] * std::abs(x[2 * i]);
     std::fill(in_contact.begin(), in_contact.end(), true);
     result = kalker(in, in.friction, slip_sign, options, in_contact, x, delta, out);
   }

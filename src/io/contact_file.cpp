@@ -362,14 +362,14 @@ void read_pairing(const TableReader& reader, contact::ContactInterface& contact)
 
 void read_solver(const TableReader& reader, contact::ContactProblem& problem) {
   problem.operator_choice = read_operator_keys(reader);
-  problem.increments = reader.integer_or("increments", problem.friction > 0.0 ? 16 : 1);
+  problem.increments = reader.integer_or("increments", problem.has_friction() ? 16 : 1);
   if (problem.increments < 1) reader.fail("increments", "the number of load increments must be >= 1");
   if (problem.increments > 100000)
     reader.fail("increments", std::to_string(problem.increments) +
                                   " load increments is over the limit of 100000 (each one is a contact solve)");
   problem.record_steps = reader.boolean_or("record_steps", false);
-  problem.adaptive = reader.boolean_or("adaptive", problem.friction > 0.0);
-  if (reader.has("adaptive") && problem.adaptive && problem.friction == 0.0)
+  problem.adaptive = reader.boolean_or("adaptive", problem.has_friction());
+  if (reader.has("adaptive") && problem.adaptive && !problem.has_friction())
     reader.fail("adaptive", "adaptive stepping follows the stick and slip zones; frictionless contact does not depend "
                             "on the load path, so it would have no effect (remove it, or give a friction coefficient)");
   problem.max_state_changes = reader.integer_or("max_state_changes", problem.max_state_changes);
@@ -659,16 +659,29 @@ ContactFile parse_contact_problem(std::string_view text, const std::string& file
             if (mine->piece >= 0 && side->body == mine->body && side->region == mine->region && side->piece == mine->piece)
               contact.fail("boundary1", "a boundary is in two contacts ('" + other.name + "' and '" + interface.name +
                                             "'); split it into two boundaries");
-      problem.contacts.push_back(interface);
-      // One contact law for every contact.
-      const auto kind = problem.kind;
-      const double friction = problem.friction;
+      // Each contact its own law (kind, friction); the first one's is also the problem's. The
+      // tangential coupling shapes the condensed operator: one for every contact.
       const bool coupling = problem.tangential_coupling;
       read_law(contact, problem);
-      if (index > 1 && (kind != problem.kind || friction != problem.friction || coupling != problem.tangential_coupling))
-        contact.fail(contact.has("friction") ? "friction" : "kind",
-                     "every contact must have the same law (kind, friction, coupling) as the first; different laws "
-                     "per contact are not supported yet");
+      interface.kind = problem.kind;
+      interface.friction = problem.friction;
+      problem.contacts.push_back(interface);
+      if (index > 1 && coupling != problem.tangential_coupling)
+        contact.fail("coupling", "every contact must have the same tangential coupling as the first (it is a property "
+                                 "of the condensed operator); kind and friction may differ per contact");
+    }
+    if (!problem.contacts.empty()) {
+      // One law for all: it is the problem's (the contacts keep none of their own).
+      problem.kind = problem.contact_kind(0);
+      problem.friction = problem.contact_friction(0);
+      bool uniform = true;
+      for (std::size_t c = 0; c < problem.contacts.size(); ++c)
+        uniform = uniform && problem.contact_kind(c) == problem.kind && problem.contact_friction(c) == problem.friction;
+      if (uniform)
+        for (auto& contact : problem.contacts) {
+          contact.kind.reset();
+          contact.friction.reset();
+        }
     }
     static const toml::table empty;
     const toml::table* solver = root.optional_table("solver", "[solver]");

@@ -184,11 +184,34 @@ std::string hertz_comparison(const contact::ContactProblem& problem, const conta
   return out;
 }
 
+// The contact law: kind and friction of every contact (null when the contacts differ:
+// `contacts` then gives each one's), and the tangential coupling.
+nlohmann::json law_json(const contact::ContactProblem& problem) {
+  nlohmann::json law = {{"kind", contact::to_string(problem.kind)},
+                        {"friction", problem.friction},
+                        {"tangential_coupling", problem.tangential_coupling}};
+  if (problem.contacts.empty()) return law;
+  nlohmann::json contacts = nlohmann::json::array();
+  bool uniform = true;
+  for (std::size_t c = 0; c < problem.contacts.size(); ++c) {
+    contacts.push_back({{"name", problem.contacts[c].name},
+                        {"kind", contact::to_string(problem.contact_kind(c))},
+                        {"friction", problem.contact_friction(c)}});
+    uniform = uniform && problem.contact_kind(c) == problem.contact_kind(0) &&
+              problem.contact_friction(c) == problem.contact_friction(0);
+  }
+  law["kind"] = uniform ? nlohmann::json(contact::to_string(problem.contact_kind(0))) : nlohmann::json(nullptr);
+  law["friction"] = uniform ? nlohmann::json(problem.contact_friction(0)) : nlohmann::json(nullptr);
+  law["contacts"] = contacts;
+  return law;
+}
+
 }  // namespace
 
 nlohmann::json contact_summary_json(const contact::ContactProblem& problem, const contact::ContactResult& result) {
   nlohmann::json j = interface_json(result);
-  j["kind"] = contact::to_string(problem.kind);
+  const auto law = law_json(problem);
+  j["kind"] = law["kind"];
   j["algorithm"] = contact::to_string(problem.solver.algorithm);
   if (problem.solver.algorithm == contact::Algorithm::thesis) {
     j["gmres_restart"] = problem.solver.gmres_restart;
@@ -197,11 +220,11 @@ nlohmann::json contact_summary_json(const contact::ContactProblem& problem, cons
   } else {
     j["tolerance"] = problem.solver.tolerance;
   }
-  j["friction"] = problem.friction;
+  j["friction"] = law["friction"];
   j["tangential_coupling"] = problem.tangential_coupling;
   j["increments"] = problem.increments;
   j["history"] = {{"end_time", problem.end_time},
-                  {"adaptive", problem.adaptive && problem.friction > 0.0},
+                  {"adaptive", problem.adaptive && problem.has_friction()},
                   {"steps_taken", result.steps_taken},
                   {"rejected_steps", result.rejected_steps},
                   {"rule", "a step in which more than max_state_changes pairs of one contact change state (open, "
@@ -231,7 +254,7 @@ std::string contact_report_text(const contact::ContactProblem& problem, const co
         result.contacts.size() == 1 ? std::string("contact")
                                     : "contact '" + contact.name + "' (" + body_label(problem, problem.contacts[c].side1) +
                                           " / " + body_label(problem, problem.contacts[c].side2) + ")";
-    if (problem.friction > 0.0)
+    if (c < problem.contacts.size() ? problem.contact_friction(c) > 0.0 : problem.friction > 0.0)
       std::snprintf(line, sizeof line, "%s: %zu pairs, %d in contact, a = %.6g, stick zone [%.6g, %.6g] (c = %.6g, c/a = %.4f)\n",
                     label.c_str(), contact.pairs.size(), s.pairs_in_contact, s.contact_radius, s.stick_start, s.stick_end,
                     s.stick_radius, s.stick_ratio());
@@ -331,9 +354,7 @@ void fill_contact_summary(RunSummary& summary, const contact::ContactProblem& pr
   const auto& solver = problem.solver;
   summary.options.update(
       {{"mesh", mesh_options_json(problem.mesh)},
-       {"law", {{"kind", contact::to_string(problem.kind)},
-                {"friction", problem.friction},
-                {"tangential_coupling", problem.tangential_coupling}}},
+       {"law", law_json(problem)},
        {"solver", {{"algorithm", contact::to_string(solver.algorithm)},
                    {"tolerance", solver.tolerance},
                    {"max_iterations", solver.max_iterations},
@@ -343,7 +364,7 @@ void fill_contact_summary(RunSummary& summary, const contact::ContactProblem& pr
                    {"max_threshold_iterations", solver.max_threshold_iterations}}},
        {"history", {{"end_time", problem.end_time},
                     {"increments", problem.increments},
-                    {"adaptive", problem.adaptive && problem.friction > 0.0},
+                    {"adaptive", problem.adaptive && problem.has_friction()},
                     {"max_state_changes", problem.max_state_changes},
                     {"max_steps", problem.max_steps},
                     {"record_steps", problem.record_steps}}}});

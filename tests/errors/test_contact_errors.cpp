@@ -187,12 +187,14 @@ TEST(ContactErrors, BoundaryInTwoContacts) {
   EXPECT_TRUE(contains(message, "a boundary is in two contacts")) << message;
 }
 
-TEST(ContactErrors, DifferentLawsPerContact) {
+// Friction and kind may differ per contact; the tangential coupling (a property of the
+// condensed operator) may not.
+TEST(ContactErrors, DifferentCouplingsPerContact) {
   const auto text = replaced(example("contact_roller_plates.toml"), "[[contact]]\nname = \"top\"",
-                             "[[contact]]\nname = \"top\"\nfriction = 0.2");
+                             "[[contact]]\nname = \"top\"\nfriction = 0.2\ncoupling = false");
   const auto message = input_error(text);
-  EXPECT_TRUE(contains(message, "contact[2].friction")) << message;
-  EXPECT_TRUE(contains(message, "same law")) << message;
+  EXPECT_TRUE(contains(message, "contact[2].coupling")) << message;
+  EXPECT_TRUE(contains(message, "same tangential coupling")) << message;
 }
 
 TEST(ContactErrors, BondInAOneRegionBody) {

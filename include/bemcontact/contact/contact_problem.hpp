@@ -123,10 +123,14 @@ struct ContactInterface {
   // side 1's node (e.g. Hertz's r^2 / 2R between two flats); empty for none. Negative
   // values are overlaps, as with the interference.
   bem::ScalarField initial_gap;
+  // This contact's own law; unset: the problem's (ContactProblem::kind, friction).
+  std::optional<ContactKind> kind;
+  std::optional<double> friction;
 };
 
-// Bodies, contacts, one contact law and one load history. The law (kind, friction) and
-// the solver are shared by every contact.
+// Bodies, contacts, their laws and one load history. The problem's law (kind, friction)
+// is that of every contact that does not set its own; the tangential coupling and the
+// solver are shared by every contact.
 struct ContactProblem {
   std::string title;
   std::string source_file;
@@ -174,6 +178,16 @@ struct ContactProblem {
   }
   dd::Subdomain& region(const BoundaryRef& ref) { return bodies.at(ref.body).regions.at(ref.region); }
   const dd::Subdomain& region(const BoundaryRef& ref) const { return bodies.at(ref.body).regions.at(ref.region); }
+  // The law of contact c: its own, or the problem's.
+  ContactKind contact_kind(std::size_t c) const { return contacts.at(c).kind.value_or(kind); }
+  double contact_friction(std::size_t c) const { return contacts.at(c).friction.value_or(friction); }
+  // Some contact has friction (the load path matters: adaptive steps, 16 increments).
+  bool has_friction() const {
+    if (contacts.empty()) return friction > 0.0;
+    for (std::size_t c = 0; c < contacts.size(); ++c)
+      if (contact_friction(c) > 0.0) return true;
+    return false;
+  }
 };
 
 // The one-body and decomposition problems as models of the same kind: one body of one

@@ -29,8 +29,9 @@ struct StepInput {
   Vector jump0;       // 2N: the loads' jump at `time` (CondensedProblem::jump_at)
   Vector target;      // K: the motions' right-hand sides at `time`
   Vector force_scale; // K: |prescribed force| at `time`, for the residual
-  ContactKind kind = ContactKind::unilateral;
-  double friction = 0.0;
+  // The law of each pair (that of its contact).
+  std::vector<ContactKind> kind;
+  Vector friction;
   Vector previous_tangential_jump;  // N: w_t at the end of the previous step
   Vector x_start;                   // 2N: initial guess (previous step)
   Vector delta_start;               // K: motions (previous step); empty for zeros
