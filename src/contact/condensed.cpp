@@ -49,6 +49,12 @@ struct RegionVariables {
   std::vector<Index> bond_unknown;  // per bond dof: the body's bond unknown
 };
 
+// From a rigid body's centre of rotation to a point of its contact (the side-1 node it
+// faces: the gap is small against the arm).
+Vec2 rotation_arm(const ContactProblem& problem, int body, const Vec2& point) {
+  return point - *problem.bodies.at(body).rigid->reference;
+}
+
 Index block_offset(const RegionVariables& variables, BlockKind kind, std::size_t contact) {
   for (const auto& block : variables.blocks)
     if (block.kind == kind && block.contact == contact) return block.offset;
@@ -292,8 +298,17 @@ ContactModel::ContactModel(const ContactProblem& problem, const bem::ProgressCal
         }
       } else {
         // The rigid body translates by its force loads' approaches and its prescribed displacement.
-        for (std::size_t k = 0; k < problem.forces.size(); ++k)
-          if (problem.forces[k].body == contact.rigid_body) u(problem.forces[k].component, 2 * n + static_cast<Index>(k)) -= 1.0;
+        for (std::size_t k = 0; k < problem.forces.size(); ++k) {
+          if (problem.forces[k].body != contact.rigid_body) continue;
+          const Index column = 2 * n + static_cast<Index>(k);
+          if (problem.forces[k].component < 2) {
+            u(problem.forces[k].component, column) -= 1.0;
+          } else {  // a small rotation theta about the reference: theta (-arm_y, arm_x)
+            const Vec2 arm = rotation_arm(problem, contact.rigid_body, pair.position1);
+            u(0, column) += arm.y();
+            u(1, column) -= arm.x();
+          }
+        }
         if (load_of_body[contact.rigid_body] >= 0)
           cp.loads[load_of_body[contact.rigid_body]].a.segment<2>(2 * (first + i)) =
               -Qg * *problem.bodies[contact.rigid_body].rigid->displacement;
@@ -329,8 +344,14 @@ ContactModel::ContactModel(const ContactProblem& problem, const bem::ProgressCal
       // The force on a rigid body is the integral of the traction its contacts apply to side 1.
       for (std::size_t c = 0; c < prepared_.contacts.size(); ++c) {
         if (prepared_.contacts[c].rigid_body != load.body) continue;
-        for (Index g = pair_offsets_[c]; g < pair_offsets_[c + 1]; ++g)
-          F.block<1, 2>(row, 2 * g) = pairs_[g].weight * R(g).row(load.component);
+        for (Index g = pair_offsets_[c]; g < pair_offsets_[c + 1]; ++g) {
+          if (load.component < 2) {
+            F.block<1, 2>(row, 2 * g) = pairs_[g].weight * R(g).row(load.component);
+          } else {  // the moment of the traction about the reference: arm_x t_y - arm_y t_x
+            const Vec2 arm = rotation_arm(problem, load.body, pairs_[g].position1);
+            F.block<1, 2>(row, 2 * g) = pairs_[g].weight * (arm.x() * R(g).row(1) - arm.y() * R(g).row(0));
+          }
+        }
       }
       continue;
     }

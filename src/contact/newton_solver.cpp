@@ -95,13 +95,20 @@ StepOutput solve_step_newton(const StepInput& in, const SolverOptions& options) 
       // to 0).
       const double carrying = 1e-3 * p.f.cwiseAbs().maxCoeff();
       const auto groups = pair_groups(p);
+      // All pairs at the closest distance (to round-off) go in: a flat face touches along
+      // its whole width, which a rotation of the body needs to be determined.
+      const double tie = 1e-9 * p.length_scale;
       for (std::size_t g = 0; g + 1 < groups.size(); ++g) {
         Index closest = -1;
         for (Index i = groups[g]; i < groups[g + 1]; ++i)
           if (p.f.col(2 * i).cwiseAbs().maxCoeff() > carrying &&
               (closest < 0 || p.gap[i] - w[2 * i] < p.gap[closest] - w[2 * closest]))
             closest = i;
-        if (closest >= 0) state[2 * closest] = 1;
+        if (closest < 0) continue;
+        for (Index i = groups[g]; i < groups[g + 1]; ++i)
+          if (p.f.col(2 * i).cwiseAbs().maxCoeff() > carrying &&
+              p.gap[i] - w[2 * i] <= p.gap[closest] - w[2 * closest] + tie)
+            state[2 * i] = 1;
       }
     }
     for (Index i = 0; i < n; ++i) {

@@ -256,11 +256,15 @@ BilateralResult kalker(const StepInput& in, const Vector& friction, const Vector
     // A force needs a contact to go through, and a free body a contact on each side.
     if (std::none_of(next.begin(), next.end(), [](bool b) { return b; }) && p.motions > 0) {
       const auto groups = pair_groups(p);
+      // All pairs at the closest distance (to round-off), as in the Newton solver.
+      const double tie = 1e-9 * p.length_scale;
       for (std::size_t g = 0; g + 1 < groups.size(); ++g) {
+        if (groups[g] == groups[g + 1]) continue;
         Index closest = groups[g];
         for (Index i = groups[g] + 1; i < groups[g + 1]; ++i)
           if (p.gap[i] - w[2 * i] < p.gap[closest] - w[2 * closest]) closest = i;
-        if (closest < groups[g + 1]) next[closest] = true;
+        for (Index i = groups[g]; i < groups[g + 1]; ++i)
+          if (p.gap[i] - w[2 * i] <= p.gap[closest] - w[2 * closest] + tie) next[i] = true;
       }
     }
     if (next == in_contact) return result;

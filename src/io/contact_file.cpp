@@ -171,6 +171,7 @@ contact::RigidBody read_rigid(const TableReader& rigid, const FileContext& conte
   }
   contact::RigidBody body;
   body.profile = shape.profile;
+  if (shape.profile != "contour") body.reference = shape.center;
   try {
     body.contour = contact::rigid_contour(shape);
   } catch (const GeometryError& error) {
@@ -440,14 +441,25 @@ void read_force_load(const TableReader& load, contact::ContactProblem& problem) 
                                 "held at 0), so they would have no effect; remove them");
   }
   const int component = load.integer_or("component", 2);
-  if (component != 1 && component != 2) load.fail("component", "must be 1 (x, or r in axisymmetry) or 2 (y, or z)");
+  if (component < 1 || component > 3)
+    load.fail("component", "must be 1 (x, or r in axisymmetry), 2 (y, or z) or 3 (the rotation of a rigid body)");
+  if (component == 3) {
+    if (!body.rigid)
+      load.fail("component", "component 3 (a moment) acts on a rigid body; body '" + *body_name + "' is elastic");
+    if (problem.analysis == AnalysisType::axisymmetric)
+      load.fail("component", "component 3 (a moment) has no meaning in axisymmetry (a rigid body there only translates "
+                             "along the axis)");
+    if (!body.rigid->reference)
+      load.fail("component", "rigid body '" + *body_name + "' is a contour: it has no centre to rotate about (use a "
+                             "profile with a center)");
+  }
   force.component = component - 1;
   force.force = load.number("force");
   if (force.force == 0.0) load.fail("force", "the total force must not be zero (a zero force through a "
                                                 "history is given by its amplitude)");
   if (load.has("amplitude")) force.amplitude = read_amplitude(load, "amplitude");
   force.name = load.optional_string("name").value_or(body.name + (force.piece >= 0 ? "_" + body.regions[force.region].body.pieces[force.piece].name : std::string()) +
-                                                    (force.component == 0 ? "_x" : "_y"));
+                                                    (force.component == 0 ? "_x" : force.component == 1 ? "_y" : "_rotation"));
   for (const auto& other : problem.forces) {
     if (other.name == force.name) load.fail("name", "two loads are named '" + force.name + "'");
     if (other.body == force.body && other.region == force.region && other.piece == force.piece &&

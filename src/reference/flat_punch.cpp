@@ -9,7 +9,11 @@ namespace bemcontact::reference {
 double FlatPunchPlane::pressure(double x) const {
   const double a = half_width;
   if (std::abs(x) >= a) return std::abs(x) == a ? std::numeric_limits<double>::infinity() : 0.0;
-  return load / (std::numbers::pi * std::sqrt((a - x) * (a + x)));
+  return (load + 2.0 * moment * x / (a * a)) / (std::numbers::pi * std::sqrt((a - x) * (a + x)));
+}
+
+double FlatPunchPlane::tilt() const {
+  return 4.0 * moment / (std::numbers::pi * half_width * half_width * plane_modulus);
 }
 
 double FlatPunchPlane::indentation_drop(double x) const {

@@ -42,6 +42,26 @@ std::vector<Record> run_rigid_punch(const Context& context) {
     records.push_back(compare_relative("normal_force", result.summary.normal_force, P, 1e-3));
     tag(records, first, "rigid-punch", {{"profile", "flat"}, {"interpolation", to_string(interpolation)}});
   }
+  // A moment on the punch as well (clockwise, M = 0.25 P a: the face stays in contact): the
+  // pressure (P + 2 M x / a^2) / (pi sqrt(a^2 - x^2)) within 1 % for |x| <= 0.8 a, and the
+  // face's rotation against the half-plane's -4 M / (pi a^2 E') within 2 % (the block is
+  // 20 a wide and deep, clamped at its base: its own compliance is a correction of order
+  // (a / W)^2).
+  {
+    auto problem = punch.problem;
+    contact::ForceLoad moment = problem.forces.front();
+    moment.name = "moment";
+    moment.component = 2;
+    moment.force = -0.25 * P * a;
+    problem.forces.push_back(moment);
+    reference::FlatPunchPlane tilted{P, a, reference::contact_modulus(problem.elastic(0).material, problem.analysis)};
+    tilted.moment = -moment.force;
+    const auto result = contact::solve_contact(with_operator(context, problem), context.progress);
+    const std::size_t first = records.size();
+    records.push_back(compare_scaled("pressure_max_relative_error", flat_punch_max_error(result.pairs, tilted), 0.0, 1.0, 0.01));
+    records.push_back(compare_relative("rotation", result.records.back().motions[1], -tilted.tilt(), 0.02));
+    tag(records, first, "rigid-punch", {{"profile", "flat"}, {"moment_over_Pa", "0.25"}, {"interpolation", "linear"}});
+  }
   const auto ball = load_contact_example(context, "contact_rigid_sphere.toml");
   const double R = ball.parameters.at("R"), Pb = ball.parameters.at("P");
   const auto hertz = reference::hertz_point_contact(Pb, R, ball.problem.elastic(0).material, kRigid,

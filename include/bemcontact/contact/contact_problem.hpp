@@ -50,8 +50,8 @@ struct ForceLoad {
   int body = 0;        // index into ContactProblem::bodies
   int region = 0;      // region of an elastic body
   int piece = -1;      // index into the region's pieces; -1 for a rigid body
-  int component = 1;   // 0: x (r), 1: y (z)
-  double force = 0.0;  // at amplitude 1
+  int component = 1;   // 0: x (r), 1: y (z), 2: rotation of a rigid body about its reference (plane)
+  double force = 0.0;  // at amplitude 1 (a moment, counter-clockwise positive, for a rotation)
   Amplitude amplitude;
 };
 
@@ -90,6 +90,9 @@ struct RigidBody {
   std::optional<Vec2> displacement;             // prescribed translation at amplitude 1 (components
                                                 // without a force load)
   Amplitude amplitude;                          // of the prescribed translation
+  // The centre of its rotation under a moment load: the profile's center (apex of a cone);
+  // none for a contour.
+  std::optional<Vec2> reference;
 };
 
 // A body: one or more elastic regions bonded along shared interfaces (each region a BEM

@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
+#include <iterator>
 #include <string>
 
 #include "bemcontact/contact/contact_solver.hpp"
@@ -104,6 +106,43 @@ TEST(ContactLaws, OneLawIsTheProblemsAndCouplingsMustAgree) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("coupling"), std::string::npos) << e.what();
   }
+}
+
+}  // namespace bemcontact::contact
+
+namespace bemcontact::contact {
+
+// A moment on a rigid flat punch (component 3 of a load): both algorithms give the same
+// pressure and rotation (the closed form is checked by `validate rigid-punch`); a moment on
+// an elastic body or in axisymmetry is refused.
+TEST(RigidRotation, BothAlgorithmsAgreeAndBadMomentsAreRefused) {
+  const std::string moment = "[[load]]\nname = \"moment\"\nbody = \"punch0\"\ncomponent = 3\nforce = 0.0025\n";
+  const auto newton = solve_contact(io::parse_contact_problem(problem_text(punch_on_block(0, "") + moment, "newton"), "m.toml").problem);
+  const auto thesis = solve_contact(io::parse_contact_problem(problem_text(punch_on_block(0, "") + moment, "thesis"), "m.toml").problem);
+  ASSERT_EQ(newton.records.back().motions.size(), 2);
+  const double rotation = newton.records.back().motions[1];
+  EXPECT_GT(rotation, 0.0);  // counter-clockwise moment, counter-clockwise rotation
+  EXPECT_NEAR(thesis.records.back().motions[1] / rotation, 1.0, 1e-3);
+  // The pressure is larger on the side the moment pushes down (-x).
+  const auto [left, right] = std::minmax_element(newton.pairs.begin(), newton.pairs.end(),
+                                                 [](const PairResult& a, const PairResult& b) { return a.coordinate < b.coordinate; });
+  EXPECT_GT(-left->p_n, -right->p_n);
+  const auto refused = [](const std::string& text, const std::string& fragment) {
+    try {
+      io::parse_contact_problem(text, "bad.toml");
+      ADD_FAILURE() << "accepted";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
+    }
+  };
+  refused(problem_text(punch_on_block(0, "") +
+                           "[[load]]\nbody = \"block0\"\nboundary = \"right\"\ncomponent = 3\nforce = 1.0\n",
+                       "newton"),
+          "is elastic");
+  std::ifstream in(std::string(BEMCONTACT_EXAMPLES_DIR) + "/contact_rigid_sphere.toml");
+  std::string ball((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  ball.replace(ball.find("[load]"), 6, "[[load]]");
+  refused(ball + "\n[[load]]\nbody = \"ball\"\ncomponent = 3\nforce = 1.0\n", "axisymmetry");
 }
 
 }  // namespace bemcontact::contact

@@ -223,6 +223,28 @@ TEST(ReferenceHertzLine, HalfWidthPressureAndFlamantAxisStresses) {
 }
 
 // ---------------------------------------------------------------------- flat punch
+// Surface indentation of a half-plane: u(x) = -(2 / (pi E')) int p(s) ln|x - s| ds + C
+// (Johnson (2.25b)); this is the integral over the punch's face, or of g(s) ln|x - s| with
+// g = `pressure` times a weight when `weight` is given. With s = a sin(phi), ds = sqrt(a^2 -
+// s^2) dphi absorbs the edge singularity: the integrand is g(s) sqrt((a - s)(a + s)) ln|x - s|
+// evaluated at the same rounded s as the library (so the rounding cancels); a node whose s
+// rounds onto an edge is moved one ulp inside. Without the log (`with_log` false): int g ds.
+template <class Pressure>
+double punch_log_integral(const ref::FlatPunchPlane& punch, double x, Pressure pressure, bool with_log = true) {
+  const double a = punch.half_width;
+  auto f = [&](double phi) {
+    double s = a * std::sin(phi);
+    if (std::abs(s) >= a) s = std::nextafter(std::copysign(a, s), 0.0);
+    const double g = pressure(s) * std::sqrt((a - s) * (a + s));
+    if (!with_log) return g;
+    // Nodes within round-off of the log singularity carry weight ~1e-16 ln(1e-16): dropped.
+    return x == s ? 0.0 : g * std::log(std::abs(x - s));
+  };
+  if (!with_log || std::abs(x) >= a) return tanh_sinh(f, -pi / 2, pi / 2);
+  const double split = std::asin(x / a);  // log singularity at s = x
+  return tanh_sinh(f, -pi / 2, split) + tanh_sinh(f, split, pi / 2);
+}
+
 TEST(ReferenceFlatPunch, SadowskyPressureKeepsTheSurfaceFlat) {
   const double P = 3.0, a = 3.0, Ep = 50.0;
   const ref::FlatPunchPlane punch{P, a, Ep};
@@ -231,23 +253,8 @@ TEST(ReferenceFlatPunch, SadowskyPressureKeepsTheSurfaceFlat) {
   // Total force: the 1/sqrt edge singularity cannot be sampled closer to the edge than one
   // ulp of a, which leaves a missed mass ~ sqrt(2 ulp / a) ~ 2e-8 of P.
   EXPECT_NEAR(tanh_sinh([&](double x) { return punch.pressure(x); }, -a, a) / P, 1.0, 1e-7);
-  // Surface indentation of a half-plane: u(x) = -(2 / (pi E')) int p(s) ln|x - s| ds + C
-  // (Johnson (2.25b)). With s = a sin(phi), ds = sqrt(a^2 - s^2) dphi absorbs the edge
-  // singularity: the integrand is g(s) ln|x - s| with g = p sqrt((a - s)(a + s)) evaluated at
-  // the same rounded s as the library (so the rounding cancels); a node whose s rounds onto
-  // an edge is moved one ulp inside.
-  auto integral = [&](double x) {
-    auto f = [&](double phi) {
-      double s = a * std::sin(phi);
-      if (std::abs(s) >= a) s = std::nextafter(std::copysign(a, s), 0.0);
-      const double g = punch.pressure(s) * std::sqrt((a - s) * (a + s));
-      // Nodes within round-off of the log singularity carry weight ~1e-16 ln(1e-16): dropped.
-      return x == s ? 0.0 : g * std::log(std::abs(x - s));
-    };
-    if (std::abs(x) >= a) return tanh_sinh(f, -pi / 2, pi / 2);
-    const double split = std::asin(x / a);  // log singularity at s = x
-    return tanh_sinh(f, -pi / 2, split) + tanh_sinh(f, split, pi / 2);
-  };
+  // Surface indentation of a half-plane (punch_log_integral).
+  auto integral = [&](double x) { return punch_log_integral(punch, x, [&](double s) { return punch.pressure(s); }); };
   auto indentation = [&](double x) { return -2.0 / (pi * Ep) * integral(x); };
   const double centre = indentation(0.0);
   // Classical value: int p ln|x - s| ds = P ln(a / 2) under the punch.
@@ -259,4 +266,24 @@ TEST(ReferenceFlatPunch, SadowskyPressureKeepsTheSurfaceFlat) {
   }
   EXPECT_EQ(punch.indentation_drop(1.0), 0.0);
   EXPECT_DOUBLE_EQ(ref::contact_modulus(Material{50.0, 0.3}, AnalysisType::plane_strain), 50.0 / 0.91);
+}
+
+// With a moment: the pressure carries P and M, and the surface under the punch is the
+// plane tilted by eps = 4 M / (pi a^2 E') (indentation deeper at +x), by the same
+// quadrature of the half-plane's surface displacement as above.
+TEST(ReferenceFlatPunch, AMomentTiltsTheFace) {
+  const double P = 3.0, a = 2.0, Ep = 50.0, M = 0.4 * P * a / 2.0;
+  ref::FlatPunchPlane punch{P, a, Ep};
+  punch.moment = M;
+  const auto force = [&](auto weight) {
+    return punch_log_integral(punch, 0.0, [&](double s) { return weight(s) * punch.pressure(s); }, false);
+  };
+  EXPECT_NEAR(force([](double) { return 1.0; }) / P, 1.0, 1e-12);
+  EXPECT_NEAR(force([](double s) { return s; }) / M, 1.0, 1e-12);
+  auto indentation = [&](double x) {
+    return -2.0 / (pi * Ep) * punch_log_integral(punch, x, [&](double s) { return punch.pressure(s); });
+  };
+  const double centre = indentation(0.0);
+  EXPECT_GT(punch.tilt(), 0.0);
+  for (double x : {0.5, -1.3, 1.9}) EXPECT_NEAR(indentation(x) - centre, punch.tilt() * x, 1e-11) << x;
 }
