@@ -277,7 +277,7 @@ ContactModel::ContactModel(const ContactProblem& problem, const bem::ProgressCal
   std::vector<int> load_of_body(problem.bodies.size(), -1);
   for (std::size_t b = 0; b < problem.bodies.size(); ++b) {
     const auto& rigid = problem.bodies[b].rigid;
-    if (!rigid || !rigid->displacement) continue;
+    if (!rigid || (!rigid->displacement && !rigid->rotation)) continue;
     load_of_body[b] = static_cast<int>(cp.loads.size());
     cp.loads.push_back({rigid->amplitude, Vector::Zero(2 * n), Vector::Zero(K)});
   }
@@ -309,9 +309,15 @@ ContactModel::ContactModel(const ContactProblem& problem, const bem::ProgressCal
             u(1, column) -= arm.x();
           }
         }
-        if (load_of_body[contact.rigid_body] >= 0)
-          cp.loads[load_of_body[contact.rigid_body]].a.segment<2>(2 * (first + i)) =
-              -Qg * *problem.bodies[contact.rigid_body].rigid->displacement;
+        if (load_of_body[contact.rigid_body] >= 0) {
+          const auto& rigid = *problem.bodies[contact.rigid_body].rigid;
+          Vec2 motion = rigid.displacement.value_or(Vec2::Zero());
+          if (rigid.rotation) {
+            const Vec2 arm = rotation_arm(problem, contact.rigid_body, pair.position1);
+            motion += *rigid.rotation * Vec2(-arm.y(), arm.x());
+          }
+          cp.loads[load_of_body[contact.rigid_body]].a.segment<2>(2 * (first + i)) = -Qg * motion;
+        }
       }
       W.middleRows(2 * (first + i), 2) = Qg * u;
       const Matrix w0 = Qg * u0;

@@ -129,7 +129,7 @@ contact::Amplitude read_amplitude(const TableReader& reader, std::string_view ke
 
 contact::RigidBody read_rigid(const TableReader& rigid, const FileContext& context, double extent) {
   rigid.check_keys({"profile", "center", "apex", "radius", "half_width", "edge_radius", "half_angle", "height",
-                    "points", "displacement", "amplitude"},
+                    "points", "displacement", "rotation", "amplitude"},
                    "a [body.rigid] table");
   contact::ProfileShape shape;
   shape.profile = rigid.choice("profile", {"sphere", "cylinder", "flat", "cone", "contour"}, "");
@@ -179,8 +179,17 @@ contact::RigidBody read_rigid(const TableReader& rigid, const FileContext& conte
   }
   if (const toml::node* node = rigid.find("displacement"))
     body.displacement = read_point(*node, rigid.where("displacement"), context);
+  if (rigid.has("rotation")) {
+    if (!body.reference)
+      rigid.fail("rotation", "a contour has no centre to rotate about (use a profile with a center)");
+    body.rotation = rigid.number("rotation");
+    if (!(std::abs(*body.rotation) <= 0.1))
+      rigid.fail("rotation", "the rotation (radians, counter-clockwise) must be small: |rotation| <= 0.1 (the "
+                             "model is linear in it), found " + format_number(*body.rotation));
+  }
   if (rigid.has("amplitude")) {
-    if (!body.displacement) rigid.fail("amplitude", "the amplitude is that of the displacement, which is not given");
+    if (!body.displacement && !body.rotation)
+      rigid.fail("amplitude", "the amplitude is that of the displacement or rotation, neither of which is given");
     body.amplitude = read_amplitude(rigid, "amplitude");
   }
   return body;
@@ -444,6 +453,9 @@ void read_force_load(const TableReader& load, contact::ContactProblem& problem) 
   if (component < 1 || component > 3)
     load.fail("component", "must be 1 (x, or r in axisymmetry), 2 (y, or z) or 3 (the rotation of a rigid body)");
   if (component == 3) {
+    if (body.rigid && body.rigid->rotation)
+      load.fail("component", "rigid body '" + *body_name + "' has a prescribed rotation; a moment on it would leave "
+                             "nothing to turn (give the rotation or the moment)");
     if (!body.rigid)
       load.fail("component", "component 3 (a moment) acts on a rigid body; body '" + *body_name + "' is elastic");
     if (problem.analysis == AnalysisType::axisymmetric)
@@ -708,7 +720,10 @@ ContactFile parse_contact_problem(std::string_view text, const std::string& file
     if (!body.rigid) continue;
     const bool loaded = std::any_of(problem.forces.begin(), problem.forces.end(),
                                     [b](const contact::ForceLoad& f) { return f.body == static_cast<int>(b); });
-    if (!loaded && !body.rigid->displacement)
+    if (body.rigid->rotation && problem.analysis == AnalysisType::axisymmetric)
+      throw InputError(body.where, "rigid body '" + body.name + "': a rotation has no meaning in axisymmetry (a rigid "
+                                   "body there only translates along the axis)");
+    if (!loaded && !body.rigid->displacement && !body.rigid->rotation)
       throw InputError(body.where, "rigid body '" + body.name + "' has no load and no displacement: give its displacement in "
                         "[body.rigid] (displacement = [u1, u2]) or press it with a force ([load] body = \"" + body.name +
                         "\")");

@@ -46,7 +46,7 @@ std::vector<Record> run_rigid_punch(const Context& context) {
   // pressure (P + 2 M x / a^2) / (pi sqrt(a^2 - x^2)) within 1 % for |x| <= 0.8 a, and the
   // face's rotation against the half-plane's -4 M / (pi a^2 E') within 2 % (the block is
   // 20 a wide and deep, clamped at its base: its own compliance is a correction of order
-  // (a / W)^2).
+  // (a / W)^2). Then that rotation prescribed instead of the moment: the same pressure.
   {
     auto problem = punch.problem;
     contact::ForceLoad moment = problem.forces.front();
@@ -61,6 +61,13 @@ std::vector<Record> run_rigid_punch(const Context& context) {
     records.push_back(compare_scaled("pressure_max_relative_error", flat_punch_max_error(result.pairs, tilted), 0.0, 1.0, 0.01));
     records.push_back(compare_relative("rotation", result.records.back().motions[1], -tilted.tilt(), 0.02));
     tag(records, first, "rigid-punch", {{"profile", "flat"}, {"moment_over_Pa", "0.25"}, {"interpolation", "linear"}});
+    // The same tilt prescribed instead (rotation = -eps, no moment load): the same pressure.
+    auto prescribed = punch.problem;
+    prescribed.bodies[prescribed.forces.front().body].rigid->rotation = -tilted.tilt();
+    const auto turned = contact::solve_contact(with_operator(context, prescribed), context.progress);
+    const std::size_t next = records.size();
+    records.push_back(compare_scaled("pressure_max_relative_error", flat_punch_max_error(turned.pairs, tilted), 0.0, 1.0, 0.01));
+    tag(records, next, "rigid-punch", {{"profile", "flat"}, {"rotation", "-4M/(pi a^2 E')"}, {"interpolation", "linear"}});
   }
   const auto ball = load_contact_example(context, "contact_rigid_sphere.toml");
   const double R = ball.parameters.at("R"), Pb = ball.parameters.at("P");

@@ -89,10 +89,11 @@ struct RigidBody {
   std::vector<geometry::BoundaryPiece> contour;
   std::optional<Vec2> displacement;             // prescribed translation at amplitude 1 (components
                                                 // without a force load)
-  Amplitude amplitude;                          // of the prescribed translation
-  // The centre of its rotation under a moment load: the profile's center (apex of a cone);
-  // none for a contour.
+  Amplitude amplitude;                          // of the prescribed translation and rotation
+  // The centre of its rotation (under a moment load, or prescribed): the profile's center
+  // (apex of a cone); none for a contour.
   std::optional<Vec2> reference;
+  std::optional<double> rotation;  // prescribed (small) rotation at amplitude 1, counter-clockwise (plane)
 };
 
 // A body: one or more elastic regions bonded along shared interfaces (each region a BEM

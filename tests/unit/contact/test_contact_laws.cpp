@@ -46,6 +46,12 @@ std::string problem_text(const std::string& bodies, const std::string& algorithm
          "[solver]\nalgorithm = \"" + algorithm + "\"\nincrements = 4\nadaptive = false\n";
 }
 
+std::string exact_text(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.17g", value);
+  return text;
+}
+
 double largest(const std::vector<PairResult>& pairs, bool shear) {
   double m = 0.0;
   for (const auto& p : pairs) m = std::max(m, std::abs(shear ? p.p_t : p.p_n));
@@ -113,8 +119,9 @@ TEST(ContactLaws, OneLawIsTheProblemsAndCouplingsMustAgree) {
 namespace bemcontact::contact {
 
 // A moment on a rigid flat punch (component 3 of a load): both algorithms give the same
-// pressure and rotation (the closed form is checked by `validate rigid-punch`); a moment on
-// an elastic body or in axisymmetry is refused.
+// pressure and rotation (the closed form is checked by `validate rigid-punch`), and that
+// rotation prescribed gives the same pressure; a moment on an elastic body or in
+// axisymmetry, a prescribed rotation with a moment, too large or in axisymmetry are refused.
 TEST(RigidRotation, BothAlgorithmsAgreeAndBadMomentsAreRefused) {
   const std::string moment = "[[load]]\nname = \"moment\"\nbody = \"punch0\"\ncomponent = 3\nforce = 0.0025\n";
   const auto newton = solve_contact(io::parse_contact_problem(problem_text(punch_on_block(0, "") + moment, "newton"), "m.toml").problem);
@@ -143,6 +150,24 @@ TEST(RigidRotation, BothAlgorithmsAgreeAndBadMomentsAreRefused) {
   std::string ball((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   ball.replace(ball.find("[load]"), 6, "[[load]]");
   refused(ball + "\n[[load]]\nbody = \"ball\"\ncomponent = 3\nforce = 1.0\n", "axisymmetry");
+  // A prescribed rotation: with a moment on the same body, too large, in axisymmetry.
+  const auto turned = [](const std::string& rotation) {
+    std::string text = punch_on_block(0, "");
+    text.replace(text.find("half_width = 1.0\n"), 17, "half_width = 1.0\nrotation = " + rotation + "\n");
+    return text;
+  };
+  refused(problem_text(turned("0.001") + moment, "newton"), "prescribed rotation");
+  refused(problem_text(turned("0.5"), "newton"), "must be small");
+  std::string turned_ball = ball;
+  turned_ball.replace(turned_ball.find("radius = \"R\""), 12, "radius = \"R\"\nrotation = 0.001");
+  refused(turned_ball, "axisymmetry");
+  // Prescribed, it turns the punch as the moment did: the same motion from either side.
+  const auto prescribed = solve_contact(
+      io::parse_contact_problem(problem_text(turned(exact_text(rotation)), "newton"), "r.toml").problem);
+  const auto [low, high] = std::minmax_element(prescribed.pairs.begin(), prescribed.pairs.end(),
+                                               [](const PairResult& a, const PairResult& b) { return a.coordinate < b.coordinate; });
+  EXPECT_NEAR(low->p_n / left->p_n, 1.0, 1e-8);  // Newton stops at a residual of 1e-10
+  EXPECT_NEAR(high->p_n / right->p_n, 1.0, 1e-8);
 }
 
 }  // namespace bemcontact::contact
