@@ -372,9 +372,10 @@ const char* to_string(OperatorKind kind) {
   return "?";
 }
 
-bool use_compressed_operator(const OperatorChoice& choice, AnalysisType analysis, Index unknowns) {
+bool use_compressed_operator(const OperatorChoice& choice, Index unknowns) {
   if (choice.kind == OperatorKind::compressed) return true;
-  return choice.kind == OperatorKind::automatic && unknowns >= OperatorChoice::automatic_threshold;
+  return choice.kind == OperatorKind::automatic && operators::hmatrix_available() &&
+         unknowns >= OperatorChoice::automatic_threshold;
 }
 
 }  // namespace bemcontact::bem

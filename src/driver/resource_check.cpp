@@ -6,6 +6,7 @@
 #include <string_view>
 
 #include "bemcontact/core/error.hpp"
+#include "bemcontact/operators/hmatrix.hpp"
 
 #include <omp.h>
 
@@ -89,13 +90,13 @@ BodyCost body_cost_alone(const bem::BodyDefinition& body, AnalysisType type, con
   const double elements = static_cast<double>(body_elements(body));
   const double interior = static_cast<double>(interior_points) * elements * interior_pair_seconds(type);
   const double t = std::max(1, threads);
-  cost.compressed = bem::use_compressed_operator(choice, type, cost.unknowns);
+  cost.compressed = bem::use_compressed_operator(choice, cost.unknowns);
   if (cost.compressed) {
     cost.peak_bytes = cost.held_bytes = compressed_bytes_per_nlogn * n_log_n(cost.unknowns);
     cost.seconds = n_log_n(cost.unknowns) * compressed_seconds_per_nlogn(type) + interior / t;
     return cost;
   }
-  cost.could_compress = true;
+  cost.could_compress = operators::hmatrix_available();
   cost.peak_bytes = dense_body_bytes(cost.unknowns);
   cost.held_bytes = 2.0 * 8.0 * n * n;  // LU factors and right-hand-side columns
   const double lu_flops = 2.0 / 3.0 * n * n * n;

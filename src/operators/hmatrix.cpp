@@ -9,6 +9,8 @@
 #include "bemcontact/core/error.hpp"
 
 namespace bemcontact::operators {
+
+bool hmatrix_available() { return true; }
 namespace {
 
 // One interface for the program (hmat's init/finalize are global); its settings are

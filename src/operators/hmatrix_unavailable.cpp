@@ -5,6 +5,8 @@
 
 namespace bemcontact::operators {
 
+bool hmatrix_available() { return false; }
+
 struct HMatrix::Handle {};
 
 HMatrix::HMatrix(const std::vector<Vec2>&, const std::vector<Vec2>&, const BlockFunction&, const HMatrixOptions&,

@@ -81,6 +81,6 @@ struct ProblemDefinition {
 };
 
 // Whether a body of `unknowns` unknowns is solved on compressed operators.
-bool use_compressed_operator(const OperatorChoice& choice, AnalysisType analysis, Index unknowns);
+bool use_compressed_operator(const OperatorChoice& choice, Index unknowns);
 
 }  // namespace bemcontact::bem

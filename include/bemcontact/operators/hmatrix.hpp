@@ -14,6 +14,10 @@
 
 namespace bemcontact::operators {
 
+// False in a build without hmat-oss (BEMCONTACT_WITH_HMAT=OFF): "auto" then stays dense,
+// and only an explicit "compressed" is refused (with the remedy).
+bool hmatrix_available();
+
 struct HMatrixOptions {
   double accuracy = 1e-10;  // relative accuracy of compressed blocks and of the H-LU
   double eta = 2.0;        // a block is compressed when min(diameters) <= eta * distance

@@ -152,6 +152,19 @@ TEST(CompressedSystem, FactoredBodyMatchesTheDenseOne) {
   EXPECT_LT(relative_difference(compressed.solve(data), dense.solve(data), true), 100.0 * compressed_choice.accuracy);
 }
 
+// "auto" compresses from the threshold only where hmat-oss is built in (an MIT-only build
+// stays dense instead of refusing); "compressed" is always taken (and refused without it).
+TEST(CompressedSystem, AutoCompressesOnlyWhereHMatricesAreBuilt) {
+  bem::OperatorChoice choice;
+  EXPECT_FALSE(bem::use_compressed_operator(choice, bem::OperatorChoice::automatic_threshold - 1));
+  EXPECT_EQ(bem::use_compressed_operator(choice, bem::OperatorChoice::automatic_threshold),
+            operators::hmatrix_available());
+  choice.kind = bem::OperatorKind::compressed;
+  EXPECT_TRUE(bem::use_compressed_operator(choice, 10));
+  choice.kind = bem::OperatorKind::dense;
+  EXPECT_FALSE(bem::use_compressed_operator(choice, 1000000));
+}
+
 // Axisymmetry: a solid cylinder (nodes on the axis) under an uneven pressure and an end
 // load. The diagonal blocks come from the axial translation and the radial expansion, whose
 // traction integral is a compressed matrix of its own: the operator A and the solution
