@@ -120,12 +120,6 @@ int run_python_module(const std::string& module, std::vector<std::string> argume
 #endif
 }
 
-std::string number_text(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%g", value);
-  return text;
-}
-
 std::string params_text(const validation::Record& r) {
   std::string text;
   for (const auto& [key, value] : r.params) text += (text.empty() ? "" : " ") + key + "=" + value;
@@ -176,7 +170,7 @@ int command_validate(std::vector<std::string> names, const std::vector<std::stri
       for (auto& r : results)
         if (std::none_of(r.params.begin(), r.params.end(), [](const auto& p) { return p.first == "operator"; })) {
           r.params.emplace_back("operator", bem::to_string(context.operator_kind));
-          if (context.operator_accuracy > 0.0) r.params.emplace_back("accuracy", number_text(context.operator_accuracy));
+          if (context.operator_accuracy > 0.0) r.params.emplace_back("accuracy", validation::number_text(context.operator_accuracy));
         }
     for (const auto& r : results) {
       const bool counted = r.comparison != validation::Comparison::report;

@@ -1,6 +1,6 @@
 #pragma once
-// Shared by the assembly benchmarks: time assemble_influence_matrices on one problem and
-// report the cost per (source node, element) pair.
+// Shared by the BEM benchmarks: time assemble_influence_matrices on one problem and report
+// the cost per (source node, element) pair; time the whole solve, dense or compressed.
 #include <benchmark/benchmark.h>
 
 #include "bemcontact/bem/analysis.hpp"
@@ -18,6 +18,19 @@ inline void measure_assembly(benchmark::State& state, const bem::ProblemDefiniti
   state.counters["elements"] = static_cast<double>(mesh.element_count());
   state.counters["ns_per_pair"] =
       benchmark::Counter(pairs * 1e-9, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+
+// The whole one-body solve with `compressed` operators or dense ones. Counters: unknowns,
+// the compressed share of stored values.
+inline void measure_whole_solve(benchmark::State& state, bem::ProblemDefinition problem, bool compressed) {
+  problem.operator_choice.kind = compressed ? bem::OperatorKind::compressed : bem::OperatorKind::dense;
+  bem::BodyResult result;
+  for (auto _ : state) {
+    result = bem::solve_body(problem);
+    benchmark::DoNotOptimize(result.boundary.displacement.data());
+  }
+  state.counters["unknowns"] = static_cast<double>(result.report.unknowns);
+  state.counters["stored_fraction"] = compressed ? result.report.compression_ratio : 1.0;
 }
 
 }  // namespace bemcontact::bench

@@ -58,15 +58,8 @@ BENCHMARK(BM_AssemblyAxisymmetric)->Arg(250)->Arg(500)->Arg(1000)->Arg(2000)->Un
 // the hollow section: where the compressed operator starts to pay (the ring kernels cost
 // 6x the plane ones per pair, so earlier than in plane). Counters: unknowns, stored share.
 void BM_WholeSolveAxisymmetric(benchmark::State& state) {
-  auto problem = hollow_section(static_cast<int>(state.range(0)), AnalysisType::axisymmetric);
-  problem.operator_choice.kind = state.range(1) != 0 ? bem::OperatorKind::compressed : bem::OperatorKind::dense;
-  bem::BodyResult result;
-  for (auto _ : state) {
-    result = bem::solve_body(problem);
-    benchmark::DoNotOptimize(result.boundary.displacement.data());
-  }
-  state.counters["unknowns"] = static_cast<double>(result.report.unknowns);
-  state.counters["stored_fraction"] = state.range(1) != 0 ? result.report.compression_ratio : 1.0;
+  bench::measure_whole_solve(state, hollow_section(static_cast<int>(state.range(0)), AnalysisType::axisymmetric),
+                             state.range(1) != 0);
 }
 BENCHMARK(BM_WholeSolveAxisymmetric)
     ->Args({1000, 0})->Args({1000, 1})->Args({2000, 0})->Args({2000, 1})->Args({4000, 0})->Args({4000, 1})

@@ -109,15 +109,7 @@ BENCHMARK(BM_Dgemm)->Arg(1000)->Arg(2000)->Arg(4000)->Unit(benchmark::kMilliseco
 // plate: 2 000 to 8 000 unknowns both ways, 16 000 compressed. Counters: unknowns, the compressed share of stored
 // values. bench/scaling_compressed.sh goes to 128k unknowns with peak memory.
 void BM_WholeSolve(benchmark::State& state) {
-  auto problem = square_plate(static_cast<int>(state.range(0)));
-  problem.operator_choice.kind = state.range(1) != 0 ? bem::OperatorKind::compressed : bem::OperatorKind::dense;
-  bem::BodyResult result;
-  for (auto _ : state) {
-    result = bem::solve_body(problem);
-    benchmark::DoNotOptimize(result.boundary.displacement.data());
-  }
-  state.counters["unknowns"] = static_cast<double>(result.report.unknowns);
-  state.counters["stored_fraction"] = state.range(1) != 0 ? result.report.compression_ratio : 1.0;
+  bench::measure_whole_solve(state, square_plate(static_cast<int>(state.range(0))), state.range(1) != 0);
 }
 BENCHMARK(BM_WholeSolve)  // (dense at 16 000 unknowns would take 2 GB and a minute)
     ->Args({1000, 0})->Args({1000, 1})->Args({2000, 0})->Args({2000, 1})->Args({4000, 0})->Args({4000, 1})

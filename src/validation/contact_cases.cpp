@@ -3,7 +3,6 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
-#include <sstream>
 
 #include "bemcontact/contact/contact_solver.hpp"
 #include "bemcontact/contact/halfspace_model.hpp"
@@ -35,12 +34,6 @@ HertzFit fit_hertz_profile(const std::vector<contact::PairResult>& pairs, double
 io::ContactFile load_contact_example(const Context& context, const std::string& file,
                                      const io::ParameterOverrides& overrides) {
   return io::read_contact_file(context.examples_dir + "/" + file, overrides);
-}
-
-std::string number_text(double value) {
-  std::ostringstream out;
-  out << value;
-  return out.str();
 }
 
 double flat_punch_max_error(const std::vector<contact::PairResult>& pairs, const reference::FlatPunchPlane& exact) {

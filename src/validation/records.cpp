@@ -1,8 +1,15 @@
 #include <cmath>
+#include <sstream>
 
 #include "bemcontact/validation/validation.hpp"
 
 namespace bemcontact::validation {
+
+std::string number_text(double value) {
+  std::ostringstream out;
+  out << value;
+  return out.str();
+}
 
 Record compare_relative(std::string quantity, double computed, double reference, double tolerance) {
   Record r;

@@ -22,9 +22,6 @@ HertzFit fit_hertz_profile(const std::vector<contact::PairResult>& pairs, double
 io::ContactFile load_contact_example(const Context& context, const std::string& file,
                                      const io::ParameterOverrides& overrides = {});
 
-// A number as a case parameter ("0.3").
-std::string number_text(double value);
-
 // Largest relative error of the pressure against a rigid flat punch's P / (pi sqrt(a^2 -
 // x^2)) over the pairs with |x| <= 0.8a (the edges are singular).
 double flat_punch_max_error(const std::vector<contact::PairResult>& pairs, const reference::FlatPunchPlane& exact);

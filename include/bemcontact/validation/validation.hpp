@@ -70,6 +70,9 @@ using Params = std::vector<std::pair<std::string, std::string>>;
 // Sets case name and params of records[from...].
 void tag(std::vector<Record>& records, std::size_t from, const std::string& case_name, const Params& params);
 
+// A number as a case parameter ("0.3").
+std::string number_text(double value);
+
 // Observed order of convergence between two meshes whose sizes differ by `ratio`.
 double observed_order(double coarse_error, double fine_error, double ratio);
 
