@@ -192,7 +192,7 @@ def contact_figure(result, name, reference, friction, title, path):
         if on.any() and friction > 0:
             ax.plot(r[on], np.zeros(on.sum()), "|", color=colour, ms=10, label=status)
     ax.axhline(0.0, color="0.6", lw=0.5)
-    ax.set_xlabel("position along the contact (x or r)")
+    ax.set_xlabel("position along the contact (coordinate: x or r; y or z on a side face)")
     ax.set_ylabel("traction")
     ax.set_title(f"{title}: contact '{name}' at the end of the history", fontsize=9)
     ax.legend(fontsize=8)

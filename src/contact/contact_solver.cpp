@@ -54,11 +54,15 @@ std::vector<PairResult> pair_results(const std::vector<ContactPair>& pairs, cons
                                      const PairLaws& laws, Index first) {
   double scale = 0.0;
   for (Index i = 0; i < static_cast<Index>(pairs.size()); ++i) scale = std::max(scale, std::abs(step.x[2 * i]));
+  // The abscissa along the zone: x1 for a zone facing up or down (the profiles of the
+  // reference cases), x2 for a side face, every normal closer to the x1 axis.
+  bool side_face = !pairs.empty();
+  for (const auto& pair : pairs) side_face = side_face && std::abs(pair.normal.x()) > std::abs(pair.normal.y());
   std::vector<PairResult> out;
   for (Index i = 0; i < static_cast<Index>(pairs.size()); ++i) {
     PairResult r;
     r.position = pairs[i].position1;
-    r.coordinate = pairs[i].position1.x();
+    r.coordinate = side_face ? pairs[i].position1.y() : pairs[i].position1.x();
     r.normal = pairs[i].normal;
     r.gap = pairs[i].gap - pairs[i].interference;
     const double lambda = step.x[2 * i];
@@ -159,6 +163,10 @@ ContactSummary summarise(const std::vector<ContactPair>& geometry, const std::ve
         s.stick_radius = std::clamp(r_stick + m_stick * (r_stick - r_in) / (m_in - m_stick), r_stick, r_slip);
     }
   }
+  double first = std::numeric_limits<double>::infinity(), last = -first;
+  for (const auto& pair : pairs)
+    if (pair.status != PairStatus::open) first = std::min(first, pair.coordinate), last = std::max(last, pair.coordinate);
+  if (first <= last) s.contact_start = first, s.contact_end = last;
   // The stick zone's ends (either side of x1 = 0, or both on one side).
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
   for (const auto& pair : pairs)

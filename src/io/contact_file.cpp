@@ -673,9 +673,13 @@ ContactFile parse_contact_problem(std::string_view text, const std::string& file
         if (!contact.has(key)) contact.fail(key, "missing: the name of the body on this side of the contact");
       const int body1 = body_named(problem, *contact.optional_string("body1"), contact, "body1");
       const int body2 = body_named(problem, *contact.optional_string("body2"), contact, "body2");
-      if (body1 == body2) contact.fail("body2", "a contact joins two different bodies");
       interface.side1 = read_side(contact, problem, body1, 1);
       interface.side2 = read_side(contact, problem, body2, 2);
+      // Self-contact (a slot's or a crack's faces, a split ring): two boundaries of one body.
+      if (body1 == body2 && interface.side1.region == interface.side2.region &&
+          interface.side1.piece == interface.side2.piece)
+        contact.fail("boundary2", "a boundary cannot be in contact with itself; for self-contact name two boundaries "
+                                  "of the body (split the boundary where the faces meet)");
       read_pairing(contact, interface);
       for (const auto& other : problem.contacts)
         for (const auto* side : {&other.side1, &other.side2})

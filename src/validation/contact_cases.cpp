@@ -4,6 +4,8 @@
 #include <limits>
 #include <numbers>
 
+#include <Eigen/Dense>
+
 #include "bemcontact/contact/contact_solver.hpp"
 #include "bemcontact/contact/halfspace_model.hpp"
 #include "bemcontact/io/contact_file.hpp"
@@ -29,6 +31,33 @@ HertzFit fit_hertz_profile(const std::vector<contact::PairResult>& pairs, double
   fit.p0 = std::sqrt(std::max(intercept, 0.0));
   fit.a = slope < 0.0 ? std::sqrt(-intercept / slope) : 0.0;
   return fit;
+}
+
+CentredHertzFit fit_hertz_profile_free_centre(const std::vector<contact::PairResult>& pairs) {
+  double first = std::numeric_limits<double>::infinity(), last = -first;
+  for (const auto& pair : pairs)
+    if (pair.status != contact::PairStatus::open) first = std::min(first, pair.coordinate), last = std::max(last, pair.coordinate);
+  CentredHertzFit out;
+  if (!(first < last)) return out;
+  const double middle = 0.5 * (first + last), window = 0.4 * (last - first);
+  // Normal equations of the quadratic in s = x - middle (3 x 3).
+  Eigen::Matrix3d normal = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d right = Eigen::Vector3d::Zero();
+  for (const auto& pair : pairs) {
+    const double s = pair.coordinate - middle;
+    if (pair.status == contact::PairStatus::open || std::abs(s) >= window) continue;
+    const Eigen::Vector3d basis(1.0, s, s * s);
+    normal += basis * basis.transpose();
+    right += basis * (pair.p_n * pair.p_n);
+  }
+  const Eigen::Vector3d c = normal.ldlt().solve(right);
+  if (!(c[2] < 0.0)) return out;
+  const double shift = -c[1] / (2.0 * c[2]);
+  const double p0_squared = c[0] + c[1] * shift + c[2] * shift * shift;
+  out.centre = middle + shift;
+  out.fit.p0 = std::sqrt(std::max(p0_squared, 0.0));
+  out.fit.a = std::sqrt(std::max(-p0_squared / c[2], 0.0));
+  return out;
 }
 
 io::ContactFile load_contact_example(const Context& context, const std::string& file,

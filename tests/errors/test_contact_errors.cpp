@@ -187,6 +187,15 @@ TEST(ContactErrors, BoundaryInTwoContacts) {
   EXPECT_TRUE(contains(message, "a boundary is in two contacts")) << message;
 }
 
+// Self-contact joins two boundaries of one body; one boundary against itself is refused.
+TEST(ContactErrors, BoundaryInContactWithItself) {
+  const auto text = example("contact_self_slot.toml");
+  EXPECT_NO_THROW(io::parse_contact_problem(text, "slot.toml"));
+  const auto message = input_error(replaced(text, "boundary2 = \"upper contact\"", "boundary2 = \"lower contact\""));
+  EXPECT_TRUE(contains(message, "key 'contact[1].boundary2'")) << message;
+  EXPECT_TRUE(contains(message, "cannot be in contact with itself")) << message;
+}
+
 // Friction and kind may differ per contact; the tangential coupling (a property of the
 // condensed operator) may not.
 TEST(ContactErrors, DifferentCouplingsPerContact) {

@@ -21,7 +21,7 @@ const char* to_string(ContactKind kind);
 
 struct PairResult {
   Vec2 position;        // node of body 1
-  double coordinate = 0.0;  // x1 (x or r) of the node: the abscissa of profiles
+  double coordinate = 0.0;  // x1 of the node (x2 on a side face): the abscissa of profiles
   Vec2 normal;
   double gap = 0.0;     // initial d (V.3)
   double p_n = 0.0;     // <p, n> on body 1: < 0 in compression (thesis sign)
@@ -41,6 +41,9 @@ struct ContactSummary {
   // the next slipping one (0, 0 when nothing sticks): its offset under a tangential load is
   // their mean (Nowell-Hills), its half-width half their difference.
   double stick_start = 0.0, stick_end = 0.0;
+  // The pairs in contact's extent along the coordinate: their first and last (0, 0 when
+  // none): the zone of a contact not centred on x1 = 0 (a side face, a tilted punch).
+  double contact_start = 0.0, contact_end = 0.0;
   double peak_pressure = 0.0;   // max of -p_n
   double centre_pressure = 0.0; // -p_n at the pair with the smallest |x1|
   double normal_force = 0.0;    // integral of -p_n (2 pi r in axisymmetry)
