@@ -113,6 +113,7 @@ ContactSummary summarise(const std::vector<ContactPair>& geometry, const std::ve
     s.pairs_in_contact += 1;
     s.peak_pressure = std::max(s.peak_pressure, -pair.p_n);
     s.normal_force += -pair.p_n * geometry[order[k]].weight;
+    s.tangential_force += pair.p_t * geometry[order[k]].weight;
     r_last = std::abs(pair.coordinate);
     q_last = pair.p_n * pair.p_n;
   }

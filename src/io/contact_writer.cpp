@@ -36,6 +36,7 @@ nlohmann::json summary_json(const contact::ContactSummary& s) {
           {"peak_pressure", s.peak_pressure},
           {"centre_pressure", s.centre_pressure},
           {"normal_force", s.normal_force},
+          {"tangential_force", s.tangential_force},
           {"approach", s.approach},
           {"pairs_in_contact", s.pairs_in_contact},
           {"stick_zone", {s.stick_start, s.stick_end}},
@@ -102,7 +103,7 @@ std::string contact_vtp(const std::vector<contact::PairResult>& pairs) {
 
 std::string contact_steps_csv(const contact::ContactInterfaceResult& result) {
   std::string out =
-      "step,time,a,c,stick_start,stick_end,contact_start,contact_end,peak_pressure,centre_pressure,normal_force,approach,pairs_in_contact,"
+      "step,time,a,c,stick_start,stick_end,contact_start,contact_end,peak_pressure,centre_pressure,normal_force,tangential_force,approach,pairs_in_contact,"
       "dissipated_energy,"
       "newton_iterations,kalker_iterations,threshold_iterations,gmres_cycles,residual\n";
   for (std::size_t k = 0; k < result.steps.size(); ++k) {
@@ -110,7 +111,7 @@ std::string contact_steps_csv(const contact::ContactInterfaceResult& result) {
     out += std::to_string(k + 1) + "," + number(s.time) + "," + number(s.contact_radius) + "," +
            number(s.stick_radius) + "," + number(s.stick_start) + "," + number(s.stick_end) + "," +
            number(s.contact_start) + "," + number(s.contact_end) + "," + number(s.peak_pressure) + "," + number(s.centre_pressure) + "," +
-           number(s.normal_force) + "," + number(s.approach) + "," + std::to_string(s.pairs_in_contact) + "," +
+           number(s.normal_force) + "," + number(s.tangential_force) + "," + number(s.approach) + "," + std::to_string(s.pairs_in_contact) + "," +
            number(s.dissipated_energy) + "," +
            std::to_string(s.newton_iterations) + "," + std::to_string(s.kalker_iterations) + "," +
            std::to_string(s.threshold_iterations) + "," + std::to_string(s.gmres_cycles) + "," + number(s.residual) +
@@ -266,8 +267,9 @@ std::string contact_report_text(const contact::ContactProblem& problem, const co
                     label.c_str(), contact.pairs.size(), s.pairs_in_contact, s.contact_start, s.contact_end,
                     s.contact_radius);
     out += line;
-    std::snprintf(line, sizeof line, "  peak pressure %.6g, centre pressure %.6g, normal force %.6g, approach %.6g\n",
-                  s.peak_pressure, s.centre_pressure, s.normal_force, s.approach);
+    std::snprintf(line, sizeof line,
+                  "  peak pressure %.6g, centre pressure %.6g, normal force %.6g, tangential force %.6g, approach %.6g\n",
+                  s.peak_pressure, s.centre_pressure, s.normal_force, s.tangential_force, s.approach);
     out += line;
   }
   if (problem.contacts.empty()) return out;

@@ -47,6 +47,7 @@ struct ContactSummary {
   double peak_pressure = 0.0;   // max of -p_n
   double centre_pressure = 0.0; // -p_n at the pair with the smallest |x1|
   double normal_force = 0.0;    // integral of -p_n (2 pi r in axisymmetry)
+  double tangential_force = 0.0;  // integral of p_t: body 1's shear along the pair tangent
   double approach = 0.0;        // delta of the force-loaded platen (0 without a force load)
   int pairs_in_contact = 0;
   int newton_iterations = 0, kalker_iterations = 0, threshold_iterations = 0, gmres_cycles = 0;
