@@ -247,8 +247,9 @@ std::vector<Record> run_bonded_regions(const Context& context) {
 //    a is 4 % and 11 % too large) against the Fourier-series solution of the same clamped
 //    disc (reference/pin_in_hole: exact per mode, 300 grid intervals, 10 000 modes, which
 //    move the edge by < 0.1 % when doubled): the contact half-angle, the peak pressure and
-//    the pin's approach within 2 % (measured 0.2 %, 0.01 %, 0.05 %). The infinite plate
-//    (Persson's setting; the same series with Ro = 1000) is reported next to it.
+//    the pin's approach within 2 % (measured 0.2 %, 0.01 %, 0.05 %); and the half-angle and
+//    peak pressure against the infinite plate of Persson's problem (the same series with
+//    Ro = 1000 Rh) within 2 %, of which the disc's finite size accounts for up to 0.6 %.
 std::vector<Record> run_pin_in_hole(const Context& context) {
   std::vector<Record> records;
   const auto base = load_contact_example(context, "contact_pin_in_hole.toml");
@@ -289,10 +290,10 @@ std::vector<Record> run_pin_in_hole(const Context& context) {
     records.push_back(compare_relative("approach", std::abs(result.summary.approach), exact.approach, 0.02));
     tag(records, first, "pin-in-hole", {{"P", number_text(P)}, {"reference", "Fourier series, clamped disc"}});
     const auto persson = infinite.solve(P);
-    const std::size_t reported = records.size();
-    records.push_back(report_only("half_angle", half_angle, persson.half_angle));
-    records.push_back(report_only("peak_pressure", result.summary.peak_pressure, persson.peak_pressure));
-    tag(records, reported, "pin-in-hole", {{"P", number_text(P)}, {"reference", "infinite plate (reported)"}});
+    const std::size_t persson_first = records.size();
+    records.push_back(compare_relative("half_angle", half_angle, persson.half_angle, 0.02));
+    records.push_back(compare_relative("peak_pressure", result.summary.peak_pressure, persson.peak_pressure, 0.02));
+    tag(records, persson_first, "pin-in-hole", {{"P", number_text(P)}, {"reference", "Fourier series, infinite plate"}});
   }
   return records;
 }
