@@ -60,6 +60,13 @@ CentredHertzFit fit_hertz_profile_free_centre(const std::vector<contact::PairRes
   return out;
 }
 
+double algorithm_difference(const contact::ContactResult& a, const contact::ContactResult& b) {
+  double worst = 0.0;
+  for (std::size_t i = 0; i < a.pairs.size() && i < b.pairs.size(); ++i)
+    worst = std::max({worst, std::abs(a.pairs[i].p_n - b.pairs[i].p_n), std::abs(a.pairs[i].p_t - b.pairs[i].p_t)});
+  return worst / a.summary.peak_pressure;
+}
+
 io::ContactFile load_contact_example(const Context& context, const std::string& file,
                                      const io::ParameterOverrides& overrides) {
   return io::read_contact_file(context.examples_dir + "/" + file, overrides);
@@ -75,14 +82,6 @@ double flat_punch_max_error(const std::vector<contact::PairResult>& pairs, const
 
 namespace {
 
-
-// Largest |difference| of p_n and p_t between two solutions, over the peak pressure.
-double algorithm_difference(const contact::ContactResult& a, const contact::ContactResult& b) {
-  double worst = 0.0;
-  for (std::size_t i = 0; i < a.pairs.size() && i < b.pairs.size(); ++i)
-    worst = std::max({worst, std::abs(a.pairs[i].p_n - b.pairs[i].p_n), std::abs(a.pairs[i].p_t - b.pairs[i].p_t)});
-  return worst / a.summary.peak_pressure;
-}
 
 // Nodal value at x1 = x by linear interpolation between the pairs around it.
 double pressure_at(const std::vector<contact::PairResult>& pairs, double x) {

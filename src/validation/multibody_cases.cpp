@@ -319,6 +319,12 @@ std::vector<Record> run_self_contact(const Context& context) {
     const std::size_t first = records.size();
     records.push_back(compare_relative("a", centred.fit.a, hertz.half_width(), 0.01));
     records.push_back(compare_relative("p0", centred.fit.p0, hertz.max_pressure(), 0.01));
+    if (p == 2e-4) {  // the thesis algorithm on the same pairs
+      auto thesis = problem;
+      thesis.solver.algorithm = contact::Algorithm::thesis;
+      const auto other = contact::solve_contact(with_operator(context, thesis), context.progress);
+      records.push_back(compare_scaled("thesis_vs_newton_max_difference", algorithm_difference(result, other), 0.0, 1.0, 1e-4));
+    }
     tag(records, first, "self-contact", {{"p", number_text(p)}});
   }
   return records;

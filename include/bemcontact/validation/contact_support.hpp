@@ -28,6 +28,10 @@ struct CentredHertzFit {
 };
 CentredHertzFit fit_hertz_profile_free_centre(const std::vector<contact::PairResult>& pairs);
 
+// Largest |difference| of p_n and p_t between two solutions of one problem (the same
+// pairs), over the first's peak pressure: Newton against the thesis algorithm.
+double algorithm_difference(const contact::ContactResult& a, const contact::ContactResult& b);
+
 // A bundled contact example, with parameter overrides.
 io::ContactFile load_contact_example(const Context& context, const std::string& file,
                                      const io::ParameterOverrides& overrides = {});
