@@ -137,25 +137,22 @@ PinInHole::Solution PinInHole::solve(double force) const {
     throw Error("pin in hole: needs 0 < max_angle < pi/2, >= 4 grid intervals, modes x grid step >= 25 (the hat "
                 "functions' Fourier series converged), a force > 0");
   const int nodes = grid_intervals + 1;
-  // Influence of the nodal pressures on u_r at the nodes: K = C^T diag(G) F over the modes,
-  // in blocks of modes (C: cos(n theta_i), F: the hats' coefficients, G: the compliances).
-  Eigen::MatrixXd influence = Eigen::MatrixXd::Zero(nodes, nodes);
-  Eigen::RowVectorXd first_mode(nodes);
-  constexpr int block = 1024;
-  for (int start = 0; start <= modes; start += block) {
-    const int count = std::min(block, modes + 1 - start);
-    Eigen::MatrixXd cosines(count, nodes), weighted(count, nodes);
-    for (int k = 0; k < count; ++k) {
-      const int n = start + k;
-      const double compliance = mode_compliance(n);
-      for (int j = 0; j < nodes; ++j) {
-        cosines(k, j) = std::cos(static_cast<double>(n) * j * h);
-        weighted(k, j) = compliance * hat_coefficient(n, j, h);
-        if (n == 1) first_mode(j) = hat_coefficient(1, j, h);
-      }
-    }
-    influence.noalias() += cosines.transpose() * weighted;
+  // Influence of the nodal pressures on u_r at the nodes: K_ij = sum_n G_n f_nj cos(n t_i).
+  // A full hat's coefficient is b_n cos(n t_j) (b_n its value at t_j = 0, twice the half
+  // hat's), so K_ij = (S(i - j) + S(i + j)) / 2 for j >= 1 and K_i0 = S(i) / 2, with
+  // S(m) = sum_n G_n b_n cos(n m h): 2 x intervals sums over the modes instead of a product.
+  std::vector<double> sums(static_cast<std::size_t>(2 * grid_intervals + 1), 0.0);
+  for (int n = 0; n <= modes; ++n) {
+    const double weight = mode_compliance(n) * 2.0 * hat_coefficient(n, 0, h);
+    for (std::size_t m = 0; m < sums.size(); ++m) sums[m] += weight * std::cos(static_cast<double>(n) * m * h);
   }
+  Eigen::MatrixXd influence(nodes, nodes);
+  Eigen::RowVectorXd first_mode(nodes);
+  for (int i = 0; i < nodes; ++i)
+    for (int j = 0; j < nodes; ++j)
+      influence(i, j) = j == 0 ? 0.5 * sums[static_cast<std::size_t>(i)]
+                               : 0.5 * (sums[static_cast<std::size_t>(std::abs(i - j))] + sums[static_cast<std::size_t>(i + j)]);
+  for (int j = 0; j < nodes; ++j) first_mode(j) = hat_coefficient(1, j, h);
   // The pressures' resultant along the force: P = pi Rh f_1.
   const Eigen::RowVectorXd resultant = pi * hole_radius * first_mode;
   const double e = hole_radius - pin_radius;
@@ -171,7 +168,7 @@ PinInHole::Solution PinInHole::solve(double force) const {
   Eigen::VectorXd p = Eigen::VectorXd::Zero(nodes);
   double delta = 0.0;
   for (int iteration = 0;; ++iteration) {
-    if (iteration > 4 * nodes) throw Error("pin in hole: the active set did not settle");
+    if (iteration > 200) throw Error("pin in hole: the active set did not settle");
     std::vector<int> set;
     for (int j = 0; j < nodes; ++j)
       if (active[static_cast<std::size_t>(j)]) set.push_back(j);
@@ -189,21 +186,17 @@ PinInHole::Solution PinInHole::solve(double force) const {
     p.setZero();
     for (Eigen::Index r = 0; r < m; ++r) p(set[r]) = x(r);
     delta = x(m);
-    // Drop the most negative pressure, else add the most penetrating open node.
-    Eigen::Index worst = -1;
-    double most = 0.0;
-    for (Eigen::Index r = 0; r < m; ++r)
-      if (x(r) < most) most = x(r), worst = set[r];
-    if (worst >= 0) {
-      active[static_cast<std::size_t>(worst)] = false;
-      continue;
-    }
+    // Primal-dual active set: drop every negative pressure and add every penetrating node;
+    // settled when neither happens (a few iterations: the zone grows from the first node).
     const Eigen::VectorXd opening = gap + influence * p - delta * direction;
-    double deepest = -1e-14 * gap.cwiseAbs().maxCoeff();
-    for (int j = 0; j < nodes; ++j)
-      if (!active[static_cast<std::size_t>(j)] && opening(j) < deepest) deepest = opening(j), worst = j;
-    if (worst < 0) break;
-    active[static_cast<std::size_t>(worst)] = true;
+    const double tolerance = 1e-14 * gap.cwiseAbs().maxCoeff();
+    bool changed = false;
+    for (int j = 0; j < nodes; ++j) {
+      const bool in = active[static_cast<std::size_t>(j)];
+      const bool keep = in ? p(j) >= 0.0 : opening(j) < -tolerance;
+      if (keep != in) active[static_cast<std::size_t>(j)] = keep, changed = true;
+    }
+    if (!changed) break;
   }
   Solution out;
   out.approach = delta;
