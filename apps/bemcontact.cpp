@@ -6,6 +6,7 @@
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <cmath>
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
@@ -176,8 +177,15 @@ int command_validate(std::vector<std::string> names, const std::vector<std::stri
       const bool counted = r.comparison != validation::Comparison::report;
       total += counted;
       failed += counted && !r.passed;
-      std::printf("%-24s %-34s %-22s %14.6g %14.6g %10.3g %10.3g  %s\n", r.case_name.c_str(), params_text(r).c_str(),
-                  r.quantity.c_str(), r.computed, r.reference, r.error, r.tolerance,
+      // A value reported without a reference shows "-" for reference and error.
+      auto cell = [](double value, int width) {
+        char text[64];
+        if (std::isnan(value)) std::snprintf(text, sizeof text, "%*s", width, "-");
+        else std::snprintf(text, sizeof text, "%*.*g", width, width == 14 ? 6 : 3, value);
+        return std::string(text);
+      };
+      std::printf("%-24s %-34s %-22s %14.6g %s %s %10.3g  %s\n", r.case_name.c_str(), params_text(r).c_str(),
+                  r.quantity.c_str(), r.computed, cell(r.reference, 14).c_str(), cell(r.error, 10).c_str(), r.tolerance,
                   !counted ? "info" : r.passed ? "yes" : "NO");
       json params = json::object();
       for (const auto& [key, value] : r.params) params[key] = value;

@@ -96,12 +96,12 @@ std::vector<Record> run_cattaneo_mindlin(const Context& context) {
     const double c = f.theory.stick_ratio(f.Q_star) * a;
     auto exact = [&](double x) { return f.theory.shear(x, f.Q_star); };
     records.push_back(compare_scaled("max_shear_error", max_shear_error(result.pairs, a, f.mu_p0, exact, {c}), 0.0, 1.0, 0.02));
-    records.push_back(report_only("max_shear_error_at_stick_edge", max_shear_error(result.pairs, a, f.mu_p0, exact, {c}, true), 0.0));
+    records.push_back(report_value("max_shear_error_at_stick_edge", max_shear_error(result.pairs, a, f.mu_p0, exact, {c}, true)));
     // Q reaches the contact whole (the shear on the cylinder, -p_t, sums to Q): the
     // boundary-element equilibrium of the cylinder, whose shortfall moves c (docs/contact.md):
     // within 0.2 %, which keeps c/a within 0.003 of its value for the whole Q (measured 0.1 %).
     records.push_back(compare_relative("tangential_force", -result.summary.tangential_force, f.Q_star, 2e-3));
-    records.push_back(report_only("steps", result.steps_taken, 0.0));
+    records.push_back(report_value("steps", result.steps_taken));
     tag(records, first, "cattaneo-mindlin", {{"Q_over_muP", number_text(ratio)}, {"a_over_R", number_text(kContactOverRadius)}});
   }
   return records;
@@ -128,8 +128,8 @@ std::vector<Record> run_mindlin_unloading(const Context& context) {
     auto exact = [&](double x) { return f.theory.unloading_shear(x, f.Q_star, Q); };
     const std::vector<double> edges = {c, f.theory.stick_ratio(f.Q_star) * a};
     records.push_back(compare_scaled("max_shear_error", max_shear_error(contact.step_pairs[k], a, f.mu_p0, exact, edges), 0.0, 1.0, 0.02));
-    records.push_back(report_only("max_shear_error_at_stick_edge",
-                                  max_shear_error(contact.step_pairs[k], a, f.mu_p0, exact, edges, true), 0.0));
+    records.push_back(report_value("max_shear_error_at_stick_edge",
+                                   max_shear_error(contact.step_pairs[k], a, f.mu_p0, exact, edges, true)));
     records.push_back(compare_scaled("reversal_c_over_a", stick_half_width(contact.steps[k]) / a,
                                      f.theory.reversal_stick_ratio(f.Q_star, Q), 1.0, 0.02));
     tag(records, first, "mindlin-unloading", {{"Q_over_Qstar", number_text(Q_over)}, {"Q_star_over_muP", number_text(ratio)}});
@@ -144,7 +144,7 @@ std::vector<Record> run_mindlin_unloading(const Context& context) {
   records.push_back(compare_scaled("loop_shear_difference", loop, 0.0, 1.0, 5e-3));
   records.push_back(compare_relative("loop_tangential_motion", q_motion_end, q_motion_start, 5e-3));
   records.push_back(compare_relative("dissipated_energy_per_cycle", energy, f.theory.dissipated_energy_per_cycle(f.Q_star), 0.03));
-  records.push_back(report_only("steps", result.steps_taken, 0.0));
+  records.push_back(report_value("steps", result.steps_taken));
   tag(records, first, "mindlin-unloading", {{"Q_star_over_muP", number_text(ratio)}, {"cycle", "Q* -> -Q* -> Q*"}});
   return records;
 }
@@ -170,7 +170,7 @@ std::vector<Record> run_nowell_hills(const Context& context) {
   std::vector<Record> records;
   records.push_back(compare_scaled("e_over_a", 0.5 * (start + end) / a, sigma_B / (4.0 * mu_p0), 1.0, 0.02));
   records.push_back(compare_scaled("c_over_a", 0.5 * (end - start) / a, theory.stick_ratio(Q), 1.0, 0.02));
-  records.push_back(report_only("steps", result.steps_taken, 0.0));
+  records.push_back(report_value("steps", result.steps_taken));
   tag(records, 0, "nowell-hills", {{"Q_over_muP", number_text(Q / (theory.friction * P))}, {"sigma_B_over_4mup0", number_text(sigma_B / (4.0 * mu_p0))}});
   return records;
 }

@@ -65,6 +65,9 @@ Record compare_scaled(std::string quantity, double computed, double reference, d
                       double tolerance);
 Record require_at_least(std::string quantity, double computed, double minimum);
 Record report_only(std::string quantity, double computed, double published);
+// A value reported without a reference (a step count, a time): reference and error are
+// NaN, printed "-" and written null.
+Record report_value(std::string quantity, double computed);
 
 using Params = std::vector<std::pair<std::string, std::string>>;
 // Sets case name and params of records[from...].
