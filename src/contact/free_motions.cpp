@@ -75,6 +75,8 @@ std::vector<FreeMotionConstraint> free_motion_constraints(const ContactProblem& 
     for (std::size_t c = 0; c < problem.contacts.size(); ++c) {
       const auto& contact = problem.contacts[c];
       if (contact.side1.body != static_cast<int>(b) && contact.side2.body != static_cast<int>(b)) continue;
+      // A self-contact moves with its body: its jumps see none of the body's rigid motions.
+      if (contact.side1.body == contact.side2.body) continue;
       for (Index g = pair_offsets[c]; g < pair_offsets[c + 1]; ++g)
         normals.push_back(pairs[g].normal.transpose() * modes_at(pairs[g].position1, centre, scale, type) * free);
     }

@@ -11,6 +11,16 @@
 namespace bemcontact::operators {
 
 bool hmatrix_available() { return true; }
+
+// A member of HMatrix::Handle (external linkage), so not in the anonymous namespace.
+struct ClusterTree {
+  hmat_cluster_tree_t* tree = nullptr;
+  std::vector<double> coordinates;
+  ~ClusterTree() {
+    if (tree) hmat_delete_cluster_tree(tree);
+  }
+};
+
 namespace {
 
 // One interface for the program (hmat's init/finalize are global); its settings are
@@ -28,14 +38,6 @@ std::mutex& settings_mutex() {
   static std::mutex m;
   return m;
 }
-
-struct ClusterTree {
-  hmat_cluster_tree_t* tree = nullptr;
-  std::vector<double> coordinates;
-  ~ClusterTree() {
-    if (tree) hmat_delete_cluster_tree(tree);
-  }
-};
 
 // The data of one assembly, shared by the prepare and compute callbacks.
 struct AssemblyContext {

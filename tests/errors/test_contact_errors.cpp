@@ -196,6 +196,21 @@ TEST(ContactErrors, BoundaryInContactWithItself) {
   EXPECT_TRUE(contains(message, "cannot be in contact with itself")) << message;
 }
 
+// A self-contact holds none of its body's rigid motions: without the clamp the slot's body
+// is free, and the first free motion named is a translation (the contact's pairs would
+// otherwise be taken as holding it and leave a singular system).
+TEST(ContactErrors, SelfContactHoldsNoRigidMotion) {
+  const auto text = replaced(example("contact_self_slot.toml"), "elements = 8\nu1 = 0.0\nu2 = 0.0", "elements = 8");
+  const auto problem = io::parse_contact_problem(text, "slot.toml").problem;
+  try {
+    contact::solve_contact(problem);
+    FAIL() << "a free body was solved";
+  } catch (const SolverError& error) {
+    const std::string message = error.what();
+    EXPECT_TRUE(contains(message, "body 'block' is free to move: translation")) << message;
+  }
+}
+
 // Friction and kind may differ per contact; the tangential coupling (a property of the
 // condensed operator) may not.
 TEST(ContactErrors, DifferentCouplingsPerContact) {
