@@ -10,12 +10,30 @@
 
 namespace bemcontact::io {
 
-namespace {
+// The compiled form is a member of Expression::Program, which has external linkage: its
+// types stay out of the anonymous namespace.
+namespace expression_detail {
 
 enum class Op { constant, x, y, negate, add, subtract, multiply, divide, power, call1, call2 };
 
 using Unary = double (*)(double);
 using Binary = double (*)(double, double);
+
+struct Instruction {
+  Op op;
+  double value;
+  Unary unary;
+  Binary binary;
+};
+
+}  // namespace expression_detail
+
+namespace {
+
+using expression_detail::Binary;
+using expression_detail::Instruction;
+using expression_detail::Op;
+using expression_detail::Unary;
 
 struct Function {
   const char* name;
@@ -81,13 +99,6 @@ struct Node {
 // Deeper expressions than this are refused: the parser, the compiler and the printer
 // recurse once per level, and no real boundary value needs more.
 constexpr int max_expression_depth = 200;
-
-struct Instruction {
-  Op op;
-  double value;
-  Unary unary;
-  Binary binary;
-};
 
 enum class TokenKind { number, name, op, open, close, comma, end };
 
