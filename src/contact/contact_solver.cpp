@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <utility>
 
 #include "bemcontact/bem/postprocess.hpp"
 #include "bemcontact/bem/resultants.hpp"
@@ -164,14 +165,17 @@ ContactSummary summarise(const std::vector<ContactPair>& geometry, const std::ve
         s.stick_radius = std::clamp(r_stick + m_stick * (r_stick - r_in) / (m_in - m_stick), r_stick, r_slip);
     }
   }
-  double first = std::numeric_limits<double>::infinity(), last = -first;
-  for (const auto& pair : pairs)
-    if (pair.status != PairStatus::open) first = std::min(first, pair.coordinate), last = std::max(last, pair.coordinate);
+  // The coordinates' extent of the pairs that pass `keep`: (+inf, -inf) for none.
+  auto extent = [&pairs](auto keep) {
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (const auto& pair : pairs)
+      if (keep(pair.status)) lo = std::min(lo, pair.coordinate), hi = std::max(hi, pair.coordinate);
+    return std::pair{lo, hi};
+  };
+  const auto [first, last] = extent([](PairStatus status) { return status != PairStatus::open; });
   if (first <= last) s.contact_start = first, s.contact_end = last;
   // The stick zone's ends (either side of x1 = 0, or both on one side).
-  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-  for (const auto& pair : pairs)
-    if (pair.status == PairStatus::stick) lo = std::min(lo, pair.coordinate), hi = std::max(hi, pair.coordinate);
+  const auto [lo, hi] = extent([](PairStatus status) { return status == PairStatus::stick; });
   if (lo <= hi) {
     double before = -std::numeric_limits<double>::infinity(), after = -before;
     for (const auto& pair : pairs) {

@@ -106,8 +106,9 @@ double PinInHole::mode_compliance(int n) const {
   const Eigen::Index size = static_cast<Eigen::Index>(terms.size());
   Eigen::MatrixXd system(size, size);
   Eigen::VectorXd rhs = Eigen::VectorXd::Zero(size);
+  std::vector<ModeCoefficients> on_hole;
   for (Eigen::Index t = 0; t < size; ++t) {
-    const auto hole = mode.at(terms[static_cast<std::size_t>(t)], a);
+    const auto& hole = on_hole.emplace_back(mode.at(terms[static_cast<std::size_t>(t)], a));
     const auto outer = mode.at(terms[static_cast<std::size_t>(t)], b);
     if (n == 0) {  // s_rr(a) = -1, u_r(b) = 0 (the shear and u_t vanish by symmetry)
       system(0, t) = hole.s_plus;
@@ -123,7 +124,7 @@ double PinInHole::mode_compliance(int n) const {
   const Eigen::VectorXd coefficients = system.fullPivLu().solve(rhs);
   double u = 0.0;
   for (Eigen::Index t = 0; t < size; ++t) {
-    const auto hole = mode.at(terms[static_cast<std::size_t>(t)], a);
+    const auto& hole = on_hole[static_cast<std::size_t>(t)];
     u += coefficients(t) * (n == 0 ? hole.u_plus : hole.u_plus + hole.u_minus);
   }
   return u / (2.0 * mu);

@@ -33,10 +33,8 @@ HertzFit fit_hertz_profile(const std::vector<contact::PairResult>& pairs, double
   return fit;
 }
 
-CentredHertzFit fit_hertz_profile_free_centre(const std::vector<contact::PairResult>& pairs) {
-  double first = std::numeric_limits<double>::infinity(), last = -first;
-  for (const auto& pair : pairs)
-    if (pair.status != contact::PairStatus::open) first = std::min(first, pair.coordinate), last = std::max(last, pair.coordinate);
+CentredHertzFit fit_hertz_profile_free_centre(const std::vector<contact::PairResult>& pairs, double first,
+                                              double last) {
   CentredHertzFit out;
   if (!(first < last)) return out;
   const double middle = 0.5 * (first + last), window = 0.4 * (last - first);

@@ -20,13 +20,14 @@ HertzFit fit_hertz_profile(const std::vector<contact::PairResult>& pairs, double
 
 // The same profile about a centre x_c that is not on the axis (a contact shifted by the
 // bodies' rotation): p^2 = c0 + c1 x + c2 x^2 fitted on the pairs in contact within 0.8 of
-// their extent's half-width about its middle; x_c = -c1 / (2 c2), p0^2 = p^2(x_c),
-// a^2 = -p0^2 / c2.
+// the half-width of their extent [first, last] (ContactSummary::contact_start, _end)
+// about its middle; x_c = -c1 / (2 c2), p0^2 = p^2(x_c), a^2 = -p0^2 / c2.
 struct CentredHertzFit {
   HertzFit fit;
   double centre = 0.0;
 };
-CentredHertzFit fit_hertz_profile_free_centre(const std::vector<contact::PairResult>& pairs);
+CentredHertzFit fit_hertz_profile_free_centre(const std::vector<contact::PairResult>& pairs, double first,
+                                              double last);
 
 // Largest |difference| of p_n and p_t between two solutions of one problem (the same
 // pairs), over the first's peak pressure: Newton against the thesis algorithm.
