@@ -10,6 +10,7 @@
 #include "bemcontact/bem/postprocess.hpp"
 #include "bemcontact/bem/resultants.hpp"
 #include "bemcontact/contact/step_solvers.hpp"
+#include "bemcontact/contact/zone_ends.hpp"
 #include "bemcontact/core/error.hpp"
 
 namespace bemcontact::contact {
@@ -50,15 +51,20 @@ PairLaws pair_laws(const ContactProblem& problem, const std::vector<Index>& grou
   return laws;
 }
 
+// The abscissa along a zone: x1 for a zone facing up or down (the profiles of the
+// reference cases), x2 for a side face, every normal closer to the x1 axis.
+bool on_side_face(const std::vector<ContactPair>& pairs) {
+  bool side_face = !pairs.empty();
+  for (const auto& pair : pairs) side_face = side_face && std::abs(pair.normal.x()) > std::abs(pair.normal.y());
+  return side_face;
+}
+
 // Results of the pairs [first, first + pairs.size()) of `laws`.
 std::vector<PairResult> pair_results(const std::vector<ContactPair>& pairs, const StepOutput& step,
                                      const PairLaws& laws, Index first) {
   double scale = 0.0;
   for (Index i = 0; i < static_cast<Index>(pairs.size()); ++i) scale = std::max(scale, std::abs(step.x[2 * i]));
-  // The abscissa along the zone: x1 for a zone facing up or down (the profiles of the
-  // reference cases), x2 for a side face, every normal closer to the x1 axis.
-  bool side_face = !pairs.empty();
-  for (const auto& pair : pairs) side_face = side_face && std::abs(pair.normal.x()) > std::abs(pair.normal.y());
+  const bool side_face = on_side_face(pairs);
   std::vector<PairResult> out;
   for (Index i = 0; i < static_cast<Index>(pairs.size()); ++i) {
     PairResult r;
@@ -188,6 +194,27 @@ ContactSummary summarise(const std::vector<ContactPair>& geometry, const std::ve
   return s;
 }
 
+// Stops a run whose unilateral contact reaches a smooth end of its zone (zone_ends.hpp).
+void check_zones_not_clipped(const ContactModel& model, const std::vector<PairStatus>& state, int step, double time) {
+  const auto& problem = model.problem();
+  const bool axisymmetric = problem.analysis == AnalysisType::axisymmetric;
+  for (std::size_t c = 0; c < problem.contacts.size(); ++c) {
+    const auto& contact = model.prepared().contacts[c];
+    if (contact.smooth_ends.empty() || problem.contact_kind(c) != ContactKind::unilateral) continue;
+    const bool side_face = on_side_face(contact.pairs);
+    std::vector<bool> in_contact;
+    std::vector<double> coordinate;
+    for (std::size_t i = 0; i < contact.pairs.size(); ++i) {
+      in_contact.push_back(state[static_cast<std::size_t>(model.pair_offset(c)) + i] != PairStatus::open);
+      coordinate.push_back(side_face ? contact.pairs[i].position1.y() : contact.pairs[i].position1.x());
+    }
+    const std::string axis = side_face ? (axisymmetric ? "z" : "y") : (axisymmetric ? "r" : "x");
+    const std::string message =
+        clipped_zone_message(problem.contacts[c].name, contact, in_contact, coordinate, axis, step, time);
+    if (!message.empty()) throw SolverError(message);
+  }
+}
+
 void check_history_options(const ContactProblem& problem) {
   if (problem.increments < 1) throw Error("contact: the number of load increments must be >= 1");
   if (!(problem.end_time > 0.0)) throw Error("contact: the history's end_time must be > 0");
@@ -276,7 +303,7 @@ std::vector<PairStatus> statuses(const std::vector<ContactPair>& pairs, const St
 
 LoadHistory solve_load_history(const CondensedProblem& condensed, const std::vector<ContactPair>& pairs,
                                const ContactProblem& problem, const bem::ProgressCallback& progress,
-                               const std::vector<Index>& groups) {
+                               const std::vector<Index>& groups, const StepCheck& check_step) {
   check_history_options(problem);
   const Index n = condensed.pairs;
   LoadHistory history;
@@ -361,6 +388,7 @@ LoadHistory solve_load_history(const CondensedProblem& condensed, const std::vec
         continue;
       }
     }
+    if (check_step) check_step(taken + 1, t_next, trial_state);
     step = trial;
     // Energy dissipated by friction in the step: -sum weight tau (slip increment).
     for (std::size_t g = 0; g + 1 < all_groups.size(); ++g)
@@ -417,7 +445,10 @@ ContactResult solve_contact(const ContactProblem& problem, const bem::ProgressCa
   start = Clock::now();
   std::vector<Index> groups;
   for (std::size_t c = 0; c <= problem.contacts.size(); ++c) groups.push_back(model.pair_offset(c));
-  auto history = solve_load_history(model.condensed(), model.pairs(), problem, progress, groups);
+  const auto check_zones = [&](int step, double time, const std::vector<PairStatus>& state) {
+    check_zones_not_clipped(model, state, step, time);
+  };
+  auto history = solve_load_history(model.condensed(), model.pairs(), problem, progress, groups, check_zones);
   result.timings.add("contact iterations", seconds_since(start));
   result.contacts = std::move(history.contacts);
   result.records = std::move(history.records);

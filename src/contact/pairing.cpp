@@ -10,6 +10,7 @@
 #include "bemcontact/bem/analysis.hpp"
 #include "bemcontact/bem/assembly.hpp"
 #include "bemcontact/core/error.hpp"
+#include "bemcontact/contact/zone_ends.hpp"
 #include "bemcontact/dd/interface.hpp"
 #include "bemcontact/integration/element_quadrature.hpp"
 #include "bemcontact/quadrature/gauss_legendre.hpp"
@@ -398,8 +399,10 @@ PreparedContact prepare_contact(const ContactProblem& problem) {
   }
   PreparedContact prepared;
   mesh_regions(problem, prepared);
-  for (const auto& contact : problem.contacts)
+  for (const auto& contact : problem.contacts) {
     prepared.contacts.push_back(pair_interface(problem, contact, prepared, prepared.warnings));
+    prepared.contacts.back().smooth_ends = smooth_zone_ends(problem, prepared.contacts.back(), prepared.regions);
+  }
   for (const auto& force : problem.forces) {
     if (problem.bodies[force.body].rigid) {
       prepared.platen_of_force.push_back(-1);

@@ -256,3 +256,34 @@ TEST(ContactErrors, ALargeInterferenceIsAWarning) {
 }
 
 }  // namespace bemcontact
+
+namespace bemcontact {
+
+// The README's ball at a load whose Hertz radius (0.163) outgrows both zones (r <= 0.1):
+// refused at the step where it happens, naming both zones and where to lengthen them.
+TEST(ContactErrors, ContactOutgrowingItsZonesIsRefused) {
+  const auto text = test_support::replaced(example_text(), "\nP = 31.5", "\nP = 400.0");
+  const auto message = solver_error(io::parse_contact_problem(text, "ball.toml").problem);
+  EXPECT_TRUE(contains(message, "contact 'contact' is clipped by its zones at load step 1 (t = 1)")) << message;
+  EXPECT_TRUE(contains(message, "boundary 'contact' of body 'ball' (side 1, running on into 'arc')")) << message;
+  EXPECT_TRUE(contains(message, "boundary 'contact' of body 'support' (side 2, running on into 'top')")) << message;
+  EXPECT_TRUE(contains(message, "past r = 0.19867")) << message;
+}
+
+// Only the support's zone too short (r <= 0.1 under a contact of radius 0.118): side 2.
+TEST(ContactErrors, ContactOutgrowingTheSecondZoneIsRefused) {
+  auto text = test_support::replaced(example_text(), "\nP = 31.5", "\nP = 150.0");
+  text = test_support::replaced(text, "rc = 0.1", "rc = 0.2");
+  text = test_support::replaced(text, "b = \"rc\"", "b = 0.1");
+  const auto message = solver_error(io::parse_contact_problem(text, "ball.toml").problem);
+  EXPECT_TRUE(contains(message, "is clipped by its zone at load step 1")) << message;
+  EXPECT_TRUE(contains(message, "boundary 'contact' of body 'support' (side 2")) << message;
+  EXPECT_FALSE(contains(message, "body 'ball'")) << message;
+}
+
+// A zone reaching past the contact is solved as before (the example: a = 0.070 in r <= 0.1).
+TEST(ContactErrors, ZonesLongerThanTheContactAreNotClipped) {
+  EXPECT_NO_THROW(contact::solve_contact(io::parse_contact_problem(example_text(), "ball.toml").problem));
+}
+
+}  // namespace bemcontact

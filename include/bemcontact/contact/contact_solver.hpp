@@ -3,6 +3,7 @@
 // take: per pair tractions, jumps and status; contact and stick radii; the full boundary
 // (and interior) solution of each body for stresses.
 #include <array>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -109,12 +110,15 @@ struct LoadHistory : ContactInterfaceResult {
   Vector x;                             // final (lambda_n, tau) per pair
   Vector delta;                         // final motions (CondensedProblem::motions)
 };
+// `check_step` (when given) sees every step before it is accepted: its number, pseudo-time
+// and the pairs' states; it stops the history by throwing.
+using StepCheck = std::function<void(int step, double time, const std::vector<PairStatus>& state)>;
 LoadHistory solve_load_history(const CondensedProblem& condensed, const std::vector<ContactPair>& pairs,
                                const ContactProblem& problem, const bem::ProgressCallback& progress = {},
-                               const std::vector<Index>& groups = {});
+                               const std::vector<Index>& groups = {}, const StepCheck& check_step = {});
 
-// Throws SolverError (with the load step and the residual) when a step does not converge,
-// GeometryError for a zone that cannot be paired, InputError for inconsistent options.
+// Throws SolverError (with the load step and the residual) when a step does not converge or
+// a unilateral contact is clipped by its zone (zone_ends.hpp), GeometryError for a zone that cannot be paired, InputError for inconsistent options.
 ContactResult solve_contact(const ContactProblem& problem, const bem::ProgressCallback& progress = {});
 
 }  // namespace bemcontact::contact

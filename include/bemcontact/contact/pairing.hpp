@@ -42,6 +42,16 @@ struct PreparedRegion {
   geometry::BoundaryMesh mesh;
 };
 
+// An end of a contact zone where the boundary runs on smoothly into the next one, with the
+// pair next to it: a contact reaching it is clipped by the zone (contact/zone_ends.hpp).
+struct SmoothZoneEnd {
+  int side = 1;      // the zone of side 1 or side 2
+  Index pair = -1;   // the outermost pair at this end (index in the interface's pairs)
+  Vec2 position;     // the zone's end vertex
+  std::string zone;  // "boundary 'contact' of body 'ball'"
+  std::string next;  // the boundary the zone runs on into
+};
+
 // The pairs of one contact interface.
 struct PreparedInterface {
   int region1 = -1, piece1 = -1;  // side 1: index into PreparedContact::regions, its zone piece
@@ -59,6 +69,7 @@ struct PreparedInterface {
   // constant traction whatever the meshes (collocating the forces at body 1's nodes would
   // alias it). Empty for a rigid side 2.
   Matrix transfer;                                   // zone_nodes2 x pairs
+  std::vector<SmoothZoneEnd> smooth_ends;            // zone ends a contact must not reach
 };
 
 struct PreparedContact {
