@@ -3,6 +3,7 @@
 #include <Eigen/Sparse>
 
 #include "bemcontact/contact/free_motions.hpp"
+#include "bemcontact/contact/zone_ends.hpp"
 #include "bemcontact/core/error.hpp"
 #include "bemcontact/dd/interface.hpp"
 #include "bemcontact/operators/dense_lu.hpp"
@@ -25,6 +26,17 @@ Vector CondensedProblem::force_at(double t) const {
   Vector out(motions);
   for (Index k = 0; k < motions; ++k) out[k] = force[k] == 0.0 ? 0.0 : force_amplitude[k].at(t) * force[k];
   return out;
+}
+
+bool CondensedProblem::half_model(Index first, Index last) const {
+  if (half_models.empty()) return false;
+  const auto all = pair_groups(*this);
+  bool every = true;
+  for (std::size_t c = 0; c + 1 < all.size(); ++c) {
+    if (all[c] == first && all[c + 1] == last) return half_models[c];
+    every = every && half_models[c];
+  }
+  return every;
 }
 
 void drop_tangential_coupling(CondensedProblem& problem) {
@@ -333,6 +345,8 @@ ContactModel::ContactModel(const ContactProblem& problem, const bem::ProgressCal
     cp.on_axis[g] = pairs_[g].on_axis;
   }
   cp.groups = pair_offsets_;
+  for (const auto& contact : prepared_.contacts)
+    cp.half_models.push_back(zone_starts_on_symmetry_line(problem, contact, prepared_.regions));
   for (const auto& region : regions) cp.length_scale = std::max(cp.length_scale, region.mesh.scale);
   cp.motions = K;
   cp.b = W.rightCols(K);

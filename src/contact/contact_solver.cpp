@@ -9,6 +9,7 @@
 
 #include "bemcontact/bem/postprocess.hpp"
 #include "bemcontact/bem/resultants.hpp"
+#include "bemcontact/contact/contact_summary.hpp"
 #include "bemcontact/contact/step_solvers.hpp"
 #include "bemcontact/contact/zone_ends.hpp"
 #include "bemcontact/core/error.hpp"
@@ -51,20 +52,12 @@ PairLaws pair_laws(const ContactProblem& problem, const std::vector<Index>& grou
   return laws;
 }
 
-// The abscissa along a zone: x1 for a zone facing up or down (the profiles of the
-// reference cases), x2 for a side face, every normal closer to the x1 axis.
-bool on_side_face(const std::vector<ContactPair>& pairs) {
-  bool side_face = !pairs.empty();
-  for (const auto& pair : pairs) side_face = side_face && std::abs(pair.normal.x()) > std::abs(pair.normal.y());
-  return side_face;
-}
-
 // Results of the pairs [first, first + pairs.size()) of `laws`.
 std::vector<PairResult> pair_results(const std::vector<ContactPair>& pairs, const StepOutput& step,
                                      const PairLaws& laws, Index first) {
   double scale = 0.0;
   for (Index i = 0; i < static_cast<Index>(pairs.size()); ++i) scale = std::max(scale, std::abs(step.x[2 * i]));
-  const bool side_face = on_side_face(pairs);
+  const bool side_face = zone_faces_sideways(pairs);
   std::vector<PairResult> out;
   for (Index i = 0; i < static_cast<Index>(pairs.size()); ++i) {
     PairResult r;
@@ -91,12 +84,9 @@ std::vector<PairResult> pair_results(const std::vector<ContactPair>& pairs, cons
   return out;
 }
 
-// (1 - ratio)^(2/3): linear in r near Spence's stick edge (see summarise).
-double stick_margin_measure(double slip_ratio) { return std::cbrt(std::pow(std::max(1.0 - slip_ratio, 0.0), 2)); }
-
 ContactSummary summarise(const std::vector<ContactPair>& geometry, const std::vector<PairResult>& pairs,
-                         const StepOutput& step, double load) {
-  ContactSummary s;
+                         const StepOutput& step, double load, bool half_model, const ContactSummary* previous) {
+  ContactSummary s = summarise_pairs(geometry, pairs, half_model, previous);
   s.time = load;
   s.approach = 0.0;  // set by the caller (the force load's motion)
   s.residual = step.residual;
@@ -104,93 +94,6 @@ ContactSummary summarise(const std::vector<ContactPair>& geometry, const std::ve
   s.kalker_iterations = step.kalker_iterations;
   s.threshold_iterations = step.threshold_iterations;
   s.gmres_cycles = step.gmres_cycles;
-  std::vector<std::size_t> order(pairs.size());
-  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    return std::abs(pairs[a].coordinate) < std::abs(pairs[b].coordinate);
-  });
-  if (!order.empty()) s.centre_pressure = -pairs[order.front()].p_n;
-  // Contact edge: outermost pair in contact; inside a smooth contact p ~ sqrt(a - r), so
-  // p^2 is extrapolated linearly from the two outermost contact pairs to its zero, kept
-  // between the last pair in contact and the first open one.
-  double r_last = -1.0, q_last = 0.0;
-  for (std::size_t k = 0; k < order.size(); ++k) {
-    const auto& pair = pairs[order[k]];
-    if (pair.status == PairStatus::open) continue;
-    s.pairs_in_contact += 1;
-    s.peak_pressure = std::max(s.peak_pressure, -pair.p_n);
-    s.normal_force += -pair.p_n * geometry[order[k]].weight;
-    s.tangential_force += pair.p_t * geometry[order[k]].weight;
-    r_last = std::abs(pair.coordinate);
-    q_last = pair.p_n * pair.p_n;
-  }
-  if (r_last >= 0.0) {
-    s.contact_radius = r_last;
-    double r_open = -1.0, r_prev = -1.0, q_prev = 0.0;
-    for (std::size_t k = 0; k < order.size(); ++k) {
-      const auto& pair = pairs[order[k]];
-      const double r = std::abs(pair.coordinate);
-      if (pair.status == PairStatus::open && r > r_last && r_open < 0.0) r_open = r;
-      // The next pair inward (a symmetric model holds two pairs at each |x1|).
-      if (pair.status != PairStatus::open && r < r_last * (1.0 - 1e-9)) r_prev = r, q_prev = pair.p_n * pair.p_n;
-    }
-    if (r_open > 0.0) {
-      s.contact_radius = 0.5 * (r_last + r_open);
-      if (r_prev >= 0.0 && q_prev > q_last)
-        s.contact_radius = std::clamp(r_last + q_last * (r_last - r_prev) / (q_prev - q_last), r_last, r_open);
-    }
-  }
-  // Stick edge: under a growing normal load the stick edge c is where the shear traction is
-  // smooth (Spence, Annex E): the square-root terms of a Cattaneo edge vanish and the margin
-  // 1 - |p_t| / (beta |p_n|) goes like (c - r)^(3/2). So the margin^(2/3) is extrapolated
-  // linearly from the two outermost stick pairs to its zero, kept between the outermost
-  // stick pair and the next slipping pair (midway when the extrapolation is not possible).
-  // Checked on an independent half-space model against (E.1) (validate spence-halfspace).
-  double r_stick = -1.0, m_stick = 0.0;
-  for (const auto& pair : pairs)
-    if (pair.status == PairStatus::stick && std::abs(pair.coordinate) > r_stick)
-      r_stick = std::abs(pair.coordinate), m_stick = stick_margin_measure(pair.slip_ratio);
-  if (r_stick >= 0.0) {
-    s.stick_radius = r_stick;
-    double r_slip = -1.0, r_in = -1.0, m_in = 0.0;
-    for (const auto& pair : pairs) {
-      const double r = std::abs(pair.coordinate);
-      if (pair.status == PairStatus::slip && r > r_stick && (r_slip < 0.0 || r < r_slip)) r_slip = r;
-      if (pair.status == PairStatus::stick && r < r_stick * (1.0 - 1e-9) && r > r_in)
-        r_in = r, m_in = stick_margin_measure(pair.slip_ratio);
-    }
-    if (r_slip < 0.0 && s.pairs_in_contact > 0) {
-      // Every pair in contact sticks: the slip annulus (if any) is narrower than the mesh.
-      bool all_stick = true;
-      for (const auto& pair : pairs) all_stick = all_stick && pair.status != PairStatus::slip;
-      if (all_stick) s.stick_radius = s.contact_radius;
-    }
-    if (r_slip > 0.0) {
-      s.stick_radius = 0.5 * (r_stick + r_slip);
-      if (r_in >= 0.0 && m_in > m_stick)
-        s.stick_radius = std::clamp(r_stick + m_stick * (r_stick - r_in) / (m_in - m_stick), r_stick, r_slip);
-    }
-  }
-  // The coordinates' extent of the pairs that pass `keep`: (+inf, -inf) for none.
-  auto extent = [&pairs](auto keep) {
-    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-    for (const auto& pair : pairs)
-      if (keep(pair.status)) lo = std::min(lo, pair.coordinate), hi = std::max(hi, pair.coordinate);
-    return std::pair{lo, hi};
-  };
-  const auto [first, last] = extent([](PairStatus status) { return status != PairStatus::open; });
-  if (first <= last) s.contact_start = first, s.contact_end = last;
-  // The stick zone's ends (either side of x1 = 0, or both on one side).
-  const auto [lo, hi] = extent([](PairStatus status) { return status == PairStatus::stick; });
-  if (lo <= hi) {
-    double before = -std::numeric_limits<double>::infinity(), after = -before;
-    for (const auto& pair : pairs) {
-      if (pair.status == PairStatus::slip && pair.coordinate < lo) before = std::max(before, pair.coordinate);
-      if (pair.status == PairStatus::slip && pair.coordinate > hi) after = std::min(after, pair.coordinate);
-    }
-    s.stick_start = std::isfinite(before) ? 0.5 * (lo + before) : lo;
-    s.stick_end = std::isfinite(after) ? 0.5 * (hi + after) : hi;
-  }
   return s;
 }
 
@@ -201,7 +104,7 @@ void check_zones_not_clipped(const ContactModel& model, const std::vector<PairSt
   for (std::size_t c = 0; c < problem.contacts.size(); ++c) {
     const auto& contact = model.prepared().contacts[c];
     if (contact.smooth_ends.empty() || problem.contact_kind(c) != ContactKind::unilateral) continue;
-    const bool side_face = on_side_face(contact.pairs);
+    const bool side_face = zone_faces_sideways(contact.pairs);
     std::vector<bool> in_contact;
     std::vector<double> coordinate;
     for (std::size_t i = 0; i < contact.pairs.size(); ++i) {
@@ -246,13 +149,15 @@ void add_iterations(ContactSummary& totals, const StepOutput& step) {
 // Records one step in a result of pairs [first, last).
 void record_step(ContactInterfaceResult& out, const std::vector<ContactPair>& pairs, const StepOutput& step,
                  const ContactProblem& problem, const PairLaws& laws, double load, double approach, Index first,
-                 Index last) {
+                 Index last, bool half_model) {
   const std::vector<ContactPair> group(pairs.begin() + first, pairs.begin() + last);
   StepOutput part = step;
   part.x = step.x.segment(2 * first, 2 * (last - first));
   part.w = step.w.segment(2 * first, 2 * (last - first));
   out.pairs = pair_results(group, part, laws, first);
-  out.steps.push_back(summarise(group, out.pairs, part, load));
+  const ContactSummary* previous = out.steps.empty() ? nullptr : &out.steps.back();
+  const ContactSummary summary = summarise(group, out.pairs, part, load, half_model, previous);
+  out.steps.push_back(summary);
   out.steps.back().approach = approach;
   if (problem.record_steps) out.step_pairs.push_back(out.pairs);
 }
@@ -399,10 +304,11 @@ LoadHistory solve_load_history(const CondensedProblem& condensed, const std::vec
     t = t_next;
     state = trial_state;
     const double approach = condensed.motions > 0 && condensed.force[0] != 0.0 ? step.delta[0] : 0.0;
-    record_step(history, pairs, step, problem, laws, t, approach, 0, n);
+    record_step(history, pairs, step, problem, laws, t, approach, 0, n, condensed.half_model(0, n));
     history.steps.back().dissipated_energy = dissipated.sum();
     for (std::size_t c = 0; c < history.contacts.size(); ++c) {
-      record_step(history.contacts[c], pairs, step, problem, laws, t, approach, groups[c], groups[c + 1]);
+      record_step(history.contacts[c], pairs, step, problem, laws, t, approach, groups[c], groups[c + 1],
+                  condensed.half_model(groups[c], groups[c + 1]));
       history.contacts[c].steps.back().dissipated_energy = dissipated[static_cast<Index>(c)];
     }
     StepRecord record;

@@ -113,6 +113,7 @@ HalfSpaceModel halfspace_sphere_model(const HalfSpaceSphereContact& contact) {
   if (!contact.tangential_coupling) drop_tangential_coupling(c);
   c.gap.resize(n);
   c.on_axis.assign(n, false);
+  c.half_models = {true};  // rings from the axis: the contact is symmetric about r = 0
   // The sphere's far field moves by delta along z: w_n = -delta. Its force balances the
   // contact: F_z = -sum weight_i lambda_i = -P.
   c.motions = 1;

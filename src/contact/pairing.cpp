@@ -209,6 +209,12 @@ void check_reference(const ContactProblem& problem, const BoundaryRef& ref, bool
 
 }  // namespace
 
+bool zone_faces_sideways(const std::vector<ContactPair>& pairs) {
+  bool sideways = !pairs.empty();
+  for (const auto& pair : pairs) sideways = sideways && std::abs(pair.normal.x()) > std::abs(pair.normal.y());
+  return sideways;
+}
+
 std::vector<double> node_weights(const geometry::BoundaryMesh& mesh, const std::vector<int>& pieces,
                                  const std::vector<Index>& nodes, AnalysisType type) {
   std::vector<Index> index(mesh.node_count(), -1);

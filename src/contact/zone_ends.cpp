@@ -83,7 +83,38 @@ std::vector<Vec2> contour_corners(const std::vector<geometry::BoundaryPiece>& co
   return corners;
 }
 
+// A straight boundary along x1 = 0 holding u_n = 0, t_t = 0: a symmetry line of the body.
+bool is_symmetry_line(const bem::BodyDefinition& body, int piece, double tolerance) {
+  const auto& p = body.pieces[static_cast<std::size_t>(piece)];
+  if (p.shape != geometry::PieceShape::line || std::abs(p.start.x()) > tolerance || std::abs(p.end.x()) > tolerance)
+    return false;
+  const auto& condition = body.conditions[static_cast<std::size_t>(piece)];
+  // Along x1 = 0 the normal is x1 (global component 0) and the tangent x2 (component 1).
+  const bool roller = condition.kind[0] == bem::ConditionKind::displacement && condition.kind[1] == bem::ConditionKind::traction;
+  for (const Vec2& at : {p.start, p.end})
+    if (!roller || condition.value_at(0, at) != 0.0 || condition.value_at(1, at) != 0.0) return false;
+  return true;
+}
+
 }  // namespace
+
+bool zone_starts_on_symmetry_line(const ContactProblem& problem, const PreparedInterface& contact,
+                                  const std::vector<PreparedRegion>& regions) {
+  if (zone_faces_sideways(contact.pairs)) return false;
+  const auto& region = regions[static_cast<std::size_t>(contact.region1)];
+  const double tolerance = 1e-9 * region.mesh.scale;
+  for (const bool at_start : {true, false}) {
+    const auto& vertices = region.mesh.vertices;
+    for (const auto& vertex : vertices) {
+      if ((at_start ? vertex.piece_out : vertex.piece_in) != contact.piece1 || std::abs(vertex.position.x()) > tolerance)
+        continue;
+      if (problem.analysis == AnalysisType::axisymmetric) return true;  // on the axis
+      const int next = at_start ? vertex.piece_in : vertex.piece_out;
+      if (next >= 0 && is_symmetry_line(region.definition, next, tolerance)) return true;
+    }
+  }
+  return false;
+}
 
 std::vector<SmoothZoneEnd> smooth_zone_ends(const ContactProblem& problem, const PreparedInterface& contact,
                                             const std::vector<PreparedRegion>& regions) {

@@ -40,6 +40,7 @@ nlohmann::json summary_json(const contact::ContactSummary& s) {
           {"approach", s.approach},
           {"pairs_in_contact", s.pairs_in_contact},
           {"stick_zone", {s.stick_start, s.stick_end}},
+          {"stick_offset", s.stick_offset},
           {"contact_zone", {s.contact_start, s.contact_end}},
           {"dissipated_energy", s.dissipated_energy},
           {"iterations",
@@ -103,13 +104,14 @@ std::string contact_vtp(const std::vector<contact::PairResult>& pairs) {
 
 std::string contact_steps_csv(const contact::ContactInterfaceResult& result) {
   std::string out =
-      "step,time,a,c,stick_start,stick_end,contact_start,contact_end,peak_pressure,centre_pressure,normal_force,tangential_force,approach,pairs_in_contact,"
+      "step,time,a,c,stick_start,stick_end,stick_offset,contact_start,contact_end,peak_pressure,centre_pressure,normal_force,tangential_force,approach,pairs_in_contact,"
       "dissipated_energy,"
       "newton_iterations,kalker_iterations,threshold_iterations,gmres_cycles,residual\n";
   for (std::size_t k = 0; k < result.steps.size(); ++k) {
     const auto& s = result.steps[k];
     out += std::to_string(k + 1) + "," + number(s.time) + "," + number(s.contact_radius) + "," +
            number(s.stick_radius) + "," + number(s.stick_start) + "," + number(s.stick_end) + "," +
+           number(s.stick_offset) + "," +
            number(s.contact_start) + "," + number(s.contact_end) + "," + number(s.peak_pressure) + "," + number(s.centre_pressure) + "," +
            number(s.normal_force) + "," + number(s.tangential_force) + "," + number(s.approach) + "," + std::to_string(s.pairs_in_contact) + "," +
            number(s.dissipated_energy) + "," +
@@ -258,10 +260,11 @@ std::string contact_report_text(const contact::ContactProblem& problem, const co
                                     : "contact '" + contact.name + "' (" + body_label(problem, problem.contacts[c].side1) +
                                           " / " + body_label(problem, problem.contacts[c].side2) + ")";
     if (c < problem.contacts.size() ? problem.contact_friction(c) > 0.0 : problem.friction > 0.0)
-      std::snprintf(line, sizeof line, "%s: %zu pairs, %d in contact over [%.6g, %.6g], a = %.6g, stick zone [%.6g, %.6g] (c = %.6g, c/a = %.4f)\n",
+      std::snprintf(line, sizeof line,
+                    "%s: %zu pairs, %d in contact over [%.6g, %.6g], a = %.6g, stick zone [%.6g, %.6g] (half-width c = "
+                    "%.6g, offset %.6g, c/a = %.4f)\n",
                     label.c_str(), contact.pairs.size(), s.pairs_in_contact, s.contact_start, s.contact_end,
-                    s.contact_radius, s.stick_start, s.stick_end,
-                    s.stick_radius, s.stick_ratio());
+                    s.contact_radius, s.stick_start, s.stick_end, s.stick_radius, s.stick_offset, s.stick_ratio());
     else
       std::snprintf(line, sizeof line, "%s: %zu pairs, %d in contact over [%.6g, %.6g], a = %.6g (frictionless)\n",
                     label.c_str(), contact.pairs.size(), s.pairs_in_contact, s.contact_start, s.contact_end,

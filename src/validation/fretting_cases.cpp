@@ -71,9 +71,8 @@ double max_shear_error(const std::vector<contact::PairResult>& pairs, double a, 
   return worst;
 }
 
-// The stick zone's half-width (ContactSummary: its ends midway between the outermost
-// sticking pairs and the next slipping ones).
-double stick_half_width(const contact::ContactSummary& s) { return 0.5 * (s.stick_end - s.stick_start); }
+// The stick zone's half-width c (ContactSummary: its ends located between pairs).
+double stick_half_width(const contact::ContactSummary& s) { return s.stick_radius; }
 
 const contact::ContactInterfaceResult& only(const contact::ContactResult& result) { return result.contacts.front(); }
 
@@ -92,7 +91,12 @@ std::vector<Record> run_cattaneo_mindlin(const Context& context) {
     const auto result = contact::solve_contact(with_operator(context, f.file.problem), context.progress);
     const double a = f.theory.hertz.half_width();
     const std::size_t first = records.size();
-    records.push_back(compare_scaled("c_over_a", stick_half_width(result.summary) / a, f.theory.stick_ratio(f.Q_star), 1.0, 0.02));
+    // The stick zone's half-width, its ends located between pairs (contact_summary.hpp):
+    // within 1 % of Cattaneo's; at Q = 0.9 mu P the zone spans 16 pair spacings at 60
+    // elements (2.2 % off), so that ratio is checked at 120 (0.4 %) below.
+    const double c_over_a = stick_half_width(result.summary) / a;
+    records.push_back(ratio < 0.9 ? compare_relative("c_over_a", c_over_a, f.theory.stick_ratio(f.Q_star), 0.01)
+                                  : report_only("c_over_a", c_over_a, f.theory.stick_ratio(f.Q_star)));
     const double c = f.theory.stick_ratio(f.Q_star) * a;
     auto exact = [&](double x) { return f.theory.shear(x, f.Q_star); };
     records.push_back(compare_scaled("max_shear_error", max_shear_error(result.pairs, a, f.mu_p0, exact, {c}), 0.0, 1.0, 0.02));
@@ -103,6 +107,14 @@ std::vector<Record> run_cattaneo_mindlin(const Context& context) {
     records.push_back(compare_relative("tangential_force", -result.summary.tangential_force, f.Q_star, 2e-3));
     records.push_back(report_value("steps", result.steps_taken));
     tag(records, first, "cattaneo-mindlin", {{"Q_over_muP", number_text(ratio)}, {"a_over_R", number_text(kContactOverRadius)}});
+    if (ratio == 0.9) {
+      const int elements = 120;
+      const auto fine = load_fretting(context, ratio, {{0.0, 0.0}, {1.0, 0.0}, {2.0, 1.0}}, elements);
+      const auto r = contact::solve_contact(with_operator(context, fine.file.problem), context.progress);
+      const std::size_t at = records.size();
+      records.push_back(compare_relative("c_over_a", stick_half_width(r.summary) / a, f.theory.stick_ratio(f.Q_star), 0.01));
+      tag(records, at, "cattaneo-mindlin", {{"Q_over_muP", number_text(ratio)}, {"contact_elements", std::to_string(elements)}});
+    }
   }
   return records;
 }
@@ -130,9 +142,21 @@ std::vector<Record> run_mindlin_unloading(const Context& context) {
     records.push_back(compare_scaled("max_shear_error", max_shear_error(contact.step_pairs[k], a, f.mu_p0, exact, edges), 0.0, 1.0, 0.02));
     records.push_back(report_value("max_shear_error_at_stick_edge",
                                    max_shear_error(contact.step_pairs[k], a, f.mu_p0, exact, edges, true)));
-    records.push_back(compare_scaled("reversal_c_over_a", stick_half_width(contact.steps[k]) / a,
-                                     f.theory.reversal_stick_ratio(f.Q_star, Q), 1.0, 0.02));
+    // c'/a at Q = 0 spans 2 x 21 pair spacings at 60 elements (1.4 % off; checked at 120 below).
+    const double reversal = stick_half_width(contact.steps[k]) / a, expected = f.theory.reversal_stick_ratio(f.Q_star, Q);
+    records.push_back(Q_over == 0.0 ? report_only("reversal_c_over_a", reversal, expected)
+                                    : compare_relative("reversal_c_over_a", reversal, expected, 0.01));
     tag(records, first, "mindlin-unloading", {{"Q_over_Qstar", number_text(Q_over)}, {"Q_star_over_muP", number_text(ratio)}});
+  }
+  {
+    // Unloading from Q* to 0 at 120 elements: c'/a within 1 % (measured 0.05 %).
+    const auto fine = load_fretting(context, ratio, {{0.0, 0.0}, {1.0, 0.0}, {2.0, 1.0}, {2.5, 0.0}}, 120);
+    const auto r = contact::solve_contact(with_operator(context, fine.file.problem), context.progress);
+    const std::size_t first = records.size();
+    records.push_back(compare_relative("reversal_c_over_a", stick_half_width(r.summary) / a,
+                                       f.theory.reversal_stick_ratio(f.Q_star, 0.0), 0.01));
+    tag(records, first, "mindlin-unloading",
+        {{"Q_over_Qstar", "0"}, {"Q_star_over_muP", number_text(ratio)}, {"contact_elements", "120"}});
   }
   const std::size_t start = step_at(result, 2.0), end = step_at(result, 4.0);
   double loop = 0.0;
@@ -151,8 +175,9 @@ std::vector<Record> run_mindlin_unloading(const Context& context) {
 
 // P, then Q = 0.5 mu P and a bulk stress sigma_B = 0.396 mu p0 in the block together
 // (examples/fretting_bulk_stress.toml, a/R = 0.00125, 120 elements per zone): the stick zone
-// keeps c/a = sqrt(1 - Q/(mu P)) and moves by e/a = sigma_B / (4 mu p0) (Nowell and Hills),
-// both within 0.02 (the zone's edges are located to half a pair spacing, 0.01a).
+// keeps c/a = sqrt(1 - Q/(mu P)) (within 1 %) and moves by e/a = sigma_B / (4 mu p0) (Nowell
+// and Hills; within 0.005: a quarter of the pair spacing, the ends being located between
+// pairs; measured 0.25 % and 0.0017).
 std::vector<Record> run_nowell_hills(const Context& context) {
   const double scale = kScale;
   const auto file = load_contact_example(context, "fretting_bulk_stress.toml",
@@ -166,10 +191,9 @@ std::vector<Record> run_nowell_hills(const Context& context) {
   const double a = theory.hertz.half_width(), mu_p0 = theory.friction * theory.hertz.max_pressure();
   const double sigma_B = file.parameters.at("sigma_B");
   const auto result = contact::solve_contact(with_operator(context, problem), context.progress);
-  const double start = result.summary.stick_start, end = result.summary.stick_end;
   std::vector<Record> records;
-  records.push_back(compare_scaled("e_over_a", 0.5 * (start + end) / a, sigma_B / (4.0 * mu_p0), 1.0, 0.02));
-  records.push_back(compare_scaled("c_over_a", 0.5 * (end - start) / a, theory.stick_ratio(Q), 1.0, 0.02));
+  records.push_back(compare_scaled("e_over_a", result.summary.stick_offset / a, sigma_B / (4.0 * mu_p0), 1.0, 0.005));
+  records.push_back(compare_relative("c_over_a", result.summary.stick_radius / a, theory.stick_ratio(Q), 0.01));
   records.push_back(report_value("steps", result.steps_taken));
   tag(records, 0, "nowell-hills", {{"Q_over_muP", number_text(Q / (theory.friction * P))}, {"sigma_B_over_4mup0", number_text(sigma_B / (4.0 * mu_p0))}});
   return records;

@@ -48,6 +48,12 @@ struct CondensedProblem {
   std::vector<Amplitude> force_amplitude;  // K
   double length_scale = 0.0;  // size of the bodies: a motion beyond 1e3 times it has no equilibrium (0: unchecked)
   std::vector<Index> groups;  // pair offsets of the contacts (group c: [groups[c], groups[c + 1])); empty: one
+  // Per group: its zone starts on a symmetry line or the axis at x1 = 0 (half of a contact
+  // symmetric about it; zone_ends.hpp). Empty: none.
+  std::vector<bool> half_models;
+  // Whether the pairs [first, last) are a half model: the group's flag, or for several
+  // groups together all of theirs.
+  bool half_model(Index first, Index last) const;
 
   // At pseudo-time t: the jump of the loads, w0 = sum_g amplitude_g(t) a_g; the motions'
   // right-hand sides; the prescribed forces.

@@ -33,15 +33,25 @@ struct PairResult {
   PairStatus status = PairStatus::open;
 };
 
+// How a stick edge moves (contact_summary.hpp: the margin's law near it).
+enum class StickEdgeLaw { advancing, receding };
+
 // Scalars of a solution (one load step or the final state).
 struct ContactSummary {
   double time = 1.0;            // pseudo-time of the history (the load factor of a single ramp)
   double contact_radius = 0.0;  // a: the edge of the zone in compression, along x1 (see docs/contact.md)
-  double stick_radius = 0.0;    // c: the edge of the stick zone around the centre
-  // The stick zone's ends along x1, each midway between its outermost sticking pair and
-  // the next slipping one (0, 0 when nothing sticks): its offset under a tangential load is
-  // their mean (Nowell-Hills), its half-width half their difference.
+  // The stick zone: its ends along the coordinate, each located between its outermost
+  // sticking pair and the next slipping one (contact_summary.hpp; 0, 0 when nothing
+  // sticks), its half-width c and its offset (their mean: Nowell-Hills). In a half model
+  // (the zone starts on a symmetry line or the axis) the zone is [-c, c]: stick_start = 0,
+  // c = stick_end, offset 0. When every pair in contact sticks, c = a.
+  double stick_radius = 0.0;    // c
   double stick_start = 0.0, stick_end = 0.0;
+  double stick_offset = 0.0;
+  // The outermost stick pairs' coordinates (start > end when nothing sticks) and each end's
+  // law, for the next step's summary.
+  double stick_outer_start = 1.0, stick_outer_end = -1.0;
+  StickEdgeLaw stick_law_start = StickEdgeLaw::advancing, stick_law_end = StickEdgeLaw::advancing;
   // The pairs in contact's extent along the coordinate: their first and last (0, 0 when
   // none): the zone of a contact not centred on x1 = 0 (a side face, a tilted punch).
   double contact_start = 0.0, contact_end = 0.0;

@@ -96,6 +96,10 @@ struct PreparedContact {
 // references out of range.
 PreparedContact prepare_contact(const ContactProblem& problem);
 
+// Whether the pairs face sideways (every pair normal closer to the x1 axis): their
+// abscissa along the zone is then x2 (y, z), otherwise x1 (x, r).
+bool zone_faces_sideways(const std::vector<ContactPair>& pairs);
+
 // Integral of each node's shape function over the given pieces' elements, times 2 pi r
 // in axisymmetry (4-point Gauss per element on its true geometry: exact for polynomial
 // shape functions times r on straight elements).

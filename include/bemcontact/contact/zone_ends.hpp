@@ -25,6 +25,12 @@ inline constexpr double kZoneCornerDegrees = 30.0;
 std::vector<SmoothZoneEnd> smooth_zone_ends(const ContactProblem& problem, const PreparedInterface& contact,
                                             const std::vector<PreparedRegion>& regions);
 
+// Whether side 1's zone starts on a symmetry line x1 = 0 (a straight boundary along it
+// with u_n = 0, t_t = 0) or, in axisymmetry, on the axis: the contact is half of one
+// symmetric about x1 = 0 (its stick zone's half-width is measured from there).
+bool zone_starts_on_symmetry_line(const ContactProblem& problem, const PreparedInterface& contact,
+                                  const std::vector<PreparedRegion>& regions);
+
 // The message (empty when no end is clipped) for a contact whose pairs `in_contact` (per
 // pair of the interface) close some smooth end, at load step `step` and pseudo-time `time`;
 // `coordinate(i)` is pair i's abscissa along the zone, `axis` its name ("x", "r", "y", "z").

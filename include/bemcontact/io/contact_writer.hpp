@@ -9,9 +9,11 @@
 //                      (x, y: body 1's node; n: common normal out of body 1; p_n < 0 in
 //                      compression; slip_ratio = |p_t| / (beta |p_n|); jump = [u] = 1u - 2u;
 //                      status open / stick / slip)
-//   contact_steps.csv  one row per load step: step,time,a,c,stick_start,stick_end,peak_pressure,
-//                      centre_pressure,normal_force,approach,pairs_in_contact,dissipated_energy,
+//   contact_steps.csv  one row per load step: step,time,a,c,stick_start,stick_end,stick_offset,
+//                      contact_start,contact_end,peak_pressure,centre_pressure,normal_force,
+//                      tangential_force,approach,pairs_in_contact,dissipated_energy,
 //                      newton_iterations,kalker_iterations,threshold_iterations,gmres_cycles,residual
+//                      (c: the stick zone's half-width, contact_summary.hpp)
 //   motions.csv        one row per load step (when the problem has motions): step,time, then
 //                      per force load <name>_force,<name>_displacement (the prescribed force
 //                      and the approach: a force-displacement loop), per free body motion
