@@ -208,6 +208,19 @@ int command_validate(std::vector<std::string> names, const std::vector<std::stri
 
 }  // namespace
 
+// A global option written after the sub-command (`run FILE --threads 2`): where it goes.
+std::string global_option_hint(int argc, char** argv) {
+  bool after_command = false;
+  for (int k = 1; k < argc; ++k) {
+    const std::string word = argv[k];
+    if (word == "run" || word == "mesh" || word == "validate" || word == "plot") after_command = true;
+    else if (after_command && (word == "--threads" || word.rfind("--threads=", 0) == 0))
+      return "bemcontact: --threads is a global option: write it before the sub-command, e.g. "
+             "bemcontact --threads 2 run FILE";
+  }
+  return {};
+}
+
 int main(int argc, char** argv) {
   CLI::App app{"bemcontact: boundary elements for 2D and axisymmetric elasticity and frictional contact"};
   app.require_subcommand(1);
@@ -277,6 +290,7 @@ int main(int argc, char** argv) {
     return app.exit(e);  // --help, --version
   } catch (const CLI::ParseError& e) {
     app.exit(e);
+    if (const std::string hint = global_option_hint(argc, argv); !hint.empty()) std::cerr << hint << "\n";
     return bad_input;  // every command-line error is bad input (exit 2)
   }
   if (threads > 0) omp_set_num_threads(threads);

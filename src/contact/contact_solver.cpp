@@ -52,9 +52,23 @@ PairLaws pair_laws(const ContactProblem& problem, const std::vector<Index>& grou
   return laws;
 }
 
-// Results of the pairs [first, first + pairs.size()) of `laws`.
+// The part of each pair's interference applied at pseudo-time t (its contact's amplitude):
+// the solver carries it in the jump w (ContactModel's loads), the results in the gap.
+Vector interference_at(const std::vector<ContactPair>& pairs, const ContactProblem& problem,
+                       const std::vector<Index>& groups, double t) {
+  Vector out = Vector::Zero(static_cast<Index>(pairs.size()));
+  if (groups.size() != problem.contacts.size() + 1) return out;
+  for (std::size_t c = 0; c < problem.contacts.size(); ++c)
+    for (Index i = groups[c]; i < groups[c + 1]; ++i)
+      out[i] = pairs[static_cast<std::size_t>(i)].interference * problem.contacts[c].interference_amplitude.at(t);
+  return out;
+}
+
+// Results of the pairs [first, first + pairs.size()) of `laws` and `interference`. The
+// reported gap is the initial gap less the interference applied so far, and jump_n the
+// relative displacement [u]·n itself: closed pairs have jump_n = gap (docs/contact.md).
 std::vector<PairResult> pair_results(const std::vector<ContactPair>& pairs, const StepOutput& step,
-                                     const PairLaws& laws, Index first) {
+                                     const PairLaws& laws, const Vector& interference, Index first) {
   double scale = 0.0;
   for (Index i = 0; i < static_cast<Index>(pairs.size()); ++i) scale = std::max(scale, std::abs(step.x[2 * i]));
   const bool side_face = zone_faces_sideways(pairs);
@@ -64,11 +78,11 @@ std::vector<PairResult> pair_results(const std::vector<ContactPair>& pairs, cons
     r.position = pairs[i].position1;
     r.coordinate = side_face ? pairs[i].position1.y() : pairs[i].position1.x();
     r.normal = pairs[i].normal;
-    r.gap = pairs[i].gap - pairs[i].interference;
+    r.gap = pairs[i].gap - interference[first + i];
     const double lambda = step.x[2 * i];
     r.p_n = -lambda;
     r.p_t = step.x[2 * i + 1];
-    r.jump_n = step.w[2 * i];
+    r.jump_n = step.w[2 * i] - interference[first + i];
     r.jump_t = step.w[2 * i + 1];
     const double friction = laws.friction[first + i];
     const double g = friction * std::abs(lambda);
@@ -95,6 +109,42 @@ ContactSummary summarise(const std::vector<ContactPair>& geometry, const std::ve
   s.threshold_iterations = step.threshold_iterations;
   s.gmres_cycles = step.gmres_cycles;
   return s;
+}
+
+// The force loads whose sign pulls their body away from every contact it has along the
+// load's direction (a contact in compression cannot carry them), as a hint appended to a
+// solver failure; empty when none does.
+std::string pulling_loads_hint(const ContactModel& model) {
+  const auto& problem = model.problem();
+  std::string hint;
+  for (const auto& load : problem.forces) {
+    if (load.component > 1 || load.force == 0.0) continue;
+    bool faces_a_contact = false, pulls_from_all = true;
+    std::string contacts;
+    for (std::size_t c = 0; c < problem.contacts.size(); ++c) {
+      const auto& contact = problem.contacts[c];
+      const int side = contact.side1.body == load.body ? 1 : contact.side2.body == load.body ? 2 : 0;
+      if (side == 0) continue;
+      Vec2 normal = Vec2::Zero();  // body 1 toward body 2
+      for (Index g = model.pair_offset(c); g < model.pair_offset(c + 1); ++g) normal += model.pairs()[g].normal;
+      if (normal.norm() == 0.0) continue;
+      // The direction that presses this body on the other side.
+      const double toward = (side == 1 ? 1.0 : -1.0) * normal.normalized()[load.component];
+      if (std::abs(toward) < 0.5) continue;  // the load runs along this contact
+      faces_a_contact = true;
+      pulls_from_all = pulls_from_all && load.force * toward < 0.0;
+      contacts += (contacts.empty() ? "'" : ", '") + contact.name + "'";
+    }
+    if (!faces_a_contact || !pulls_from_all) continue;
+    std::ostringstream text;
+    text.precision(6);
+    text << ". Load '" << load.name << "' (force " << load.force << " along " << (problem.analysis == AnalysisType::axisymmetric ? (load.component == 0 ? "r" : "z")
+                                                                                             : (load.component == 0 ? "x" : "y"))
+         << ") pulls body '" << problem.bodies[static_cast<std::size_t>(load.body)].name << "' away from contact "
+         << contacts << ": a contact in compression cannot carry it; reverse its sign to press the bodies together";
+    hint += text.str();
+  }
+  return hint;
 }
 
 // Stops a run whose unilateral contact reaches a smooth end of its zone (zone_ends.hpp).
@@ -148,13 +198,13 @@ void add_iterations(ContactSummary& totals, const StepOutput& step) {
 
 // Records one step in a result of pairs [first, last).
 void record_step(ContactInterfaceResult& out, const std::vector<ContactPair>& pairs, const StepOutput& step,
-                 const ContactProblem& problem, const PairLaws& laws, double load, double approach, Index first,
-                 Index last, bool half_model) {
+                 const ContactProblem& problem, const PairLaws& laws, const Vector& interference, double load,
+                 double approach, Index first, Index last, bool half_model) {
   const std::vector<ContactPair> group(pairs.begin() + first, pairs.begin() + last);
   StepOutput part = step;
   part.x = step.x.segment(2 * first, 2 * (last - first));
   part.w = step.w.segment(2 * first, 2 * (last - first));
-  out.pairs = pair_results(group, part, laws, first);
+  out.pairs = pair_results(group, part, laws, interference, first);
   const ContactSummary* previous = out.steps.empty() ? nullptr : &out.steps.back();
   const ContactSummary summary = summarise(group, out.pairs, part, load, half_model, previous);
   out.steps.push_back(summary);
@@ -200,7 +250,8 @@ int state_changes(const std::vector<PairStatus>& before, const std::vector<PairS
 
 std::vector<PairStatus> statuses(const std::vector<ContactPair>& pairs, const StepOutput& step, const PairLaws& laws) {
   std::vector<PairStatus> out;
-  for (const auto& r : pair_results(pairs, step, laws, 0)) out.push_back(r.status);
+  for (const auto& r : pair_results(pairs, step, laws, Vector::Zero(static_cast<Index>(pairs.size())), 0))
+    out.push_back(r.status);
   return out;
 }
 
@@ -304,11 +355,12 @@ LoadHistory solve_load_history(const CondensedProblem& condensed, const std::vec
     t = t_next;
     state = trial_state;
     const double approach = condensed.motions > 0 && condensed.force[0] != 0.0 ? step.delta[0] : 0.0;
-    record_step(history, pairs, step, problem, laws, t, approach, 0, n, condensed.half_model(0, n));
+    const Vector interference = interference_at(pairs, problem, all_groups, t);
+    record_step(history, pairs, step, problem, laws, interference, t, approach, 0, n, condensed.half_model(0, n));
     history.steps.back().dissipated_energy = dissipated.sum();
     for (std::size_t c = 0; c < history.contacts.size(); ++c) {
-      record_step(history.contacts[c], pairs, step, problem, laws, t, approach, groups[c], groups[c + 1],
-                  condensed.half_model(groups[c], groups[c + 1]));
+      record_step(history.contacts[c], pairs, step, problem, laws, interference, t, approach, groups[c],
+                  groups[c + 1], condensed.half_model(groups[c], groups[c + 1]));
       history.contacts[c].steps.back().dissipated_energy = dissipated[static_cast<Index>(c)];
     }
     StepRecord record;
@@ -346,6 +398,18 @@ ContactResult solve_contact(const ContactProblem& problem, const bem::ProgressCa
   auto start = Clock::now();
   const ContactModel model(problem, progress);
   result.timings.add("assembly, factorisation and condensation", seconds_since(start));
+  // Interior points sorted before the contact solve: a listed point outside its region is an
+  // input error at once (grid points outside are dropped and listed).
+  const auto& regions = model.prepared().regions;
+  std::vector<bem::InteriorSelection> selections;
+  for (const auto& region : regions) {
+    selections.push_back(
+        bem::select_interior_points(region.mesh, problem.bodies[region.body].regions[region.region].interior_points));
+    if (selections.back().listed_outside.empty()) continue;
+    const auto& p = *selections.back().listed_outside.front();
+    throw InputError(p.where.file.empty() ? SourceLocation{problem.source_file, 0, "interior.points"} : p.where,
+                     "point " + point_text(p.position) + " is not inside " + region.label);
+  }
   result.unknowns = 2 * model.condensed().pairs + model.condensed().motions;
 
   start = Clock::now();
@@ -354,7 +418,13 @@ ContactResult solve_contact(const ContactProblem& problem, const bem::ProgressCa
   const auto check_zones = [&](int step, double time, const std::vector<PairStatus>& state) {
     check_zones_not_clipped(model, state, step, time);
   };
-  auto history = solve_load_history(model.condensed(), model.pairs(), problem, progress, groups, check_zones);
+  auto history = [&] {
+    try {
+      return solve_load_history(model.condensed(), model.pairs(), problem, progress, groups, check_zones);
+    } catch (const SolverError& error) {
+      throw SolverError(error.what() + pulling_loads_hint(model));
+    }
+  }();
   result.timings.add("contact iterations", seconds_since(start));
   result.contacts = std::move(history.contacts);
   result.records = std::move(history.records);
@@ -365,7 +435,6 @@ ContactResult solve_contact(const ContactProblem& problem, const bem::ProgressCa
 
   start = Clock::now();
   result.warnings = model.prepared().warnings;
-  const auto& regions = model.prepared().regions;
   for (std::size_t r = 0; r < regions.size(); ++r) {
     const auto& region = regions[r];
     const auto& body = problem.bodies[region.body];
@@ -402,10 +471,8 @@ ContactResult solve_contact(const ContactProblem& problem, const bem::ProgressCa
     if (points.empty()) continue;
     any_interior = true;
     const bem::ElementIntegrator integrator(problem.analysis, region.definition.material);
-    // Every point of a contact file's grid may fall outside (as_grid_points).
-    auto selection = bem::select_interior_points(result.meshes[r], points);
-    for (const auto* p : selection.listed_outside) selection.dropped.push_back(p->position);
-    result.interior[r] = bem::interior_values(result.meshes[r], integrator, result.boundary[r], std::move(selection), progress);
+    result.interior[r] =
+        bem::interior_values(result.meshes[r], integrator, result.boundary[r], std::move(selections[r]), progress);
   }
   if (any_interior) result.timings.add("interior points", seconds_since(start));
   return result;

@@ -55,6 +55,26 @@ void add_mesh_warnings(std::vector<std::string>& warnings, const geometry::Bound
     warnings.push_back(label.empty() ? warning : label + ": " + warning);
 }
 
+// Linear elasticity assumes small strains and rotations: displacements that vary over a body
+// by more than 2 % of its size (its translation aside) are outside the model, and most often
+// a unit mistake (E in GPa with loads in MPa). The same bound as a large interference.
+void add_small_strain_warning(std::vector<std::string>& warnings, const geometry::BoundaryMesh& mesh,
+                              const bem::BoundarySolution& solution, const std::string& label) {
+  if (solution.displacement.empty()) return;
+  Vec2 mean = Vec2::Zero();
+  for (const auto& u : solution.displacement) mean += u / static_cast<double>(solution.displacement.size());
+  double spread = 0.0;
+  for (const auto& u : solution.displacement) spread = std::max(spread, (u - mean).norm());
+  if (!(spread > 0.02 * mesh.scale)) return;
+  char text[512];
+  std::snprintf(text, sizeof text,
+                "%sthe displacements vary by %.3g over the body, %.3g %% of its size %.3g: linear elasticity assumes "
+                "small strains (a few per mille); check the units (E in MPa with lengths in mm and forces in N) and "
+                "the loads",
+                label.empty() ? "" : (label + ": ").c_str(), spread, 100.0 * spread / mesh.scale, mesh.scale);
+  warnings.push_back(text);
+}
+
 // Likely mistakes in the geometry of each body (geometry_warnings), named by body when
 // there are several.
 void add_geometry_warnings(std::vector<std::string>& warnings, const bem::BodyDefinition& body,
@@ -152,8 +172,11 @@ RunOutput run_decomposition(std::string_view text, const std::string& file_name,
   for (const auto& subdomain : file.problem.subdomains)
     add_geometry_warnings(output.warnings, subdomain.body, "subdomain '" + subdomain.body.name + "'");
   const auto result = dd::solve_decomposition(file.problem, options.progress, options.parallel);
-  for (const auto& subdomain : result.subdomains)
+  for (const auto& subdomain : result.subdomains) {
     add_mesh_warnings(output.warnings, subdomain.mesh, "subdomain '" + subdomain.name + "'");
+    if (result.converged())
+      add_small_strain_warning(output.warnings, subdomain.mesh, subdomain.boundary, "subdomain '" + subdomain.name + "'");
+  }
   auto summary = summary_envelope("decomposition", "run", text, file_name, file.problem.title, file.problem.analysis);
   summary.parameters = file.parameters;
   const auto& o = file.problem.options;
@@ -221,8 +244,10 @@ RunOutput run_contact(std::string_view text, const std::string& file_name, const
                                                      : "region '" + region.body.name + "' of body '" + body.name + "'");
   const auto result = contact::solve_contact(file.problem, options.progress);
   output.warnings.insert(output.warnings.end(), result.warnings.begin(), result.warnings.end());
-  for (std::size_t r = 0; r < result.meshes.size(); ++r)
+  for (std::size_t r = 0; r < result.meshes.size(); ++r) {
     add_mesh_warnings(output.warnings, result.meshes[r], result.region_labels[r]);
+    add_small_strain_warning(output.warnings, result.meshes[r], result.boundary[r], result.region_labels[r]);
+  }
   for (const auto& [name, content] :
        io::contact_output_files(file.problem, result, file.vtk))
     output.files.add(name, content);
@@ -248,6 +273,7 @@ RunOutput run_body(std::string_view text, const std::string& file_name, const Ru
   add_geometry_warnings(output.warnings, file.problem.body, "");
   const auto result = bem::solve_body(file.problem, options.progress);
   add_mesh_warnings(output.warnings, result.mesh, "");
+  add_small_strain_warning(output.warnings, result.mesh, result.boundary, "");
 
   const auto write_started = Clock::now();
   io::OutputDirectory& out = output.files;

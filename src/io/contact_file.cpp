@@ -29,14 +29,8 @@ const std::vector<std::string>& solver_keys() {
                                              "max_state_changes", "max_steps", "operator", "accuracy"};
   return keys;
 }
-const std::vector<std::string>& law_keys() {
-  static const std::vector<std::string> keys{"kind", "friction", "coupling"};
-  return keys;
-}
-const std::vector<std::string>& pairing_keys() {
-  static const std::vector<std::string> keys{"normal", "interference", "interference_amplitude", "gap"};
-  return keys;
-}
+const std::vector<std::string>& law_keys() { return schema::contact_law_keys(); }
+const std::vector<std::string>& pairing_keys() { return schema::contact_pairing_keys(); }
 std::vector<std::string> joined(std::initializer_list<const std::vector<std::string>*> lists,
                                 std::vector<std::string> extra) {
   for (const auto* list : lists) extra.insert(extra.end(), list->begin(), list->end());
@@ -236,12 +230,6 @@ void set_load_groups(dd::Subdomain& region, const BoundaryAmplitudes& amplitudes
   }
 }
 
-std::vector<bem::InteriorPoint> as_grid_points(std::vector<bem::InteriorPoint> points) {
-  // Stress points of a contact body outside it are dropped and listed (not errors).
-  for (auto& point : points) point.from_grid = true;
-  return points;
-}
-
 void read_bodies(toml::table& root_table, const TableReader& root, FileContext& context,
                  contact::ContactProblem& problem) {
   toml::node* bodies_node = root_table.get("body");
@@ -300,7 +288,6 @@ void read_bodies(toml::table& root_table, const TableReader& root, FileContext& 
           region_reader.fail("boundary", "region '" + name + "' of body '" + body.name +
                                              "' has no boundary with interface = \"...\"; the regions of a body are "
                                              "bonded along shared interfaces");
-        region.interior_points = as_grid_points(std::move(region.interior_points));
         body.regions.push_back(std::move(region));
       }
     } else {
@@ -314,7 +301,6 @@ void read_bodies(toml::table& root_table, const TableReader& root, FileContext& 
           throw InputError(region.body.pieces[k].where,
                            "interface = \"" + region.piece_interface[k] + "\" bonds regions of one body; body '" +
                                body.name + "' has one region (write its regions as [[body.region]] tables)");
-      region.interior_points = as_grid_points(std::move(region.interior_points));
       body.regions.push_back(std::move(region));
     }
     problem.bodies.push_back(std::move(body));

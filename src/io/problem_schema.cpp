@@ -14,6 +14,14 @@ const std::vector<std::string>& solver_keys() {
   static const std::vector<std::string> keys{"operator", "accuracy"};
   return keys;
 }
+const std::vector<std::string>& contact_law_keys() {
+  static const std::vector<std::string> keys{"kind", "friction", "coupling"};
+  return keys;
+}
+const std::vector<std::string>& contact_pairing_keys() {
+  static const std::vector<std::string> keys{"normal", "interference", "interference_amplitude", "gap"};
+  return keys;
+}
 const std::vector<std::string>& body_keys() {
   static const std::vector<std::string> keys{"material", "vertices", "boundary", "constraint", "geometry"};
   return keys;
@@ -65,6 +73,7 @@ std::string section_of(std::string_view key, std::string_view section) {
       {"the [mesh] table", &mesh_keys()},
       {"the [output] table", &output_keys()},
       {"the [solver] table", &solver_keys()},
+      {"each [[contact]] table (the law of that contact; or the single [contact] table)", &contact_law_keys()},
   };
   for (const auto& [name, keys] : sections) {
     if (section == name) continue;

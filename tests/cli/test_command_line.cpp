@@ -263,6 +263,11 @@ TEST(CommandLine, CommandLineErrorsExitWith2) {
   }
   EXPECT_EQ(run("--version").exit_code, 0);
   EXPECT_EQ(run("--help").exit_code, 0);
+  // A global option after the sub-command says where it goes.
+  const auto late = run("run " + example("plate_tension.toml") + " --threads 2");
+  EXPECT_EQ(late.exit_code, 2);
+  EXPECT_NE(late.output.find("--threads is a global option: write it before the sub-command"), std::string::npos)
+      << late.output;
 }
 
 TEST(CommandLine, LimitsAreInputErrorsThatSayHowToRaiseThem) {
@@ -357,4 +362,35 @@ TEST(CommandLine, APointFarOutsideTheBodyIsAnInputErrorNamingItsLine) {
   EXPECT_NE(out.output.find("(1e+200, 0.5) is not inside the body"), std::string::npos) << out.output;
   EXPECT_NE(out.output.find("far.toml:"), std::string::npos) << out.output;
   EXPECT_FALSE(fs::exists(dir / "out"));
+}
+
+TEST(CommandLine, AListedPointOutsideABodyOfAContactFileIsAnInputError) {
+  // As in a one-body file (grid points outside a body are dropped and listed, not errors).
+  const fs::path dir = scratch("contact_point");
+  std::string problem = example_text("contact_hertz_sphere.toml");
+  const auto at = problem.find("[body.interior]");
+  ASSERT_NE(at, std::string::npos);
+  problem.insert(problem.find('\n', at) + 1, "points = [[0.05, 0.5]]\n");
+  write(dir / "ball.toml", problem);
+  const auto out = run("run " + (dir / "ball.toml").string() + " -o " + (dir / "out").string());
+  EXPECT_EQ(out.exit_code, 2) << out.output;
+  EXPECT_NE(out.output.find("(0.05, 0.5) is not inside body 'support'"), std::string::npos) << out.output;
+  EXPECT_NE(out.output.find("ball.toml:"), std::string::npos) << out.output;
+  EXPECT_FALSE(fs::exists(dir / "out"));
+}
+
+TEST(CommandLine, DisplacementsBeyondSmallStrainsAreAWarning) {
+  // E in GPa with loads in MPa: the plate stretches by half its size; the run still answers.
+  const fs::path dir = scratch("units");
+  std::string problem = example_text("plate_tension.toml");
+  const auto at = problem.find("E = 100000.0");
+  ASSERT_NE(at, std::string::npos);
+  problem.replace(at, 12, "E = 2.0");
+  write(dir / "gpa.toml", problem);
+  const auto out = run("run " + (dir / "gpa.toml").string() + " -o " + (dir / "out").string());
+  EXPECT_EQ(out.exit_code, 0) << out.output;
+  EXPECT_NE(out.output.find("of its size"), std::string::npos) << out.output;
+  EXPECT_NE(out.output.find("linear elasticity assumes small strains"), std::string::npos) << out.output;
+  const auto plain = run("run " + example("plate_tension.toml") + " -o " + (dir / "plain").string());
+  EXPECT_EQ(plain.output.find("small strains"), std::string::npos) << plain.output;
 }

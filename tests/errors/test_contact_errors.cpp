@@ -287,3 +287,25 @@ TEST(ContactErrors, ZonesLongerThanTheContactAreNotClipped) {
 }
 
 }  // namespace bemcontact
+
+namespace bemcontact {
+
+// A contact's law written where it has no effect: said where it belongs.
+TEST(ContactErrors, FrictionInTheSolverTableBelongsToTheContact) {
+  auto text = test_support::example_text("fretting_cylinder.toml");
+  text = test_support::replaced(text, "[solver]\n", "[solver]\nfriction = 0.2\n");
+  const auto message = input_error(text);
+  EXPECT_TRUE(contains(message, "key 'solver.friction'")) << message;
+  EXPECT_TRUE(contains(message, "'friction' belongs in each [[contact]] table")) << message;
+}
+
+// A normal force of the wrong sign: the failure says it pulls the bodies apart.
+TEST(ContactErrors, ALoadPullingTheContactOpenIsNamed) {
+  const auto text = test_support::replaced(example_text(), "force = \"-P\"", "force = \"P\"");
+  const auto message = solver_error(io::parse_contact_problem(text, "ball.toml").problem);
+  EXPECT_TRUE(contains(message, "Load 'ball_top_y' (force 31.5 along z) pulls body 'ball' away from contact 'contact'"))
+      << message;
+  EXPECT_TRUE(contains(message, "reverse its sign")) << message;
+}
+
+}  // namespace bemcontact

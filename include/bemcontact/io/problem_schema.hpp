@@ -18,6 +18,8 @@ const std::vector<std::string>& grid_keys();        // [interior] grid = {...}
 const std::vector<std::string>& mesh_keys();        // [mesh]
 const std::vector<std::string>& output_keys();      // [output]
 const std::vector<std::string>& solver_keys();      // [solver] of a one-body file
+const std::vector<std::string>& contact_law_keys();      // the law of a [[contact]] / [contact] table
+const std::vector<std::string>& contact_pairing_keys();  // its pairing and gap keys
 const std::vector<std::string>& tabulated_keys();   // t2 = { table = ..., along = ... }
 
 // "the [material] table" when `key` is a key of another table than `section`, else "".

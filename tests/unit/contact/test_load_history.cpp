@@ -145,6 +145,30 @@ TEST(LoadHistory, AnInterferenceRampedInStepsEndsAtTheSamePressure) {
   EXPECT_LT(ramped.steps.front().peak_pressure, 0.3 * once.summary.peak_pressure);  // a quarter of the fit
 }
 
+TEST(LoadHistory, ClosedPairsHaveTheirGapAsJumpInEveryKindOfContact) {
+  // jump_n is [u]·n itself and gap the initial gap less the interference applied so far:
+  // closed pairs have jump_n = gap, in a shrink fit (the jump is the overlap -delta, the
+  // whole fit at once and a quarter of it after the first of 4 steps) as in Hertz's contact.
+  auto text = test_support::example_text("contact_shrink_fit.toml");
+  const auto fit = io::parse_contact_problem(text, "fit.toml");
+  const double delta = fit.parameters.at("delta");
+  text = test_support::replaced(text, "interference = \"delta\"",
+                                "interference = \"delta\"\ninterference_amplitude = [[0.0, 0.0], [1.0, 1.0]]\n"
+                                "increments = 4\nrecord_steps = true");
+  const auto ramped = solve_contact(io::parse_contact_problem(text, "ramped.toml").problem);
+  const auto ball = solve_contact(io::parse_contact_problem(test_support::example_text("contact_hertz_sphere.toml"),
+                                                            "ball.toml").problem);
+  for (const auto& [pairs, overlap] : {std::pair{ramped.pairs, delta}, std::pair{ramped.step_pairs.front(), 0.25 * delta}}) {
+    for (const auto& pair : pairs) {
+      ASSERT_NE(pair.status, PairStatus::open);
+      EXPECT_NEAR(pair.gap, -overlap, 1e-12 * delta);
+      EXPECT_NEAR(pair.jump_n, pair.gap, 1e-9 * delta);
+    }
+  }
+  for (const auto& pair : ball.pairs)
+    if (pair.status != PairStatus::open) EXPECT_NEAR(pair.jump_n, pair.gap, 1e-9 * ball.summary.approach * -1.0);
+}
+
 }  // namespace bemcontact::contact
 
 #include "bemcontact/io/contact_writer.hpp"
