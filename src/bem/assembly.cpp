@@ -81,7 +81,7 @@ std::vector<Mat2> diagonal_blocks_from_exact_fields(const geometry::BoundaryMesh
 namespace {
 
 // Sum over all node columns of each 2-row block, by columns (contiguous in memory); the
-// diagonal blocks are still zero here, so this is the sum over j != i.
+// diagonal blocks hold no direct part yet, so this is the sum over j != i (and the images).
 Matrix column_sums(const Matrix& h) {
   const Index n = h.cols() / 2;
   Matrix sums = Matrix::Zero(h.rows(), 2);
@@ -151,6 +151,13 @@ InfluenceMatrices assemble_influence_matrices(const geometry::BoundaryMesh& mesh
   // depend on the threads either.
   constexpr std::size_t batch = 64;
   Matrix contributions(axisymmetric ? 2 * n : 0, axisymmetric ? static_cast<Index>(batch) : 0);
+  // With symmetry lines each element also acts through its images (geometry/symmetry.hpp):
+  // H_ij += H'_k S_k, G_ij += G'_k S_k. The rigid translations of the whole symmetric body
+  // move the images by t, not S_k t, so the diagonal blocks also need sum_k H'_k (I - S_k)
+  // per row, kept per element like the radial term and summed in element order.
+  const bool images = !mesh.images.empty();
+  Matrix image_antisymmetric(images ? 2 * n : 0, images ? 2 * static_cast<Index>(batch) : 0);
+  Matrix antisymmetric_sums = Matrix::Zero(images ? 2 * n : 0, 2);
   for (const auto& group : elements_by_colour(mesh)) {
     for (std::size_t first = 0; first < group.size(); first += batch) {
       const std::size_t count = std::min(batch, group.size() - first);
@@ -160,6 +167,8 @@ InfluenceMatrices assemble_influence_matrices(const geometry::BoundaryMesh& mesh
         errors.run([&] {
           const auto& element = mesh.elements[group[first + k]];
           const auto nodal_traction = radial_expansion_traction(integrator.material(), element);
+          std::vector<geometry::BoundaryElement> image_elements;
+          for (const auto& image : mesh.images) image_elements.push_back(geometry::image_element(element, image));
           for (Index i = 0; i < n; ++i) {
             int source_node = -1;
             for (int a = 0; a < element.node_count; ++a)
@@ -172,6 +181,21 @@ InfluenceMatrices assemble_influence_matrices(const geometry::BoundaryMesh& mesh
               if (a != source_node) m.H.block<2, 2>(2 * i, 2 * j) += influence.H[a];
               traction_term += influence.G[a] * nodal_traction[a];
             }
+            if (images) {
+              Mat2 antisymmetric = Mat2::Zero();
+              for (std::size_t q = 0; q < mesh.images.size(); ++q) {
+                const Mat2& S = mesh.images[q].matrix;
+                const auto image = integrator.influence(mesh.nodes[i].position, image_elements[q], -1);
+                for (int a = 0; a < element.node_count; ++a) {
+                  const Index j = element.nodes[a];
+                  m.G.block<2, 2>(2 * i, 2 * j) += image.G[a] * S;
+                  m.H.block<2, 2>(2 * i, 2 * j) += image.H[a] * S;
+                  antisymmetric += image.H[a] * (Mat2::Identity() - S);
+                  traction_term += image.G[a] * S * nodal_traction[a];
+                }
+              }
+              image_antisymmetric.block<2, 2>(2 * i, 2 * static_cast<Index>(k)) = antisymmetric;
+            }
             if (axisymmetric) contributions.block<2, 1>(2 * i, static_cast<Index>(k)) = traction_term;
           }
           const Index done = ++elements_done;
@@ -182,9 +206,16 @@ InfluenceMatrices assemble_influence_matrices(const geometry::BoundaryMesh& mesh
       errors.rethrow();
       if (axisymmetric)
         for (std::size_t k = 0; k < count; ++k) radial_traction_integral += contributions.col(static_cast<Index>(k));
+      if (images)
+        for (std::size_t k = 0; k < count; ++k)
+          for (Index i = 0; i < n; ++i)
+            antisymmetric_sums.middleRows<2>(2 * i) += image_antisymmetric.block<2, 2>(2 * i, 2 * static_cast<Index>(k));
     }
   }
-  const Matrix translation_sums = column_sums(m.H);  // the diagonal blocks are still zero
+  // sum over j != i of H_ij times the translations: the diagonal blocks hold only the images'
+  // part here, which the sum takes in, and the images' antisymmetric part is added back.
+  Matrix translation_sums = column_sums(m.H);
+  if (images) translation_sums += antisymmetric_sums;
   Vector radial_residual;
   if (axisymmetric) {
     Vector radial_u = Vector::Zero(2 * n);
@@ -192,7 +223,7 @@ InfluenceMatrices assemble_influence_matrices(const geometry::BoundaryMesh& mesh
     radial_residual = radial_traction_integral - m.H * radial_u;
   }
   const auto diagonal = diagonal_blocks_from_exact_fields(mesh, integrator.type(), translation_sums, radial_residual);
-  for (Index i = 0; i < n; ++i) m.H.block<2, 2>(2 * i, 2 * i) = diagonal[i];
+  for (Index i = 0; i < n; ++i) m.H.block<2, 2>(2 * i, 2 * i) += diagonal[i];
   if (progress) progress("assembly", 1.0);
   return m;
 }

@@ -372,7 +372,15 @@ const char* to_string(OperatorKind kind) {
   return "?";
 }
 
-bool use_compressed_operator(const OperatorChoice& choice, Index unknowns) {
+bool use_compressed_operator(const OperatorChoice& choice, Index unknowns, bool symmetry_lines) {
+  if (symmetry_lines) {
+    // The compressed diagonal blocks come from products with the translations, which do
+    // not separate an element's images from itself (assembly.hpp).
+    if (choice.kind == OperatorKind::compressed)
+      throw Error("operator = \"compressed\" does not take bodies with symmetry lines yet: use operator = \"dense\" "
+                  "(or \"auto\", which keeps such bodies dense), or draw the whole body");
+    return false;
+  }
   if (choice.kind == OperatorKind::compressed) return true;
   return choice.kind == OperatorKind::automatic && operators::hmatrix_available() &&
          unknowns >= OperatorChoice::automatic_threshold;

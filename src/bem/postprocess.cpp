@@ -251,17 +251,30 @@ StressTensor stress_at_vertex(const geometry::BoundaryMesh& mesh, const BodyDefi
   return mean;
 }
 
+namespace {
+
+// Calls add(element, S) for the element and for each of its images across the body's
+// symmetry lines (geometry/symmetry.hpp), whose nodal values are S times the element's.
+template <class Add>
+void for_element_and_images(const geometry::BoundaryMesh& mesh, const geometry::BoundaryElement& element, Add&& add) {
+  add(element, Mat2::Identity());
+  for (const auto& image : mesh.images) add(geometry::image_element(element, image), image.matrix);
+}
+
+}  // namespace
+
 Vec2 somigliana_displacement(const geometry::BoundaryMesh& mesh, const ElementIntegrator& integrator,
                              const BoundarySolution& solution, const Vec2& point) {
   Vec2 u = Vec2::Zero();
-  for (const auto& e : mesh.elements) {
-    const auto influence = integrator.influence(point, e, -1);
-    for (int a = 0; a < e.node_count; ++a) {
-      const Index j = e.nodes[a];
-      // u_k(x) = int U_ki p_i - T_ki u_i  (I.11)
-      u += influence.G[a] * solution.traction[j] - influence.H[a] * solution.displacement[j];
-    }
-  }
+  for (const auto& element : mesh.elements)
+    for_element_and_images(mesh, element, [&](const geometry::BoundaryElement& e, const Mat2& S) {
+      const auto influence = integrator.influence(point, e, -1);
+      for (int a = 0; a < e.node_count; ++a) {
+        const Index j = e.nodes[a];
+        // u_k(x) = int U_ki p_i - T_ki u_i  (I.11)
+        u += influence.G[a] * (S * solution.traction[j]) - influence.H[a] * (S * solution.displacement[j]);
+      }
+    });
   return u;
 }
 
@@ -272,27 +285,26 @@ StressTensor somigliana_stress(const geometry::BoundaryMesh& mesh, const Element
   const bool axisymmetric = integrator.type() == AnalysisType::axisymmetric;
   const auto kelvin = kernels::KelvinPlane::from(integrator.type(), integrator.material());
   const auto axi = integration::AxisymmetricKelvin::from(integrator.material());
-  for (const auto& e : mesh.elements) {
-    if (axisymmetric) {
-      const auto s = integration::integrate_axisymmetric_element_stress(axi, point, e);
-      for (int a = 0; a < e.node_count; ++a) {
-        const Index j = e.nodes[a];
-        for (int k = 0; k < 2; ++k) {
-          sigma += s.in_plane.D[a][k] * solution.traction[j][k] -
-                   s.in_plane.S[a][k] * solution.displacement[j][k];
-          hoop += s.hoop_D[a][k] * solution.traction[j][k] - s.hoop_S[a][k] * solution.displacement[j][k];
+  for (const auto& element : mesh.elements)
+    for_element_and_images(mesh, element, [&](const geometry::BoundaryElement& e, const Mat2& S) {
+      if (axisymmetric) {
+        const auto s = integration::integrate_axisymmetric_element_stress(axi, point, e);
+        for (int a = 0; a < e.node_count; ++a) {
+          const Vec2 p = S * solution.traction[e.nodes[a]], u = S * solution.displacement[e.nodes[a]];
+          for (int k = 0; k < 2; ++k) {
+            sigma += s.in_plane.D[a][k] * p[k] - s.in_plane.S[a][k] * u[k];
+            hoop += s.hoop_D[a][k] * p[k] - s.hoop_S[a][k] * u[k];
+          }
+        }
+      } else {
+        const auto s = integration::integrate_plane_element_stress(kelvin, point, e);
+        for (int a = 0; a < e.node_count; ++a) {
+          const Vec2 p = S * solution.traction[e.nodes[a]], u = S * solution.displacement[e.nodes[a]];
+          // sigma_ij(x) = int D_kij p_k - S_kij u_k  (I.14)
+          for (int k = 0; k < 2; ++k) sigma += s.D[a][k] * p[k] - s.S[a][k] * u[k];
         }
       }
-    } else {
-      const auto s = integration::integrate_plane_element_stress(kelvin, point, e);
-      for (int a = 0; a < e.node_count; ++a) {
-        const Index j = e.nodes[a];
-        // sigma_ij(x) = int D_kij p_k - S_kij u_k  (I.14)
-        for (int k = 0; k < 2; ++k)
-          sigma += s.D[a][k] * solution.traction[j][k] - s.S[a][k] * solution.displacement[j][k];
-      }
-    }
-  }
+    });
   StressTensor result{sigma(0, 0), sigma(1, 1), 0.5 * (sigma(0, 1) + sigma(1, 0)), 0.0};
   result.s33 = axisymmetric ? hoop
                             : out_of_plane_stress(integrator.type(), integrator.material(), result.s11,

@@ -24,14 +24,26 @@ Matrix free_rigid_modes(const geometry::BoundaryMesh& mesh, const std::vector<No
       modes.block<2, 1>(2 * i, 2) = to_frame * Vec2(-r.y(), r.x());
     }
   }
-  // Combinations that vanish on every prescribed displacement component.
+  // Combinations that vanish on every prescribed displacement component, and that the body's
+  // images move as themselves (geometry/symmetry.hpp): a rigid motion of the whole symmetric
+  // body. A translation t qualifies when S t = t for every image S; a rotation never does.
   std::vector<Index> prescribed;
   for (Index i = 0; i < n; ++i)
     for (int c = 0; c < 2; ++c)
       if (conditions[i].kind[c] == ConditionKind::displacement) prescribed.push_back(2 * i + c);
-  if (prescribed.empty()) return modes;
-  Matrix restricted(static_cast<Index>(prescribed.size()), mode_count);
+  Matrix restricted = Matrix::Zero(static_cast<Index>(prescribed.size()) + 3 * static_cast<Index>(mesh.images.size()), mode_count);
   for (std::size_t k = 0; k < prescribed.size(); ++k) restricted.row(static_cast<Index>(k)) = modes.row(prescribed[k]);
+  for (std::size_t k = 0; k < mesh.images.size(); ++k) {
+    const Mat2 antisymmetric = Mat2::Identity() - mesh.images[k].matrix;
+    const Index row = static_cast<Index>(prescribed.size() + 3 * k);
+    if (type == AnalysisType::axisymmetric) {
+      restricted.block<2, 1>(row, 0) = antisymmetric * Vec2(0, 1);
+    } else {
+      restricted.block<2, 2>(row, 0) = antisymmetric;
+      restricted(row + 2, 2) = 1.0;
+    }
+  }
+  if (restricted.rows() == 0) return modes;
   return modes * operators::null_space(restricted, 1e-10, 1.0);
 }
 

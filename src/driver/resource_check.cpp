@@ -24,8 +24,13 @@ std::int64_t body_nodes(const bem::BodyDefinition& body, const geometry::MeshOpt
                            : mesh.interpolation == Interpolation::quadratic ? 2 : 1;
   const std::int64_t corner = mesh.interpolation == Interpolation::constant || mesh.discontinuous ? 0 : 1;
   std::int64_t nodes = 0;
-  for (const auto& piece : body.pieces) nodes += own * static_cast<std::int64_t>(piece.elements) + corner;
+  for (const auto& piece : body.pieces)
+    if (!piece.symmetry) nodes += own * static_cast<std::int64_t>(piece.elements) + corner;
   return nodes;
+}
+
+bool has_symmetry_lines(const bem::BodyDefinition& body) {
+  return std::any_of(body.pieces.begin(), body.pieces.end(), [](const auto& piece) { return piece.symmetry; });
 }
 
 std::int64_t body_unknowns(const bem::BodyDefinition& body, const geometry::MeshOptions& mesh) {
@@ -34,7 +39,8 @@ std::int64_t body_unknowns(const bem::BodyDefinition& body, const geometry::Mesh
 
 std::int64_t body_elements(const bem::BodyDefinition& body) {
   std::int64_t elements = 0;
-  for (const auto& piece : body.pieces) elements += piece.elements;
+  for (const auto& piece : body.pieces)
+    if (!piece.symmetry) elements += piece.elements;
   return elements;
 }
 
@@ -90,13 +96,13 @@ BodyCost body_cost_alone(const bem::BodyDefinition& body, AnalysisType type, con
   const double elements = static_cast<double>(body_elements(body));
   const double interior = static_cast<double>(interior_points) * elements * interior_pair_seconds(type);
   const double t = std::max(1, threads);
-  cost.compressed = bem::use_compressed_operator(choice, cost.unknowns);
+  cost.compressed = bem::use_compressed_operator(choice, cost.unknowns, has_symmetry_lines(body));
   if (cost.compressed) {
     cost.peak_bytes = cost.held_bytes = compressed_bytes_per_nlogn * n_log_n(cost.unknowns);
     cost.seconds = n_log_n(cost.unknowns) * compressed_seconds_per_nlogn(type) + interior / t;
     return cost;
   }
-  cost.could_compress = operators::hmatrix_available();
+  cost.could_compress = operators::hmatrix_available() && !has_symmetry_lines(body);
   cost.peak_bytes = dense_body_bytes(cost.unknowns);
   cost.held_bytes = 2.0 * 8.0 * n * n;  // LU factors and right-hand-side columns
   const double lu_flops = 2.0 / 3.0 * n * n * n;

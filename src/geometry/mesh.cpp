@@ -99,7 +99,8 @@ BoundaryMesh mesh_boundary(const std::vector<BoundaryPiece>& input_pieces, const
   mesh.piece_skipped.assign(piece_count, false);
   for (const auto& piece : pieces) mesh.piece_names.push_back(piece.name);
   for (int p = 0; p < piece_count; ++p)
-    mesh.piece_skipped[p] = options.skip_axis_pieces && lies_on_axis(pieces[p], tol);
+    mesh.piece_skipped[p] = pieces[p].symmetry || (options.skip_axis_pieces && lies_on_axis(pieces[p], tol));
+  mesh.images = symmetry_images(pieces, options.skip_axis_pieces);
   // Linear and quadratic elements have nodes at their ends (split at corners).
   const bool end_nodes = options.interpolation != Interpolation::constant;
   const bool quadratic = options.interpolation == Interpolation::quadratic;
@@ -161,6 +162,9 @@ BoundaryMesh mesh_boundary(const std::vector<BoundaryPiece>& input_pieces, const
       plan.piece_out = out;
       plan.in_meshed = !mesh.piece_skipped[in];
       plan.out_meshed = !mesh.piece_skipped[out];
+      // Next to a symmetry line the node moves into its element: a node on the line would
+      // coincide with its own image.
+      if (end_nodes && (pieces[in].symmetry || pieces[out].symmetry)) plan.split = true;
       if (plan.in_meshed && plan.out_meshed && end_nodes) {
         const Vec2 t_in = tangent_of(point_on_piece(pieces[in], 1.0).outward_normal);
         const Vec2 t_out = tangent_of(point_on_piece(pieces[out], 0.0).outward_normal);

@@ -363,6 +363,25 @@ PrescribedValue read_prescribed_value(const toml::node& node, const SourceLocati
                           "found " + describe_node(node));
 }
 
+// `symmetry = true`: the piece is a symmetry line of the body (geometry/symmetry.hpp). It
+// carries no elements and no conditions (it holds u_n = 0, t_t = 0 itself), and is straight.
+void read_symmetry(const TableReader& reader, BoundaryPiece& piece, bem::BoundaryCondition& condition) {
+  piece.symmetry = reader.boolean_or("symmetry", false);
+  if (!piece.symmetry) return;
+  for (const char* key : {"u1", "u2", "t1", "t2", "un", "ut", "tn", "tt", "pressure"})
+    if (reader.has(key))
+      reader.fail(key, "boundary '" + piece.name + "' is a symmetry line (symmetry = true): it holds u_n = 0 and "
+                           "t_t = 0 itself and takes no condition");
+  for (const char* key : {"elements", "grading", "refine"})
+    if (reader.has(key))
+      reader.fail(key, "boundary '" + piece.name + "' is a symmetry line (symmetry = true): it carries no elements "
+                           "(the body's mirror image takes its place)");
+  if (piece.shape != PieceShape::line)
+    reader.fail("symmetry", "boundary '" + piece.name + "': a symmetry line must be straight");
+  condition = bem::BoundaryCondition{};
+  condition.signature = "symmetry line";
+}
+
 // The [[boundary]] tables: each a piece (line or arc) with its conditions.
 void read_boundary_pieces(const TableReader& body, const FileContext& context, const Vertices& vertices,
                           bem::BodyDefinition& definition) {
@@ -384,6 +403,7 @@ void read_boundary_pieces(const TableReader& body, const FileContext& context, c
                   "the boundary name '" + piece.name + "' is already used by the boundary at line " +
                       std::to_string(existing->second) + "; boundary names must be unique");
     bem::BoundaryCondition condition = read_condition(reader, piece.name, lies_on_axis(piece, context));
+    read_symmetry(reader, piece, condition);
     piece.condition_signature = condition.signature;
     definition.pieces.push_back(std::move(piece));
     definition.conditions.push_back(std::move(condition));
@@ -445,6 +465,7 @@ void read_gmsh_pieces(const TableReader& body, const FileContext& context, bem::
       body.fail("geometry", "curve '" + piece.name + "' has " + std::to_string(piece.elements) +
                                 " elements, over the limit of " + std::to_string(context.limits.max_elements));
     bem::BoundaryCondition condition = read_condition(reader, piece.name, lies_on_axis(piece, context));
+    read_symmetry(reader, piece, condition);
     const bool reversed = std::find(gmsh.reversed.begin(), gmsh.reversed.end(), piece.name) != gmsh.reversed.end();
     if (reversed && (reader.has("ut") || reader.has("tt")))
       context.warnings.push_back(reader.where().describe() + ": curve '" + piece.name +

@@ -33,7 +33,7 @@ const std::vector<std::string>& material_keys() {
 const std::vector<std::string>& boundary_keys() {
   static const std::vector<std::string> keys{
       "name", "shape", "from", "to", "center", "direction", "elements", "grading", "refine",
-      "u1",   "u2",    "t1",   "t2", "un",     "ut",        "tn",       "tt",      "pressure"};
+      "u1",   "u2",    "t1",   "t2", "un",     "ut",        "tn",       "tt",      "pressure", "symmetry"};
   return keys;
 }
 const std::vector<std::string>& constraint_keys() {

@@ -81,6 +81,7 @@ struct ProblemDefinition {
 };
 
 // Whether a body of `unknowns` unknowns is solved on compressed operators.
-bool use_compressed_operator(const OperatorChoice& choice, Index unknowns);
+// A body with symmetry lines (geometry/symmetry.hpp) stays dense; "compressed" is refused.
+bool use_compressed_operator(const OperatorChoice& choice, Index unknowns, bool symmetry_lines = false);
 
 }  // namespace bemcontact::bem

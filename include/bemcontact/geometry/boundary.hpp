@@ -31,6 +31,8 @@ struct BoundaryPiece {
   // Meshed exactly as given (contact zones, interfaces: their nodes are matched with
   // another mesh), never regraded toward a vertex.
   bool fixed_mesh = false;
+  // A symmetry line of the body (geometry/symmetry.hpp): no elements, the mirror image instead.
+  bool symmetry = false;
   SourceLocation where;
 };
 

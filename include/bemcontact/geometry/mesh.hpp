@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "bemcontact/geometry/boundary.hpp"
+#include "bemcontact/geometry/symmetry.hpp"
 
 namespace bemcontact::geometry {
 
@@ -24,7 +25,8 @@ struct MeshOptions {
   double corner_transition = 1.2;
   double split_angle_radians = 1e-6;  // smaller turns count as smooth
   // Axisymmetry: straight pieces lying on the axis r = 0 close the meridian section but
-  // are not part of the boundary; they carry no elements.
+  // are not part of the boundary; they carry no elements. (Also names the analysis for the
+  // symmetry lines, which must then be perpendicular to the axis.)
   bool skip_axis_pieces = false;
   // Discontinuous elements: every element gets its own end nodes, moved `corner_shift`
   // into it (collocation inside the element; docs/corners.md). With the Gauss points of
@@ -106,7 +108,10 @@ struct BoundaryMesh {
   std::vector<Contour> contours;
   std::vector<std::vector<Index>> piece_elements;  // elements of each piece, in order
   std::vector<std::vector<Index>> piece_nodes;     // nodes of each piece, in order
-  std::vector<bool> piece_skipped;                 // axis pieces without elements
+  std::vector<bool> piece_skipped;                 // axis and symmetry pieces without elements
+  // The body's images across its symmetry lines (geometry/symmetry.hpp; empty: none): every
+  // element also acts through image_element(element, images[k]).
+  std::vector<ImageMap> images;
   std::vector<std::string> piece_names;            // for messages
   // Pieces graded toward a vertex by the corner transition.
   struct GradedPiece {
