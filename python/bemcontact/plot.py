@@ -53,11 +53,22 @@ def _file(stem, suffix):
     return f"{stem}_{suffix}" if stem else suffix
 
 
+def _finish(fig, path):
+    """Save the figure to `path` and close it (returns the path); with no path, return the
+    figure itself (to draw on it, or to read what it shows)."""
+    fig.tight_layout()
+    if path is None:
+        return fig
+    fig.savefig(path)
+    plt.close(fig)
+    return path
+
+
 def _size(x, y):
     return max(np.ptp(x), np.ptp(y), 1e-300)
 
 
-def mesh_figure(mesh_result, title, path):
+def mesh_figure(mesh_result, title, path=None):
     """Elements (ends marked), nodes, outward normals and boundary names of every region."""
     stems = _stems(mesh_result, "mesh_elements.csv")
     fig, ax = plt.subplots(figsize=(8, 7))
@@ -115,10 +126,7 @@ def mesh_figure(mesh_result, title, path):
     ax.set_title(f"{title}\nelements (| ends), nodes (o), outward normals, boundary names", fontsize=9)
     ax.set_xlabel("x (r)")
     ax.set_ylabel("y (z)")
-    fig.tight_layout()
-    fig.savefig(path)
-    plt.close(fig)
-    return path
+    return _finish(fig, path)
 
 
 def principal_stresses(s11, s22, s12):
@@ -148,7 +156,7 @@ def _outline(ax, boundary):
         ax.plot(boundary["x"][on], boundary["y"][on], "-", color="k", lw=0.8)
 
 
-def interior_figure(result, stem, title, path):
+def interior_figure(result, stem, title, path=None):
     table = result.table(_file(stem, "interior.csv"))
     boundary = result.table(_file(stem, "boundary.csv"))
     s1, s2 = principal_stresses(table["s11"], table["s22"], table["s12"])
@@ -170,13 +178,10 @@ def interior_figure(result, stem, title, path):
         ax.set_aspect("equal")
         ax.set_title(name, fontsize=9)
     fig.suptitle(f"{title}: {stem or 'body'} (interior points; stresses in the file's units)", fontsize=10)
-    fig.tight_layout()
-    fig.savefig(path)
-    plt.close(fig)
-    return path
+    return _finish(fig, path)
 
 
-def contact_figure(result, name, reference, friction, title, path):
+def contact_figure(result, name, reference, friction, title, path=None):
     pairs = result.contact(name)
     r = pairs["coordinate"]
     order = np.argsort(r)
@@ -196,13 +201,10 @@ def contact_figure(result, name, reference, friction, title, path):
     ax.set_ylabel("traction")
     ax.set_title(f"{title}: contact '{name}' at the end of the history", fontsize=9)
     ax.legend(fontsize=8)
-    fig.tight_layout()
-    fig.savefig(path)
-    plt.close(fig)
-    return path
+    return _finish(fig, path)
 
 
-def history_figure(result, names, title, path):
+def history_figure(result, names, title, path=None):
     fig, axes = plt.subplots(2, 2, figsize=(11, 7))
     for name in names:
         steps = result.contact_steps(name)
@@ -210,7 +212,8 @@ def history_figure(result, names, title, path):
         axes[0, 0].plot(t, steps["normal_force"], ".-", label=name)
         axes[0, 1].plot(t, steps["a"], ".-", label=f"{name}: a")
         axes[0, 1].plot(t, steps["c"], ".--", label=f"{name}: c (stick)")
-        axes[1, 0].plot(t, np.cumsum(steps["dissipated_energy"]), ".-", label=name)
+        # Already cumulative: the energy dissipated since the start (docs/contact.md).
+        axes[1, 0].plot(t, steps["dissipated_energy"], ".-", label=name)
     if "motions.csv" in result.names():
         motions = result.motions()
         # Forces on the left axis, displacements (much smaller numbers) on the right.
@@ -223,17 +226,14 @@ def history_figure(result, names, title, path):
         right.set_ylabel("displacements")
         if right.has_data():
             right.legend(fontsize=7, loc="lower right")
-    for ax, label in zip(axes.flat, ("normal force", "contact and stick sizes", "dissipated energy (cumulative)",
+    for ax, label in zip(axes.flat, ("normal force", "contact and stick sizes", "dissipated energy since the start",
                                      "prescribed / computed motions and forces")):
         ax.set_title(label, fontsize=9)
         ax.set_xlabel("time")
         if ax.has_data():
             ax.legend(fontsize=7)
     fig.suptitle(title, fontsize=10)
-    fig.tight_layout()
-    fig.savefig(path)
-    plt.close(fig)
-    return path
+    return _finish(fig, path)
 
 
 def _load_folder(folder):

@@ -49,6 +49,40 @@ def test_figures_of_an_output_folder(examples, binary, tmp_path):
         assert ET.parse(run_dir / "figures" / name).getroot().tag.endswith("svg")
 
 
+def _csv_column(path, column):
+    """One column of a CSV file, read with the csv module (not with the package's Table)."""
+    import csv
+    with open(path, newline="") as f:
+        return np.array([float(row[column]) for row in csv.DictReader(f)])
+
+
+def _axes_titled(fig, start):
+    found = [ax for ax in fig.axes if ax.get_title().startswith(start)]
+    assert len(found) == 1, [ax.get_title() for ax in fig.axes]
+    return found[0]
+
+
+@pytest.fixture(scope="module")
+def fretting_run(examples, tmp_path_factory):
+    """examples/fretting_cylinder.toml solved once: P, then a full cycle of Q."""
+    out = tmp_path_factory.mktemp("fretting") / "run"
+    bc.run(examples / "fretting_cylinder.toml", output=out)
+    return out
+
+
+def test_history_draws_the_dissipated_energy_as_written(fretting_run):
+    # contact_steps.csv's energy is already cumulative (since the start): the curve is the
+    # column itself, not its running sum (which drew it 17 times too large here).
+    result = plot._load_folder(fretting_run)
+    fig = plot.history_figure(result, result.contact_names(), "fretting")
+    (line,) = _axes_titled(fig, "dissipated energy").get_lines()
+    column = _csv_column(fretting_run / "contact_steps.csv", "dissipated_energy")
+    np.testing.assert_array_equal(line.get_xdata(), _csv_column(fretting_run / "contact_steps.csv", "time"))
+    np.testing.assert_array_equal(line.get_ydata(), column)
+    summary = json.loads((fretting_run / "summary.json").read_text())
+    assert line.get_ydata()[-1] == summary["results"]["contact"]["dissipated_energy"] > 0.0
+
+
 def test_plot_errors_are_clear(binary, tmp_path):
     missing = subprocess.run([binary, "plot", str(tmp_path / "nothing")], capture_output=True, text=True)
     assert missing.returncode != 0 and "no such file or folder" in missing.stderr
