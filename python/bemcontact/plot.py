@@ -219,11 +219,11 @@ def history_figure(result, names, title, path=None):
         # Forces on the left axis, displacements (much smaller numbers) on the right.
         right = axes[1, 1].twinx()
         for k, column in enumerate(motions.columns[2:]):
-            ax = axes[1, 1] if column.endswith("_force") else right
+            ax = axes[1, 1] if column.endswith(("_force", "_moment")) else right
             ax.plot(motions["time"], motions[column], ".-" if ax is right else "o-", ms=3, label=column,
                     color=plt.get_cmap("tab10")(k % 10))
-        axes[1, 1].set_ylabel("forces")
-        right.set_ylabel("displacements")
+        axes[1, 1].set_ylabel("forces (moments)")
+        right.set_ylabel("displacements (rotations)")
         if right.has_data():
             right.legend(fontsize=7, loc="lower right")
     for ax, label in zip(axes.flat, ("normal force", "contact and stick sizes", "dissipated energy since the start",

@@ -119,6 +119,19 @@ def test_results_are_the_files_of_the_command_line(examples, binary, tmp_path):
     assert len(result.boundary("roller")) > 0
 
 
+def test_motions_are_named_by_body_and_direction(examples):
+    fretting = bc.run(examples / "fretting_cylinder.toml", n=20).motions()
+    assert fretting.columns == ["step", "time", "cylinder_P_force", "cylinder_P_displacement", "cylinder_Q_force",
+                                "cylinder_Q_displacement"]
+    # The roller is held only by the plates: its rigid motion, half the top platen's approach
+    # (the model is its own mirror image about the roller's centre line).
+    roller = bc.run(examples / "contact_roller_plates.toml").motions()
+    assert roller.columns == ["step", "time", "top_plate_top_y_force", "top_plate_top_y_displacement",
+                              "roller_y_displacement"]
+    np.testing.assert_allclose(roller["roller_y_displacement"], 0.5 * roller["top_plate_top_y_displacement"],
+                               rtol=1e-9)
+
+
 def test_save_replaces_the_folder_whole(examples, tmp_path):
     out = tmp_path / "run"
     bc.run(examples / "contact_roller_plates.toml", output=out)
