@@ -7,9 +7,11 @@
 
 #include <map>
 #include <string>
+#include <variant>
 
 #include "bemcontact/core/error.hpp"
 #include "bemcontact/driver/run.hpp"
+#include "bemcontact/io/expression.hpp"
 #include "bemcontact/io/gmsh_geometry.hpp"
 #include "bemcontact/io/output_directory.hpp"
 #include "bemcontact/operators/dense_lu.hpp"
@@ -30,10 +32,28 @@ py::dict as_dict(const driver::RunOutput& output) {
   return result;
 }
 
-py::dict run(const std::string& text, const std::string& file_name, const std::map<std::string, double>& overrides,
-             bool mesh_only, int threads) {
+// The keyword arguments of run(): numbers, or expressions in the file's syntax (evaluated
+// where the parameter stands in the file); messages name them as the caller wrote them.
+io::ParameterOverrides keyword_overrides(const std::map<std::string, std::variant<double, std::string>>& values) {
+  io::ParameterOverrides overrides;
+  for (const auto& [name, value] : values) {
+    io::ParameterValue replacing;
+    if (const auto* text = std::get_if<std::string>(&value)) {
+      replacing = io::ParameterValue(*text);
+      replacing.origin = "keyword argument " + name + "='" + *text + "'";
+    } else {
+      replacing = io::ParameterValue(std::get<double>(value));
+      replacing.origin = "keyword argument " + name + "=" + io::format_number(replacing.number);
+    }
+    overrides[name] = replacing;
+  }
+  return overrides;
+}
+
+py::dict run(const std::string& text, const std::string& file_name,
+             const std::map<std::string, std::variant<double, std::string>>& overrides, bool mesh_only, int threads) {
   driver::RunOptions options;
-  options.overrides = overrides;
+  options.overrides = keyword_overrides(overrides);
   driver::RunOutput output;
   {
     py::gil_scoped_release released;

@@ -14,6 +14,7 @@ import csv
 import hashlib
 import io
 import json
+import numbers
 import os
 import tomllib
 
@@ -141,6 +142,16 @@ class Result:
         return f"Result({len(self.files)} files: {', '.join(list(self.files)[:6])}...)"
 
 
+def _parameter_value(name, value):
+    """A keyword argument's value as the native part takes it: a float, or an expression's text."""
+    if isinstance(value, str):
+        return value
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, numbers.Real):
+        raise InputError(f"keyword argument {name}={value!r}: a parameter takes a number or an expression in "
+                         f"quotes (e.g. {name}=\"2*250\"), found {type(value).__name__}")
+    return float(value)
+
+
 class Problem:
     """A problem file's text, with parameters to override when it runs."""
 
@@ -171,18 +182,21 @@ class Problem:
         return values
 
     def with_parameters(self, **values):
-        """A copy whose [parameters] of these names take these values."""
+        """A copy whose [parameters] of these names take these values: numbers, or
+        expressions in quotes as the file writes them (P="2*250", R="L/4"), evaluated where
+        the parameter stands in the file (they may use the parameters written before it)."""
         merged = dict(self.overrides)
         for name, value in values.items():
-            merged[name] = float(value)
+            merged[name] = _parameter_value(name, value)
         return Problem(self.text, self.file_name, merged)
 
     def sha256(self):
         return hashlib.sha256(self.text.encode()).hexdigest()
 
     def run(self, output=None, threads=0, **parameters):
-        """Solve; `parameters` override [parameters] by name; `output` also writes the
-        files there (the folder is replaced whole). Raises bemcontact.Error subclasses."""
+        """Solve; `parameters` override [parameters] by name (numbers or expressions in
+        quotes, as with_parameters); `output` also writes the files there (the folder is
+        replaced whole). Raises bemcontact.Error subclasses."""
         return self._go(False, output, threads, parameters)
 
     def mesh(self, output=None, **parameters):

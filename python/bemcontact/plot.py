@@ -7,7 +7,9 @@ SOURCE a problem file: the mesh of every body (element ends, normals, boundary n
 contact pairs), so that a wrong arc direction or a reversed contour shows before solving.
 SOURCE an output folder: the mesh again (from the problem file named in summary.json when
 it is unchanged), von Mises and principal stresses on each interior grid, contact pressure
-and shear per contact (with the closed form when the run names one), load-history curves.
+and shear per contact (with the closed form when the run names one; against the angle
+about the centre of curvature for a conformal contact), load-history curves with the Q -
+delta loop of a tangential force load, as computed and without the bulk compliance.
 """
 import argparse
 import hashlib
@@ -53,11 +55,22 @@ def _file(stem, suffix):
     return f"{stem}_{suffix}" if stem else suffix
 
 
+def _finish(fig, path):
+    """Save the figure to `path` and close it (returns the path); with no path, return the
+    figure itself (to draw on it, or to read what it shows)."""
+    fig.tight_layout()
+    if path is None:
+        return fig
+    fig.savefig(path)
+    plt.close(fig)
+    return path
+
+
 def _size(x, y):
     return max(np.ptp(x), np.ptp(y), 1e-300)
 
 
-def mesh_figure(mesh_result, title, path):
+def mesh_figure(mesh_result, title, path=None):
     """Elements (ends marked), nodes, outward normals and boundary names of every region."""
     stems = _stems(mesh_result, "mesh_elements.csv")
     fig, ax = plt.subplots(figsize=(8, 7))
@@ -115,10 +128,7 @@ def mesh_figure(mesh_result, title, path):
     ax.set_title(f"{title}\nelements (| ends), nodes (o), outward normals, boundary names", fontsize=9)
     ax.set_xlabel("x (r)")
     ax.set_ylabel("y (z)")
-    fig.tight_layout()
-    fig.savefig(path)
-    plt.close(fig)
-    return path
+    return _finish(fig, path)
 
 
 def principal_stresses(s11, s22, s12):
@@ -148,7 +158,7 @@ def _outline(ax, boundary):
         ax.plot(boundary["x"][on], boundary["y"][on], "-", color="k", lw=0.8)
 
 
-def interior_figure(result, stem, title, path):
+def interior_figure(result, stem, title, path=None):
     table = result.table(_file(stem, "interior.csv"))
     boundary = result.table(_file(stem, "boundary.csv"))
     s1, s2 = principal_stresses(table["s11"], table["s22"], table["s12"])
@@ -170,20 +180,60 @@ def interior_figure(result, stem, title, path):
         ax.set_aspect("equal")
         ax.set_title(name, fontsize=9)
     fig.suptitle(f"{title}: {stem or 'body'} (interior points; stresses in the file's units)", fontsize=10)
-    fig.tight_layout()
-    fig.savefig(path)
-    plt.close(fig)
-    return path
+    return _finish(fig, path)
 
 
-def contact_figure(result, name, reference, friction, title, path):
+def contact_angles(pairs):
+    """The pairs' angle about the contact's centre of curvature, for a conformal contact.
+
+    When side 1's pairs lie on a circle (fitted in least squares; rms distance under 1e-4
+    of its radius, spanning over 1 degree) and the contact is conformal there, that is the
+    other body sits in side 1's hollow (its centre lies on the side the pair normals point
+    to: a pin in a hole) or the pairs wrap over 60 degrees about it (a shrink fit):
+    returns (angles in degrees, counter-clockwise from the middle of the zone, the mean
+    direction of its pairs from the centre; from +x when they wrap all round; centre,
+    radius). Otherwise None: the pressure is drawn against the coordinate.
+    """
+    x, y = np.asarray(pairs["x"], float), np.asarray(pairs["y"], float)
+    if len(x) < 3:
+        return None
+    x0, y0 = x.mean(), y.mean()
+    u, v = x - x0, y - y0
+    # x^2 + y^2 + D x + E y + F = 0 (Kasa), about the pairs' mean for conditioning.
+    (D, E, F), *_ = np.linalg.lstsq(np.stack([u, v, np.ones_like(u)], 1), -(u ** 2 + v ** 2), rcond=None)
+    centre = np.array([x0 - D / 2, y0 - E / 2])
+    radius_squared = D ** 2 / 4 + E ** 2 / 4 - F
+    if not np.isfinite(radius_squared) or radius_squared <= 0:
+        return None
+    radius = np.sqrt(radius_squared)
+    arm = np.stack([x - centre[0], y - centre[1]], 1)
+    distance = np.hypot(arm[:, 0], arm[:, 1])
+    if np.sqrt(np.mean((distance - radius) ** 2)) > 1e-4 * radius:
+        return None
+    direction = arm / distance[:, None]
+    middle = direction.mean(axis=0)
+    reference = middle / np.hypot(*middle) if np.hypot(*middle) > 0.1 else np.array([1.0, 0.0])
+    angles = np.degrees(np.arctan2(reference[0] * direction[:, 1] - reference[1] * direction[:, 0],
+                                   direction @ reference))
+    span = np.ptp(angles) if np.hypot(*middle) > 0.1 else 360.0
+    hollow = np.mean(-(arm[:, 0] * pairs["nx"] + arm[:, 1] * pairs["ny"])) > 0.0  # normals toward the centre
+    if span < 1.0 or not (hollow or span > 60.0):
+        return None
+    return angles, centre, radius
+
+
+def contact_figure(result, name, reference, friction, title, path=None):
+    """Pressure and shear along the contact at the end of the history: against the
+    coordinate (x or r), or, for a conformal contact, the angle about its centre of
+    curvature (contact_angles)."""
     pairs = result.contact(name)
-    r = pairs["coordinate"]
+    conformal = contact_angles(pairs)
+    r = pairs["coordinate"] if conformal is None else conformal[0]
     order = np.argsort(r)
     fig, ax = plt.subplots(figsize=(8, 5))
     ax.plot(r[order], -pairs["p_n"][order], "o-", ms=3, label="pressure -p_n")
     ax.plot(r[order], pairs["p_t"][order], "s-", ms=3, label="shear p_t")
-    if reference and reference.get("name") == "hertz_sphere":
+    if reference and reference.get("name") == "hertz_sphere" and conformal is None:
         a, p0 = reference["a"], reference["p0"]
         rr = np.linspace(0.0, a, 200) * np.sign(np.median(r) or 1.0)
         ax.plot(rr, p0 * np.sqrt(np.clip(1 - (rr / a) ** 2, 0, None)), "k--", label=f"Hertz (a = {a:.4g})")
@@ -192,48 +242,117 @@ def contact_figure(result, name, reference, friction, title, path):
         if on.any() and friction > 0:
             ax.plot(r[on], np.zeros(on.sum()), "|", color=colour, ms=10, label=status)
     ax.axhline(0.0, color="0.6", lw=0.5)
-    ax.set_xlabel("position along the contact (coordinate: x or r; y or z on a side face)")
+    if conformal is None:
+        ax.set_xlabel("position along the contact (coordinate: x or r; y or z on a side face)")
+    else:
+        _, centre, radius = conformal
+        centre = np.where(np.abs(centre) < 1e-9 * radius, 0.0, centre)  # round-off of the fit
+        ax.set_xlabel(f"angle about the centre of curvature ({centre[0]:.4g}, {centre[1]:.4g}) (radius {radius:.4g}), "
+                      "degrees counter-clockwise from the middle of the zone", fontsize=8)
     ax.set_ylabel("traction")
     ax.set_title(f"{title}: contact '{name}' at the end of the history", fontsize=9)
     ax.legend(fontsize=8)
-    fig.tight_layout()
-    fig.savefig(path)
-    plt.close(fig)
-    return path
+    return _finish(fig, path)
 
 
-def history_figure(result, names, title, path):
-    fig, axes = plt.subplots(2, 2, figsize=(11, 7))
+def tangential_loads(result, names):
+    """The force loads that a contact's tangential force carries: a motions.csv force
+    column equal to +-tangential_force of the contact's steps (within 1 % of its largest
+    value, which is not 0). Per load: a dict with the column stem (`load`), `contact`,
+    `time`, the force `Q` and the displacement `delta` (<stem>_force, <stem>_displacement)."""
+    if "motions.csv" not in result.names():
+        return []
+    motions = result.motions()
+    found = []
+    for column in motions.columns[2:]:
+        stem = column[: -len("_force")]
+        if not column.endswith("_force") or f"{stem}_displacement" not in motions:
+            continue
+        Q = motions[column]
+        largest = np.abs(Q).max()
+        if largest == 0.0:
+            continue
+        for name in names:
+            T = result.contact_steps(name)["tangential_force"]
+            if len(T) == len(Q) and min(np.abs(Q - T).max(), np.abs(Q + T).max()) <= 0.01 * largest:
+                found.append({"load": stem, "contact": name, "time": motions["time"], "Q": Q,
+                              "delta": motions[f"{stem}_displacement"]})
+                break
+    return found
+
+
+def without_compliance(Q, delta):
+    """The Q - delta loop without the bulk compliance: the elastic part that the stick
+    state carries, subtracted as the slope k0 of the loading branch's first step (from the
+    last step at which Q is 0 to the next; from the origin when Q is not 0 at the first).
+    Returns (first, slip, k0): from index `first` (that step) on, slip = delta - delta0 -
+    (Q - Q0) / k0, which starts at 0 and keeps the loop's area (the energy dissipated by a
+    cycle: the subtracted part is a function of Q alone). None when Q never leaves 0."""
+    Q, delta = np.asarray(Q, float), np.asarray(delta, float)
+    moving = np.flatnonzero(Q != 0.0)
+    if len(moving) == 0:
+        return None
+    onset = moving[0]
+    Q0, delta0 = (Q[onset - 1], delta[onset - 1]) if onset > 0 else (0.0, 0.0)
+    if delta[onset] == delta0:
+        return None
+    k0 = (Q[onset] - Q0) / (delta[onset] - delta0)
+    first = max(onset - 1, 0)
+    return first, delta[first:] - delta0 - (Q[first:] - Q0) / k0, k0
+
+
+def history_figure(result, names, title, path=None):
+    """Against time: normal force, contact and stick sizes, dissipated energy, motions and
+    forces; with a tangential force load (fretting), its Q - delta loop as computed and
+    with the bulk compliance removed (without_compliance)."""
+    loops = tangential_loads(result, names)
+    fig, grid = plt.subplots(2, 3 if loops else 2, figsize=(16 if loops else 11, 7), squeeze=False)
+    axes = grid[:, :2]
     for name in names:
         steps = result.contact_steps(name)
         t = steps["time"]
         axes[0, 0].plot(t, steps["normal_force"], ".-", label=name)
         axes[0, 1].plot(t, steps["a"], ".-", label=f"{name}: a")
         axes[0, 1].plot(t, steps["c"], ".--", label=f"{name}: c (stick)")
-        axes[1, 0].plot(t, np.cumsum(steps["dissipated_energy"]), ".-", label=name)
+        # Already cumulative: the energy dissipated since the start (docs/contact.md).
+        axes[1, 0].plot(t, steps["dissipated_energy"], ".-", label=name)
     if "motions.csv" in result.names():
         motions = result.motions()
         # Forces on the left axis, displacements (much smaller numbers) on the right.
         right = axes[1, 1].twinx()
         for k, column in enumerate(motions.columns[2:]):
-            ax = axes[1, 1] if column.endswith("_force") else right
+            ax = axes[1, 1] if column.endswith(("_force", "_moment")) else right
             ax.plot(motions["time"], motions[column], ".-" if ax is right else "o-", ms=3, label=column,
                     color=plt.get_cmap("tab10")(k % 10))
-        axes[1, 1].set_ylabel("forces")
-        right.set_ylabel("displacements")
+        axes[1, 1].set_ylabel("forces (moments)")
+        right.set_ylabel("displacements (rotations)")
         if right.has_data():
             right.legend(fontsize=7, loc="lower right")
-    for ax, label in zip(axes.flat, ("normal force", "contact and stick sizes", "dissipated energy (cumulative)",
+    for ax, label in zip(axes.flat, ("normal force", "contact and stick sizes", "dissipated energy since the start",
                                      "prescribed / computed motions and forces")):
         ax.set_title(label, fontsize=9)
         ax.set_xlabel("time")
+    if loops:
+        raw, slip = grid[0, 2], grid[1, 2]
+        for loop in loops:
+            raw.plot(loop["delta"], loop["Q"], ".-", ms=3, label=f"{loop['load']} ({loop['contact']})")
+            removed = without_compliance(loop["Q"], loop["delta"])
+            if removed is not None:
+                first, delta_slip, k0 = removed
+                slip.plot(delta_slip, loop["Q"][first:], ".-", ms=3, label=f"{loop['load']}: k0 = {k0:.4g}")
+        raw.set_title("Q - delta loop (as computed)", fontsize=9)
+        raw.set_xlabel("delta")
+        slip.set_title("Q - delta loop, bulk compliance removed (k0: first step's slope)", fontsize=9)
+        slip.set_xlabel("delta - delta0 - (Q - Q0) / k0")
+        for ax in (raw, slip):
+            ax.set_ylabel("Q")
+            ax.axhline(0.0, color="0.6", lw=0.5)
+            ax.axvline(0.0, color="0.6", lw=0.5)
+    for ax in grid.flat:
         if ax.has_data():
             ax.legend(fontsize=7)
     fig.suptitle(title, fontsize=10)
-    fig.tight_layout()
-    fig.savefig(path)
-    plt.close(fig)
-    return path
+    return _finish(fig, path)
 
 
 def _load_folder(folder):

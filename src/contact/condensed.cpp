@@ -86,9 +86,9 @@ ContactModel::ContactModel(const ContactProblem& problem, const bem::ProgressCal
   const Index n = static_cast<Index>(pairs_.size());  // 0 for bodies without contacts
   // Motions: the force load's approach first, then the free motions of bodies held only by
   // their contacts (free_motions.hpp).
-  const auto free_motions = free_motion_constraints(problem, prepared_, pairs_, pair_offsets_);
+  free_motions_ = contact::free_motions(problem, prepared_, pairs_, pair_offsets_);
   const Index force_motions = static_cast<Index>(problem.forces.size());
-  const Index K = force_motions + static_cast<Index>(free_motions.size());
+  const Index K = force_motions + static_cast<Index>(free_motions_.pins.size());
   const Index nq = 2 * n + K;  // q = (x, delta): delta_k in column 2n + k
   const auto& regions = prepared_.regions;
   const std::size_t region_count = regions.size();
@@ -152,7 +152,7 @@ ContactModel::ContactModel(const ContactProblem& problem, const bem::ProgressCal
   // Free motions: a variable point constraint each, its datum after the region's nodes.
   std::vector<std::vector<bem::PointConstraint>> pins(region_count);
   std::vector<std::pair<int, Index>> pin_of_motion;  // per free motion: region, index among its pins
-  for (const auto& motion : free_motions) {
+  for (const auto& motion : free_motions_.pins) {
     pin_of_motion.emplace_back(motion.region, static_cast<Index>(pins[motion.region].size()));
     pins[motion.region].push_back(motion.constraint);
   }

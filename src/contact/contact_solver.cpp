@@ -259,7 +259,8 @@ std::vector<PairStatus> statuses(const std::vector<ContactPair>& pairs, const St
 
 LoadHistory solve_load_history(const CondensedProblem& condensed, const std::vector<ContactPair>& pairs,
                                const ContactProblem& problem, const bem::ProgressCallback& progress,
-                               const std::vector<Index>& groups, const StepCheck& check_step) {
+                               const std::vector<Index>& groups, const StepCheck& check_step,
+                               const MotionReport& report) {
   check_history_options(problem);
   const Index n = condensed.pairs;
   LoadHistory history;
@@ -366,7 +367,7 @@ LoadHistory solve_load_history(const CondensedProblem& condensed, const std::vec
     StepRecord record;
     record.time = t;
     record.forces = condensed.force_at(t);
-    record.motions = step.delta;
+    record.motions = report ? report(step.x, step.delta, t) : step.delta;
     history.records.push_back(record);
     if (problem.record_steps) {
       history.step_x.push_back(step.x);
@@ -415,12 +416,39 @@ ContactResult solve_contact(const ContactProblem& problem, const bem::ProgressCa
   start = Clock::now();
   std::vector<Index> groups;
   for (std::size_t c = 0; c <= problem.contacts.size(); ++c) groups.push_back(model.pair_offset(c));
+  // The free bodies' rigid motions, fitted to their boundary displacement, for the pins'
+  // values (free_motions.hpp).
+  const auto& free = model.free_motions();
+  MotionReport report;
+  if (!free.bodies.empty())
+    report = [&](const Vector& x, const Vector& delta, double t) {
+      const Index forces = static_cast<Index>(problem.forces.size());
+      Vector motions(delta.size());
+      motions.head(forces) = delta.head(forces);
+      Index next = forces;
+      for (const auto& body : free.bodies) {
+        std::vector<bem::BoundarySolution> solutions;
+        std::vector<const geometry::BoundaryMesh*> meshes;
+        std::vector<const std::vector<Vec2>*> displacements;
+        for (const int r : body.regions) solutions.push_back(model.region_solution(r, x, delta, t));
+        for (std::size_t k = 0; k < body.regions.size(); ++k) {
+          meshes.push_back(&model.prepared().regions[body.regions[k]].mesh);
+          displacements.push_back(&solutions[k].displacement);
+        }
+        const Vector v = rigid_motion(body, meshes, displacements, problem.analysis);
+        motions.segment(next, v.size()) = v;
+        next += v.size();
+      }
+      return motions;
+    };
+  for (const auto& body : free.bodies)
+    for (const Index mode : body.reported) result.free_motions.push_back({body.body, mode_direction(mode, problem.analysis)});
   const auto check_zones = [&](int step, double time, const std::vector<PairStatus>& state) {
     check_zones_not_clipped(model, state, step, time);
   };
   auto history = [&] {
     try {
-      return solve_load_history(model.condensed(), model.pairs(), problem, progress, groups, check_zones);
+      return solve_load_history(model.condensed(), model.pairs(), problem, progress, groups, check_zones, report);
     } catch (const SolverError& error) {
       throw SolverError(error.what() + pulling_loads_hint(model));
     }

@@ -1,5 +1,8 @@
 #include "bemcontact/contact/free_motions.hpp"
 
+#include <algorithm>
+#include <array>
+#include <cmath>
 
 #include "bemcontact/bem/boundary_system.hpp"
 #include "bemcontact/core/error.hpp"
@@ -18,23 +21,50 @@ Matrix modes_at(const Vec2& x, const Vec2& centre, double scale, AnalysisType ty
   return m;
 }
 
-const char* mode_name(Index mode, AnalysisType type) {
-  if (type == AnalysisType::axisymmetric) return "translation z";
-  return mode == 0 ? "translation x" : mode == 1 ? "translation y" : "rotation";
-}
-
 // Orthonormal basis of the null space of rows (columns of the result).
 Matrix null_space(const Matrix& rows, Index columns) {
   if (rows.rows() == 0) return Matrix::Identity(columns, columns);
   return operators::null_space(rows, 1e-8);
 }
 
+// Of the rows of `rows`, `count` that are most independent: each time the one with the
+// largest part outside those taken (ascending indices).
+std::vector<Index> independent_rows(const Matrix& rows, Index count) {
+  std::vector<Index> taken;
+  Matrix basis(rows.cols(), 0);
+  for (Index k = 0; k < count; ++k) {
+    Index best_row = -1;
+    double best = 0.0;
+    for (Index i = 0; i < rows.rows(); ++i) {
+      Vector v = rows.row(i).transpose();
+      if (basis.cols() > 0) v -= basis * (basis.transpose() * v);
+      if (v.norm() > best * (1.0 + 1e-12)) best = v.norm(), best_row = i;
+    }
+    Vector v = rows.row(best_row).transpose();
+    if (basis.cols() > 0) v -= basis * (basis.transpose() * v);
+    basis.conservativeResize(Eigen::NoChange, basis.cols() + 1);
+    basis.col(basis.cols() - 1) = v / v.norm();
+    taken.push_back(best_row);
+  }
+  std::sort(taken.begin(), taken.end());
+  return taken;
+}
+
 }  // namespace
 
-std::vector<FreeMotionConstraint> free_motion_constraints(const ContactProblem& problem, const PreparedContact& prepared,
-                                                          const std::vector<ContactPair>& pairs,
-                                                          const std::vector<Index>& pair_offsets) {
-  std::vector<FreeMotionConstraint> out;
+const char* mode_name(Index mode, AnalysisType type) {
+  if (type == AnalysisType::axisymmetric) return "translation z";
+  return mode == 0 ? "translation x" : mode == 1 ? "translation y" : "rotation";
+}
+
+const char* mode_direction(Index mode, AnalysisType type) {
+  if (type == AnalysisType::axisymmetric) return "z";
+  return mode == 0 ? "x" : mode == 1 ? "y" : "rotation";
+}
+
+FreeMotions free_motions(const ContactProblem& problem, const PreparedContact& prepared,
+                         const std::vector<ContactPair>& pairs, const std::vector<Index>& pair_offsets) {
+  FreeMotions out;
   const AnalysisType type = problem.analysis;
   const Index mode_count = type == AnalysisType::axisymmetric ? 1 : 3;
   for (std::size_t b = 0; b < problem.bodies.size(); ++b) {
@@ -69,6 +99,7 @@ std::vector<FreeMotionConstraint> free_motion_constraints(const ContactProblem& 
     for (std::size_t k = 0; k < rows.size(); ++k) held.row(static_cast<Index>(k)) = rows[k];
     const Matrix free = null_space(held, mode_count);  // modes x f
     if (free.cols() == 0) continue;
+    out.bodies.push_back({static_cast<int>(b), members, centre, scale, free, independent_rows(free, free.cols())});
 
     // The contacts must hold every free motion: some pair normal along it.
     std::vector<Eigen::RowVectorXd> normals;
@@ -147,8 +178,40 @@ std::vector<FreeMotionConstraint> free_motion_constraints(const ContactProblem& 
       pin.constraint.position = prepared.regions[pick.region].mesh.nodes[pick.node].position;
       pin.constraint.displacement[pick.component] = 0.0;
       pin.constraint.label = "free motion of body '" + problem.bodies[b].name + "'";
-      out.push_back(pin);
+      out.pins.push_back(pin);
     }
+  }
+  return out;
+}
+
+Vector rigid_motion(const FreeBody& body, const std::vector<const geometry::BoundaryMesh*>& meshes,
+                    const std::vector<const std::vector<Vec2>*>& displacements, AnalysisType type) {
+  // Three-point Gauss rule on [0, 1]: exact for the shape functions times r.
+  const double g = 0.5 * std::sqrt(0.6);
+  const std::array<double, 3> at{0.5 - g, 0.5, 0.5 + g}, weight{5.0 / 18.0, 8.0 / 18.0, 5.0 / 18.0};
+  const Index f = body.free.cols();
+  Matrix normal = Matrix::Zero(f, f);
+  Vector right = Vector::Zero(f);
+  for (std::size_t k = 0; k < meshes.size(); ++k) {
+    const auto& mesh = *meshes[k];
+    std::vector<double> w(mesh.nodes.size(), 0.0);
+    for (const auto& element : mesh.elements)
+      for (int a = 0; a < element.node_count; ++a)
+        for (std::size_t q = 0; q < at.size(); ++q) {
+          const double r = type == AnalysisType::axisymmetric ? element.point(at[q]).x() : 1.0;
+          w[element.nodes[a]] += weight[q] * element.shape(a, at[q]) * r * element.jacobian();
+        }
+    for (std::size_t i = 0; i < mesh.nodes.size(); ++i) {
+      const Matrix A = modes_at(mesh.nodes[i].position, body.centre, body.scale, type) * body.free;  // 2 x f
+      normal += w[i] * A.transpose() * A;
+      right += w[i] * A.transpose() * (*displacements[k])[i];
+    }
+  }
+  const Vector v = body.free * normal.ldlt().solve(right);  // modes
+  Vector out(static_cast<Index>(body.reported.size()));
+  for (std::size_t k = 0; k < body.reported.size(); ++k) {
+    const Index mode = body.reported[k];
+    out[static_cast<Index>(k)] = mode == 2 ? v[mode] / body.scale : v[mode];  // rotation: radians
   }
   return out;
 }

@@ -572,6 +572,30 @@ std::vector<std::string> identifiers_in(std::string_view text) {
   return names;
 }
 
+// How the user gave a replacing value, for messages: "--set P" or the caller's own words.
+std::string origin_of(const std::string& name, const ParameterValue& value) {
+  return value.origin.empty() ? "--set " + name : value.origin;
+}
+
+// A replacing value (a number, or an expression evaluated here with the parameters before
+// it); its errors say where it came from, at the parameter's line of the file.
+double replacing_value(const std::string& name, const ParameterValue& value, const SourceLocation& where,
+                       const FileContext& context) {
+  try {
+    const double number = value.expression.empty()
+                              ? value.number
+                              : Expression::parse(value.expression, context.constant_scope(), where).value();
+    if (!std::isfinite(number))
+      throw InputError(where, "the value is " + format_number(number) + "; a finite number is needed");
+    return number;
+  } catch (const InputError& error) {
+    std::string message = error.what();
+    const std::string location = where.describe() + ": ";
+    if (message.rfind(location, 0) == 0) message.erase(0, location.size());
+    throw InputError(where, origin_of(name, value) + ": " + message);
+  }
+}
+
 }  // namespace
 
 void read_parameters(const TableReader& root, FileContext& context) {
@@ -582,7 +606,7 @@ void read_parameters(const TableReader& root, FileContext& context) {
       if (table)
         for (const auto& [key, node] : *table) known += (known.empty() ? "" : ", ") + std::string(key.str());
       throw InputError(SourceLocation{context.file, table ? root.where("parameters").line : 0, "parameters." + name},
-                       "--set " + name + ": the file has no parameter '" + name + "' to replace (" +
+                       origin_of(name, value) + ": the file has no parameter '" + name + "' to replace (" +
                            (known.empty() ? "it has no [parameters]" : "its parameters: " + known) + ")");
     }
   if (!table) return;
@@ -601,22 +625,26 @@ void read_parameters(const TableReader& root, FileContext& context) {
     if (is_reserved_name(name))
       throw InputError(where, "'" + name + "' cannot be a parameter name: x, y, r, z, pi and the "
                               "function names are reserved");
-    if (node->is_string()) {
-      // Say plainly when an expression uses a parameter defined further down.
-      const std::string text = *node->value_exact<std::string>();
+    if (!node->is_string() && !node->is_integer() && !node->is_floating_point())
+      throw InputError(where, "a parameter must be a number or an expression in quotes, found " +
+                                  describe_node(*node));
+    const auto replaced = context.overrides.find(name);
+    const bool overridden = replaced != context.overrides.end();
+    // Say plainly when an expression (the file's, or the one replacing it) uses a parameter
+    // defined further down.
+    const auto check_order = [&](const std::string& text, const std::string& origin) {
       for (const std::string& used : identifiers_in(text))
         for (std::size_t j = i + 1; j < entries.size(); ++j)
           if (entries[j].first == used && !context.parameters.count(used))
-            throw InputError(where, "parameter '" + name + "' uses '" + used +
+            throw InputError(where, origin + "parameter '" + name + "' uses '" + used +
                                         "', which is defined later (line " +
                                         std::to_string(line_of(*entries[j].second)) +
                                         "); a parameter may only use the parameters written before it");
-    } else if (!node->is_integer() && !node->is_floating_point()) {
-      throw InputError(where, "a parameter must be a number or an expression in quotes, found " +
-                                  describe_node(*node));
-    }
-    const auto replaced = context.overrides.find(name);
-    context.parameters[name] = replaced != context.overrides.end() ? replaced->second : read_number(*node, where, context);
+    };
+    if (node->is_string()) check_order(*node->value_exact<std::string>(), "");
+    if (overridden) check_order(replaced->second.expression, origin_of(name, replaced->second) + ": ");
+    context.parameters[name] =
+        overridden ? replacing_value(name, replaced->second, where, context) : read_number(*node, where, context);
   }
 }
 

@@ -456,6 +456,7 @@ void read_force_load(const TableReader& load, contact::ContactProblem& problem) 
   if (force.force == 0.0) load.fail("force", "the total force must not be zero (a zero force through a "
                                                 "history is given by its amplitude)");
   if (load.has("amplitude")) force.amplitude = read_amplitude(load, "amplitude");
+  force.named = load.has("name");
   force.name = load.optional_string("name").value_or(body.name + (force.piece >= 0 ? "_" + body.regions[force.region].body.pieces[force.piece].name : std::string()) +
                                                     (force.component == 0 ? "_x" : force.component == 1 ? "_y" : "_rotation"));
   for (const auto& other : problem.forces) {

@@ -1,5 +1,6 @@
 #include "bemcontact/io/contact_writer.hpp"
 
+#include <algorithm>
 #include <optional>
 
 #include <cctype>
@@ -286,6 +287,36 @@ std::string contact_report_text(const contact::ContactProblem& problem, const co
   return out;
 }
 
+std::vector<std::string> motion_columns(const contact::ContactProblem& problem, const contact::ContactResult& result) {
+  const bool axisymmetric = problem.analysis == AnalysisType::axisymmetric;
+  std::vector<std::string> columns;
+  for (const auto& load : problem.forces) {
+    std::string stem = problem.bodies[load.body].name;
+    if (load.named) {
+      stem += "_" + load.name;
+    } else {
+      if (load.piece >= 0) stem += "_" + problem.bodies[load.body].regions[load.region].body.pieces[load.piece].name;
+      if (load.component == 0) stem += axisymmetric ? "_r" : "_x";
+      if (load.component == 1) stem += axisymmetric ? "_z" : "_y";
+    }
+    stem = file_stem(stem);
+    columns.push_back(stem + (load.component == 2 ? "_moment" : "_force"));
+    columns.push_back(stem + (load.component == 2 ? "_rotation" : "_displacement"));
+  }
+  for (const auto& motion : result.free_motions)
+    columns.push_back(file_stem(problem.bodies[motion.body].name) + "_" + motion.direction +
+                      (motion.direction == "rotation" ? "" : "_displacement"));
+  // A name met again (a load named like a direction of a free body) gets _2, _3, ...
+  std::vector<std::string> unique;
+  for (const auto& column : columns) {
+    std::string name = column;
+    for (int k = 2; std::find(unique.begin(), unique.end(), name) != unique.end(); ++k)
+      name = column + "_" + std::to_string(k);
+    unique.push_back(name);
+  }
+  return unique;
+}
+
 std::vector<std::pair<std::string, std::string>> contact_output_files(const contact::ContactProblem& problem,
                                                                       const contact::ContactResult& result, bool vtk) {
   std::vector<std::pair<std::string, std::string>> files;
@@ -309,10 +340,8 @@ std::vector<std::pair<std::string, std::string>> contact_output_files(const cont
   }
   if (!result.records.empty() && result.records.front().motions.size() > 0) {
     std::string out = "step,time";
-    for (const auto& load : problem.forces) out += "," + file_stem(load.name) + "_force," + file_stem(load.name) + "_displacement";
+    for (const auto& column : motion_columns(problem, result)) out += "," + column;
     const Index K = result.records.front().motions.size();
-    for (Index k = static_cast<Index>(problem.forces.size()); k < K; ++k)
-      out += ",free_motion_" + std::to_string(k - static_cast<Index>(problem.forces.size()) + 1) + "_displacement";
     out += "\n";
     for (std::size_t s = 0; s < result.records.size(); ++s) {
       const auto& r = result.records[s];

@@ -7,11 +7,11 @@ EXAMPLES = pathlib.Path(os.environ.get("BEMCONTACT_EXAMPLES", pathlib.Path(__fil
 BINARY = os.environ.get("BEMCONTACT_BINARY", str(pathlib.Path(__file__).parents[2] / "build" / "bemcontact"))
 
 
-@pytest.fixture
+@pytest.fixture(scope="session")
 def examples():
     return EXAMPLES
 
 
-@pytest.fixture
+@pytest.fixture(scope="session")
 def binary():
     return BINARY

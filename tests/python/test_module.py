@@ -2,6 +2,7 @@
 import hashlib
 import json
 import math
+import re
 import subprocess
 
 import numpy as np
@@ -89,14 +90,59 @@ def test_errors_raise_with_the_command_line_messages(examples, binary, tmp_path)
     command = subprocess.run([binary, "run", str(bad), "-o", str(tmp_path / "out")], capture_output=True, text=True)
     assert command.returncode == 2
     assert message in command.stderr
-    with pytest.raises(bc.InputError, match="Q"):
+    with pytest.raises(bc.InputError) as unknown:
         bc.run(examples / "plate_tension.toml", Q=1.0)
+    # Named as the caller wrote it: a keyword argument, not the command line's --set.
+    assert "keyword argument Q=1: the file has no parameter 'Q'" in str(unknown.value)
+    assert "--set" not in str(unknown.value)
     assert issubclass(bc.GeometryError, bc.Error) and issubclass(bc.SolverError, bc.Error)
     crossing = tension_plate()
     crossing["vertices"]["C"] = [0.0, "H"]
     crossing["vertices"]["D"] = ["W", "H"]
     with pytest.raises(bc.GeometryError):
         bc.Problem.from_dict(crossing).run()
+
+
+def test_parameters_take_expressions_as_the_file_writes_them(examples):
+    # P = "2*74" is P = 148; an expression may use the parameters written before it in the
+    # file (rc after R), and the expressions after it see the new value (theta = asin(rc/R)).
+    problem = bc.Problem.load(examples / "fretting_cylinder.toml")
+    number = problem.run(P=148.0, rc=0.085, n=10)
+    for expression in (problem.run(P="2*74", rc="0.085*R", n="5*2"),
+                       bc.run(examples / "fretting_cylinder.toml", P="2 * 74", rc="0.085 * R", n="10"),
+                       problem.with_parameters(P="2*74").run(rc="0.085*R", n=10)):
+        assert expression.summary["parameters"] == number.summary["parameters"]
+        assert expression.summary["parameters"]["theta"] == pytest.approx(math.asin(0.085), rel=1e-15)
+        for name in ("contact.csv", "motions.csv", "cylinder_boundary.csv"):
+            assert expression.text(name) == number.text(name), name
+    assert problem.with_parameters(P="2*74").parameters["P"] == "2*74"  # as given, evaluated by run
+
+
+@pytest.mark.parametrize("value, says", [
+    ("2*", "keyword argument P='2*': in expression \"2*\", column 3"),
+    ("1/0", "keyword argument P='1/0': the value is inf"),
+    ("x + 1", "keyword argument P='x + 1': in expression"),
+    ("2*Pmax", "keyword argument P='2*Pmax': in expression \"2*Pmax\", column 3: unknown name 'Pmax'"),
+    ("mu * 500", "keyword argument P='mu * 500': parameter 'P' uses 'mu', which is defined later"),
+    (math.nan, "keyword argument P=nan: the value is nan"),
+])
+def test_a_bad_parameter_value_names_the_parameter(examples, value, says):
+    path = examples / "fretting_cylinder.toml"
+    line = next(k for k, text in enumerate(path.read_text().splitlines(), 1) if text.startswith("P = "))
+    with pytest.raises(bc.InputError) as raised:
+        bc.run(path, P=value)
+    message = str(raised.value)
+    assert f"{path}:{line}: key 'parameters.P': " in message and says in message, message
+
+
+def test_a_parameter_value_must_be_a_number_or_an_expression(examples):
+    for value, kind in (([1.0], "list"), (True, "bool"), (None, "NoneType")):
+        with pytest.raises(bc.InputError, match=re.escape(f"keyword argument P={value!r}: ") + f".* found {kind}$"):
+            bc.run(examples / "fretting_cylinder.toml", P=value)
+    with pytest.raises(bc.InputError, match="keyword argument rc='2\\*theta': parameter 'rc' uses 'theta', which "
+                                            "is defined later"):
+        bc.run(examples / "fretting_cylinder.toml", rc="2*theta")
+    assert bc.Problem.load(examples / "fretting_cylinder.toml").with_parameters(n=np.int64(12)).parameters["n"] == 12.0
 
 
 def test_results_are_the_files_of_the_command_line(examples, binary, tmp_path):
@@ -117,6 +163,19 @@ def test_results_are_the_files_of_the_command_line(examples, binary, tmp_path):
     with pytest.raises(KeyError, match="bottom_plate"):
         result.boundary()
     assert len(result.boundary("roller")) > 0
+
+
+def test_motions_are_named_by_body_and_direction(examples):
+    fretting = bc.run(examples / "fretting_cylinder.toml", n=20).motions()
+    assert fretting.columns == ["step", "time", "cylinder_P_force", "cylinder_P_displacement", "cylinder_Q_force",
+                                "cylinder_Q_displacement"]
+    # The roller is held only by the plates: its rigid motion, half the top platen's approach
+    # (the model is its own mirror image about the roller's centre line).
+    roller = bc.run(examples / "contact_roller_plates.toml").motions()
+    assert roller.columns == ["step", "time", "top_plate_top_y_force", "top_plate_top_y_displacement",
+                              "roller_y_displacement"]
+    np.testing.assert_allclose(roller["roller_y_displacement"], 0.5 * roller["top_plate_top_y_displacement"],
+                               rtol=1e-9)
 
 
 def test_save_replaces_the_folder_whole(examples, tmp_path):

@@ -49,6 +49,108 @@ def test_figures_of_an_output_folder(examples, binary, tmp_path):
         assert ET.parse(run_dir / "figures" / name).getroot().tag.endswith("svg")
 
 
+def _csv_column(path, column):
+    """One column of a CSV file, read with the csv module (not with the package's Table)."""
+    import csv
+    with open(path, newline="") as f:
+        return np.array([float(row[column]) for row in csv.DictReader(f)])
+
+
+def _axes_titled(fig, start):
+    found = [ax for ax in fig.axes if ax.get_title().startswith(start)]
+    assert len(found) == 1, [ax.get_title() for ax in fig.axes]
+    return found[0]
+
+
+@pytest.fixture(scope="module")
+def fretting_run(examples, tmp_path_factory):
+    """examples/fretting_cylinder.toml solved once: P, then a full cycle of Q."""
+    out = tmp_path_factory.mktemp("fretting") / "run"
+    bc.run(examples / "fretting_cylinder.toml", output=out)
+    return out
+
+
+def test_history_draws_the_dissipated_energy_as_written(fretting_run):
+    # contact_steps.csv's energy is already cumulative (since the start): the curve is the
+    # column itself, not its running sum (which drew it 17 times too large here).
+    result = plot._load_folder(fretting_run)
+    fig = plot.history_figure(result, result.contact_names(), "fretting")
+    (line,) = _axes_titled(fig, "dissipated energy").get_lines()
+    column = _csv_column(fretting_run / "contact_steps.csv", "dissipated_energy")
+    np.testing.assert_array_equal(line.get_xdata(), _csv_column(fretting_run / "contact_steps.csv", "time"))
+    np.testing.assert_array_equal(line.get_ydata(), column)
+    summary = json.loads((fretting_run / "summary.json").read_text())
+    assert line.get_ydata()[-1] == summary["results"]["contact"]["dissipated_energy"] > 0.0
+
+
+def _loop_area(delta, Q):
+    """The integral of Q d(delta) along the path (trapezoids)."""
+    return float(np.sum(0.5 * (Q[1:] + Q[:-1]) * np.diff(delta)))
+
+
+def test_history_has_the_fretting_loop_with_and_without_the_bulk_compliance(fretting_run):
+    # The Q - delta loop of motions.csv, as computed and less its initial elastic slope. Its
+    # area over the cycle Q* -> -Q* -> Q* (t = 2 to 4) is the work of Q, which friction
+    # dissipates (the state at t = 4 is that at t = 2): contact_steps.csv's energy, summed
+    # from the pairs' slips, gives it independently.
+    result = plot._load_folder(fretting_run)
+    fig = plot.history_figure(result, result.contact_names(), "fretting")
+    Q = _csv_column(fretting_run / "motions.csv", "cylinder_Q_force")
+    delta = _csv_column(fretting_run / "motions.csv", "cylinder_Q_displacement")
+    time = _csv_column(fretting_run / "motions.csv", "time")
+    (raw,) = _axes_titled(fig, "Q - delta loop (").get_lines()[:1]
+    np.testing.assert_array_equal(raw.get_xdata(), delta)
+    np.testing.assert_array_equal(raw.get_ydata(), Q)
+    # Without the compliance: from the last step at which Q is 0, delta - delta0 - (Q - Q0) / k0
+    # with k0 the slope of the next step.
+    first = np.flatnonzero(Q != 0.0)[0] - 1
+    assert Q[first] == 0.0 and time[first] == pytest.approx(1.0)  # P alone until t = 1
+    k0 = (Q[first + 1] - Q[first]) / (delta[first + 1] - delta[first])
+    slip = delta[first:] - delta[first] - (Q[first:] - Q[first]) / k0
+    (removed,) = _axes_titled(fig, "Q - delta loop, bulk compliance removed").get_lines()[:1]
+    np.testing.assert_allclose(removed.get_xdata(), slip, rtol=1e-12, atol=1e-12 * np.abs(delta).max())
+    np.testing.assert_array_equal(removed.get_ydata(), Q[first:])
+    # The compliance is most of delta: the slip part is under a tenth of it.
+    assert np.abs(slip).max() < 0.1 * np.abs(delta).max()
+    energy = _csv_column(fretting_run / "contact_steps.csv", "dissipated_energy")
+    cycle = time >= 2.0 - 1e-12
+    dissipated = energy[-1] - energy[cycle][0]
+    assert _loop_area(delta[cycle], Q[cycle]) == pytest.approx(dissipated, rel=0.02)
+    start = len(Q) - cycle.sum() - first
+    assert _loop_area(slip[start:], Q[cycle]) == pytest.approx(dissipated, rel=0.02)
+
+
+def test_conformal_contact_pressure_is_drawn_against_the_angle(examples, binary, tmp_path):
+    # The pin in a hole: pairs on the hole (centre (0, 0), radius Rh = 1.01), drawn against
+    # the angle about its centre from the bottom of the hole. At P = 0.34 the contact is
+    # Hertz's with the relative radius Rh Rp / (Rh - Rp) = 101 and E* = E (plane stress,
+    # rigid pin): a = sqrt(4 P R / (pi E)).
+    run_dir = tmp_path / "pin"
+    result = bc.run(examples / "contact_pin_in_hole.toml", output=run_dir)
+    pairs = result.contact()
+    fig = plot.contact_figure(result, "contact", None, 0.0, "pin")
+    pressure = fig.axes[0].get_lines()[0]
+    angles = np.degrees(np.arctan2(pairs["x"], -pairs["y"]))  # counter-clockwise from (0, -1)
+    order = np.argsort(angles)
+    np.testing.assert_allclose(pressure.get_xdata(), angles[order], atol=1e-9)
+    np.testing.assert_array_equal(pressure.get_ydata(), -pairs["p_n"][order])
+    assert "angle about the centre of curvature (0, 0) (radius 1.01)" in fig.axes[0].get_xlabel()
+    p = result.summary["parameters"]
+    a = np.sqrt(4 * p["P"] * (p["Rh"] * p["Rp"] / (p["Rh"] - p["Rp"])) / (np.pi * p["E"]))
+    edge = np.abs(angles[pairs["p_n"] < 0.0]).max()
+    element = np.degrees(2 * p["th"] / p["n"])
+    assert abs(edge - np.degrees(a / p["Rh"])) < element
+    # A contact that is not conformal keeps its coordinate: the fretting cylinder on a block.
+    fretting = bc.run(examples / "fretting_cylinder.toml", n=20)
+    assert plot.contact_angles(fretting.contact()) is None
+    straight = plot.contact_figure(fretting, "contact", None, 0.3, "fretting").axes[0].get_lines()[0]
+    np.testing.assert_array_equal(straight.get_xdata(), np.sort(fretting.contact()["coordinate"]))
+    # The command draws both figures of the run.
+    command = subprocess.run([binary, "plot", str(run_dir)], capture_output=True, text=True)
+    assert command.returncode == 0, command.stderr
+    assert (run_dir / "figures" / "contact_contact.png").read_bytes()[:8] == PNG_SIGNATURE
+
+
 def test_plot_errors_are_clear(binary, tmp_path):
     missing = subprocess.run([binary, "plot", str(tmp_path / "nothing")], capture_output=True, text=True)
     assert missing.returncode != 0 and "no such file or folder" in missing.stderr

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "bemcontact/bem/factored_body.hpp"
+#include "bemcontact/contact/free_motions.hpp"
 #include "bemcontact/contact/pairing.hpp"
 
 namespace bemcontact::contact {
@@ -91,6 +92,9 @@ class ContactModel {
   Index pair_offset(std::size_t c) const { return pair_offsets_[c]; }
   // The pairs of every contact, in the order of the condensed unknowns.
   const std::vector<ContactPair>& pairs() const { return pairs_; }
+  // The bodies held only by their contacts: their pins (the motions after the force loads'
+  // approaches) and how their rigid motions are reported.
+  const FreeMotions& free_motions() const { return free_motions_; }
 
   // The boundary solution of region r (prepared().regions) for a contact solution x (local
   // frame) and motions delta at pseudo-time t (the bodies' own data at their amplitudes; no
@@ -105,6 +109,7 @@ class ContactModel {
   CondensedProblem condensed_;
   std::vector<Index> pair_offsets_;
   std::vector<ContactPair> pairs_;
+  FreeMotions free_motions_;
   std::vector<std::unique_ptr<bem::FactoredBody>> factored_;
   std::vector<Matrix> data_map_;     // D_r
   std::vector<Matrix> data_offset_;  // d0_r per load group (columns)

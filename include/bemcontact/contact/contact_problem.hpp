@@ -47,6 +47,7 @@ struct Amplitude {
 // on one platen or rigid body (a normal force P and a tangential force Q).
 struct ForceLoad {
   std::string name;    // for messages and output columns (default: the body and component)
+  bool named = false;  // the name was given (motions.csv: <body>_<name>_force) rather than made up
   int body = 0;        // index into ContactProblem::bodies
   int region = 0;      // region of an elastic body
   int piece = -1;      // index into the region's pieces; -1 for a rigid body

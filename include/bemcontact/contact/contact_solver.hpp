@@ -82,14 +82,25 @@ struct ContactInterfaceResult {
 struct StepRecord {
   double time = 0.0;
   Vector forces;   // K: prescribed force of each motion at `time` (0 for free bodies)
-  Vector motions;  // K
+  Vector motions;  // K; in solve_contact's result the free bodies' are their rigid motions (free_motions.hpp)
 };
+
+// A free body's reported rigid motion: one entry of StepRecord::motions after the force
+// loads' approaches.
+struct ReportedMotion {
+  int body = -1;          // index into ContactProblem::bodies
+  std::string direction;  // "x", "y", "rotation" ("z" in axisymmetry): mode_direction
+};
+
+// What a step records as its motions, from the step's solution (x, delta) at pseudo-time t.
+using MotionReport = std::function<Vector(const Vector& x, const Vector& delta, double t)>;
 
 // The base holds the first contact's results (the only one of a two-body problem);
 // `contacts` every contact's, in the problem's order.
 struct ContactResult : ContactInterfaceResult {
   std::vector<ContactInterfaceResult> contacts;
   std::vector<StepRecord> records;  // per step: forces and motions
+  std::vector<ReportedMotion> free_motions;  // the motions of records after the force loads'
   int steps_taken = 0;
   int rejected_steps = 0;
   // When record_steps: per step, every region's boundary solution with stresses.
@@ -110,7 +121,8 @@ struct ContactResult : ContactInterfaceResult {
 // law in incremental form. Uses the problem's kind, friction, increments, solver and
 // record_steps. Throws SolverError (with the load step and the residual) on non-convergence.
 // The base summarises all pairs together; `contacts` each group of pairs given by
-// `groups` (offsets: group c holds pairs [groups[c], groups[c + 1])), when given.
+// `groups` (offsets: group c holds pairs [groups[c], groups[c + 1])), when given. Each
+// step's record holds `report`'s motions, or the motion unknowns delta without one.
 struct LoadHistory : ContactInterfaceResult {
   std::vector<ContactInterfaceResult> contacts;
   std::vector<StepRecord> records;      // per step
@@ -125,10 +137,12 @@ struct LoadHistory : ContactInterfaceResult {
 using StepCheck = std::function<void(int step, double time, const std::vector<PairStatus>& state)>;
 LoadHistory solve_load_history(const CondensedProblem& condensed, const std::vector<ContactPair>& pairs,
                                const ContactProblem& problem, const bem::ProgressCallback& progress = {},
-                               const std::vector<Index>& groups = {}, const StepCheck& check_step = {});
+                               const std::vector<Index>& groups = {}, const StepCheck& check_step = {},
+                               const MotionReport& report = {});
 
 // Throws SolverError (with the load step and the residual) when a step does not converge or
-// a unilateral contact is clipped by its zone (zone_ends.hpp), GeometryError for a zone that cannot be paired, InputError for inconsistent options.
+// a unilateral contact is clipped by its zone (zone_ends.hpp), GeometryError for a zone that
+// cannot be paired, InputError for inconsistent options.
 ContactResult solve_contact(const ContactProblem& problem, const bem::ProgressCallback& progress = {});
 
 }  // namespace bemcontact::contact

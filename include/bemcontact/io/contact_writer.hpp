@@ -15,9 +15,7 @@
 //                      newton_iterations,kalker_iterations,threshold_iterations,gmres_cycles,residual
 //                      (c: the stick zone's half-width, contact_summary.hpp)
 //   motions.csv        one row per load step (when the problem has motions): step,time, then
-//                      per force load <name>_force,<name>_displacement (the prescribed force
-//                      and the approach: a force-displacement loop), per free body motion
-//                      <body>_<k>_displacement
+//                      the columns of motion_columns
 //   contact_step<k>.csv  the pairs at step k (when record_steps)
 //   <body>_boundary_step<k>.csv (when record_steps): every step's boundary fields
 //   <body>_boundary.pvd, <body>_boundary_step<k>.vtp (when record_steps and vtk): every
@@ -57,6 +55,14 @@ nlohmann::json contact_summary_json(const contact::ContactProblem& problem, cons
 // and, for a force-loaded axisymmetric ball (an arc zone on body 1 facing a straight zone
 // on body 2), the Hertz values a, p0, delta next to the computed ones (Annex D).
 std::string contact_report_text(const contact::ContactProblem& problem, const contact::ContactResult& result);
+
+// motions.csv's columns after step,time, named by body and direction: per force load the
+// prescribed force and the approach (a force-displacement loop), <body>_<name>_force,
+// <body>_<name>_displacement for a named load, <body>[_<boundary>]_<x|y>_force, ..._displacement
+// otherwise (r, z in axisymmetry), _moment and _rotation for a moment; then each free
+// body's rigid motion (ContactResult::free_motions): <body>_<x|y|z>_displacement, <body>_rotation.
+// Characters other than letters and digits become '_'; a name met again gets _2, _3, ...
+std::vector<std::string> motion_columns(const contact::ContactProblem& problem, const contact::ContactResult& result);
 
 // Every file of a contact run as (file name, content), summary.json left to the caller.
 std::vector<std::pair<std::string, std::string>> contact_output_files(const contact::ContactProblem& problem,

@@ -65,4 +65,34 @@ TEST(ContactIo, WritersHoldEveryPairAndTheSummary) {
   EXPECT_TRUE(c.at("timings").contains("phases"));
 }
 
+// motions.csv's columns name the body and the direction: a named load by its name, a
+// load without one by its boundary and component (r, z in axisymmetry), a moment as
+// _moment and _rotation; characters outside letters and digits become '_', and a name met
+// twice gets a suffix.
+TEST(ContactIo, MotionColumnsNameTheBodyAndTheDirection) {
+  const std::string dir = BEMCONTACT_EXAMPLES_DIR;
+  const contact::ContactResult none;
+  const auto fretting = io::read_contact_file(dir + "/fretting_cylinder.toml");
+  EXPECT_EQ(io::motion_columns(fretting.problem, none),
+            (std::vector<std::string>{"cylinder_P_force", "cylinder_P_displacement", "cylinder_Q_force",
+                                      "cylinder_Q_displacement"}));
+  const auto ball = io::read_contact_file(dir + "/contact_hertz_sphere.toml");
+  EXPECT_EQ(io::motion_columns(ball.problem, none),
+            (std::vector<std::string>{"ball_top_z_force", "ball_top_z_displacement"}));
+  auto punch = io::read_contact_file(dir + "/contact_rigid_punch.toml").problem;
+  ASSERT_EQ(punch.forces.size(), 1u);
+  auto moment = punch.forces.front();
+  moment.component = 2;
+  punch.forces.push_back(moment);
+  auto named = moment;
+  named.named = true;
+  named.name = "turn it";
+  punch.forces.push_back(named);
+  contact::ContactResult free;
+  free.free_motions = {{punch.forces.front().body, "y"}};
+  EXPECT_EQ(io::motion_columns(punch, free),
+            (std::vector<std::string>{"punch_y_force", "punch_y_displacement", "punch_moment", "punch_rotation",
+                                      "punch_turn_it_moment", "punch_turn_it_rotation", "punch_y_displacement_2"}));
+}
+
 }  // namespace bemcontact

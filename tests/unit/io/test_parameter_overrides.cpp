@@ -72,8 +72,8 @@ TEST(IoParameterOverrides, AssignmentsAreChecked) {
   ParameterOverrides overrides;
   add_parameter_override(overrides, "R=4");
   add_parameter_override(overrides, "E_ball=4.32e5");
-  EXPECT_EQ(overrides.at("R"), 4.0);
-  EXPECT_EQ(overrides.at("E_ball"), 432000.0);
+  EXPECT_EQ(overrides.at("R").number, 4.0);
+  EXPECT_EQ(overrides.at("E_ball").number, 432000.0);
   EXPECT_NE(error_of([&] { add_parameter_override(overrides, "R=5"); }).find("set twice"), std::string::npos);
   EXPECT_NE(error_of([&] { add_parameter_override(overrides, "X=1.5e"); }).find("not a finite number"),
             std::string::npos);
@@ -81,6 +81,29 @@ TEST(IoParameterOverrides, AssignmentsAreChecked) {
             std::string::npos);
   EXPECT_NE(error_of([&] { add_parameter_override(overrides, "=1"); }).find("NAME=VALUE"), std::string::npos);
   EXPECT_NE(error_of([&] { add_parameter_override(overrides, "Z"); }).find("NAME=VALUE"), std::string::npos);
+}
+
+// A replacing value may be an expression, evaluated where the parameter stands (the Python
+// module's keyword arguments); its errors name the parameter and how it was given.
+TEST(IoParameterOverrides, AnExpressionReplacesAsTheFileWritesIt) {
+  const auto file = parse_problem(plate, "plate.toml", {{"L", ParameterValue("2 * 3")}});
+  EXPECT_EQ(file.parameters.at("L"), 6.0);
+  EXPECT_EQ(file.parameters.at("P"), 18.0);
+  EXPECT_EQ(parse_problem(plate, "plate.toml", {{"P", ParameterValue("L / 4")}}).parameters.at("P"), 0.5);
+  ParameterValue later("P + 1");
+  later.origin = "keyword argument L='P + 1'";
+  const std::string order = error_of([&] { parse_problem(plate, "plate.toml", {{"L", later}}); });
+  EXPECT_NE(order.find("plate.toml:3: key 'parameters.L': keyword argument L='P + 1': parameter 'L' uses 'P', which "
+                       "is defined later"), std::string::npos) << order;
+  ParameterValue bad("3 *");
+  bad.origin = "keyword argument P='3 *'";
+  const std::string syntax = error_of([&] { parse_problem(plate, "plate.toml", {{"P", bad}}); });
+  EXPECT_NE(syntax.find("plate.toml:4: key 'parameters.P': keyword argument P='3 *': in expression \"3 *\""),
+            std::string::npos) << syntax;
+  const std::string infinite = error_of([] { parse_problem(plate, "plate.toml", {{"P", ParameterValue("1/0")}}); });
+  EXPECT_NE(infinite.find("--set P: the value is inf"), std::string::npos) << infinite;
+  const std::string unknown = error_of([] { parse_problem(plate, "plate.toml", {{"Q", 1.0}}); });
+  EXPECT_NE(unknown.find("--set Q: the file has no parameter 'Q'"), std::string::npos) << unknown;
 }
 
 }  // namespace
