@@ -126,6 +126,29 @@ std::vector<std::vector<Index>> elements_by_colour(const geometry::BoundaryMesh&
 
 }  // namespace
 
+Matrix image_translation_sums(const geometry::BoundaryMesh& mesh, const ElementIntegrator& integrator) {
+  const Index n = mesh.node_count();
+  Matrix sums = Matrix::Zero(2 * n, 2);
+  std::vector<std::vector<geometry::BoundaryElement>> segments(mesh.images.size());
+  for (std::size_t k = 0; k < mesh.images.size(); ++k)
+    for (const auto& segment : mesh.symmetry_segments) segments[k].push_back(geometry::image_element(segment, mesh.images[k]));
+#pragma omp parallel for schedule(static)
+  for (Index i = 0; i < n; ++i) {
+    Mat2 sum = Mat2::Zero();
+    for (std::size_t k = 0; k < mesh.images.size(); ++k) {
+      // B_k = sum_j of image k's H blocks at node i = -int T over its image segments.
+      Mat2 b = Mat2::Zero();
+      for (const auto& segment : segments[k]) {
+        const auto influence = integrator.influence(mesh.nodes[i].position, segment, -1);
+        b -= influence.H[0] + influence.H[1];
+      }
+      sum += b * (Mat2::Identity() - mesh.images[k].matrix);
+    }
+    sums.middleRows<2>(2 * i) = sum;
+  }
+  return sums;
+}
+
 InfluenceMatrices assemble_influence_matrices(const geometry::BoundaryMesh& mesh,
                                               const ElementIntegrator& integrator,
                                               const ProgressCallback& progress) {
@@ -152,12 +175,9 @@ InfluenceMatrices assemble_influence_matrices(const geometry::BoundaryMesh& mesh
   constexpr std::size_t batch = 64;
   Matrix contributions(axisymmetric ? 2 * n : 0, axisymmetric ? static_cast<Index>(batch) : 0);
   // With symmetry lines each element also acts through its images (geometry/symmetry.hpp):
-  // H_ij += H'_k S_k, G_ij += G'_k S_k. The rigid translations of the whole symmetric body
-  // move the images by t, not S_k t, so the diagonal blocks also need sum_k H'_k (I - S_k)
-  // per row, kept per element like the radial term and summed in element order.
+  // H_ij += H'_k S_k, G_ij += G'_k S_k, in every block (the diagonal ones too: an image is
+  // never singular). The diagonal blocks then follow as below with image_translation_sums.
   const bool images = !mesh.images.empty();
-  Matrix image_antisymmetric(images ? 2 * n : 0, images ? 2 * static_cast<Index>(batch) : 0);
-  Matrix antisymmetric_sums = Matrix::Zero(images ? 2 * n : 0, 2);
   for (const auto& group : elements_by_colour(mesh)) {
     for (std::size_t first = 0; first < group.size(); first += batch) {
       const std::size_t count = std::min(batch, group.size() - first);
@@ -181,8 +201,7 @@ InfluenceMatrices assemble_influence_matrices(const geometry::BoundaryMesh& mesh
               if (a != source_node) m.H.block<2, 2>(2 * i, 2 * j) += influence.H[a];
               traction_term += influence.G[a] * nodal_traction[a];
             }
-            if (images) {
-              Mat2 antisymmetric = Mat2::Zero();
+            if (images)
               for (std::size_t q = 0; q < mesh.images.size(); ++q) {
                 const Mat2& S = mesh.images[q].matrix;
                 const auto image = integrator.influence(mesh.nodes[i].position, image_elements[q], -1);
@@ -190,12 +209,9 @@ InfluenceMatrices assemble_influence_matrices(const geometry::BoundaryMesh& mesh
                   const Index j = element.nodes[a];
                   m.G.block<2, 2>(2 * i, 2 * j) += image.G[a] * S;
                   m.H.block<2, 2>(2 * i, 2 * j) += image.H[a] * S;
-                  antisymmetric += image.H[a] * (Mat2::Identity() - S);
                   traction_term += image.G[a] * S * nodal_traction[a];
                 }
               }
-              image_antisymmetric.block<2, 2>(2 * i, 2 * static_cast<Index>(k)) = antisymmetric;
-            }
             if (axisymmetric) contributions.block<2, 1>(2 * i, static_cast<Index>(k)) = traction_term;
           }
           const Index done = ++elements_done;
@@ -206,16 +222,13 @@ InfluenceMatrices assemble_influence_matrices(const geometry::BoundaryMesh& mesh
       errors.rethrow();
       if (axisymmetric)
         for (std::size_t k = 0; k < count; ++k) radial_traction_integral += contributions.col(static_cast<Index>(k));
-      if (images)
-        for (std::size_t k = 0; k < count; ++k)
-          for (Index i = 0; i < n; ++i)
-            antisymmetric_sums.middleRows<2>(2 * i) += image_antisymmetric.block<2, 2>(2 * i, 2 * static_cast<Index>(k));
+
     }
   }
   // sum over j != i of H_ij times the translations: the diagonal blocks hold only the images'
   // part here, which the sum takes in, and the images' antisymmetric part is added back.
   Matrix translation_sums = column_sums(m.H);
-  if (images) translation_sums += antisymmetric_sums;
+  if (images) translation_sums += image_translation_sums(mesh, integrator);
   Vector radial_residual;
   if (axisymmetric) {
     Vector radial_u = Vector::Zero(2 * n);

@@ -64,9 +64,20 @@ void InfluenceBlocks::evaluate(const std::vector<Index>& row_nodes, const std::v
         G.block<2, 2>(2 * r, 2 * c) += influence.G[a];
         if (a != source_node) H.block<2, 2>(2 * r, 2 * c) += influence.H[a];
       }
+      for (const auto& map : mesh_.images) {
+        const auto image = integrator_.influence(mesh_.nodes[i].position, geometry::image_element(element, map), -1);
+        for (int a = 0; a < element.node_count; ++a) {
+          const Index c = col_index.find(element.nodes[a]);
+          if (c < 0) continue;
+          G.block<2, 2>(2 * r, 2 * c) += image.G[a] * map.matrix;
+          H.block<2, 2>(2 * r, 2 * c) += image.H[a] * map.matrix;
+        }
+      }
     }
   }
 }
+
+Matrix InfluenceBlocks::image_translation_sums() const { return bem::image_translation_sums(mesh_, integrator_); }
 
 Matrix InfluenceBlocks::radial_traction(const std::vector<Index>& row_nodes, const std::vector<Index>& elements) const {
   const Index rows = static_cast<Index>(row_nodes.size()), cols = static_cast<Index>(elements.size());
@@ -83,6 +94,11 @@ Matrix InfluenceBlocks::radial_traction(const std::vector<Index>& row_nodes, con
         if (element.nodes[a] == i) source_node = a;
       const auto influence = integrator_.influence(mesh_.nodes[i].position, element, source_node);
       for (int a = 0; a < element.node_count; ++a) out.block<2, 1>(2 * r, c) += influence.G[a] * tractions[c][a];
+      for (const auto& map : mesh_.images) {  // the image's traction is S times the element's
+        const auto image = integrator_.influence(mesh_.nodes[i].position, geometry::image_element(element, map), -1);
+        for (int a = 0; a < element.node_count; ++a)
+          out.block<2, 1>(2 * r, c) += image.G[a] * map.matrix * tractions[c][a];
+      }
     }
   }
   return out;
@@ -154,7 +170,9 @@ std::vector<Mat2> CompressedBoundarySystem::diagonal_blocks(const operators::HMa
   const Matrix products = influence_.apply(fields);
   Vector radial_residual;
   if (axisymmetric) radial_residual = radial_traction_integral(options, what) - products.col(2);
-  return diagonal_blocks_from_exact_fields(mesh_, type_, products.leftCols(2), radial_residual);
+  Matrix translation_sums = products.leftCols(2);
+  if (!mesh_.images.empty()) translation_sums += blocks_.image_translation_sums();
+  return diagonal_blocks_from_exact_fields(mesh_, type_, translation_sums, radial_residual);
 }
 
 Vector CompressedBoundarySystem::radial_traction_integral(const operators::HMatrixOptions& options,
@@ -246,7 +264,8 @@ operators::HMatrix CompressedBoundarySystem::assemble_system(const operators::HM
         if (traction_column) {
           column[rr] = -scale * (G(lr, lc) * weights[0] + G(lr, lc + 1) * weights[1]);
         } else {
-          const Vec2 h_row = i == j ? Vec2(diagonal_[i].row(row % 2).transpose())
+          // The diagonal block: its direct part from exact fields, and its images' part.
+          const Vec2 h_row = i == j ? Vec2(diagonal_[i].row(row % 2).transpose() + Vec2(H(lr, lc), H(lr, lc + 1)))
                                     : Vec2(H(lr, lc), H(lr, lc + 1));
           column[rr] = scale * h_row.dot(weights);
         }
@@ -372,15 +391,7 @@ const char* to_string(OperatorKind kind) {
   return "?";
 }
 
-bool use_compressed_operator(const OperatorChoice& choice, Index unknowns, bool symmetry_lines) {
-  if (symmetry_lines) {
-    // The compressed diagonal blocks come from products with the translations, which do
-    // not separate an element's images from itself (assembly.hpp).
-    if (choice.kind == OperatorKind::compressed)
-      throw Error("operator = \"compressed\" does not take bodies with symmetry lines yet: use operator = \"dense\" "
-                  "(or \"auto\", which keeps such bodies dense), or draw the whole body");
-    return false;
-  }
+bool use_compressed_operator(const OperatorChoice& choice, Index unknowns) {
   if (choice.kind == OperatorKind::compressed) return true;
   return choice.kind == OperatorKind::automatic && operators::hmatrix_available() &&
          unknowns >= OperatorChoice::automatic_threshold;

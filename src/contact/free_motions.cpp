@@ -94,6 +94,18 @@ FreeMotions free_motions(const ContactProblem& problem, const PreparedContact& p
       for (const auto& constraint : region.definition.constraints)
         for (int c = 0; c < 2; ++c)
           if (constraint.displacement[c]) rows.push_back(modes_at(constraint.position, centre, scale, type).row(c));
+      // Symmetry lines hold every motion the body's images do not repeat (geometry/symmetry.hpp):
+      // a translation t with S t != t, and the rotation.
+      for (const auto& image : region.mesh.images) {
+        const Mat2 antisymmetric = Mat2::Identity() - image.matrix;
+        for (int c = 0; c < 2; ++c) {
+          Eigen::RowVectorXd row = Eigen::RowVectorXd::Zero(mode_count);
+          if (type == AnalysisType::axisymmetric) row[0] = antisymmetric(c, 1);
+          else row.head(2) = antisymmetric.row(c);
+          rows.push_back(row);
+        }
+        if (type != AnalysisType::axisymmetric) rows.push_back(Eigen::RowVector3d(0.0, 0.0, 1.0));
+      }
     }
     Matrix held(static_cast<Index>(rows.size()), mode_count);
     for (std::size_t k = 0; k < rows.size(); ++k) held.row(static_cast<Index>(k)) = rows[k];

@@ -396,6 +396,75 @@ PreparedInterface pair_interface(const ContactProblem& problem, const ContactInt
   return out;
 }
 
+bool same_images(const std::vector<geometry::ImageMap>& a, const std::vector<geometry::ImageMap>& b, double scale) {
+  if (a.size() != b.size()) return false;
+  for (const auto& image : a) {
+    bool found = false;
+    for (const auto& other : b)
+      found = found || ((image.matrix - other.matrix).norm() <= 1e-9 && (image.offset - other.offset).norm() <= 1e-9 * scale);
+    if (!found) return false;
+  }
+  return true;
+}
+
+// The images of a body: its first region's (every region of a body shares the lines), or for
+// a rigid body those of the elastic bodies it touches.
+const std::vector<geometry::ImageMap>* body_images(const ContactProblem& problem, const PreparedContact& prepared, int body) {
+  if (!prepared.body_regions[static_cast<std::size_t>(body)].empty())
+    return &prepared.regions[static_cast<std::size_t>(prepared.body_regions[static_cast<std::size_t>(body)].front())].mesh.images;
+  for (const auto& contact : problem.contacts)
+    if (contact.side2.body == body) return body_images(problem, prepared, contact.side1.body);
+  return nullptr;
+}
+
+// A model with symmetry lines is half (a quarter) of a symmetric problem: every region of a
+// body and both sides of a contact share the lines, and the loads along a direction the
+// images reverse (a tangential force across the line, a moment) have no symmetric meaning.
+void check_symmetry_consistency(const ContactProblem& problem, const PreparedContact& prepared) {
+  double scale = 0.0;
+  for (const auto& region : prepared.regions) scale = std::max(scale, region.mesh.scale);
+  for (std::size_t b = 0; b < problem.bodies.size(); ++b)
+    for (const int r : prepared.body_regions[b])
+      if (!same_images(prepared.regions[static_cast<std::size_t>(r)].mesh.images,
+                       *body_images(problem, prepared, static_cast<int>(b)), scale))
+        throw GeometryError(prepared.regions[static_cast<std::size_t>(r)].label +
+                            " does not have the symmetry lines of the body's other regions: give every region of a "
+                            "body the same symmetry = true lines");
+  for (const auto& contact : problem.contacts) {
+    if (problem.bodies[static_cast<std::size_t>(contact.side2.body)].rigid) continue;
+    if (!same_images(*body_images(problem, prepared, contact.side1.body), *body_images(problem, prepared, contact.side2.body),
+                     scale))
+      throw GeometryError("contact '" + contact.name + "': bodies '" + problem.bodies[static_cast<std::size_t>(contact.side1.body)].name +
+                          "' and '" + problem.bodies[static_cast<std::size_t>(contact.side2.body)].name +
+                          "' do not have the same symmetry lines (symmetry = true): a model drawn in half must halve "
+                          "both bodies of a contact along the same line");
+  }
+  for (std::size_t b = 0; b < problem.bodies.size(); ++b) {
+    const auto& rigid = problem.bodies[b].rigid;
+    const auto* images = body_images(problem, prepared, static_cast<int>(b));
+    if (!rigid || !images || images->empty()) continue;
+    bool reversed = rigid->rotation.has_value() && *rigid->rotation != 0.0;
+    for (const auto& image : *images)
+      reversed = reversed || (rigid->displacement && (image.matrix * *rigid->displacement - *rigid->displacement).norm() >
+                                                         1e-9 * rigid->displacement->norm());
+    if (reversed)
+      throw GeometryError("rigid body '" + problem.bodies[b].name + "' moves across the symmetry line of the bodies "
+                          "it touches (a displacement across it, or a rotation): the model is not symmetric");
+  }
+  for (const auto& load : problem.forces) {
+    const auto* images = body_images(problem, prepared, load.body);
+    if (!images || images->empty()) continue;
+    bool reversed = load.component > 1;
+    for (const auto& image : *images)
+      reversed = reversed || (load.component < 2 && (image.matrix.col(load.component) - Vec2::Unit(load.component)).norm() > 1e-9);
+    if (reversed)
+      throw GeometryError("load '" + load.name + "' on body '" + problem.bodies[static_cast<std::size_t>(load.body)].name +
+                          "' acts " + (load.component > 1 ? std::string("as a moment") : "across a symmetry line") +
+                          ": the mirror image would carry the opposite load, so the model is not symmetric; draw the "
+                          "whole body, or load it along the symmetry line");
+  }
+}
+
 }  // namespace
 
 PreparedContact prepare_contact(const ContactProblem& problem) {
@@ -405,6 +474,7 @@ PreparedContact prepare_contact(const ContactProblem& problem) {
   }
   PreparedContact prepared;
   mesh_regions(problem, prepared);
+  check_symmetry_consistency(problem, prepared);
   for (const auto& contact : problem.contacts) {
     prepared.contacts.push_back(pair_interface(problem, contact, prepared, prepared.warnings));
     prepared.contacts.back().smooth_ends = smooth_zone_ends(problem, prepared.contacts.back(), prepared.regions);

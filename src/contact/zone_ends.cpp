@@ -83,9 +83,11 @@ std::vector<Vec2> contour_corners(const std::vector<geometry::BoundaryPiece>& co
   return corners;
 }
 
-// A straight boundary along x1 = 0 holding u_n = 0, t_t = 0: a symmetry line of the body.
+// A straight boundary along x1 = 0 declared a symmetry line, or holding u_n = 0, t_t = 0 (a
+// roller, the same problem).
 bool is_symmetry_line(const bem::BodyDefinition& body, int piece, double tolerance) {
   const auto& p = body.pieces[static_cast<std::size_t>(piece)];
+  if (p.symmetry) return std::abs(p.start.x()) <= tolerance && std::abs(p.end.x()) <= tolerance;
   if (p.shape != geometry::PieceShape::line || std::abs(p.start.x()) > tolerance || std::abs(p.end.x()) > tolerance)
     return false;
   const auto& condition = body.conditions[static_cast<std::size_t>(piece)];

@@ -29,10 +29,6 @@ std::int64_t body_nodes(const bem::BodyDefinition& body, const geometry::MeshOpt
   return nodes;
 }
 
-bool has_symmetry_lines(const bem::BodyDefinition& body) {
-  return std::any_of(body.pieces.begin(), body.pieces.end(), [](const auto& piece) { return piece.symmetry; });
-}
-
 std::int64_t body_unknowns(const bem::BodyDefinition& body, const geometry::MeshOptions& mesh) {
   return 2 * body_nodes(body, mesh);
 }
@@ -96,13 +92,13 @@ BodyCost body_cost_alone(const bem::BodyDefinition& body, AnalysisType type, con
   const double elements = static_cast<double>(body_elements(body));
   const double interior = static_cast<double>(interior_points) * elements * interior_pair_seconds(type);
   const double t = std::max(1, threads);
-  cost.compressed = bem::use_compressed_operator(choice, cost.unknowns, has_symmetry_lines(body));
+  cost.compressed = bem::use_compressed_operator(choice, cost.unknowns);
   if (cost.compressed) {
     cost.peak_bytes = cost.held_bytes = compressed_bytes_per_nlogn * n_log_n(cost.unknowns);
     cost.seconds = n_log_n(cost.unknowns) * compressed_seconds_per_nlogn(type) + interior / t;
     return cost;
   }
-  cost.could_compress = operators::hmatrix_available() && !has_symmetry_lines(body);
+  cost.could_compress = operators::hmatrix_available();
   cost.peak_bytes = dense_body_bytes(cost.unknowns);
   cost.held_bytes = 2.0 * 8.0 * n * n;  // LU factors and right-hand-side columns
   const double lu_flops = 2.0 / 3.0 * n * n * n;

@@ -101,6 +101,8 @@ BoundaryMesh mesh_boundary(const std::vector<BoundaryPiece>& input_pieces, const
   for (int p = 0; p < piece_count; ++p)
     mesh.piece_skipped[p] = pieces[p].symmetry || (options.skip_axis_pieces && lies_on_axis(pieces[p], tol));
   mesh.images = symmetry_images(pieces, options.skip_axis_pieces);
+  for (const auto& piece : pieces)
+    if (piece.symmetry) mesh.symmetry_segments.push_back(straight_element(piece.start, piece.end));
   // Linear and quadratic elements have nodes at their ends (split at corners).
   const bool end_nodes = options.interpolation != Interpolation::constant;
   const bool quadratic = options.interpolation == Interpolation::quadratic;

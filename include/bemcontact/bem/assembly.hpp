@@ -40,6 +40,14 @@ InfluenceMatrices assemble_influence_matrices(const geometry::BoundaryMesh& mesh
                                               const ElementIntegrator& integrator,
                                               const ProgressCallback& progress = {});
 
+// With symmetry lines (geometry/symmetry.hpp) the assembled H folds each image k onto the
+// element's own nodes (H'_k S_k). The diagonal blocks need the rigid translations of the
+// whole symmetric body, which move image k by t, not S_k t: its sums over the nodes differ by
+//   X_i = sum_k B_k,i (I - S_k),   B_k,i = sum_j H'_k,ij = -int over image k's symmetry segments of T(x_i, y),
+// since image k's elements and segments close its boundary and x_i lies outside it (the
+// rigid-body identity, section I.4.2). Returns X (2N x 2), zero without images.
+Matrix image_translation_sums(const geometry::BoundaryMesh& mesh, const ElementIntegrator& integrator);
+
 // Nodes on the axis r = 0 (axisymmetry only).
 bool node_on_axis(const geometry::BoundaryMesh& mesh, Index node);
 

@@ -24,10 +24,14 @@ namespace bemcontact::bem {
 class InfluenceBlocks {
  public:
   InfluenceBlocks(const geometry::BoundaryMesh& mesh, const ElementIntegrator& integrator);
+  // H' and G between the nodes, the images of the elements folded in (assembly.hpp); H' has
+  // no direct part on the diagonal blocks (they come from exact fields), their images' only.
   void evaluate(const std::vector<Index>& row_nodes, const std::vector<Index>& col_nodes, Matrix& H, Matrix& G) const;
   // int_e U p_e (2 rows per source node, one column per element) for the radial expansion's
   // traction p_e on each element (radial_expansion_traction; axisymmetry).
   Matrix radial_traction(const std::vector<Index>& row_nodes, const std::vector<Index>& elements) const;
+  // X of assembly.hpp's image_translation_sums (2N x 2).
+  Matrix image_translation_sums() const;
 
  private:
   const geometry::BoundaryMesh& mesh_;

@@ -81,7 +81,6 @@ struct ProblemDefinition {
 };
 
 // Whether a body of `unknowns` unknowns is solved on compressed operators.
-// A body with symmetry lines (geometry/symmetry.hpp) stays dense; "compressed" is refused.
-bool use_compressed_operator(const OperatorChoice& choice, Index unknowns, bool symmetry_lines = false);
+bool use_compressed_operator(const OperatorChoice& choice, Index unknowns);
 
 }  // namespace bemcontact::bem

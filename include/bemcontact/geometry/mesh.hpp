@@ -112,6 +112,9 @@ struct BoundaryMesh {
   // The body's images across its symmetry lines (geometry/symmetry.hpp; empty: none): every
   // element also acts through image_element(element, images[k]).
   std::vector<ImageMap> images;
+  // The symmetry pieces as straight elements without nodes: with the elements they close the
+  // body's boundary, and their images close each image body's (bem/assembly.hpp uses that).
+  std::vector<BoundaryElement> symmetry_segments;
   std::vector<std::string> piece_names;            // for messages
   // Pieces graded toward a vertex by the corner transition.
   struct GradedPiece {
