@@ -478,6 +478,8 @@ PreparedContact prepare_contact(const ContactProblem& problem) {
   for (const auto& contact : problem.contacts) {
     prepared.contacts.push_back(pair_interface(problem, contact, prepared, prepared.warnings));
     prepared.contacts.back().smooth_ends = smooth_zone_ends(problem, prepared.contacts.back(), prepared.regions);
+    for (auto& warning : roller_line_warnings(contact, prepared.contacts.back(), prepared.regions))
+      prepared.warnings.push_back(std::move(warning));
   }
   for (const auto& force : problem.forces) {
     if (problem.bodies[force.body].rigid) {

@@ -31,6 +31,11 @@ std::vector<SmoothZoneEnd> smooth_zone_ends(const ContactProblem& problem, const
 bool zone_starts_on_symmetry_line(const ContactProblem& problem, const PreparedInterface& contact,
                                   const std::vector<PreparedRegion>& regions);
 
+// Warnings for roller lines (u_n = 0, t_t = 0 on a straight boundary) that meet a contact
+// zone at an end: declared symmetry lines are exact there (geometry/symmetry.hpp).
+std::vector<std::string> roller_line_warnings(const ContactInterface& contact, const PreparedInterface& prepared,
+                                              const std::vector<PreparedRegion>& regions);
+
 // The message (empty when no end is clipped) for a contact whose pairs `in_contact` (per
 // pair of the interface) close some smooth end, at load step `step` and pseudo-time `time`;
 // `coordinate(i)` is pair i's abscissa along the zone, `axis` its name ("x", "r", "y", "z").
