@@ -84,8 +84,11 @@ int read_integer(const toml::node& node, const SourceLocation& where, const File
     throw InputError(where, "must be an integer (or an expression of parameters in quotes), found " +
                                 describe_node(node));
   }
-  if (value != std::floor(value) || std::fabs(value) > std::numeric_limits<int>::max())
+  if (std::fabs(value) > std::numeric_limits<int>::max())
     throw InputError(where, "must be an integer, found " + format_number(value));
+  if (value != std::floor(value))
+    throw InputError(where, "must be an integer, found " + format_number(value) +
+                                (node.is_string() ? " (round the expression: round(...), floor(...) or ceil(...))" : ""));
   return static_cast<int>(value);
 }
 
