@@ -336,7 +336,11 @@ int main(int argc, char** argv) {
     report_on_root([&] { std::fprintf(stderr, "bemcontact: error: %s\n", e.what()); });
     return bad_input;
   } catch (const GeometryError& e) {
-    report_on_root([&] { std::fprintf(stderr, "bemcontact: geometry error in %s: %s\n", input.c_str(), e.what()); });
+    // An error placed at its boundaries starts with their file and line.
+    report_on_root([&] {
+      if (e.where().empty()) std::fprintf(stderr, "bemcontact: geometry error in %s: %s\n", input.c_str(), e.what());
+      else std::fprintf(stderr, "bemcontact: geometry error: %s\n", e.what());
+    });
     return bad_input;
   } catch (const SolverError& e) {
     std::fprintf(stderr, "bemcontact: solver error: %s\n", e.what());

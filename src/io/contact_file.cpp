@@ -735,10 +735,12 @@ ContactFile parse_contact_problem(std::string_view text, const std::string& file
     for (const auto& contact : problem.contacts) in_contact = in_contact || contact.side2.body == static_cast<int>(b);
     if (!in_contact) throw InputError(body.where, "rigid body '" + body.name + "' is in no contact: it would have no effect");
   }
-  // Pair the zones now, so that geometric errors point at the contact tables.
+  // Pair the zones now, so that geometric errors point at the contact tables (those about
+  // a body's own boundaries point at them).
   try {
     (void)contact::prepare_contact(problem);
   } catch (const GeometryError& error) {
+    if (!error.where().empty()) throw;
     throw InputError(anchor->where(pairing_key), error.what());
   }
   result.warnings = context.warnings;

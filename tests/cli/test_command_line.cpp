@@ -139,6 +139,9 @@ TEST(CommandLine, GeometryErrorsNameTheBoundary) {
   const auto out = run("run " + (dir / "open.toml").string());
   EXPECT_EQ(out.exit_code, 2) << out.output;
   EXPECT_NE(out.output.find("open contour"), std::string::npos) << out.output;
+  // Placed at the boundary: "geometry error: FILE:LINE: key 'boundary[k]': ...".
+  EXPECT_NE(out.output.find("geometry error: " + (dir / "open.toml").string() + ":"), std::string::npos) << out.output;
+  EXPECT_NE(out.output.find(": key 'boundary["), std::string::npos) << out.output;
   fs::remove_all(dir);
 }
 
