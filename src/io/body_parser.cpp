@@ -251,7 +251,7 @@ BoundaryPiece read_piece(const TableReader& reader, int index, const Vertices& v
   reader.check_keys(schema::boundary_keys(), "each [[boundary]] table");
   BoundaryPiece piece;
   piece.where = SourceLocation{context.file, reader.line(), reader.path()};
-  piece.name = reader.optional_string("name").value_or("boundary" + std::to_string(index));
+  piece.name = reader.optional_name("name").value_or("boundary" + std::to_string(index));
   if (piece.name.empty()) reader.fail("name", "the name must not be empty");
   const std::string label = "boundary '" + piece.name + "'";
   const std::string shape = reader.choice("shape", {"line", "arc"}, "line");
@@ -406,6 +406,12 @@ void read_gmsh_pieces(const TableReader& body, const FileContext& context, bem::
     // The Gmsh file's own position, then the key that named it.
     throw InputError(body.where("geometry"), e.what());
   }
+  std::vector<std::string> curve_names;
+  for (const auto& piece : gmsh.pieces) {
+    if (const std::string problem = name_problem(piece.name); !problem.empty())
+      body.fail("geometry", "a physical curve of '" + *name + "': " + problem);
+    curve_names.push_back(piece.name);
+  }
   std::map<std::string, std::pair<const toml::table*, int>> conditions;  // by curve name: table, line
   if (const toml::array* boundaries = array_of_tables(body, "boundary", "[[boundary]]")) {
     int index = 0;
@@ -418,16 +424,11 @@ void read_gmsh_pieces(const TableReader& body, const FileContext& context, bem::
         if (reader.has(key))
           reader.fail(key, "'" + std::string(key) + "' comes from the Gmsh file '" + *name +
                                "' (its curves, their mesh and grading): give only name and conditions here");
-      const auto boundary_name = reader.optional_string("name");
+      const auto boundary_name = reader.optional_name("name");
       if (!boundary_name) reader.fail("name", "name the physical curve of '" + *name + "' these conditions apply to");
-      bool known = false;
-      for (const auto& piece : gmsh.pieces) known = known || piece.name == *boundary_name;
-      if (!known) {
-        std::string names;
-        for (const auto& piece : gmsh.pieces) names += (names.empty() ? "'" : ", '") + piece.name + "'";
-        reader.fail("name", "'" + *name + "' has no physical curve named '" + *boundary_name + "'; its curves are " +
-                                names);
-      }
+      if (std::find(curve_names.begin(), curve_names.end(), *boundary_name) == curve_names.end())
+        reader.fail("name", "'" + *name + "' has no physical curve named '" + *boundary_name + "'." +
+                                did_you_mean(*boundary_name, curve_names) + " Its curves: " + quoted_list(curve_names));
       const auto [existing, added] = conditions.emplace(*boundary_name, std::pair{node.as_table(), reader.line()});
       if (!added)
         reader.fail("name", "the boundary '" + *boundary_name + "' already has conditions at line " +

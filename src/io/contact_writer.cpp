@@ -52,6 +52,19 @@ nlohmann::json summary_json(const contact::ContactSummary& s) {
 
 }  // namespace
 
+std::vector<std::string> contact_file_names(const std::string& contact) {
+  const std::string stem = file_stem(contact);
+  return {stem + ".csv", stem + ".vtk", stem + "_steps.csv", stem + ".pvd", stem + "_pairs.csv"};
+}
+
+std::vector<std::string> region_file_names(const std::string& region) {
+  const std::string stem = file_stem(region);
+  return {stem + "_boundary.csv", stem + "_boundary.vtk", stem + "_boundary.pvd",    stem + "_interior.csv",
+          stem + "_interior.vtk", stem + "_mesh_nodes.csv", stem + "_mesh_elements.csv", stem + "_mesh.vtk"};
+}
+
+std::vector<std::string> model_file_names() { return {"motions.csv", "summary.json"}; }
+
 std::string contact_csv(const std::vector<contact::PairResult>& pairs) {
   std::string out = "pair,x,y,coordinate,nx,ny,gap,p_n,p_t,slip_ratio,jump_n,jump_t,status\n";
   for (std::size_t i = 0; i < pairs.size(); ++i) {

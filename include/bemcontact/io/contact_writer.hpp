@@ -37,6 +37,13 @@
 
 namespace bemcontact::io {
 
+// The files named after a contact and after an elastic region (the name with every
+// character but letters and digits written as '_'), per-step files aside, for the reader
+// to refuse names whose files would coincide; and the run's own files.
+std::vector<std::string> contact_file_names(const std::string& contact);
+std::vector<std::string> region_file_names(const std::string& region);
+std::vector<std::string> model_file_names();
+
 std::string contact_csv(const std::vector<contact::PairResult>& pairs);
 // The same pairs as VTK vertices (<contact>.vtk): point data p_n, p_t, gap, slip_ratio,
 // jump_n, jump_t, status (0 open, 1 stick, 2 slip: field data status_names) and normal.

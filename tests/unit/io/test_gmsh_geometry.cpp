@@ -196,7 +196,7 @@ TEST(GmshGeometry, ProblemFileTakesConditionsByCurveName) {
     FAIL() << "no error";
   } catch (const InputError& e) {
     const std::string message = e.what();
-    EXPECT_NE(message.find("no physical curve named 'CE'"), std::string::npos) << message;
+    EXPECT_NE(message.find("no physical curve named 'CE'. Did you mean 'CD'?"), std::string::npos) << message;
     EXPECT_NE(message.find("'AB', 'BC', 'CD', 'DE', 'hole'"), std::string::npos) << message;
   }
   try {
