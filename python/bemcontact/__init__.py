@@ -122,7 +122,7 @@ class Result:
 
     def contact_step(self, step, name=None):
         """The pairs at load step `step` (1 = first), written with record_steps = true."""
-        table = f"{self._contact_name(name)}_step{int(step)}"
+        table = f"steps/{self._contact_name(name)}_step{int(step)}"
         if table + ".csv" not in self.files:
             raise KeyError(f"no pairs of step {step}: run with record_steps = true in [solver] "
                            f"({len(self.contact_steps(name))} steps in this result)")

@@ -410,6 +410,7 @@ void read_solver(const TableReader& reader, contact::ContactProblem& problem) {
     reader.fail("increments", std::to_string(problem.increments) +
                                   " load increments is over the limit of 100000 (each one is a contact solve)");
   problem.record_steps = reader.boolean_or("record_steps", false);
+  problem.record_steps_where = reader.where("record_steps");
   problem.adaptive = reader.boolean_or("adaptive", problem.has_friction());
   if (reader.has("adaptive") && problem.adaptive && !problem.has_friction())
     reader.fail("adaptive", "adaptive stepping follows the stick and slip zones; frictionless contact does not depend "

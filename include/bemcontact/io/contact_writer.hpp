@@ -16,10 +16,12 @@
 //                      per force load <name>_force,<name>_displacement (the prescribed force
 //                      and the approach: a force-displacement loop), per free body motion
 //                      <body>_<k>_displacement
-//   contact_step<k>.csv  the pairs at step k (when record_steps)
-//   <body>_boundary_step<k>.csv (when record_steps): every step's boundary fields
-//   <body>_boundary.pvd, <body>_boundary_step<k>.vtp (when record_steps and vtk): every
-//                      step's boundary fields (u, t, stresses) as a ParaView time series
+//   steps/contact_step<k>.csv  the pairs at step k (when record_steps; every per-step file
+//                      is in the sub-folder steps/)
+//   steps/<body>_boundary_step<k>.csv (when record_steps): every step's boundary fields
+//   <body>_boundary.pvd, steps/<body>_boundary_step<k>.vtp (when record_steps and vtk):
+//                      every step's boundary fields (u, t, stresses) as a ParaView time
+//                      series (the .pvd names its files by their path, steps/...)
 //   <body>_boundary.csv, <body>_interior.csv (+ .vtk): each elastic body's fields (each
 //                      region's, named after it, in a body of several regions) (formats of
 //                      io/results_writer.hpp), for stresses and von Mises iso-contours.
