@@ -245,6 +245,9 @@ int main(int argc, char** argv) {
     command->add_option("--max-memory", max_memory_gb,
                         "memory the dense systems may take, in GB (default: 80 % of the machine's)")
         ->check(CLI::PositiveNumber);
+    command->add_option("--gmsh-timeout", run_options.limits.gmsh_timeout_seconds,
+                        "seconds Gmsh may take to mesh a .geo file (default 60)")
+        ->check(CLI::PositiveNumber);
   };
   auto* run = app.add_subcommand("run", "solve a problem file and write boundary.csv, interior.csv, VTK, summary.json");
   add_run_options(run, "no progress and no summary on the terminal");

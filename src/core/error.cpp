@@ -10,7 +10,7 @@ std::string SourceLocation::describe() const {
 }
 
 InputError::InputError(const SourceLocation& where, const std::string& message)
-    : Error(where.describe() + ": " + message), where_(where) {}
+    : Error(where.describe() + ": " + message), where_(where), detail_(message) {}
 
 namespace {
 

@@ -1,6 +1,8 @@
 #include "bemcontact/io/body_parser.hpp"
 
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 
 #include <algorithm>
 #include <cmath>
@@ -390,6 +392,23 @@ void read_boundary_pieces(const TableReader& body, const FileContext& context, c
   }
 }
 
+// The numbers a .geo file gets (gmsh -setnumber): every parameter of the problem file, and
+// the --set values for no parameter of it that the .geo declares with DefineConstant.
+std::map<std::string, double> gmsh_numbers(const std::filesystem::path& file, const FileContext& context) {
+  std::map<std::string, double> numbers(context.parameters.begin(), context.parameters.end());
+  if (context.gmsh_overrides.empty()) return numbers;
+  std::ifstream in(file, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  const auto declared = geo_constants(text.str());
+  for (const auto& [name, value] : context.gmsh_overrides)
+    if (declared.count(name)) {
+      numbers[name] = value;
+      context.gmsh_overrides_used.insert(name);
+    }
+  return numbers;
+}
+
 // The body's pieces from a Gmsh file (io/gmsh_geometry.hpp); each [[boundary]] table
 // gives the conditions of the physical curve of its name (none: traction-free).
 void read_gmsh_pieces(const TableReader& body, const FileContext& context, bem::BodyDefinition& definition) {
@@ -399,9 +418,12 @@ void read_gmsh_pieces(const TableReader& body, const FileContext& context, bem::
   // Relative to the problem file's folder.
   if (file.is_relative() && !context.file.empty() && context.file.front() != '<')
     file = std::filesystem::path(context.file).parent_path() / file;
+  GmshOptions options;
+  options.limits = context.limits;
+  if (file.extension() == ".geo") options.numbers = gmsh_numbers(file, context);
   GmshBoundary gmsh;
   try {
-    gmsh = read_gmsh_boundary(file, context.axisymmetric());
+    gmsh = read_gmsh_boundary(file, context.axisymmetric(), options);
   } catch (const InputError& e) {
     // The Gmsh file's own position, then the key that named it.
     throw InputError(body.where("geometry"), e.what());
@@ -556,15 +578,9 @@ std::vector<std::string> identifiers_in(std::string_view text) {
 
 void read_parameters(const TableReader& root, FileContext& context) {
   const toml::table* table = root.optional_table("parameters", "[parameters]");
+  // Values for no parameter of the file may be for a .geo file (checked once it is read).
   for (const auto& [name, value] : context.overrides)
-    if (!table || !table->contains(name)) {
-      std::string known;
-      if (table)
-        for (const auto& [key, node] : *table) known += (known.empty() ? "" : ", ") + std::string(key.str());
-      throw InputError(SourceLocation{context.file, table ? root.where("parameters").line : 0, "parameters." + name},
-                       "--set " + name + ": the file has no parameter '" + name + "' to replace (" +
-                           (known.empty() ? "it has no [parameters]" : "its parameters: " + known) + ")");
-    }
+    if (!table || !table->contains(name)) context.gmsh_overrides[name] = value;
   if (!table) return;
   const TableReader parameters(*table, "parameters", context, root.line());
   std::vector<std::pair<std::string, const toml::node*>> entries;
@@ -613,6 +629,24 @@ void read_file_header(const TableReader& root, FileContext& context, const std::
                   : order == "quadratic" ? Interpolation::quadratic
                                          : Interpolation::linear;
   read_parameters(root, context);
+}
+
+void check_gmsh_overrides(const TableReader& root, const FileContext& context,
+                          std::map<std::string, double>& parameters) {
+  for (const auto& [name, value] : context.gmsh_overrides) {
+    if (context.gmsh_overrides_used.count(name)) {
+      parameters[name] = value;  // echoed with the file's own
+      continue;
+    }
+    const toml::table* table = root.optional_table("parameters", "[parameters]");
+    std::string known;
+    if (table)
+      for (const auto& [key, node] : *table) known += (known.empty() ? "" : ", ") + std::string(key.str());
+    throw InputError(SourceLocation{context.file, table ? root.where("parameters").line : 0, "parameters." + name},
+                     "--set " + name + ": the file has no parameter '" + name + "' to replace (" +
+                         (known.empty() ? "it has no [parameters]" : "its parameters: " + known) +
+                         "), and no .geo file of it declares '" + name + "' with DefineConstant");
+  }
 }
 
 std::vector<bem::InteriorPoint> read_interior_grid(const TableReader& grid, const FileContext& context) {

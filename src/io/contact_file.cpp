@@ -638,6 +638,7 @@ ContactFile parse_contact_problem(std::string_view text, const std::string& file
   }
   OutputNames output_names;
   read_bodies(root_table, root, context, problem, output_names);
+  check_gmsh_overrides(root, context, result.parameters);
 
   const toml::node* contact_node = root.find("contact");
   std::string pairing_key = "body";

@@ -271,6 +271,7 @@ DecompositionFile parse_decomposition(std::string_view text, const std::string& 
                            "must share at least one interface with another");
     problem.subdomains.push_back(std::move(subdomain));
   }
+  check_gmsh_overrides(root, context, result.parameters);
   result.warnings = context.warnings;
   return result;
 }

@@ -27,8 +27,10 @@ class InputError : public Error {
  public:
   InputError(const SourceLocation& where, const std::string& message);
   const SourceLocation& where() const { return where_; }
+  const std::string& detail() const { return detail_; }  // the message without the place
  private:
   SourceLocation where_;
+  std::string detail_;
 };
 
 // Names the boundaries it is about and, when they come from a file, their places: the

@@ -15,6 +15,8 @@ struct ResourceLimits {
   // Memory the dense matrices of a run may take, in bytes (`--max-memory`, in GB);
   // 0 = 80 % of the machine's physical memory.
   double max_memory_bytes = 0.0;
+  // Time a .geo file may take to be meshed by Gmsh, in seconds (`--gmsh-timeout`).
+  double gmsh_timeout_seconds = 60.0;
 
   // The memory limit in force (the default resolved against the machine).
   double memory_limit_bytes() const;

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <map>
 #include <optional>
+#include <set>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -24,6 +25,10 @@ struct FileContext {
   AnalysisType analysis = AnalysisType::plane_strain;
   std::map<std::string, double> parameters;
   ParameterOverrides overrides;
+  // --set values the file has no [parameters] entry for: they go to the .geo files that
+  // declare them (DefineConstant), and are refused when none does (check_gmsh_overrides).
+  ParameterOverrides gmsh_overrides;
+  mutable std::set<std::string> gmsh_overrides_used;
   ResourceLimits limits;
   // Documented warnings found while reading (a key whose value makes it have no effect);
   // copied into the file's result, printed on stderr and kept in summary.json.
