@@ -652,7 +652,7 @@ std::set<std::string> geo_constants(std::string_view text) {
 }
 
 double gmsh_meshing_bytes(const ResourceLimits& limits) {
-  return std::min(limits.memory_limit_bytes(), 128e6 + 1e3 * static_cast<double>(limits.max_elements));
+  return std::min(limits.memory_limit_bytes(), 64e6 + 1e3 * static_cast<double>(limits.max_elements));
 }
 
 #ifdef BEMCONTACT_WITH_GMSH

@@ -13,6 +13,8 @@
 #include <sstream>
 #include <unistd.h>
 
+#include "bemcontact/io/gmsh_geometry.hpp"
+
 namespace fs = std::filesystem;
 
 namespace {
@@ -362,22 +364,11 @@ TEST(CommandLine, APointFarOutsideTheBodyIsAnInputErrorNamingItsLine) {
   EXPECT_FALSE(fs::exists(dir / "out"));
 }
 
-namespace {
-
-bool reads_geo_files() {
-  // The probe file is not there: the answer says whether the library could be used.
-  const auto out = run("mesh " + example("gmsh_plate_hole.toml") + " -q -o " +
-                       (fs::temp_directory_path() / ("bemcontact_cli_geo_probe_" + std::to_string(::getpid()))).string());
-  fs::remove_all(fs::temp_directory_path() / ("bemcontact_cli_geo_probe_" + std::to_string(::getpid())));
-  return out.exit_code == 0;
-}
-
-}  // namespace
 
 // Gmsh meshes in a child process: the run keeps its --threads, and a .geo that does not end
 // stops at --gmsh-timeout naming the file.
 TEST(CommandLine, GeoRunsKeepTheirThreadsAndStopAtTheTimeout) {
-  if (!reads_geo_files()) GTEST_SKIP() << "built without the Gmsh library (.geo files refused)";
+  if (!bemcontact::io::gmsh_api_available()) GTEST_SKIP() << "built without the Gmsh library (.geo files refused)";
   const auto dir = scratch("geo");
   const auto out = run("--threads 2 run " + example("gmsh_plate_hole.toml") + " -q -o " + (dir / "out").string());
   ASSERT_EQ(out.exit_code, 0) << out.output;
@@ -385,10 +376,10 @@ TEST(CommandLine, GeoRunsKeepTheirThreadsAndStopAtTheTimeout) {
   EXPECT_EQ(nlohmann::json::parse(in).at("options").at("threads"), 2);
   write(dir / "endless.geo", "Point(1) = {0, 0, 0};\nFor i In {1:1e15}\nEndFor\n");
   write(dir / "endless.toml", "analysis = \"plane_stress\"\ngeometry = \"endless.geo\"\n[material]\nE = 1.0\nnu = 0.3\n");
-  const auto stopped = run("run " + (dir / "endless.toml").string() + " --gmsh-timeout 0.3 -o " + (dir / "out2").string());
+  const auto stopped = run("run " + (dir / "endless.toml").string() + " --gmsh-timeout 0.2 -o " + (dir / "out2").string());
   EXPECT_EQ(stopped.exit_code, 2) << stopped.output;
   EXPECT_NE(stopped.output.find("endless.toml:2: key 'geometry': " + (dir / "endless.geo").string() +
-                                ": Gmsh did not finish meshing the file within 0.3 s (--gmsh-timeout)"),
+                                ": Gmsh did not finish meshing the file within 0.2 s (--gmsh-timeout)"),
             std::string::npos)
       << stopped.output;
   fs::remove_all(dir);

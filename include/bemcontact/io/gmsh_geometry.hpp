@@ -54,7 +54,7 @@ struct GmshOptions {
 // build has no Gmsh, Gmsh reports an error, or a limit stops it.
 GmshCurves mesh_geo(const std::filesystem::path& file, const GmshOptions& options = {});
 bool gmsh_api_available();
-// The memory Gmsh may take to mesh a boundary within the limits: 128 MB and 1 kB per
+// The memory Gmsh may take to mesh a boundary within the limits: 64 MB and 1 kB per
 // element allowed (Gmsh takes about 160 B per 1D element), at most the memory limit.
 double gmsh_meshing_bytes(const ResourceLimits& limits);
 
