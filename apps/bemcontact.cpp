@@ -13,6 +13,7 @@
 #include <cstring>
 #include <filesystem>
 #include <iostream>
+#include <map>
 #include <nlohmann/json.hpp>
 
 #include "bemcontact/core/error.hpp"
@@ -49,14 +50,23 @@ bem::ProgressCallback make_progress(bool quiet) {
   };
 }
 
+// The folder's own files by name; those of its sub-folders (recorded load steps: a few
+// per step) counted.
 void print_written(const std::string& output_dir, const io::OutputDirectory& out) {
-  const auto names = out.names();
-  // Recorded load steps write a few files per step: list the first ones only.
+  std::vector<std::string> names;
+  std::map<std::string, int> in_folder;
+  for (const auto& name : out.names()) {
+    const auto slash = name.find('/');
+    if (slash == std::string::npos) names.push_back(name);
+    else ++in_folder[name.substr(0, slash)];
+  }
   constexpr std::size_t kListed = 24;
   std::printf("  wrote %s/{", output_dir.c_str());
   for (std::size_t k = 0; k < names.size() && k < kListed; ++k) std::printf("%s%s", k ? "," : "", names[k].c_str());
   if (names.size() > kListed) std::printf(",... %zu files in all", names.size());
   std::printf("}\n");
+  for (const auto& [folder, count] : in_folder)
+    std::printf("  wrote %d files into %s/%s/\n", count, output_dir.c_str(), folder.c_str());
 }
 
 // `run` and `mesh`: the driver computes every file in memory, then the folder is replaced
@@ -248,6 +258,9 @@ int main(int argc, char** argv) {
     command->add_option("--max-memory", max_memory_gb,
                         "memory the dense systems may take, in GB (default: 80 % of the machine's)")
         ->check(CLI::PositiveNumber);
+    command->add_option("--gmsh-timeout", run_options.limits.gmsh_timeout_seconds,
+                        "seconds Gmsh may take to mesh a .geo file (default 60)")
+        ->check(CLI::PositiveNumber);
   };
   auto* run = app.add_subcommand("run", "solve a problem file and write boundary.csv, interior.csv, VTK, summary.json");
   add_run_options(run, "no progress and no summary on the terminal");
@@ -350,7 +363,11 @@ int main(int argc, char** argv) {
     report_on_root([&] { std::fprintf(stderr, "bemcontact: error: %s\n", e.what()); });
     return bad_input;
   } catch (const GeometryError& e) {
-    report_on_root([&] { std::fprintf(stderr, "bemcontact: geometry error in %s: %s\n", input.c_str(), e.what()); });
+    // An error placed at its boundaries starts with their file and line.
+    report_on_root([&] {
+      if (e.where().empty()) std::fprintf(stderr, "bemcontact: geometry error in %s: %s\n", input.c_str(), e.what());
+      else std::fprintf(stderr, "bemcontact: geometry error: %s\n", e.what());
+    });
     return bad_input;
   } catch (const SolverError& e) {
     std::fprintf(stderr, "bemcontact: solver error: %s\n", e.what());

@@ -7,6 +7,7 @@
 
 #include "bemcontact/core/error.hpp"
 #include "bemcontact/driver/run.hpp"
+#include "bemcontact/io/gmsh_geometry.hpp"
 
 namespace bemcontact::fuzz {
 
@@ -58,6 +59,26 @@ std::string check_problem_text(std::string_view text) {
     return "std::bad_alloc (a resource limit is missing)";
   } catch (const Error& e) {
     return std::string("unclassified bemcontact::Error: ") + e.what();
+  } catch (const std::exception& e) {
+    return std::string("unexpected exception: ") + e.what();
+  }
+  return {};
+}
+
+std::string check_gmsh_file(const std::filesystem::path& file) {
+  io::GmshOptions options;
+  options.limits.max_elements = 1500;
+  options.limits.max_memory_bytes = 400e6;
+  options.limits.gmsh_timeout_seconds = 0.5;
+  try {
+    (void)io::read_gmsh_boundary(file, false, options);
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    if (message.rfind(file.string() + ":", 0) != 0) return "input error without the file: " + message;
+    if (file.extension() == ".msh" && e.where().line <= 0) return "input error without the line: " + message;
+    return {};
+  } catch (const std::bad_alloc&) {
+    return "std::bad_alloc (a resource limit is missing)";
   } catch (const std::exception& e) {
     return std::string("unexpected exception: ") + e.what();
   }

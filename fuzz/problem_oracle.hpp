@@ -6,6 +6,7 @@
 // geometry errors a boundary, a vertex or a point. Anything else (another exception
 // type, a message that names nothing) is a finding. Crashes, hangs and sanitizer reports
 // are caught by the fuzzer around it.
+#include <filesystem>
 #include <string>
 #include <string_view>
 
@@ -16,5 +17,10 @@ inline constexpr const char* input_name = "fuzz.toml";
 
 // Empty when the outcome is clean; else what is wrong.
 std::string check_problem_text(std::string_view text);
+
+// The same for a Gmsh file (.msh, .geo) read as a body's geometry, with small limits (a
+// .geo gets half a second): clean is a boundary, or an input error naming the file (and,
+// for a .msh, the line).
+std::string check_gmsh_file(const std::filesystem::path& file);
 
 }  // namespace bemcontact::fuzz

@@ -51,9 +51,11 @@ io::ParameterOverrides keyword_overrides(const std::map<std::string, std::varian
 }
 
 py::dict run(const std::string& text, const std::string& file_name,
-             const std::map<std::string, std::variant<double, std::string>>& overrides, bool mesh_only, int threads) {
+             const std::map<std::string, std::variant<double, std::string>>& overrides, bool mesh_only, int threads,
+             double gmsh_timeout) {
   driver::RunOptions options;
   options.overrides = keyword_overrides(overrides);
+  if (gmsh_timeout > 0.0) options.limits.gmsh_timeout_seconds = gmsh_timeout;
   driver::RunOutput output;
   {
     py::gil_scoped_release released;
@@ -83,7 +85,9 @@ PYBIND11_MODULE(_core, m) {
   m.attr("__version__") = BEMCONTACT_VERSION;
   m.attr("reads_geo_files") = io::gmsh_api_available();  // .geo through the Gmsh library
   m.def("run", &run, py::arg("text"), py::arg("file_name"), py::arg("overrides"), py::arg("mesh_only") = false,
-        py::arg("threads") = 0, "Solve (or only mesh) a problem text; returns files, report, warnings.");
+        py::arg("threads") = 0, py::arg("gmsh_timeout") = 60.0,
+        "Solve (or only mesh) a problem text; returns files, report, warnings. gmsh_timeout: the seconds a .geo "
+        "file may take to mesh (as --gmsh-timeout).");
   m.def("commit", &commit, py::arg("files"), py::arg("directory"),
         "Replace `directory` whole by these files (as `bemcontact run -o`).");
 }

@@ -123,7 +123,7 @@ class Result:
 
     def contact_step(self, step, name=None):
         """The pairs at load step `step` (1 = first), written with record_steps = true."""
-        table = f"{self._contact_name(name)}_step{int(step)}"
+        table = f"steps/{self._contact_name(name)}_step{int(step)}"
         if table + ".csv" not in self.files:
             raise KeyError(f"no pairs of step {step}: run with record_steps = true in [solver] "
                            f"({len(self.contact_steps(name))} steps in this result)")
@@ -193,19 +193,22 @@ class Problem:
     def sha256(self):
         return hashlib.sha256(self.text.encode()).hexdigest()
 
-    def run(self, output=None, threads=0, **parameters):
+    def run(self, output=None, threads=0, gmsh_timeout=60.0, **parameters):
         """Solve; `parameters` override [parameters] by name (numbers or expressions in
-        quotes, as with_parameters); `output` also writes the files there (the folder is
-        replaced whole). Raises bemcontact.Error subclasses."""
-        return self._go(False, output, threads, parameters)
+        quotes, as with_parameters; or, for a .geo geometry, its DefineConstant numbers);
+        `output` also writes the files there (the folder is replaced whole); `gmsh_timeout`:
+        the seconds a .geo file may take to mesh (as --gmsh-timeout). Raises
+        bemcontact.Error subclasses."""
+        return self._go(False, output, threads, gmsh_timeout, parameters)
 
-    def mesh(self, output=None, **parameters):
+    def mesh(self, output=None, gmsh_timeout=60.0, **parameters):
         """Mesh only: the boundary mesh of every body and contact pairs."""
-        return self._go(True, output, 0, parameters)
+        return self._go(True, output, 0, gmsh_timeout, parameters)
 
-    def _go(self, mesh_only, output, threads, parameters):
+    def _go(self, mesh_only, output, threads, gmsh_timeout, parameters):
         problem = self.with_parameters(**parameters) if parameters else self
-        raw = _core.run(problem.text, problem.file_name, problem.overrides, mesh_only, int(threads))
+        raw = _core.run(problem.text, problem.file_name, problem.overrides, mesh_only, int(threads),
+                        float(gmsh_timeout))
         result = Result(raw)
         if output is not None:
             result.save(output)
@@ -217,6 +220,6 @@ class Problem:
         return f"Problem({self.file_name!r}, overrides={self.overrides})"
 
 
-def run(path, output=None, threads=0, **parameters):
+def run(path, output=None, threads=0, gmsh_timeout=60.0, **parameters):
     """Load a problem file and run it (Problem.load(path).run(...))."""
-    return Problem.load(path).run(output=output, threads=threads, **parameters)
+    return Problem.load(path).run(output=output, threads=threads, gmsh_timeout=gmsh_timeout, **parameters)

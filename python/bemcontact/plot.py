@@ -356,12 +356,12 @@ def history_figure(result, names, title, path=None):
 
 
 def _load_folder(folder):
-    files = {p.name: p.read_bytes() for p in sorted(folder.iterdir()) if p.is_file() and not p.name.startswith(".")}
-    if "summary.json" not in files:
+    if not (folder / "summary.json").is_file():
         raise SystemExit(f"bemcontact plot: {folder} is not an output folder of bemcontact (no summary.json)")
-    summary = json.loads(files["summary.json"])
+    summary = json.loads((folder / "summary.json").read_bytes())
+    # The files the run lists, recorded steps (steps/...) included.
     order = summary.get("outputs", []) + ["summary.json"]
-    files = {n: files[n] for n in order if n in files}
+    files = {n: (folder / n).read_bytes() for n in order if (folder / n).is_file()}
     return Result({"files": files, "report": "", "warnings": summary.get("warnings", []), "solver_failure": ""})
 
 

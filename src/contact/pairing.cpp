@@ -176,7 +176,7 @@ void mesh_regions(const ContactProblem& problem, PreparedContact& prepared) {
     try {
       meshes = dd::mesh_subdomains(decomposition);
     } catch (const GeometryError& error) {
-      throw GeometryError("body '" + body.name + "': " + error.what());
+      throw error.in_context("body '" + body.name + "'");
     }
     for (std::size_t r = 0; r < meshes.size(); ++r) {
       prepared.body_regions.back().push_back(static_cast<int>(prepared.regions.size()));

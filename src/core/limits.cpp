@@ -1,5 +1,6 @@
 #include "bemcontact/core/limits.hpp"
 
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include <cstdio>
@@ -13,10 +14,19 @@ double physical_memory_bytes() {
   return static_cast<double>(pages) * static_cast<double>(page_size);
 }
 
+double address_space_limit_bytes() {
+  rlimit limit{};
+  if (::getrlimit(RLIMIT_AS, &limit) != 0 || limit.rlim_cur == RLIM_INFINITY) return 0.0;
+  return static_cast<double>(limit.rlim_cur);
+}
+
 double ResourceLimits::memory_limit_bytes() const {
   if (max_memory_bytes > 0.0) return max_memory_bytes;
-  const double physical = physical_memory_bytes();
-  return physical > 0.0 ? 0.8 * physical : 8e9;
+  double available = physical_memory_bytes();
+  // A run under `ulimit -v` (a batch system, a container) has less than the machine.
+  if (const double space = address_space_limit_bytes(); space > 0.0 && (available <= 0.0 || space < available))
+    available = space;
+  return available > 0.0 ? 0.8 * available : 8e9;
 }
 
 std::string format_bytes(double bytes) {

@@ -41,7 +41,7 @@ std::vector<geometry::BoundaryMesh> mesh_subdomains(const DecompositionProblem& 
     try {
       meshes.push_back(bem::mesh_body(subdomain_problem(problem, s)));
     } catch (const GeometryError& error) {
-      throw GeometryError(problem.part_word + " '" + problem.subdomains[s].body.name + "': " + error.what());
+      throw error.in_context(problem.part_word + " '" + problem.subdomains[s].body.name + "'");
     }
   }
   return meshes;

@@ -125,6 +125,47 @@ BodyCost body_cost(const bem::BodyDefinition& body, AnalysisType type, const geo
   return cost;
 }
 
+// Recorded load steps (record_steps): per step and per boundary node, its fields (u, t,
+// stresses: 64 B) and its rows of <body>_boundary_step<k>.csv and .vtp (186-253 B each in
+// fretting_cylinder.toml: 320 B with long numbers); per pair, its results twice (all pairs
+// and per contact: 2 x 104 B), its unknowns (16 B) and its CSV and VTP rows (155 B each:
+// 190 B). Every file stays in memory until the output folder is committed.
+constexpr double recorded_bytes_per_node = 64.0 + 2.0 * 320.0;
+constexpr double recorded_bytes_per_pair = 2.0 * 104.0 + 16.0 + 2.0 * 190.0;
+
+// The steps a history may take: with adaptive stepping up to max_steps; else the
+// increments and a step end at each corner of an amplitude.
+std::int64_t most_steps(const contact::ContactProblem& problem) {
+  if (problem.adaptive && problem.has_friction()) return problem.max_steps;
+  std::size_t corners = problem.data_amplitude.points.size();
+  for (const auto& amplitude : problem.boundary_amplitudes) corners += amplitude.points.size();
+  for (const auto& force : problem.forces) corners += force.amplitude.points.size();
+  for (const auto& body : problem.bodies)
+    if (body.rigid) corners += body.rigid->amplitude.points.size();
+  for (const auto& contact : problem.contacts) corners += contact.interference_amplitude.points.size();
+  return problem.increments + static_cast<std::int64_t>(corners);
+}
+
+// Pairs of a contact: one per node of its side-1 zone at most.
+std::int64_t most_pairs(const contact::ContactProblem& problem, const geometry::MeshOptions& mesh) {
+  std::int64_t pairs = 0;
+  for (const auto& contact : problem.contacts) {
+    bem::BodyDefinition zone;
+    zone.pieces.push_back(problem.region(contact.side1).body.pieces.at(contact.side1.piece));
+    pairs += body_nodes(zone, mesh);
+  }
+  return pairs;
+}
+
+double recording_bytes(const contact::ContactProblem& problem, std::int64_t steps) {
+  std::int64_t nodes = 0;
+  for (const auto& body : problem.bodies)
+    for (const auto& region : body.regions) nodes += body_nodes(region.body, problem.mesh);
+  const double per_step = static_cast<double>(nodes) * recorded_bytes_per_node +
+                          static_cast<double>(most_pairs(problem, problem.mesh)) * recorded_bytes_per_pair;
+  return per_step * static_cast<double>(steps);
+}
+
 void add_body(ResourceEstimate& estimate, const BodyCost& cost) {
   estimate.unknowns = std::max(estimate.unknowns, cost.unknowns);
   estimate.total_unknowns += cost.unknowns;
@@ -167,18 +208,38 @@ void check_body(const bem::BodyDefinition& body, const std::string& what, const 
 // Over the limit: names the compressed operator when a dense plane body could use it.
 void check_memory(const ResourceEstimate& estimate, const ResourceLimits& limits, const std::string& file) {
   const double limit = limits.memory_limit_bytes();
+  const double systems = estimate.bytes - estimate.recording_bytes;
   const std::string remedy =
       estimate.could_compress ? "set [solver] operator = \"compressed\" (hierarchical matrices: about " +
                                     format_bytes(compressed_bytes_per_nlogn * n_log_n(estimate.unknowns)) +
                                     " for the largest body), or "
                               : "";
-  if (estimate.bytes > limit)
+  if (systems > limit)
     throw InputError(SourceLocation{file, 0, ""},
                      std::string(estimate.compressed ? "the compressed" : "the dense") +
                          " boundary systems of this problem (" + std::to_string(estimate.unknowns) +
-                         " unknowns in the largest body) need about " + format_bytes(estimate.bytes) +
+                         " unknowns in the largest body) need about " + format_bytes(systems) +
                          " of memory, over the limit of " + format_bytes(limit) + "; " + remedy +
                          "use fewer elements, or raise the limit with --max-memory (GB) on a larger machine");
+}
+
+// Over the limit with the recorded steps: names record_steps and what to lower.
+void check_recording(const contact::ContactProblem& problem, const ResourceEstimate& estimate,
+                     const ResourceLimits& limits) {
+  const double limit = limits.memory_limit_bytes();
+  if (estimate.recording_bytes == 0.0 || estimate.bytes <= limit) return;
+  const bool adaptive = problem.adaptive && problem.has_friction();
+  SourceLocation where = problem.record_steps_where;
+  if (where.file.empty()) where.file = problem.source_file;
+  throw InputError(where, "recording every load step (record_steps = true) keeps about " +
+                              format_bytes(estimate.recording_bytes / static_cast<double>(estimate.recorded_steps)) +
+                              " per step (the pairs and every region's boundary fields, in memory and in the files of "
+                              "steps/) for up to " + std::to_string(estimate.recorded_steps) + " steps (" +
+                              (adaptive ? "max_steps, adaptive stepping" : "increments and the amplitudes' corners") +
+                              "): about " + format_bytes(estimate.bytes) + " with the boundary systems, over the limit of " +
+                              format_bytes(limit) + "; record fewer steps (" +
+                              (adaptive ? "a lower max_steps" : "fewer increments") +
+                              "), set record_steps = false, or raise the limit with --max-memory (GB)");
 }
 
 void check_points(std::size_t points, const ResourceLimits& limits, const std::string& file) {
@@ -233,6 +294,11 @@ ResourceEstimate estimate_resources(const contact::ContactProblem& problem) {
       estimate.bytes += cost.peak_bytes;
       estimate.could_compress = estimate.could_compress || cost.could_compress;
     }
+  if (problem.record_steps && !problem.contacts.empty()) {
+    estimate.recorded_steps = most_steps(problem);
+    estimate.recording_bytes = recording_bytes(problem, estimate.recorded_steps);
+    estimate.bytes += estimate.recording_bytes;
+  }
   return estimate;
 }
 
@@ -260,7 +326,9 @@ void check_resources(const contact::ContactProblem& problem, const ResourceLimit
       points += region.interior_points.size();
     }
   check_points(points, limits, problem.source_file);
-  check_memory(estimate_resources(problem), limits, problem.source_file);
+  const ResourceEstimate estimate = estimate_resources(problem);
+  check_memory(estimate, limits, problem.source_file);
+  check_recording(problem, estimate, limits);
 }
 
 namespace {

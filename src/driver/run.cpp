@@ -143,6 +143,7 @@ auto read_checked(Parse parse, std::string_view text, const std::string& file_na
   output.estimate = {{"unknowns", estimate.total_unknowns},
                      {"largest_body_unknowns", estimate.unknowns},
                      {"memory_bytes", estimate.bytes},
+                     {"recorded_steps_bytes", estimate.recording_bytes},
                      {"seconds", estimate.seconds},
                      {"threads", estimate.threads}};
   if (options.notice) options.notice(describe(estimate));
@@ -248,9 +249,9 @@ RunOutput run_contact(std::string_view text, const std::string& file_name, const
     add_mesh_warnings(output.warnings, result.meshes[r], result.region_labels[r]);
     add_small_strain_warning(output.warnings, result.meshes[r], result.boundary[r], result.region_labels[r]);
   }
-  for (const auto& [name, content] :
-       io::contact_output_files(file.problem, result, file.vtk))
-    output.files.add(name, content);
+  // Moved, not copied: recorded steps make these files large.
+  for (auto& [name, content] : io::contact_output_files(file.problem, result, file.vtk))
+    output.files.add(name, std::move(content));
   auto summary = summary_envelope("contact", "run", text, file_name, file.problem.title, file.problem.analysis);
   summary.parameters = file.parameters;
   io::fill_contact_summary(summary, file.problem, result);
@@ -417,7 +418,13 @@ RunOutput mesh_problem(std::string_view text, const std::string& file_name, cons
   const ProblemKind kind = problem_kind(text);
   if (kind == ProblemKind::contact) {
     RunOutput output;
-    const auto file = read_checked(io::parse_contact_problem, text, file_name, options, output);
+    // Meshing records no load steps: their memory is not asked for.
+    const auto parse_unrecorded = [](auto&&... arguments) {
+      auto file = io::parse_contact_problem(arguments...);
+      file.problem.record_steps = false;
+      return file;
+    };
+    const auto file = read_checked(parse_unrecorded, text, file_name, options, output);
     auto summary = summary_envelope(file.problem.contacts.empty() ? "bodies" : "contact", "mesh", text, file_name,
                                     file.problem.title, file.problem.analysis);
     summary.parameters = file.parameters;

@@ -11,10 +11,24 @@ namespace {
 
 constexpr double two_pi = 2.0 * std::numbers::pi;
 
+// Warnings stand alone: the whole place of the boundary.
 std::string piece_text(const BoundaryPiece& piece) {
   std::string text = "boundary '" + piece.name + "'";
   if (piece.where.line > 0) text += " (" + piece.where.describe() + ")";
   return text;
+}
+
+// In an error, whose message starts with the file and line of the first boundary it
+// names: "'name' (line 12)".
+std::string quoted_name(const BoundaryPiece& piece) {
+  return "'" + piece.name + "'" + (piece.where.line > 0 ? " (line " + std::to_string(piece.where.line) + ")" : "");
+}
+std::string boundary_text(const BoundaryPiece& piece) { return "boundary " + quoted_name(piece); }
+
+GeometryError piece_error(std::initializer_list<const BoundaryPiece*> pieces, const std::string& message) {
+  std::vector<SourceLocation> where;
+  for (const auto* piece : pieces) where.push_back(piece->where);
+  return GeometryError(std::move(where), message);
 }
 
 // Signed sweep of an arc from start to end, in (0, 2 pi] or [-2 pi, 0).
@@ -132,9 +146,10 @@ void check_no_crossings(const std::vector<BoundaryPiece>& pieces, const std::vec
         for (const Vec2& end : {p.a, p.b, q.a, q.b})
           if (point_segment_distance(end, p.a, p.b) <= tol && point_segment_distance(end, q.a, q.b) <= tol) where = end;
         if (p.piece == q.piece)
-          throw GeometryError(piece_text(first) + " crosses or touches itself near " + point_text(where));
-        throw GeometryError("boundaries '" + first.name + "' and '" + second.name + "' cross or touch near " +
-                            point_text(where) + " (contours may not meet except end to start)");
+          throw piece_error({&first}, boundary_text(first) + " crosses or touches itself near " + point_text(where));
+        throw piece_error({&first, &second}, "boundaries " + quoted_name(first) + " and " + quoted_name(second) +
+                                                 " cross or touch near " + point_text(where) +
+                                                 " (contours may not meet except end to start)");
       }
   }
 }
@@ -152,9 +167,25 @@ bool inside_contour(const Vec2& point, const Contour& contour, const std::vector
 }
 
 // Every hole lies inside the outer contour (contours[0]) and outside every other hole.
-template <class Names>
+// "'a' (line 3), 'b' (line 7)": the boundaries of a contour in order of travel.
+std::string contour_names(const std::vector<BoundaryPiece>& pieces, const Contour& contour) {
+  std::string text;
+  for (int i : contour.pieces) text += (text.empty() ? "" : ", ") + quoted_name(pieces[i]);
+  return text;
+}
+
+// An error about contours, placed at their boundaries (the first contour's first).
+GeometryError contour_error(const std::vector<BoundaryPiece>& pieces, std::initializer_list<const Contour*> contours,
+                            const std::string& message) {
+  std::vector<SourceLocation> where;
+  for (const auto* contour : contours)
+    for (int i : contour->pieces) where.push_back(pieces[i].where);
+  return GeometryError(std::move(where), message);
+}
+
 void check_holes_inside(const std::vector<BoundaryPiece>& pieces, const std::vector<Contour>& contours,
-                        const std::vector<Chord>& chords, const Names& names) {
+                        const std::vector<Chord>& chords) {
+  const auto names = [&](const Contour& contour) { return contour_names(pieces, contour); };
   for (std::size_t h = 1; h < contours.size(); ++h) {
     // The middle of the hole's first chord: a vertex would sit on the horizontal line
     // through other holes' vertices when holes are aligned (fibres on a grid), where the
@@ -166,12 +197,14 @@ void check_holes_inside(const std::vector<BoundaryPiece>& pieces, const std::vec
         break;
       }
     if (!inside_contour(point, contours[0], chords))
-      throw GeometryError("the hole made of " + names(contours[h]) + " lies outside the outer contour (" +
-                          names(contours[0]) + "): a clockwise contour is a hole and must lie inside the body");
+      throw contour_error(pieces, {&contours[h], &contours[0]},
+                          "the hole made of " + names(contours[h]) + " lies outside the outer contour made of " +
+                              names(contours[0]) + ": a clockwise contour is a hole and must lie inside the body");
     for (std::size_t other = 1; other < contours.size(); ++other)
       if (other != h && inside_contour(point, contours[other], chords))
-        throw GeometryError("the hole made of " + names(contours[h]) + " lies inside the hole made of " +
-                            names(contours[other]));
+        throw contour_error(pieces, {&contours[h], &contours[other]},
+                            "the hole made of " + names(contours[h]) + " lies inside the hole made of " +
+                                names(contours[other]));
   }
 }
 
@@ -317,24 +350,22 @@ std::vector<Contour> build_contours(const std::vector<BoundaryPiece>& pieces) {
   const double tol = 1e-9 * scale;
 
   for (const auto& piece : pieces) {
-    if (piece.elements < 1)
-      throw GeometryError(piece_text(piece) + " needs at least one element");
+    if (piece.elements < 1) throw piece_error({&piece}, boundary_text(piece) + " needs at least one element");
     if (piece.shape == PieceShape::arc) {
       const double r0 = arc_radius(piece), r1 = (piece.end - piece.center).norm();
       if (r0 <= tol)
-        throw GeometryError(piece_text(piece) + ": arc centre coincides with its start point");
+        throw piece_error({&piece}, boundary_text(piece) + ": arc centre coincides with its start point");
       if (std::abs(r0 - r1) > 1e-7 * scale)
-        throw GeometryError(piece_text(piece) + ": arc end " + point_text(piece.end) +
-                            " is not on the circle through its start (radius " +
-                            std::to_string(r0) + ", end at distance " + std::to_string(r1) + ")");
+        throw piece_error({&piece}, boundary_text(piece) + ": arc end " + point_text(piece.end) +
+                                        " is not on the circle through its start (radius " + std::to_string(r0) +
+                                        ", end at distance " + std::to_string(r1) + ")");
     }
-    if (piece_length(piece) <= tol)
-      throw GeometryError(piece_text(piece) + " has zero length");
+    if (piece_length(piece) <= tol) throw piece_error({&piece}, boundary_text(piece) + " has zero length");
     const auto s = element_breakpoints(piece);
     for (std::size_t i = 0; i + 1 < s.size(); ++i)
       if ((s[i + 1] - s[i]) * piece_length(piece) <= tol)
-        throw GeometryError(piece_text(piece) + ": element " + std::to_string(i) +
-                            " has zero length (grading too strong?)");
+        throw piece_error({&piece}, boundary_text(piece) + ": element " + std::to_string(i) +
+                                        " has zero length (grading too strong?)");
   }
 
   // Chain pieces end-to-start.
@@ -344,22 +375,23 @@ std::vector<Contour> build_contours(const std::vector<BoundaryPiece>& pieces) {
     for (int j = 0; j < n; ++j) {
       if ((pieces[i].end - pieces[j].start).norm() <= tol) {
         if (next[i] >= 0)
-          throw GeometryError("boundaries '" + pieces[next[i]].name + "' and '" + pieces[j].name +
-                              "' both start at " + point_text(pieces[j].start) +
-                              ", the end of '" + pieces[i].name + "'");
+          throw piece_error({&pieces[next[i]], &pieces[j], &pieces[i]},
+                            "boundaries " + quoted_name(pieces[next[i]]) + " and " + quoted_name(pieces[j]) +
+                                " both start at " + point_text(pieces[j].start) + ", the end of " +
+                                quoted_name(pieces[i]));
         next[i] = j;
         ++previous_count[j];
       }
     }
     if (next[i] < 0)
-      throw GeometryError("open contour: no boundary starts at " + point_text(pieces[i].end) +
-                          ", the end of " + piece_text(pieces[i]) +
-                          " (boundaries must chain end to start, with the domain on their left)");
+      throw piece_error({&pieces[i]}, "open contour: no boundary starts at " + point_text(pieces[i].end) +
+                                          ", the end of " + boundary_text(pieces[i]) +
+                                          " (boundaries must chain end to start, with the domain on their left)");
   }
   for (int j = 0; j < n; ++j)
     if (previous_count[j] != 1)
-      throw GeometryError("open contour: no boundary ends at " + point_text(pieces[j].start) +
-                          ", the start of " + piece_text(pieces[j]));
+      throw piece_error({&pieces[j]}, "open contour: no boundary ends at " + point_text(pieces[j].start) +
+                                          ", the start of " + boundary_text(pieces[j]));
 
   // Crossings first: a crossing boundary also spoils the areas and orientations below.
   const auto chords = boundary_chords(pieces);
@@ -392,27 +424,25 @@ std::vector<Contour> build_contours(const std::vector<BoundaryPiece>& pieces) {
   std::size_t outer = 0;
   for (std::size_t c = 1; c < contours.size(); ++c)
     if (std::abs(contours[c].signed_area) > std::abs(contours[outer].signed_area)) outer = c;
-  auto names = [&](const Contour& contour) {
-    std::string text;
-    for (int i : contour.pieces) text += (text.empty() ? "'" : ", '") + pieces[i].name + "'";
-    return text;
-  };
+  const auto names = [&](const Contour& contour) { return contour_names(pieces, contour); };
   for (std::size_t c = 0; c < contours.size(); ++c) {
     contours[c].is_hole = c != outer;
     if (std::abs(contours[c].signed_area) <= tol * tol)
-      throw GeometryError("the contour made of " + names(contours[c]) + " encloses no area");
+      throw contour_error(pieces, {&contours[c]}, "the contour made of " + names(contours[c]) + " encloses no area");
     if (!contours[c].is_hole && contours[c].signed_area < 0.0)
-      throw GeometryError("the outer contour (" + names(contours[c]) +
-                          ") runs clockwise; it must run counterclockwise, with the domain on "
-                          "the left of each boundary");
+      throw contour_error(pieces, {&contours[c]},
+                          "the outer contour made of " + names(contours[c]) +
+                              " runs clockwise; it must run counterclockwise, with the domain on the left of each "
+                              "boundary");
     if (contours[c].is_hole && contours[c].signed_area > 0.0)
-      throw GeometryError("the hole made of " + names(contours[c]) +
-                          " runs counterclockwise; holes must run clockwise, with the domain on "
-                          "the left of each boundary");
+      throw contour_error(pieces, {&contours[c]},
+                          "the hole made of " + names(contours[c]) +
+                              " runs counterclockwise; holes must run clockwise, with the domain on the left of each "
+                              "boundary");
   }
   if (outer != 0) std::swap(contours[0], contours[outer]);
 
-  check_holes_inside(pieces, contours, chords, names);
+  check_holes_inside(pieces, contours, chords);
   return contours;
 }
 

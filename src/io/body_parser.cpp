@@ -1,6 +1,8 @@
 #include "bemcontact/io/body_parser.hpp"
 
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 
 #include <algorithm>
 #include <cmath>
@@ -251,7 +253,7 @@ BoundaryPiece read_piece(const TableReader& reader, int index, const Vertices& v
   reader.check_keys(schema::boundary_keys(), "each [[boundary]] table");
   BoundaryPiece piece;
   piece.where = SourceLocation{context.file, reader.line(), reader.path()};
-  piece.name = reader.optional_string("name").value_or("boundary" + std::to_string(index));
+  piece.name = reader.optional_name("name").value_or("boundary" + std::to_string(index));
   if (piece.name.empty()) reader.fail("name", "the name must not be empty");
   const std::string label = "boundary '" + piece.name + "'";
   const std::string shape = reader.choice("shape", {"line", "arc"}, "line");
@@ -410,6 +412,69 @@ void read_boundary_pieces(const TableReader& body, const FileContext& context, c
   }
 }
 
+namespace {
+
+std::vector<std::string> identifiers_in(std::string_view text) {
+  std::vector<std::string> names;
+  const auto name_char = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+  for (std::size_t i = 0; i < text.size();) {
+    const bool starts = (std::isalpha(static_cast<unsigned char>(text[i])) || text[i] == '_') &&
+                        (i == 0 || (!name_char(text[i - 1]) && text[i - 1] != '.'));
+    if (!starts) {
+      ++i;
+      continue;
+    }
+    std::size_t end = i;
+    while (end < text.size() && name_char(text[end])) ++end;
+    names.emplace_back(text.substr(i, end - i));
+    i = end;
+  }
+  return names;
+}
+
+// How the user gave a replacing value, for messages: "--set P" or the caller's own words.
+std::string origin_of(const std::string& name, const ParameterValue& value) {
+  return value.origin.empty() ? "--set " + name : value.origin;
+}
+
+// A replacing value (a number, or an expression evaluated here with the parameters before
+// it); its errors say where it came from, at the parameter's line of the file.
+double replacing_value(const std::string& name, const ParameterValue& value, const SourceLocation& where,
+                       const FileContext& context) {
+  try {
+    const double number = value.expression.empty()
+                              ? value.number
+                              : Expression::parse(value.expression, context.constant_scope(), where).value();
+    if (!std::isfinite(number))
+      throw InputError(where, "the value is " + format_number(number) + "; a finite number is needed");
+    return number;
+  } catch (const InputError& error) {
+    std::string message = error.what();
+    const std::string location = where.describe() + ": ";
+    if (message.rfind(location, 0) == 0) message.erase(0, location.size());
+    throw InputError(where, origin_of(name, value) + ": " + message);
+  }
+}
+
+}  // namespace
+
+// The numbers a .geo file gets (gmsh -setnumber): every parameter of the problem file, and
+// the --set values for no parameter of it that the .geo declares with DefineConstant.
+std::map<std::string, double> gmsh_numbers(const std::filesystem::path& file, const FileContext& context) {
+  std::map<std::string, double> numbers(context.parameters.begin(), context.parameters.end());
+  if (context.gmsh_overrides.empty()) return numbers;
+  std::ifstream in(file, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  const auto declared = geo_constants(text.str());
+  for (const auto& [name, value] : context.gmsh_overrides)
+    if (declared.count(name)) {
+      numbers[name] = replacing_value(name, value, SourceLocation{context.file, 0, "parameters." + name}, context);
+      context.gmsh_overrides_used.insert(name);
+    }
+  return numbers;
+}
+
 // The body's pieces from a Gmsh file (io/gmsh_geometry.hpp); each [[boundary]] table
 // gives the conditions of the physical curve of its name (none: traction-free).
 void read_gmsh_pieces(const TableReader& body, const FileContext& context, bem::BodyDefinition& definition) {
@@ -419,12 +484,21 @@ void read_gmsh_pieces(const TableReader& body, const FileContext& context, bem::
   // Relative to the problem file's folder.
   if (file.is_relative() && !context.file.empty() && context.file.front() != '<')
     file = std::filesystem::path(context.file).parent_path() / file;
+  GmshOptions options;
+  options.limits = context.limits;
+  if (file.extension() == ".geo") options.numbers = gmsh_numbers(file, context);
   GmshBoundary gmsh;
   try {
-    gmsh = read_gmsh_boundary(file, context.axisymmetric());
+    gmsh = read_gmsh_boundary(file, context.axisymmetric(), options);
   } catch (const InputError& e) {
     // The Gmsh file's own position, then the key that named it.
     throw InputError(body.where("geometry"), e.what());
+  }
+  std::vector<std::string> curve_names;
+  for (const auto& piece : gmsh.pieces) {
+    if (const std::string problem = name_problem(piece.name); !problem.empty())
+      body.fail("geometry", "a physical curve of '" + *name + "': " + problem);
+    curve_names.push_back(piece.name);
   }
   std::map<std::string, std::pair<const toml::table*, int>> conditions;  // by curve name: table, line
   if (const toml::array* boundaries = array_of_tables(body, "boundary", "[[boundary]]")) {
@@ -438,16 +512,11 @@ void read_gmsh_pieces(const TableReader& body, const FileContext& context, bem::
         if (reader.has(key))
           reader.fail(key, "'" + std::string(key) + "' comes from the Gmsh file '" + *name +
                                "' (its curves, their mesh and grading): give only name and conditions here");
-      const auto boundary_name = reader.optional_string("name");
+      const auto boundary_name = reader.optional_name("name");
       if (!boundary_name) reader.fail("name", "name the physical curve of '" + *name + "' these conditions apply to");
-      bool known = false;
-      for (const auto& piece : gmsh.pieces) known = known || piece.name == *boundary_name;
-      if (!known) {
-        std::string names;
-        for (const auto& piece : gmsh.pieces) names += (names.empty() ? "'" : ", '") + piece.name + "'";
-        reader.fail("name", "'" + *name + "' has no physical curve named '" + *boundary_name + "'; its curves are " +
-                                names);
-      }
+      if (std::find(curve_names.begin(), curve_names.end(), *boundary_name) == curve_names.end())
+        reader.fail("name", "'" + *name + "' has no physical curve named '" + *boundary_name + "'." +
+                                did_you_mean(*boundary_name, curve_names) + " Its curves: " + quoted_list(curve_names));
       const auto [existing, added] = conditions.emplace(*boundary_name, std::pair{node.as_table(), reader.line()});
       if (!added)
         reader.fail("name", "the boundary '" + *boundary_name + "' already has conditions at line " +
@@ -552,63 +621,12 @@ bem::BodyDefinition parse_body(const toml::table& table, const BodyContext& body
   return definition;
 }
 
-namespace {
-
-std::vector<std::string> identifiers_in(std::string_view text) {
-  std::vector<std::string> names;
-  const auto name_char = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
-  for (std::size_t i = 0; i < text.size();) {
-    const bool starts = (std::isalpha(static_cast<unsigned char>(text[i])) || text[i] == '_') &&
-                        (i == 0 || (!name_char(text[i - 1]) && text[i - 1] != '.'));
-    if (!starts) {
-      ++i;
-      continue;
-    }
-    std::size_t end = i;
-    while (end < text.size() && name_char(text[end])) ++end;
-    names.emplace_back(text.substr(i, end - i));
-    i = end;
-  }
-  return names;
-}
-
-// How the user gave a replacing value, for messages: "--set P" or the caller's own words.
-std::string origin_of(const std::string& name, const ParameterValue& value) {
-  return value.origin.empty() ? "--set " + name : value.origin;
-}
-
-// A replacing value (a number, or an expression evaluated here with the parameters before
-// it); its errors say where it came from, at the parameter's line of the file.
-double replacing_value(const std::string& name, const ParameterValue& value, const SourceLocation& where,
-                       const FileContext& context) {
-  try {
-    const double number = value.expression.empty()
-                              ? value.number
-                              : Expression::parse(value.expression, context.constant_scope(), where).value();
-    if (!std::isfinite(number))
-      throw InputError(where, "the value is " + format_number(number) + "; a finite number is needed");
-    return number;
-  } catch (const InputError& error) {
-    std::string message = error.what();
-    const std::string location = where.describe() + ": ";
-    if (message.rfind(location, 0) == 0) message.erase(0, location.size());
-    throw InputError(where, origin_of(name, value) + ": " + message);
-  }
-}
-
-}  // namespace
 
 void read_parameters(const TableReader& root, FileContext& context) {
   const toml::table* table = root.optional_table("parameters", "[parameters]");
+  // Values for no parameter of the file may be for a .geo file (checked once it is read).
   for (const auto& [name, value] : context.overrides)
-    if (!table || !table->contains(name)) {
-      std::string known;
-      if (table)
-        for (const auto& [key, node] : *table) known += (known.empty() ? "" : ", ") + std::string(key.str());
-      throw InputError(SourceLocation{context.file, table ? root.where("parameters").line : 0, "parameters." + name},
-                       origin_of(name, value) + ": the file has no parameter '" + name + "' to replace (" +
-                           (known.empty() ? "it has no [parameters]" : "its parameters: " + known) + ")");
-    }
+    if (!table || !table->contains(name)) context.gmsh_overrides[name] = value;
   if (!table) return;
   const TableReader parameters(*table, "parameters", context, root.line());
   std::vector<std::pair<std::string, const toml::node*>> entries;
@@ -661,6 +679,25 @@ void read_file_header(const TableReader& root, FileContext& context, const std::
                   : order == "quadratic" ? Interpolation::quadratic
                                          : Interpolation::linear;
   read_parameters(root, context);
+}
+
+void check_gmsh_overrides(const TableReader& root, const FileContext& context,
+                          std::map<std::string, double>& parameters) {
+  for (const auto& [name, value] : context.gmsh_overrides) {
+    if (context.gmsh_overrides_used.count(name)) {
+      // Echoed with the file's own.
+      parameters[name] = replacing_value(name, value, SourceLocation{context.file, 0, "parameters." + name}, context);
+      continue;
+    }
+    const toml::table* table = root.optional_table("parameters", "[parameters]");
+    std::string known;
+    if (table)
+      for (const auto& [key, node] : *table) known += (known.empty() ? "" : ", ") + std::string(key.str());
+    throw InputError(SourceLocation{context.file, table ? root.where("parameters").line : 0, "parameters." + name},
+                     origin_of(name, value) + ": the file has no parameter '" + name + "' to replace (" +
+                         (known.empty() ? "it has no [parameters]" : "its parameters: " + known) +
+                         "), and no .geo file of it declares '" + name + "' with DefineConstant");
+  }
 }
 
 std::vector<bem::InteriorPoint> read_interior_grid(const TableReader& grid, const FileContext& context) {

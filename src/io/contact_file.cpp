@@ -13,6 +13,7 @@
 #include "bemcontact/contact/pairing.hpp"
 #include "bemcontact/contact/rigid_profile.hpp"
 #include "bemcontact/io/body_parser.hpp"
+#include "bemcontact/io/contact_writer.hpp"
 #include "bemcontact/io/decomposition_file.hpp"
 #include "bemcontact/io/problem_schema.hpp"
 #include "bemcontact/io/expression.hpp"
@@ -230,8 +231,37 @@ void set_load_groups(dd::Subdomain& region, const BoundaryAmplitudes& amplitudes
   }
 }
 
+// The output files named after regions and contacts, by whose name and line they are:
+// two names must not give one file (names that differ only in characters written as '_',
+// a contact named like a body's file, "motions").
+class OutputNames {
+ public:
+  OutputNames() {
+    for (const auto& file : model_file_names()) owners_.emplace(file, Owner{"the run's own " + file, 0});
+  }
+  void claim(const TableReader& reader, const std::vector<std::string>& files, const std::string& owner) {
+    for (const auto& file : files) {
+      const auto [existing, added] = owners_.emplace(file, Owner{owner, reader.where("name").line});
+      if (added) continue;
+      const std::string other =
+          existing->second.line > 0 ? existing->second.what + " (line " + std::to_string(existing->second.line) + ")"
+                                    : existing->second.what;
+      reader.fail("name", "the output file '" + file + "' of " + owner + " would also be that of " + other +
+                              " (file names keep letters and digits and write every other character as '_'): "
+                              "choose another name");
+    }
+  }
+
+ private:
+  struct Owner {
+    std::string what;
+    int line;
+  };
+  std::map<std::string, Owner> owners_;
+};
+
 void read_bodies(toml::table& root_table, const TableReader& root, FileContext& context,
-                 contact::ContactProblem& problem) {
+                 contact::ContactProblem& problem, OutputNames& output_names) {
   toml::node* bodies_node = root_table.get("body");
   toml::array* bodies = bodies_node ? bodies_node->as_array() : nullptr;
   if (!bodies || !bodies->is_array_of_tables() || bodies->empty())
@@ -248,15 +278,17 @@ void read_bodies(toml::table& root_table, const TableReader& root, FileContext& 
     const TableReader reader(table, path, context, line);
     contact::Body body;
     body.where = SourceLocation{context.file, reader.line(), path};
-    body.name = reader.optional_string("name").value_or(path);
+    body.name = reader.optional_name("name").value_or(path);
     if (body.name.empty()) reader.fail("name", "the name must not be empty");
     if (const auto [existing, inserted] = body_lines.emplace(body.name, reader.line()); !inserted)
       reader.fail("name", "the body name '" + body.name + "' is already used at line " +
                               std::to_string(existing->second) + "; body names must be unique");
-    auto add_region_name = [&](const std::string& name, const TableReader& where) {
+    auto add_region_name = [&](const std::string& name, const TableReader& where, const char* kind) {
       if (const auto [existing, inserted] = region_lines.emplace(name, where.line()); !inserted && existing->second != where.line())
         where.fail("name", "the name '" + name + "' is already used at line " + std::to_string(existing->second) +
                                " (the output files are named after bodies and regions)");
+      else if (inserted)
+        output_names.claim(where, region_file_names(name), kind + (" '" + name + "'"));
     };
     if (reader.has("rigid")) {
       reader.check_keys({"name", "rigid"}, "a rigid [[body]] table (a rigid body has a profile, no material or boundary)");
@@ -278,8 +310,8 @@ void read_bodies(toml::table& root_table, const TableReader& root, FileContext& 
         const TableReader region_reader(region_table, region_path,
                                         context, line_of(region_node) > 0 ? line_of(region_node) : line);
         region_reader.check_keys(joined({&schema::body_keys()}, {"name", "interior"}), "a [[body.region]] table");
-        const std::string name = region_reader.optional_string("name").value_or(body.name + "_" + std::to_string(r));
-        add_region_name(name, region_reader);
+        const std::string name = region_reader.optional_name("name").value_or(body.name + "_" + std::to_string(r));
+        add_region_name(name, region_reader, "region");
         const auto amplitudes = take_boundary_amplitudes(region_table, region_path, context, region_reader.line(), problem);
         auto region = parse_region(region_table, region_path, context, region_reader.line(), name);
         set_load_groups(region, amplitudes);
@@ -292,7 +324,7 @@ void read_bodies(toml::table& root_table, const TableReader& root, FileContext& 
       }
     } else {
       reader.check_keys(joined({&schema::body_keys()}, {"name", "interior"}), "a [[body]] table");
-      add_region_name(body.name, reader);
+      add_region_name(body.name, reader, "body");
       const auto amplitudes = take_boundary_amplitudes(table, path, context, line, problem);
       auto region = parse_region(table, path, context, line, body.name);
       set_load_groups(region, amplitudes);
@@ -364,6 +396,7 @@ void read_solver(const TableReader& reader, contact::ContactProblem& problem) {
     reader.fail("increments", std::to_string(problem.increments) +
                                   " load increments is over the limit of 100000 (each one is a contact solve)");
   problem.record_steps = reader.boolean_or("record_steps", false);
+  problem.record_steps_where = reader.where("record_steps");
   problem.adaptive = reader.boolean_or("adaptive", problem.has_friction());
   if (reader.has("adaptive") && problem.adaptive && !problem.has_friction())
     reader.fail("adaptive", "adaptive stepping follows the stick and slip zones; frictionless contact does not depend "
@@ -457,7 +490,7 @@ void read_force_load(const TableReader& load, contact::ContactProblem& problem) 
                                                 "history is given by its amplitude)");
   if (load.has("amplitude")) force.amplitude = read_amplitude(load, "amplitude");
   force.named = load.has("name");
-  force.name = load.optional_string("name").value_or(body.name + (force.piece >= 0 ? "_" + body.regions[force.region].body.pieces[force.piece].name : std::string()) +
+  force.name = load.optional_name("name").value_or(body.name + (force.piece >= 0 ? "_" + body.regions[force.region].body.pieces[force.piece].name : std::string()) +
                                                     (force.component == 0 ? "_x" : force.component == 1 ? "_y" : "_rotation"));
   for (const auto& other : problem.forces) {
     if (other.name == force.name) load.fail("name", "two loads are named '" + force.name + "'");
@@ -590,7 +623,9 @@ ContactFile parse_contact_problem(std::string_view text, const std::string& file
     reader.check_keys({"vtk"}, "the [output] table");
     result.vtk = reader.boolean_or("vtk", true);
   }
-  read_bodies(root_table, root, context, problem);
+  OutputNames output_names;
+  read_bodies(root_table, root, context, problem, output_names);
+  check_gmsh_overrides(root, context, result.parameters);
 
   const toml::node* contact_node = root.find("contact");
   std::string pairing_key = "body";
@@ -629,6 +664,7 @@ ContactFile parse_contact_problem(std::string_view text, const std::string& file
                                     std::to_string(problem.bodies.size()) +
                                     " bodies write one [[contact]] table per contact, with body1 and body2");
     contact::ContactInterface interface;
+    output_names.claim(contact, contact_file_names(interface.name), "the contact");
     interface.side1 = read_side(contact, problem, 0, 1);
     interface.side2 = read_side(contact, problem, 1, 2);
     read_pairing(contact, interface);
@@ -653,9 +689,10 @@ ContactFile parse_contact_problem(std::string_view text, const std::string& file
       contact.check_keys(joined({&law_keys(), &pairing_keys()}, {"name", "body1", "boundary1", "body2", "boundary2"}),
                          "a [[contact]] table (solver keys go in [solver], a force in [load])");
       contact::ContactInterface interface;
-      interface.name = contact.optional_string("name").value_or(contacts->size() == 1 ? "contact" : "contact" + std::to_string(index));
+      interface.name = contact.optional_name("name").value_or(contacts->size() == 1 ? "contact" : "contact" + std::to_string(index));
       for (const auto& other : problem.contacts)
         if (other.name == interface.name) contact.fail("name", "two contacts are named '" + interface.name + "'");
+      output_names.claim(contact, contact_file_names(interface.name), "contact '" + interface.name + "'");
       for (const char* key : {"body1", "body2"})
         if (!contact.has(key)) contact.fail(key, "missing: the name of the body on this side of the contact");
       const int body1 = body_named(problem, *contact.optional_string("body1"), contact, "body1");
@@ -722,10 +759,12 @@ ContactFile parse_contact_problem(std::string_view text, const std::string& file
     for (const auto& contact : problem.contacts) in_contact = in_contact || contact.side2.body == static_cast<int>(b);
     if (!in_contact) throw InputError(body.where, "rigid body '" + body.name + "' is in no contact: it would have no effect");
   }
-  // Pair the zones now, so that geometric errors point at the contact tables.
+  // Pair the zones now, so that geometric errors point at the contact tables (those about
+  // a body's own boundaries point at them).
   try {
     (void)contact::prepare_contact(problem);
   } catch (const GeometryError& error) {
+    if (!error.where().empty()) throw;
     throw InputError(anchor->where(pairing_key), error.what());
   }
   result.warnings = context.warnings;

@@ -23,6 +23,9 @@ std::string number(double value) {
   return std::string(buffer, end);
 }
 
+// Every recorded load step's files go into this sub-folder of the output folder.
+constexpr const char* steps_folder = "steps/";
+
 std::string file_stem(const std::string& name) {
   std::string out;
   for (const char c : name) out += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
@@ -53,6 +56,19 @@ nlohmann::json summary_json(const contact::ContactSummary& s) {
 }
 
 }  // namespace
+
+std::vector<std::string> contact_file_names(const std::string& contact) {
+  const std::string stem = file_stem(contact);
+  return {stem + ".csv", stem + ".vtk", stem + "_steps.csv", stem + ".pvd", stem + "_pairs.csv"};
+}
+
+std::vector<std::string> region_file_names(const std::string& region) {
+  const std::string stem = file_stem(region);
+  return {stem + "_boundary.csv", stem + "_boundary.vtk", stem + "_boundary.pvd",    stem + "_interior.csv",
+          stem + "_interior.vtk", stem + "_mesh_nodes.csv", stem + "_mesh_elements.csv", stem + "_mesh.vtk"};
+}
+
+std::vector<std::string> model_file_names() { return {"motions.csv", "summary.json"}; }
 
 std::string contact_csv(const std::vector<contact::PairResult>& pairs) {
   std::string out = "pair,x,y,coordinate,nx,ny,gap,p_n,p_t,slip_ratio,jump_n,jump_t,status\n";
@@ -326,12 +342,12 @@ std::vector<std::pair<std::string, std::string>> contact_output_files(const cont
     if (vtk) files.emplace_back(stem + ".vtk", contact_vtk(contact.pairs, problem.title + ": contact " + contact.name));
     files.emplace_back(stem + "_steps.csv", contact_steps_csv(contact));
     for (std::size_t k = 0; k < contact.step_pairs.size(); ++k)
-      files.emplace_back(stem + "_step" + std::to_string(k + 1) + ".csv", contact_csv(contact.step_pairs[k]));
+      files.emplace_back(steps_folder + stem + "_step" + std::to_string(k + 1) + ".csv", contact_csv(contact.step_pairs[k]));
     if (vtk && !contact.step_pairs.empty()) {
       // Every step's pairs as a ParaView time series.
       std::vector<std::pair<double, std::string>> series;
       for (std::size_t k = 0; k < contact.step_pairs.size(); ++k) {
-        const std::string name = stem + "_step" + std::to_string(k + 1) + ".vtp";
+        const std::string name = steps_folder + stem + "_step" + std::to_string(k + 1) + ".vtp";
         files.emplace_back(name, contact_vtp(contact.step_pairs[k]));
         series.emplace_back(contact.steps[k].time, name);
       }
@@ -363,13 +379,13 @@ std::vector<std::pair<std::string, std::string>> contact_output_files(const cont
       if (vtk) files.emplace_back(stem + "_interior.vtk", interior_vtk(result.interior[r], problem.title));
     }
     for (std::size_t k = 0; k < result.step_boundary.size(); ++k)
-      files.emplace_back(stem + "_boundary_step" + std::to_string(k + 1) + ".csv",
+      files.emplace_back(steps_folder + stem + "_boundary_step" + std::to_string(k + 1) + ".csv",
                          boundary_csv(result.meshes[r], result.step_boundary[k][r]));
     if (vtk && !result.step_boundary.empty()) {
       // Every step's boundary fields as a ParaView time series.
       std::vector<std::pair<double, std::string>> series;
       for (std::size_t k = 0; k < result.step_boundary.size(); ++k) {
-        const std::string name = stem + "_boundary_step" + std::to_string(k + 1) + ".vtp";
+        const std::string name = steps_folder + stem + "_boundary_step" + std::to_string(k + 1) + ".vtp";
         files.emplace_back(name, boundary_vtp(result.meshes[r], result.step_boundary[k][r]));
         series.emplace_back(result.records[k].time, name);
       }

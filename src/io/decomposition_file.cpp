@@ -1,5 +1,7 @@
 #include "bemcontact/io/decomposition_file.hpp"
 
+#include "bemcontact/io/contact_writer.hpp"
+
 #include <algorithm>
 #include <cerrno>
 #include <cstring>
@@ -8,6 +10,7 @@
 #include <sstream>
 
 #include "bemcontact/io/body_parser.hpp"
+#include "bemcontact/io/decomposition_writer.hpp"
 #include "bemcontact/io/problem_schema.hpp"
 #include "bemcontact/io/suggestions.hpp"
 #include "bemcontact/io/toml_reader.hpp"
@@ -242,7 +245,7 @@ DecompositionFile parse_decomposition(std::string_view text, const std::string& 
   if (subdomains->size() < 2)
     root.fail("subdomain", "a decomposition needs at least two [[subdomain]] tables; for one body write a "
                            "one-body file (docs/problem-file.md)");
-  std::map<std::string, int> name_lines;
+  std::map<std::string, int> name_lines, file_lines;
   int index = 0;
   for (toml::node& node : *subdomains) {
     ++index;
@@ -250,11 +253,17 @@ DecompositionFile parse_decomposition(std::string_view text, const std::string& 
     const std::string path = "subdomain[" + std::to_string(index) + "]";
     const TableReader sub(table, path, context, root.where("subdomain").line);
     sub.check_keys(subdomain_keys(), "a [[subdomain]] table");
-    const std::string name = sub.optional_string("name").value_or("subdomain" + std::to_string(index));
+    const std::string name = sub.optional_name("name").value_or("subdomain" + std::to_string(index));
     const auto [existing, inserted] = name_lines.emplace(name, sub.line());
     if (!inserted)
       sub.fail("name", "the subdomain name '" + name + "' is already used at line " + std::to_string(existing->second) +
                            "; subdomain names must be unique");
+    // Its output files (<name>_boundary.csv; <name>_mesh.vtk as a region of `mesh`).
+    const auto [same_file, first] = file_lines.emplace(region_file_names(name).front(), sub.line());
+    if (!first)
+      sub.fail("name", "subdomain '" + name + "' and the subdomain at line " + std::to_string(same_file->second) +
+                           " would write files of one name (file names keep letters and digits and write every other "
+                           "character as '_'): choose another name");
     dd::Subdomain subdomain = parse_region(table, path, context, sub.line(), name, shared);
     if (std::none_of(subdomain.piece_interface.begin(), subdomain.piece_interface.end(),
                      [](const std::string& s) { return !s.empty(); }))
@@ -262,6 +271,7 @@ DecompositionFile parse_decomposition(std::string_view text, const std::string& 
                            "must share at least one interface with another");
     problem.subdomains.push_back(std::move(subdomain));
   }
+  check_gmsh_overrides(root, context, result.parameters);
   result.warnings = context.warnings;
   return result;
 }

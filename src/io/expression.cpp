@@ -54,6 +54,10 @@ const Function functions[] = {
     {"exp", 1, [](double a) { return std::exp(a); }},
     {"log", 1, [](double a) { return std::log(a); }},
     {"abs", 1, [](double a) { return std::fabs(a); }},
+    // Counts from lengths, e.g. elements = "round(L/h)"; round takes halves away from zero.
+    {"round", 1, [](double a) { return std::round(a); }},
+    {"floor", 1, [](double a) { return std::floor(a); }},
+    {"ceil", 1, [](double a) { return std::ceil(a); }},
     {"atan2", 2, nullptr, [](double a, double b) { return std::atan2(a, b); }},
     {"pow", 2, nullptr, [](double a, double b) { return std::pow(a, b); }},
     {"min", -2, nullptr, [](double a, double b) { return std::fmin(a, b); }},

@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <deque>
 #include <limits>
@@ -16,10 +17,15 @@
 #ifdef BEMCONTACT_WITH_GMSH
 #include <dlfcn.h>
 #include <gmshc.h>
+#include <stdlib.h>
 
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
 #include <fstream>
-#include <mutex>
 #include <type_traits>
+
+#include "bemcontact/io/child_process.hpp"
 #endif
 
 namespace bemcontact::io {
@@ -41,11 +47,15 @@ class MshLines {
       lines_.push_back(std::move(line));
       start = end + 1;
     }
+    section_end_ = lines_.size();
   }
   bool done() const { return next_ >= lines_.size(); }
   int line_number() const { return static_cast<int>(next_); }  // of the line last read
   const std::string& read() {
-    if (done()) fail("the file ends inside a section");
+    if (next_ >= section_end_)
+      fail(section_.empty() ? "the file ends inside a section"
+                            : "the section ends (" + end_name() + " at line " + std::to_string(section_end_ + 1) +
+                                  ") before the entries its counts announce: the counts do not match the content");
     return lines_[next_++];
   }
   std::istringstream read_words() { return std::istringstream(read()); }
@@ -57,21 +67,53 @@ class MshLines {
       read_line(words);
     }
   }
-  [[noreturn]] void fail(const std::string& message) const {
-    throw InputError(SourceLocation{file_, line_number(), section_}, message);
+  [[noreturn]] void fail(const std::string& message) const { fail_at(line_number(), message); }
+  [[noreturn]] void fail_at(int line, const std::string& message) const {
+    throw InputError(SourceLocation{file_, line, section_}, message);
   }
-  void enter(const std::string& section) { section_ = section; }
-  // Skips to $End<section>.
+  // A section starts: its $End line is found first, so that counts can be checked against it.
+  void enter(const std::string& section) {
+    section_ = section;
+    section_end_ = next_;
+    while (section_end_ < lines_.size() && lines_[section_end_] != end_name()) ++section_end_;
+    if (section_end_ == lines_.size()) fail("no " + end_name() + ": the file ends inside the section");
+  }
+  // The count `what` of the line `words`: >= 0, its entries (`lines_each` lines each)
+  // within the section.
+  long read_count(std::istringstream& words, const std::string& what, long lines_each = 1) {
+    long count = 0;
+    if (!(words >> count)) fail("cannot read the number of " + what);
+    check_count(count, what, lines_each);
+    return count;
+  }
+  void check_count(long count, const std::string& what, long lines_each = 1) const {
+    if (count < 0) fail("the number of " + what + " is negative (" + std::to_string(count) + ")");
+    const long left = static_cast<long>(section_end_ - next_);
+    if (count > left / lines_each)
+      fail(std::to_string(count) + " " + what + " announced, but " + end_name() + " comes " + std::to_string(left) +
+           " lines further: the counts do not match the content");
+  }
+  // Every entry read: the next line must be the section's end.
+  void expect_end(const std::string& what) {
+    if (next_ == section_end_) return;
+    ++next_;
+    fail("this line follows the " + what + " the section's counts announce, before " + end_name() +
+         ": the counts do not match the content");
+  }
+  // Skips to the line after $End<section>.
   void skip_section() {
-    const std::string end = "$End" + section_.substr(1);
-    while (read() != end) {
-    }
+    next_ = section_end_ + 1;
+    section_end_ = lines_.size();
+    section_.clear();
   }
 
  private:
+  std::string end_name() const { return "$End" + section_.substr(std::min<std::size_t>(1, section_.size())); }
+
   std::string file_;
   std::vector<std::string> lines_;
   std::size_t next_ = 0;
+  std::size_t section_end_ = 0;  // the $End line of the section, or the number of lines
   std::string section_;
 };
 
@@ -87,6 +129,8 @@ std::string quoted_name(const std::string& line) {
 }
 
 struct RawMesh {
+  std::int64_t max_elements = 0;    // line elements on the physical curves (--max-elements)
+  std::int64_t line_elements = 0;
   std::map<int, std::string> physical_names;            // dim-1 tag -> name
   std::map<int, std::vector<int>> curve_physicals;      // (4.1) curve entity -> physical tags
   std::map<int, std::vector<std::array<long, 2>>> by_physical;  // physical tag -> elements
@@ -94,7 +138,10 @@ struct RawMesh {
   std::vector<std::pair<long, Vec2>> nodes;
 };
 
-void add_element(RawMesh& mesh, int physical, long a, long b) {
+void add_element(MshLines& lines, RawMesh& mesh, int physical, long a, long b) {
+  if (++mesh.line_elements > mesh.max_elements)
+    lines.fail("more than " + std::to_string(mesh.max_elements) + " line elements on the physical curves, over the "
+               "limit of elements of one body (raise it with --max-elements if the machine has the memory)");
   if (!mesh.by_physical.count(physical)) mesh.physical_order.push_back(physical);
   mesh.by_physical[physical].push_back({a, b});
 }
@@ -115,29 +162,43 @@ namespace {
 // A format-4 section: "blocks count min_tag max_tag", then per block a line
 // "dim entity third count" (third: parametric flag or element type) and its lines,
 // which `read_block(dim, entity, third, count)` reads.
+// `lines_each`: lines per entry of a block (nodes: a tag line and a coordinate line).
 template <class ReadBlock>
-void each_block(MshLines& lines, std::istringstream& words, const ReadBlock& read_block) {
-  long blocks = 0, count = 0, min_tag = 0, max_tag = 0;
-  read_values(lines, words, blocks, count, min_tag, max_tag);
+void each_block(MshLines& lines, std::istringstream& words, const std::string& what, long lines_each,
+                const ReadBlock& read_block) {
+  const int header = lines.line_number();
+  const long blocks = lines.read_count(words, "blocks of " + what);
+  long count = 0, min_tag = 0, max_tag = 0;
+  read_values(lines, words, count, min_tag, max_tag);
+  lines.check_count(count, what, lines_each);
+  long total = 0;
   for (long b = 0; b < blocks; ++b) {
     auto block = lines.read_words();
     int dim = 0, entity = 0, third = 0;
     long in_block = 0;
     read_values(lines, block, dim, entity, third, in_block);
+    lines.check_count(in_block, what + " in this block", lines_each);
+    total += in_block;
     read_block(dim, entity, third, in_block);
   }
+  if (total != count)
+    lines.fail_at(header, std::to_string(count) + " " + what + " announced, but its blocks hold " +
+                              std::to_string(total) + ": the counts do not match the content");
+  lines.expect_end(what);
 }
 
 // $Entities (format 4): the physical groups of each curve.
 void read_entities(MshLines& lines, RawMesh& mesh) {
   auto words = lines.read_words();
-  long points = 0, curves = 0, surfaces = 0, volumes = 0;
-  read_values(lines, words, points, curves, surfaces, volumes);
+  const long points = lines.read_count(words, "points"), curves = lines.read_count(words, "curves");
+  const long surfaces = lines.read_count(words, "surfaces"), volumes = lines.read_count(words, "volumes");
+  lines.check_count(points + curves + surfaces + volumes, "entities");
   lines.each_line(points, [](std::istringstream&) {});
   lines.each_line(curves, [&](std::istringstream& entry) {
     int tag = 0, physicals = 0;
     double box[6];
     read_values(lines, entry, tag, box[0], box[1], box[2], box[3], box[4], box[5], physicals);
+    if (physicals < 0) lines.fail("the number of physical groups of curve " + std::to_string(tag) + " is negative");
     for (int p = 0; p < physicals; ++p) {
       int physical = 0;
       read_values(lines, entry, physical);
@@ -149,18 +210,18 @@ void read_entities(MshLines& lines, RawMesh& mesh) {
 void read_nodes(MshLines& lines, double version, RawMesh& mesh) {
   auto words = lines.read_words();
   if (version < 4.0) {  // count, then "tag x y z" per line
-    long count = 0;
-    read_values(lines, words, count);
+    const long count = lines.read_count(words, "nodes");
     lines.each_line(count, [&](std::istringstream& entry) {
       long tag = 0;
       double x = 0, y = 0, z = 0;
       read_values(lines, entry, tag, x, y, z);
       mesh.nodes.emplace_back(tag, Vec2(x, y));
     });
+    lines.expect_end("nodes");
     return;
   }
   // Format 4: blocks of tags, then their coordinates.
-  each_block(lines, words, [&](int, int, int, long in_block) {
+  each_block(lines, words, "nodes", 2, [&](int, int, int, long in_block) {
     std::vector<long> tags;
     lines.each_line(in_block, [&](std::istringstream& entry) {
       read_values(lines, entry, tags.emplace_back());
@@ -184,24 +245,30 @@ std::array<long, 2> line_ends(MshLines& lines, std::istringstream& entry, int co
 void read_elements(MshLines& lines, double version, RawMesh& mesh) {
   auto words = lines.read_words();
   if (version < 4.0) {  // "tag type ntags tags... nodes..." per line, physical tag first
-    long count = 0;
-    read_values(lines, words, count);
+    const long count = lines.read_count(words, "elements");
     lines.each_line(count, [&](std::istringstream& entry) {
-      long tag = 0;
+      long tag = 0, physical = 0;
       int type = 0, tags = 0;
       read_values(lines, entry, tag, type, tags);
-      std::vector<long> values(tags);
-      for (auto& v : values) read_values(lines, entry, v);
+      if (tags < 0) lines.fail("the number of tags of element " + std::to_string(tag) + " is negative");
+      for (int k = 0; k < tags; ++k) {  // as many as the line holds: a huge count fails here
+        long value = 0;
+        if (!(entry >> value))
+          lines.fail("element " + std::to_string(tag) + " announces " + std::to_string(tags) +
+                     " tags, more than its line holds: the counts do not match the content");
+        if (k == 0) physical = value;
+      }
       const int n = line_nodes(type);
       if (n == 0) return;
       const auto ends = line_ends(lines, entry, n);
       if (tags < 1) lines.fail("a line element without a physical tag: give every boundary curve a physical name");
-      add_element(mesh, static_cast<int>(values[0]), ends[0], ends[1]);
+      add_element(lines, mesh, static_cast<int>(physical), ends[0], ends[1]);
     });
+    lines.expect_end("elements");
     return;
   }
   // Format 4: blocks per entity; a curve's physical groups come from $Entities.
-  each_block(lines, words, [&](int dim, int entity, int type, long in_block) {
+  each_block(lines, words, "elements", 1, [&](int dim, int entity, int type, long in_block) {
     const int n = dim == 1 ? line_nodes(type) : 0;
     if (element_node_count(type) < 0) lines.fail("unknown element type " + std::to_string(type));
     lines.each_line(in_block, [&](std::istringstream& entry) {
@@ -213,16 +280,17 @@ void read_elements(MshLines& lines, double version, RawMesh& mesh) {
       if (physicals == mesh.curve_physicals.end() || physicals->second.empty())
         lines.fail("curve " + std::to_string(entity) +
                    " has no physical group: give every boundary curve a physical name");
-      for (const int physical : physicals->second) add_element(mesh, physical, ends[0], ends[1]);
+      for (const int physical : physicals->second) add_element(lines, mesh, physical, ends[0], ends[1]);
     });
   });
 }
 
 }  // namespace
 
-GmshCurves parse_msh(std::string_view text, const std::string& file) {
+GmshCurves parse_msh(std::string_view text, const std::string& file, std::int64_t max_elements) {
   MshLines lines(text, file);
   RawMesh mesh;
+  mesh.max_elements = max_elements;
   double version = 0.0;
   while (!lines.done()) {
     const std::string header = lines.read();
@@ -239,8 +307,7 @@ GmshCurves parse_msh(std::string_view text, const std::string& file) {
         lines.fail("mesh format " + std::to_string(version) + " is not read; use 2.2 or 4.1");
     } else if (header == "$PhysicalNames") {
       auto words = lines.read_words();
-      long count = 0;
-      read_values(lines, words, count);
+      const long count = lines.read_count(words, "physical names");
       for (long k = 0; k < count; ++k) {
         const std::string& line = lines.read();
         std::istringstream entry(line);
@@ -248,6 +315,7 @@ GmshCurves parse_msh(std::string_view text, const std::string& file) {
         read_values(lines, entry, dim, tag);
         if (dim == 1) mesh.physical_names[tag] = quoted_name(line);
       }
+      lines.expect_end("physical names");
     } else if (header == "$Entities" && version >= 4.0) {
       read_entities(lines, mesh);
     } else if (header == "$Nodes") {
@@ -523,6 +591,70 @@ GmshBoundary boundary_from_curves(const GmshCurves& curves, bool axisymmetric, c
   return out;
 }
 
+// The names declared by DefineConstant[...] blocks: identifiers followed by '=' directly
+// inside the brackets (not inside the braces of an option list).
+std::set<std::string> geo_constants(std::string_view text) {
+  std::set<std::string> names;
+  const auto name_char = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+  std::size_t i = 0;
+  // Past comments and strings, so that neither hides nor fakes a declaration.
+  const auto skip_space = [&] {
+    for (;;) {
+      while (i < text.size() && std::isspace(static_cast<unsigned char>(text[i]))) ++i;
+      if (text.compare(i, 2, "//") == 0) {
+        i = std::min(text.find('\n', i), text.size());
+      } else if (text.compare(i, 2, "/*") == 0) {
+        const auto end = text.find("*/", i + 2);
+        i = end == std::string_view::npos ? text.size() : end + 2;
+      } else if (i < text.size() && text[i] == '"') {
+        for (++i; i < text.size() && text[i] != '"'; ++i)
+          if (text[i] == '\\') ++i;
+        ++i;
+      } else {
+        return;
+      }
+    }
+  };
+  const auto read_name = [&] {
+    const std::size_t start = i;
+    while (i < text.size() && name_char(text[i])) ++i;
+    return std::string(text.substr(start, i - start));
+  };
+  while (i < text.size()) {
+    skip_space();
+    if (i >= text.size()) break;
+    if (!name_char(text[i])) {
+      ++i;
+      continue;
+    }
+    if (read_name() != "DefineConstant") continue;
+    skip_space();
+    if (i >= text.size() || text[i] != '[') continue;
+    ++i;
+    int brackets = 1, braces = 0;
+    while (i < text.size() && brackets > 0) {
+      skip_space();
+      if (i >= text.size()) break;
+      const char c = text[i];
+      if (name_char(c)) {
+        const std::string name = read_name();
+        skip_space();
+        if (brackets == 1 && braces == 0 && i < text.size() && text[i] == '=' && !std::isdigit(static_cast<unsigned char>(name[0])))
+          names.insert(name);
+        continue;
+      }
+      brackets += c == '[' ? 1 : c == ']' ? -1 : 0;
+      braces += c == '{' ? 1 : c == '}' ? -1 : 0;
+      ++i;
+    }
+  }
+  return names;
+}
+
+double gmsh_meshing_bytes(const ResourceLimits& limits) {
+  return std::min(limits.memory_limit_bytes(), 64e6 + 1e3 * static_cast<double>(limits.max_elements));
+}
+
 #ifdef BEMCONTACT_WITH_GMSH
 namespace {
 
@@ -577,6 +709,111 @@ std::string gmsh_error(const GmshApi& api, const std::string& fallback) {
   return out;
 }
 
+// Gmsh's command line: one thread, and the numbers as -setnumber NAME VALUE.
+std::vector<std::string> gmsh_arguments(const GmshOptions& options) {
+  std::vector<std::string> arguments{"bemcontact", "-nt", "1"};
+  for (const auto& [name, value] : options.numbers) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.17g", value);
+    arguments.insert(arguments.end(), {"-setnumber", name, text});
+  }
+  return arguments;
+}
+
+// In the child process: mesh `file` in 1D and write the mesh to `output` (format 4.1,
+// ASCII); on failure Gmsh's message goes to `report_fd`. Returns the exit code.
+int mesh_into(const GmshApi& api, const std::filesystem::path& file, const std::filesystem::path& output,
+              std::vector<std::string> arguments, int report_fd) {
+  std::vector<char*> argv;
+  for (auto& argument : arguments) argv.push_back(argument.data());
+  argv.push_back(nullptr);
+  std::string error;
+  int ierr = 0;
+  api.initialize(static_cast<int>(arguments.size()), argv.data(), 0, &ierr);
+  if (ierr) error = gmsh_error(api, "Gmsh did not start");
+  const auto step = [&](auto call, const char* what) {
+    if (!error.empty()) return;
+    call();
+    if (ierr) error = gmsh_error(api, what);
+  };
+  step([&] { api.set_number("General.Terminal", 0, &ierr); }, "cannot set General.Terminal");
+  step([&] { api.set_number("General.NumThreads", 1, &ierr); }, "cannot set General.NumThreads");
+  step([&] { api.set_number("Mesh.MaxNumThreads1D", 1, &ierr); }, "cannot set Mesh.MaxNumThreads1D");
+  step([&] { api.set_number("Mesh.MshFileVersion", 4.1, &ierr); }, "cannot set Mesh.MshFileVersion");
+  step([&] { api.set_number("Mesh.Binary", 0, &ierr); }, "cannot set Mesh.Binary");
+  step([&] { api.open(file.c_str(), &ierr); }, "cannot open the file");
+  step([&] { api.generate(1, &ierr); }, "cannot mesh the curves");
+  step([&] { api.write(output.c_str(), &ierr); }, "cannot write the mesh");
+  if (error.empty()) return 0;
+  const ssize_t written = ::write(report_fd, error.data(), error.size());
+  (void)written;  // nothing more to do in the child if the report is lost
+  return 1;
+}
+
+// A file of a unique name for the child's mesh, removed with this object.
+struct TemporaryMesh {
+  std::filesystem::path path;
+  TemporaryMesh() {
+    std::string name = (std::filesystem::temp_directory_path() / "bemcontact-gmsh-XXXXXX.msh").string();
+    const int fd = ::mkstemps(name.data(), 4);
+    if (fd < 0) throw Error("cannot create a temporary file for Gmsh's mesh in " +
+                            std::filesystem::temp_directory_path().string() + ": " + std::strerror(errno));
+    ::close(fd);
+    path = name;
+  }
+  ~TemporaryMesh() {
+    std::error_code ignored;
+    std::filesystem::remove(path, ignored);
+  }
+  TemporaryMesh(const TemporaryMesh&) = delete;
+  TemporaryMesh& operator=(const TemporaryMesh&) = delete;
+};
+
+// Why the child did not give a mesh, as the message of an InputError.
+std::string meshing_failure(const ChildOutcome& outcome, const GmshOptions& options) {
+  const auto& limits = options.limits;
+  char seconds[32];
+  std::snprintf(seconds, sizeof seconds, "%g", limits.gmsh_timeout_seconds);
+  const std::string memory = "Gmsh stopped while meshing the file (" +
+                             (outcome.signal ? "by " + signal_text(outcome.signal) : std::string("out of memory")) +
+                             "); most likely it went past the " + format_bytes(gmsh_meshing_bytes(limits)) +
+                             " that meshing a boundary of at most " + std::to_string(limits.max_elements) +
+                             " elements may take (--max-elements, --max-memory); check the element counts "
+                             "(Transfinite Curve, point counts, progressions) and the mesh sizes";
+  switch (outcome.end) {
+    case ChildOutcome::End::timed_out:
+      return std::string("Gmsh did not finish meshing the file within ") + seconds +
+             " s (--gmsh-timeout): a loop that does not end, or a mesh far finer than the boundary needs "
+             "(a tiny mesh size)? Raise --gmsh-timeout if the file is right";
+    case ChildOutcome::End::signalled:
+      return memory;
+    case ChildOutcome::End::failed:
+      if (outcome.report.find("bad_alloc") != std::string::npos || outcome.report.empty()) return memory;
+      return "Gmsh could not mesh the file: " + outcome.report;
+    case ChildOutcome::End::finished:
+      break;
+  }
+  return "Gmsh gave no mesh";
+}
+
+// The text of the child's mesh file, refused when it is larger than a boundary within
+// the element limit can make (about 50 B per element and node: 1 kB each allowed).
+std::string read_child_mesh(const std::filesystem::path& mesh, const std::filesystem::path& file,
+                            const ResourceLimits& limits) {
+  std::error_code error;
+  const auto size = std::filesystem::file_size(mesh, error);
+  const double most = 1e6 + 1e3 * static_cast<double>(limits.max_elements);
+  if (error || static_cast<double>(size) > most)
+    throw InputError(SourceLocation{file.string(), 0, ""},
+                     "Gmsh's mesh of the file takes " + format_bytes(static_cast<double>(size)) +
+                         ", more than a boundary of at most " + std::to_string(limits.max_elements) +
+                         " elements can: check the element counts and mesh sizes, or raise --max-elements");
+  std::ifstream in(mesh, std::ios::binary);
+  std::ostringstream content;
+  content << in.rdbuf();
+  return content.str();
+}
+
 }  // namespace
 #endif
 
@@ -588,48 +825,32 @@ bool gmsh_api_available() {
 #endif
 }
 
-GmshCurves mesh_geo(const std::filesystem::path& file) {
+GmshCurves mesh_geo(const std::filesystem::path& file, const GmshOptions& options) {
 #ifdef BEMCONTACT_WITH_GMSH
-  const GmshApi& api = gmsh_library();
+  const GmshApi& api = gmsh_library();  // opened here, in this process: the child finds it loaded
   if (!api.failure.empty())
     throw InputError(SourceLocation{file.string(), 0, ""},
                      "reading a .geo file needs the Gmsh library (" + api.failure + "; apt-get install libgmsh4.8), "
                      "or mesh it with gmsh -1 " + file.filename().string() + " -format msh41 and give the .msh file");
-  // The Gmsh API holds one global model: one file at a time.
-  static std::mutex gmsh_mutex;
-  const std::lock_guard<std::mutex> lock(gmsh_mutex);
-  const auto temporary = std::filesystem::temp_directory_path() /
-                         ("bemcontact-" + std::to_string(::getpid()) + "-" + file.stem().string() + ".msh");
-  std::string error;
-  int ierr = 0;
-  char program[] = "bemcontact";
-  char* argv[] = {program, nullptr};
-  api.initialize(1, argv, 0, &ierr);
-  if (ierr) error = gmsh_error(api, "Gmsh did not start");
-  const auto step = [&](auto call, const char* what) {
-    if (!error.empty()) return;
-    call();
-    if (ierr) error = gmsh_error(api, what);
-  };
-  step([&] { api.set_number("General.Terminal", 0, &ierr); }, "cannot set General.Terminal");
-  step([&] { api.set_number("Mesh.MshFileVersion", 4.1, &ierr); }, "cannot set Mesh.MshFileVersion");
-  step([&] { api.set_number("Mesh.Binary", 0, &ierr); }, "cannot set Mesh.Binary");
-  step([&] { api.open(file.c_str(), &ierr); }, "cannot open the file");
-  step([&] { api.generate(1, &ierr); }, "cannot mesh the curves");
-  step([&] { api.write(temporary.c_str(), &ierr); }, "cannot write the mesh");
-  std::string text;
-  if (error.empty()) {
-    std::ifstream in(temporary);
-    std::ostringstream content;
-    content << in.rdbuf();
-    text = content.str();
+  // Gmsh runs in a child process: it cannot be interrupted, ends its process on
+  // std::bad_alloc in its threads, keeps global state and sets OpenMP's thread count; the
+  // child is bounded in time and memory and takes all of that with it (io/child_process.hpp).
+  const TemporaryMesh mesh;
+  const auto arguments = gmsh_arguments(options);
+  const ChildLimits limits{options.limits.gmsh_timeout_seconds, gmsh_meshing_bytes(options.limits)};
+  const ChildOutcome outcome =
+      run_in_child([&](int report_fd) { return mesh_into(api, file, mesh.path, arguments, report_fd); }, limits);
+  if (outcome.end != ChildOutcome::End::finished)
+    throw InputError(SourceLocation{file.string(), 0, ""}, meshing_failure(outcome, options));
+  const std::string text = read_child_mesh(mesh.path, file, options.limits);
+  try {
+    return parse_msh(text, file.string(), options.limits.max_elements);
+  } catch (const InputError& e) {
+    // The lines are those of Gmsh's mesh, not of the .geo file.
+    throw InputError(SourceLocation{file.string(), 0, ""}, "Gmsh's mesh of the file: " + e.detail());
   }
-  api.finalize(&ierr);
-  std::error_code ignored;
-  std::filesystem::remove(temporary, ignored);
-  if (!error.empty()) throw InputError(SourceLocation{file.string(), 0, ""}, "Gmsh could not mesh the file: " + error);
-  return parse_msh(text, file.string());
 #else
+  (void)options;
   throw InputError(SourceLocation{file.string(), 0, ""},
                    "this build of bemcontact reads .geo files only with the Gmsh library (libgmsh-dev, CMake "
                    "option BEMCONTACT_WITH_GMSH); mesh it with gmsh -1 " + file.filename().string() +
@@ -637,16 +858,25 @@ GmshCurves mesh_geo(const std::filesystem::path& file) {
 #endif
 }
 
-GmshBoundary read_gmsh_boundary(const std::filesystem::path& file, bool axisymmetric) {
+GmshBoundary read_gmsh_boundary(const std::filesystem::path& file, bool axisymmetric, const GmshOptions& options) {
   const std::string extension = file.extension().string();
   std::error_code error;
   if (!std::filesystem::is_regular_file(file, error))
     throw InputError(SourceLocation{file.string(), 0, ""},
                      std::filesystem::exists(file, error) ? "the Gmsh file is not a regular file"
                                                           : "cannot read the Gmsh file: no such file");
-  if (extension == ".geo") return boundary_from_curves(mesh_geo(file), axisymmetric, file.string());
-  if (extension == ".msh")
-    return boundary_from_curves(parse_msh(read_problem_text(file), file.string()), axisymmetric, file.string());
+  if (extension == ".geo") return boundary_from_curves(mesh_geo(file, options), axisymmetric, file.string());
+  if (extension == ".msh") {
+    // The text and its lines take about 4 times the file's size.
+    const double size = static_cast<double>(std::filesystem::file_size(file, error));
+    if (4.0 * size > options.limits.memory_limit_bytes())
+      throw InputError(SourceLocation{file.string(), 0, ""},
+                       "the .msh file takes " + format_bytes(size) + "; reading it would need about " +
+                           format_bytes(4.0 * size) + " of memory, over the limit of " +
+                           format_bytes(options.limits.memory_limit_bytes()) + " (raise it with --max-memory)");
+    return boundary_from_curves(parse_msh(read_problem_text(file), file.string(), options.limits.max_elements),
+                                axisymmetric, file.string());
+  }
   throw InputError(SourceLocation{file.string(), 0, ""}, "a Gmsh geometry is a .geo or .msh file, found '" +
                                                              file.filename().string() + "'");
 }

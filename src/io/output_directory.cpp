@@ -9,6 +9,7 @@
 #include <csignal>
 #include <iterator>
 #include <mutex>
+#include <string_view>
 #include <cerrno>
 #include <cstring>
 
@@ -164,11 +165,25 @@ void swap_into_place(const fs::path& staging, const fs::path& target) {
 
 }  // namespace
 
+namespace {
+
+bool plain_file_name(std::string_view name) {
+  return !name.empty() && name != "." && name != ".." && name.find('/') == std::string_view::npos &&
+         name != OutputDirectory::marker_name;
+}
+
+// "name" or "folder/name", both plain.
+bool output_file_name(std::string_view name) {
+  const auto slash = name.find('/');
+  if (slash == std::string_view::npos) return plain_file_name(name);
+  return plain_file_name(name.substr(0, slash)) && plain_file_name(name.substr(slash + 1));
+}
+
+}  // namespace
+
 void OutputDirectory::add(std::string name, std::string content) {
-  const fs::path path(name);
-  if (name.empty() || name == "." || name == ".." || path.has_parent_path() ||
-      name.find('/') != std::string::npos || name == marker_name)
-    throw Error("output file name '" + name + "' is not a plain file name");
+  if (!output_file_name(name))
+    throw Error("output file name '" + name + "' is not a plain file name (or folder/name)");
   for (const auto& file : files_)
     if (file.name == name) throw Error("output file '" + name + "' is added twice");
   files_.push_back(File{std::move(name), std::move(content)});
@@ -196,7 +211,14 @@ std::vector<fs::path> OutputDirectory::commit(const fs::path& directory) const {
     else if (error) throw Error("cannot create a temporary folder in " + in_quotes(parent) + ": " + error.message());
   }
   if (staging.path.empty()) throw Error("cannot create a temporary folder in " + in_quotes(parent));
-  for (const auto& file : files_) write_file(staging.path / file.name, file.content);
+  for (const auto& file : files_) {
+    const fs::path path = staging.path / file.name;
+    if (path.parent_path() != staging.path && !fs::is_directory(path.parent_path())) {
+      fs::create_directory(path.parent_path(), error);
+      if (error) throw Error("cannot create " + in_quotes(path.parent_path()) + ": " + error.message());
+    }
+    write_file(path, file.content);
+  }
   write_file(staging.path / marker_name, "written by bemcontact: this folder is replaced whole by the next run\n");
 
   swap_into_place(staging.path, target);

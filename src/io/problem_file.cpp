@@ -90,6 +90,7 @@ ProblemFile parse_problem(std::string_view text, const std::string& file_name, c
 
   problem.body = parse_body(root_table, BodyContext{&context, "", schema::file_keys(), 1});
   problem.interior_points = read_interior(root, context);
+  check_gmsh_overrides(root, context, result.parameters);
 
   read_mesh_options(root, context, problem.mesh);
   problem.operator_choice = read_operator_choice(root);

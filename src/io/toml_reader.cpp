@@ -84,8 +84,11 @@ int read_integer(const toml::node& node, const SourceLocation& where, const File
     throw InputError(where, "must be an integer (or an expression of parameters in quotes), found " +
                                 describe_node(node));
   }
-  if (value != std::floor(value) || std::fabs(value) > std::numeric_limits<int>::max())
+  if (std::fabs(value) > std::numeric_limits<int>::max())
     throw InputError(where, "must be an integer, found " + format_number(value));
+  if (value != std::floor(value))
+    throw InputError(where, "must be an integer, found " + format_number(value) +
+                                (node.is_string() ? " (round the expression: round(...), floor(...) or ceil(...))" : ""));
   return static_cast<int>(value);
 }
 
@@ -185,6 +188,39 @@ std::optional<std::string> TableReader::optional_string(std::string_view key) co
   if (!node) return std::nullopt;
   if (const auto value = node->value_exact<std::string>()) return *value;
   fail(key, "must be a string in quotes, found " + describe_node(*node));
+}
+
+std::optional<std::string> TableReader::optional_name(std::string_view key) const {
+  auto name = optional_string(key);
+  if (name)
+    if (const std::string problem = name_problem(*name); !problem.empty()) fail(key, problem);
+  return name;
+}
+
+namespace {
+
+// Characters of UTF-8 text: every byte but the continuation bytes 10xxxxxx.
+std::size_t utf8_length(std::string_view text) {
+  return static_cast<std::size_t>(
+      std::count_if(text.begin(), text.end(), [](char c) { return (static_cast<unsigned char>(c) & 0xC0) != 0x80; }));
+}
+
+}  // namespace
+
+std::string name_problem(std::string_view name) {
+  if (name.empty()) return "the name must not be empty";
+  const std::size_t length = utf8_length(name);
+  if (length > max_name_characters) {
+    std::string start(name.substr(0, 40));
+    while (!start.empty() && (static_cast<unsigned char>(start.back()) & 0xC0) == 0x80) start.pop_back();
+    return "the name '" + start + "...' is " + std::to_string(length) + " characters long, over the limit of " +
+           std::to_string(max_name_characters) + " (names become parts of output file names)";
+  }
+  for (const char c : name)
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7F)
+      return "the name holds a control character (code " + std::to_string(static_cast<unsigned char>(c)) +
+             "); names are printed in messages and written to CSV files and file names";
+  return {};
 }
 
 std::string TableReader::choice(std::string_view key, const std::vector<std::string>& choices,

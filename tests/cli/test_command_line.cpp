@@ -13,6 +13,8 @@
 #include <sstream>
 #include <unistd.h>
 
+#include "bemcontact/io/gmsh_geometry.hpp"
+
 namespace fs = std::filesystem;
 
 namespace {
@@ -139,6 +141,9 @@ TEST(CommandLine, GeometryErrorsNameTheBoundary) {
   const auto out = run("run " + (dir / "open.toml").string());
   EXPECT_EQ(out.exit_code, 2) << out.output;
   EXPECT_NE(out.output.find("open contour"), std::string::npos) << out.output;
+  // Placed at the boundary: "geometry error: FILE:LINE: key 'boundary[k]': ...".
+  EXPECT_NE(out.output.find("geometry error: " + (dir / "open.toml").string() + ":"), std::string::npos) << out.output;
+  EXPECT_NE(out.output.find(": key 'boundary["), std::string::npos) << out.output;
   fs::remove_all(dir);
 }
 
@@ -393,4 +398,24 @@ TEST(CommandLine, DisplacementsBeyondSmallStrainsAreAWarning) {
   EXPECT_NE(out.output.find("linear elasticity assumes small strains"), std::string::npos) << out.output;
   const auto plain = run("run " + example("plate_tension.toml") + " -o " + (dir / "plain").string());
   EXPECT_EQ(plain.output.find("small strains"), std::string::npos) << plain.output;
+}
+
+// Gmsh meshes in a child process: the run keeps its --threads, and a .geo that does not end
+// stops at --gmsh-timeout naming the file.
+TEST(CommandLine, GeoRunsKeepTheirThreadsAndStopAtTheTimeout) {
+  if (!bemcontact::io::gmsh_api_available()) GTEST_SKIP() << "built without the Gmsh library (.geo files refused)";
+  const auto dir = scratch("geo");
+  const auto out = run("--threads 2 run " + example("gmsh_plate_hole.toml") + " -q -o " + (dir / "out").string());
+  ASSERT_EQ(out.exit_code, 0) << out.output;
+  std::ifstream in(dir / "out" / "summary.json");
+  EXPECT_EQ(nlohmann::json::parse(in).at("options").at("threads"), 2);
+  write(dir / "endless.geo", "Point(1) = {0, 0, 0};\nFor i In {1:1e15}\nEndFor\n");
+  write(dir / "endless.toml", "analysis = \"plane_stress\"\ngeometry = \"endless.geo\"\n[material]\nE = 1.0\nnu = 0.3\n");
+  const auto stopped = run("run " + (dir / "endless.toml").string() + " --gmsh-timeout 0.2 -o " + (dir / "out2").string());
+  EXPECT_EQ(stopped.exit_code, 2) << stopped.output;
+  EXPECT_NE(stopped.output.find("endless.toml:2: key 'geometry': " + (dir / "endless.geo").string() +
+                                ": Gmsh did not finish meshing the file within 0.2 s (--gmsh-timeout)"),
+            std::string::npos)
+      << stopped.output;
+  fs::remove_all(dir);
 }

@@ -308,4 +308,47 @@ TEST(ContactErrors, ALoadPullingTheContactOpenIsNamed) {
   EXPECT_TRUE(contains(message, "reverse its sign")) << message;
 }
 
+// Names become parts of output file names: long ones, control characters and names whose
+// files would coincide are refused where they are written.
+TEST(ContactErrors, NamesThatCannotBeFileNames) {
+  const std::string long_name(3000, 'b');
+  const auto long_body = input_error(replaced(replaced(example_text(), "name = \"ball\"", "name = \"" + long_name + "\""),
+                                              "body = \"ball\"", "body = \"" + long_name + "\""));
+  EXPECT_TRUE(contains(long_body, "ball.toml:31: key 'body[1].name'")) << long_body;
+  EXPECT_TRUE(contains(long_body, "3000 characters long, over the limit of 100")) << long_body;
+  EXPECT_LT(long_body.size(), 300u);  // the name is cut in the message
+  const auto long_boundary = input_error(replaced(example_text(), "name = \"arc\"", "name = \"" + std::string(101, 'a') + "\""));
+  EXPECT_TRUE(contains(long_boundary, "key 'body[1].boundary[2].name'")) << long_boundary;
+  EXPECT_TRUE(contains(long_boundary, "101 characters long")) << long_boundary;
+  const auto tab = input_error(replaced(example_text(), "name = \"arc\"", "name = \"a\\tc\""));
+  EXPECT_TRUE(contains(tab, "a control character (code 9)")) << tab;
+  // 100 characters of two bytes each are 100 characters.
+  std::string accented;
+  for (int k = 0; k < 100; ++k) accented += "\xc3\xa9";
+  EXPECT_EQ(input_error(replaced(example_text(), "name = \"arc\"", "name = \"" + accented + "\"")), "no error");
+}
+
+TEST(ContactErrors, NamesWhoseFilesWouldCoincide) {
+  // "ball" and "support" renamed "sup port" and "sup_port": one sup_port_boundary.csv.
+  std::string text = replaced(replaced(example_text(), "name = \"ball\"", "name = \"sup port\""), "body = \"ball\"",
+                              "body = \"sup port\"");
+  text = replaced(text, "name = \"support\"", "name = \"sup_port\"");
+  const auto bodies = input_error(text);
+  EXPECT_TRUE(contains(bodies, "key 'body[2].name'")) << bodies;
+  EXPECT_TRUE(contains(bodies, "the output file 'sup_port_boundary.csv' of body 'sup_port' would also be that of body "
+                               "'sup port' (line 31)")) << bodies;
+  // A contact named after a body's file, or after the run's own motions.csv.
+  const auto named = [&](const std::string& name) {
+    std::string multi = replaced(example_text(), "[contact]\n", "[[contact]]\nname = \"" + name +
+                                                                  "\"\nbody1 = \"ball\"\nbody2 = \"support\"\n");
+    multi = replaced(multi, "increments = 1\n", "");
+    return input_error(replaced(multi, "[contact.load]", "[solver]\nincrements = 1\n[load]"));
+  };
+  EXPECT_EQ(named("ball contact"), "no error");
+  const auto contact = named("ball boundary");
+  EXPECT_TRUE(contains(contact, "of contact 'ball boundary' would also be that of body 'ball'")) << contact;
+  const auto motions = named("motions");
+  EXPECT_TRUE(contains(motions, "would also be that of the run's own motions.csv")) << motions;
+}
+
 }  // namespace bemcontact

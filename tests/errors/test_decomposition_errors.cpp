@@ -145,5 +145,17 @@ TEST(DdErrors, DuplicateSubdomainName) {
   expect_contains(message, {"dup.toml:", "subdomain[2].name", "already used"});
 }
 
+TEST(DdErrors, SubdomainNamesThatGiveOneFileNameOrAreTooLong) {
+  std::string text = two_squares();
+  text.replace(text.find("name = \"lower\""), 14, "name = \"a b\"");
+  text.replace(text.find("name = \"upper\""), 14, "name = \"a_b\"");
+  expect_contains(message_of<InputError>([&] { parse_decomposition(text, "same.toml"); }),
+                  {"same.toml:", "subdomain[2].name", "subdomain 'a_b' and the subdomain at line", "files of one name"});
+  text = two_squares();
+  text.replace(text.find("name = \"lower\""), 14, "name = \"" + std::string(3000, 'L') + "\"");
+  expect_contains(message_of<InputError>([&] { parse_decomposition(text, "long.toml"); }),
+                  {"long.toml:", "subdomain[1].name", "3000 characters long, over the limit of 100"});
+}
+
 }  // namespace
 }  // namespace bemcontact::io

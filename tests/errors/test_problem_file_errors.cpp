@@ -142,6 +142,10 @@ TEST(IoProblemFileErrors, WrongTypes) {
                  {"unknown name 'Q'", "column 5", "Valid names: pi, P"});
   expect_changed("elements = 4", "elements = 2.5", "elements", "boundary[1].elements",
                  {"must be an integer", "2.5"});
+  expect_changed("elements = 4", "elements = \"5/2\"", "elements", "boundary[1].elements",
+                 {"must be an integer, found 2.5", "round(...), floor(...) or ceil(...)"});
+  EXPECT_NO_THROW(parse_problem(replace(valid, "elements = 4", "elements = \"round(5/2) + ceil(0.1) + floor(0.9)\""),
+                                "case.toml"));
   expect_changed("elements = 4", "elements = [4]", "elements", "boundary[1].elements",
                  {"must be an integer", "an array"});
   expect_changed("vtk = true", "vtk = \"yes\"", "vtk", "output.vtk", {"true or false"});

@@ -238,3 +238,27 @@ def test_gmsh_geometry_gives_the_problem_drawn_by_hand(examples):
     edge = drawn.boundary()
     at_a = np.argmin(np.hypot(edge["x"] - 1.0, edge["y"]))
     assert edge["s22"][at_a] == pytest.approx(3 * P, rel=0.02)
+
+
+@pytest.mark.skipif(not bc._core.reads_geo_files, reason="built without the Gmsh library")
+def test_geo_numbers_threads_and_timeout(tmp_path):
+    # A keyword for no parameter of the file goes to the .geo's DefineConstant; the run keeps
+    # its threads; a .geo that does not end stops at gmsh_timeout.
+    (tmp_path / "strip.geo").write_text(
+        "DefineConstant[ W = 2 ];\nPoint(1) = {0, 0, 0};\nPoint(2) = {W, 0, 0};\nPoint(3) = {W, 1, 0};\n"
+        "Point(4) = {0, 1, 0};\nLine(1) = {1, 2};\nLine(2) = {2, 3};\nLine(3) = {3, 4};\nLine(4) = {4, 1};\n"
+        "Physical Curve(\"bottom\") = {1};\nPhysical Curve(\"right\") = {2};\nPhysical Curve(\"top\") = {3};\n"
+        "Physical Curve(\"left\") = {4};\n")
+    problem = bc.Problem.from_dict({"analysis": "plane_stress", "geometry": "strip.geo",
+                                    "material": {"E": 1.0, "nu": 0.3},
+                                    "boundary": [{"name": "left", "u1": 0.0, "u2": 0.0},
+                                                 {"name": "right", "t1": 1.0}]},
+                                   name=str(tmp_path / "strip.toml"))
+    result = problem.run(threads=2, W=3.0)
+    assert result.boundary()["x"].max() == pytest.approx(3.0)
+    assert result.summary["options"]["threads"] == 2 and result.summary["parameters"]["W"] == 3.0
+    (tmp_path / "endless.geo").write_text("Point(1) = {0, 0, 0};\nFor i In {1:1e15}\nEndFor\n")
+    endless = bc.Problem('analysis = "plane_stress"\ngeometry = "endless.geo"\n[material]\nE = 1.0\nnu = 0.3\n',
+                         str(tmp_path / "endless.toml"))
+    with pytest.raises(bc.InputError, match="did not finish meshing the file within 0.3 s"):
+        endless.mesh(gmsh_timeout=0.3)

@@ -100,6 +100,10 @@ def test_contact_pairs_dataset_and_time_series(examples, tmp_path):
     codes = point_array(data, "status").astype(int)
     assert [status_names[c] for c in codes] == list(pairs["status"])
     steps = result.contact_steps(name)
+    # Every recorded step's files are in steps/, the time series at the top.
+    per_step = [f for f in result.names() if "_step" in f and not f.endswith("_steps.csv")]
+    assert per_step and all(f.startswith("steps/") for f in per_step)
+    assert sorted(p.name for p in (out / "steps").iterdir()) == sorted(f[len("steps/"):] for f in per_step)
     series = [f for f in result.names() if f.endswith(".pvd")]
     assert f"{name}.pvd" in series and len(series) == 3  # the pairs and the two bodies' boundaries
     for pvd in series:

@@ -164,6 +164,7 @@ struct ContactProblem {
   int max_state_changes = 2;
   int max_steps = 4096;
   bool record_steps = false;
+  SourceLocation record_steps_where;  // its key in the problem file, for the memory check
   std::vector<ForceLoad> forces;
   SolverOptions solver;
 

@@ -6,6 +6,7 @@
 // Internal invariants use BEMCONTACT_ASSERT, active in debug builds only.
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace bemcontact {
 
@@ -26,13 +27,27 @@ class InputError : public Error {
  public:
   InputError(const SourceLocation& where, const std::string& message);
   const SourceLocation& where() const { return where_; }
+  const std::string& detail() const { return detail_; }  // the message without the place
  private:
   SourceLocation where_;
+  std::string detail_;
 };
 
+// Names the boundaries it is about and, when they come from a file, their places: the
+// first place starts the message as in InputError ("file:line: key 'k': ..."); the others
+// are in the message, next to their names.
 class GeometryError : public Error {
  public:
-  using Error::Error;
+  explicit GeometryError(const std::string& message);
+  GeometryError(std::vector<SourceLocation> where, const std::string& message);
+  const std::vector<SourceLocation>& where() const { return where_; }
+  const std::string& detail() const { return detail_; }  // the message without the place
+  // The same error with `context` ("body 'b'") before its message, the places kept.
+  GeometryError in_context(const std::string& context) const;
+
+ private:
+  std::vector<SourceLocation> where_;  // only places with a file or a line
+  std::string detail_;
 };
 
 class SolverError : public Error {

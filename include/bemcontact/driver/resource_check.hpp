@@ -23,6 +23,10 @@ struct ResourceEstimate {
   int threads = 1;
   bool compressed = false;    // some body on hierarchical matrices (bem::use_compressed_operator)
   bool could_compress = false;  // some dense plane body that operator = "compressed" would take
+  // Contact runs with record_steps: the steps' pairs and boundary fields, kept and written
+  // (included in `bytes`), for at most `recorded_steps` steps.
+  double recording_bytes = 0.0;
+  std::int64_t recorded_steps = 0;
 };
 
 // One line for the terminal: "estimate: ... unknowns, about ... of memory and ... ".

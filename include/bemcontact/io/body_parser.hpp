@@ -3,6 +3,7 @@
 // [[constraint]]. Kept apart from the file-level keys so that a file may later hold
 // several bodies ([[body]] tables, each read by parse_body); for now the root table is
 // the one body.
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -37,8 +38,14 @@ PrescribedValue read_prescribed_value(const toml::node& node, const SourceLocati
 // axisymmetry), row by row with x fastest; the counts are checked against the limits.
 std::vector<bem::InteriorPoint> read_interior_grid(const TableReader& grid, const FileContext& context);
 
-// The [parameters] table, in file order: each may use the ones written before it.
+// The [parameters] table, in file order: each may use the ones written before it. A
+// --set value for no parameter of the file is kept for the .geo files (FileContext).
 void read_parameters(const TableReader& root, FileContext& context);
+
+// Once every body is read: a --set value that neither a parameter of the file nor a .geo
+// file of it takes is refused; those a .geo took join `parameters` (the echo).
+void check_gmsh_overrides(const TableReader& root, const FileContext& context,
+                          std::map<std::string, double>& parameters);
 
 // The settings every problem file starts with: analysis (required), title (default: the
 // file name without extension), interpolation (default linear), then [parameters].

@@ -16,10 +16,12 @@
 //                      (c: the stick zone's half-width, contact_summary.hpp)
 //   motions.csv        one row per load step (when the problem has motions): step,time, then
 //                      the columns of motion_columns
-//   contact_step<k>.csv  the pairs at step k (when record_steps)
-//   <body>_boundary_step<k>.csv (when record_steps): every step's boundary fields
-//   <body>_boundary.pvd, <body>_boundary_step<k>.vtp (when record_steps and vtk): every
-//                      step's boundary fields (u, t, stresses) as a ParaView time series
+//   steps/contact_step<k>.csv  the pairs at step k (when record_steps; every per-step file
+//                      is in the sub-folder steps/)
+//   steps/<body>_boundary_step<k>.csv (when record_steps): every step's boundary fields
+//   <body>_boundary.pvd, steps/<body>_boundary_step<k>.vtp (when record_steps and vtk):
+//                      every step's boundary fields (u, t, stresses) as a ParaView time
+//                      series (the .pvd names its files by their path, steps/...)
 //   <body>_boundary.csv, <body>_interior.csv (+ .vtk): each elastic body's fields (each
 //                      region's, named after it, in a body of several regions) (formats of
 //                      io/results_writer.hpp), for stresses and von Mises iso-contours.
@@ -36,6 +38,13 @@
 #include "bemcontact/contact/pairing.hpp"
 
 namespace bemcontact::io {
+
+// The files named after a contact and after an elastic region (the name with every
+// character but letters and digits written as '_'), per-step files aside, for the reader
+// to refuse names whose files would coincide; and the run's own files.
+std::vector<std::string> contact_file_names(const std::string& contact);
+std::vector<std::string> region_file_names(const std::string& region);
+std::vector<std::string> model_file_names();
 
 std::string contact_csv(const std::vector<contact::PairResult>& pairs);
 // The same pairs as VTK vertices (<contact>.vtk): point data p_n, p_t, gap, slip_ratio,

@@ -21,13 +21,13 @@ namespace bemcontact::io {
 class OutputDirectory {
  public:
   struct File {
-    std::string name;  // plain file name, e.g. "boundary.csv"
+    std::string name;  // plain file name, e.g. "boundary.csv", or one in a sub-folder: "steps/contact_step1.csv"
     std::string content;
   };
   // The marker written into every committed folder.
   static constexpr const char* marker_name = ".bemcontact-output";
 
-  // Throws Error for a name that is not a plain file name or is already added.
+  // Throws Error for a name that is not a plain file name (or folder/name) or is already added.
   void add(std::string name, std::string content);
   const std::vector<File>& files() const { return files_; }
   bool empty() const { return files_.empty(); }

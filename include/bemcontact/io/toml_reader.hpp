@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <map>
 #include <optional>
+#include <set>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -24,6 +25,10 @@ struct FileContext {
   AnalysisType analysis = AnalysisType::plane_strain;
   std::map<std::string, double> parameters;
   ParameterOverrides overrides;
+  // --set values the file has no [parameters] entry for: they go to the .geo files that
+  // declare them (DefineConstant), and are refused when none does (check_gmsh_overrides).
+  ParameterOverrides gmsh_overrides;
+  mutable std::set<std::string> gmsh_overrides_used;
   ResourceLimits limits;
   // Documented warnings found while reading (a key whose value makes it have no effect);
   // copied into the file's result, printed on stderr and kept in summary.json.
@@ -57,6 +62,13 @@ toml::table parse_toml_text(std::string_view text, const std::string& file_name)
 // directory or unreadable.
 std::string read_problem_text(const std::filesystem::path& path);
 
+// Names (of boundaries, bodies, regions, subdomains, contacts, loads) go into messages,
+// CSV columns and output file names ("<body>_boundary.csv"): at most 100 characters (a
+// file name may hold 255 bytes), none of them a control character.
+inline constexpr std::size_t max_name_characters = 100;
+// Why `name` cannot be a name (empty, too long, a control character), or "" when it can.
+std::string name_problem(std::string_view name);
+
 class TableReader {
  public:
   TableReader(const toml::table& table, std::string path, const FileContext& context,
@@ -86,6 +98,8 @@ class TableReader {
   int integer_or(std::string_view key, int fallback) const;
   bool boolean_or(std::string_view key, bool fallback) const;
   std::optional<std::string> optional_string(std::string_view key) const;
+  // A string checked as a name (name_problem).
+  std::optional<std::string> optional_name(std::string_view key) const;
   // One of `choices`; `fallback` empty = required.
   std::string choice(std::string_view key, const std::vector<std::string>& choices,
                      std::optional<std::string> fallback) const;

@@ -43,7 +43,12 @@ TEST(ContactIo, WritersHoldEveryPairAndTheSummary) {
   const auto files = io::contact_output_files(file.problem, result, false);
   std::map<std::string, std::string> by_name(files.begin(), files.end());
   ASSERT_TRUE(by_name.count("contact.csv"));
-  ASSERT_TRUE(by_name.count("contact_step2.csv"));
+  ASSERT_TRUE(by_name.count("steps/contact_step2.csv"));  // per-step files in the sub-folder steps/
+  ASSERT_TRUE(by_name.count("steps/punch_boundary_step2.csv"));
+  for (const auto& [name, content] : by_name)
+    EXPECT_TRUE(name.find("_step") == std::string::npos || name.find("_steps.csv") != std::string::npos ||
+                name.rfind("steps/", 0) == 0)
+        << name;
   ASSERT_TRUE(by_name.count("punch_boundary.csv"));
   ASSERT_TRUE(by_name.count("support_boundary.csv"));
   const std::string& csv = by_name["contact.csv"];

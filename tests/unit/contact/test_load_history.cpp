@@ -195,7 +195,8 @@ TEST(LoadHistory, RecordedStepsAreAParaViewTimeSeries) {
   for (std::size_t at = pvd.find("<DataSet"); at != std::string::npos; at = pvd.find("<DataSet", at + 1)) ++datasets;
   EXPECT_EQ(datasets, 4u);
   EXPECT_NE(pvd.find("timestep=\"0.5\""), std::string::npos);
-  const std::string& step = files.at("block_boundary_step4.vtp");
+  EXPECT_NE(pvd.find("file=\"steps/cylinder_boundary_step4.vtp\""), std::string::npos);  // the step files' folder
+  const std::string& step = files.at("steps/block_boundary_step4.vtp");
   EXPECT_NE(step.find("NumberOfPoints=\"" + std::to_string(result.meshes[1].node_count()) + "\""), std::string::npos);
   EXPECT_NE(step.find("Name=\"s11\""), std::string::npos);
   // The last step is the final state.

@@ -2,12 +2,14 @@
 // and its time model follows the documented constants.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "bemcontact/bem/analysis.hpp"
 #include "bemcontact/core/error.hpp"
 #include "bemcontact/dd/plate_strips.hpp"
 #include "bemcontact/driver/resource_check.hpp"
+#include "bemcontact/driver/run.hpp"
 #include "bemcontact/io/problem_file.hpp"
 #include "support/example_text.hpp"
 
@@ -97,6 +99,40 @@ TEST(ResourceEstimate, LargeSubdomainsAreCompressedAndTheRefusalNamesTheOption) 
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("operator = \"compressed\""), std::string::npos) << e.what();
   }
+}
+
+// Recording every load step keeps every step's pairs and boundary fields and writes them:
+// the estimate covers the files written, and a history too long for the memory limit is
+// refused before solving, at the record_steps key.
+TEST(ResourceEstimate, RecordedStepsAreCountedAndWrittenIntoSteps) {
+  const std::string text = test_support::replaced(test_support::example_text("contact_punch_halfplane.toml"),
+                                                  "kind = \"unilateral\"",
+                                                  "kind = \"unilateral\"\nincrements = 3\nrecord_steps = true");
+  RunOptions options;
+  const RunOutput output = run_problem(text, "punch.toml", options);
+  double step_files = 0.0;
+  for (const auto& file : output.files.files())
+    if (file.name.rfind("steps/", 0) == 0) step_files += static_cast<double>(file.content.size());
+  EXPECT_GT(step_files, 0.0);
+  const double estimated = output.estimate.at("recorded_steps_bytes").get<double>();
+  EXPECT_GE(estimated, step_files);        // the text of the files, at least
+  EXPECT_LT(estimated, 3.0 * step_files);  // and of their order
+  const std::string long_history = test_support::replaced(text, "increments = 3", "increments = 20000");
+  options.limits.max_memory_bytes = 1e9;
+  try {
+    run_problem(long_history, "punch.toml", options);
+    ADD_FAILURE() << "20 000 recorded steps fit in 1 GB?";
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    const auto at = long_history.find("record_steps");
+    const int line = 1 + static_cast<int>(std::count(long_history.begin(), long_history.begin() + static_cast<long>(at), '\n'));
+    EXPECT_EQ(message.rfind("punch.toml:" + std::to_string(line) + ": key 'contact.record_steps'", 0), 0u) << message;
+    EXPECT_NE(message.find("for up to 20001 steps"), std::string::npos) << message;
+    EXPECT_NE(message.find("over the limit of 1 GB"), std::string::npos) << message;
+    EXPECT_NE(message.find("--max-memory"), std::string::npos) << message;
+  }
+  // Meshing records nothing: the same file meshes.
+  EXPECT_NO_THROW(mesh_problem(long_history, "punch.toml", options));
 }
 
 }  // namespace

@@ -77,7 +77,8 @@ TEST(IoExpression, FunctionsMatchTheCLibrary) {
       {"atan(x)", std::atan(a)},       {"exp(x)", std::exp(a)},          {"log(x)", std::log(a)},
       {"abs(y)", std::fabs(b)},        {"atan2(y, x)", std::atan2(b, a)}, {"pow(x, y)", std::pow(a, b)},
       {"min(x, y)", b},                {"max(x, y)", a},                 {"min(3, x, 2, y)", b},
-      {"max(y, 1, x)", 1.0},           {"x^y", std::pow(a, b)},
+      {"max(y, 1, x)", 1.0},           {"x^y", std::pow(a, b)},          {"round(y)", std::round(b)},
+      {"floor(y)", std::floor(b)},     {"ceil(y)", std::ceil(b)},        {"round(x)", 0.0},
   };
   for (const auto& c : cases) {
     EXPECT_EQ(eval(c.text, a, b), c.expected) << c.text;
@@ -247,8 +248,22 @@ TEST(IoExpression, NumbersFormatToRoundTrip) {
   EXPECT_EQ(format_number(1e16), "1e+16");
 }
 
+// Element counts from lengths: round half away from zero, floor and ceil toward -inf, +inf.
+TEST(IoExpression, RoundFloorCeilGiveCounts) {
+  ExpressionScope scope;
+  scope.parameters = {{"Lh", 10.0}, {"h", 0.8}};
+  EXPECT_EQ(Expression::parse("round(Lh/h)", scope, where).value(), 13.0);  // 12.5
+  EXPECT_EQ(Expression::parse("floor(Lh/h)", scope, where).value(), 12.0);
+  EXPECT_EQ(Expression::parse("ceil(Lh/h)", scope, where).value(), 13.0);
+  EXPECT_EQ(eval("round(-2.5)"), -3.0);
+  EXPECT_EQ(eval("floor(-0.5)"), -1.0);
+  EXPECT_EQ(eval("ceil(-0.5)"), 0.0);
+  EXPECT_EQ(eval("ceil(x)", 2.0000001), 3.0);  // a field, evaluated per point
+  EXPECT_NE(error_of("round(1, 2)").find("round"), std::string::npos);
+}
+
 TEST(IoExpression, ReservedNamesAndIdentifiers) {
-  for (const char* name : {"x", "y", "r", "z", "pi", "sin", "atan2", "max"}) EXPECT_TRUE(is_reserved_name(name)) << name;
+  for (const char* name : {"x", "y", "r", "z", "pi", "sin", "atan2", "max", "round", "floor", "ceil"}) EXPECT_TRUE(is_reserved_name(name)) << name;
   for (const char* name : {"P", "L", "sigma_0", "xx"}) EXPECT_FALSE(is_reserved_name(name)) << name;
   EXPECT_TRUE(is_identifier("_a1"));
   EXPECT_FALSE(is_identifier("1a"));

@@ -1,5 +1,8 @@
 #include <gtest/gtest.h>
 
+#include <omp.h>
+#include <unistd.h>
+
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -196,7 +199,7 @@ TEST(GmshGeometry, ProblemFileTakesConditionsByCurveName) {
     FAIL() << "no error";
   } catch (const InputError& e) {
     const std::string message = e.what();
-    EXPECT_NE(message.find("no physical curve named 'CE'"), std::string::npos) << message;
+    EXPECT_NE(message.find("no physical curve named 'CE'. Did you mean 'CD'?"), std::string::npos) << message;
     EXPECT_NE(message.find("'AB', 'BC', 'CD', 'DE', 'hole'"), std::string::npos) << message;
   }
   try {
@@ -220,6 +223,168 @@ TEST(GmshGeometry, ProblemFileTakesConditionsByCurveName) {
   for (std::size_t k = 0; k < pieces.size(); ++k) {
     EXPECT_NEAR((from_msh.problem.body.pieces[k].start - pieces[k].start).norm(), 0.0, 1e-12);
     EXPECT_EQ(from_msh.problem.body.pieces[k].elements, pieces[k].elements);
+  }
+}
+
+namespace {
+
+std::string msh_error(const std::string& text, std::int64_t max_elements = 1000000) {
+  try {
+    parse_msh(text, "case.msh", max_elements);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+std::string with(std::string text, const std::string& from, const std::string& to) {
+  text.replace(text.find(from), from.size(), to);
+  return text;
+}
+
+// A .geo file written into the temporary folder, removed with this object.
+struct GeoFile {
+  std::filesystem::path path;
+  explicit GeoFile(const std::string& text, const std::string& name = "bemcontact_test_geo.geo")
+      : path(std::filesystem::temp_directory_path() / (std::to_string(::getpid()) + "_" + name)) {
+    std::ofstream(path) << text;
+  }
+  ~GeoFile() { std::filesystem::remove(path); }
+};
+
+// A W x 1 rectangle whose width is a DefineConstant; `extra` goes before the names.
+std::string rectangle_geo(const std::string& extra = "") {
+  return "DefineConstant[ W = 2.0 ];\nPoint(1) = {0, 0, 0};\nPoint(2) = {W, 0, 0};\nPoint(3) = {W, 1, 0};\n"
+         "Point(4) = {0, 1, 0};\nLine(1) = {1, 2};\nLine(2) = {2, 3};\nLine(3) = {3, 4};\nLine(4) = {4, 1};\n" +
+         extra + "Physical Curve(\"bottom\") = {1};\nPhysical Curve(\"right\") = {2};\n"
+         "Physical Curve(\"top\") = {3};\nPhysical Curve(\"left\") = {4};\n";
+}
+
+}  // namespace
+
+// Counts that are negative, larger than their section or different from its lines are
+// refused at their line, before anything is allocated from them.
+TEST(GmshGeometry, MshCountsMustMatchTheContent) {
+  std::string message = msh_error(with(square_22, "$Elements\n6\n", "$Elements\n-6\n"));
+  EXPECT_NE(message.find("case.msh:20: key '$Elements': the number of elements is negative"), std::string::npos)
+      << message;
+  message = msh_error(with(square_22, "$Elements\n6\n", "$Elements\n9000000000000000000\n"));
+  EXPECT_NE(message.find("case.msh:20:"), std::string::npos) << message;
+  EXPECT_NE(message.find("9000000000000000000 elements announced, but $EndElements comes 6 lines further"),
+            std::string::npos) << message;
+  message = msh_error(with(square_22, "1 1 2 1 1 1 5", "1 1 2000000000 1 1 1 5"));
+  EXPECT_NE(message.find("case.msh:21:"), std::string::npos) << message;
+  EXPECT_NE(message.find("announces 2000000000 tags, more than its line holds"), std::string::npos) << message;
+  message = msh_error(with(square_22, "1 1 2 1 1 1 5", "1 1 -2 1 1 1 5"));
+  EXPECT_NE(message.find("the number of tags of element 1 is negative"), std::string::npos) << message;
+  message = msh_error(with(square_22, "$Nodes\n5\n", "$Nodes\n4\n"));  // the fifth node left over
+  EXPECT_NE(message.find("case.msh:17: key '$Nodes': this line follows the nodes"), std::string::npos) << message;
+  message = msh_error(with(square_22, "$PhysicalNames\n4\n", "$PhysicalNames\n5\n"));
+  EXPECT_NE(message.find("5 physical names announced, but $EndPhysicalNames comes 4 lines further"),
+            std::string::npos) << message;
+  // Format 4: a block larger than its section, blocks that do not add up to the total.
+  const std::string disc = quarter_disc_41();
+  message = msh_error(with(disc, "1 1 0 9\n", "1 1 0 4000000000000000000\n"));
+  EXPECT_NE(message.find("4000000000000000000 nodes in this block announced"), std::string::npos) << message;
+  message = msh_error(with(disc, "$Nodes\n2 10 1 20\n", "$Nodes\n2 11 1 20\n"));
+  EXPECT_NE(message.find("11 nodes announced, but its blocks hold 10"), std::string::npos) << message;
+}
+
+TEST(GmshGeometry, LineElementsOverTheLimitAreRefusedWhileReading) {
+  const std::string message = msh_error(square_22, 4);
+  EXPECT_NE(message.find("case.msh:25:"), std::string::npos) << message;  // the fifth line element
+  EXPECT_NE(message.find("more than 4 line elements on the physical curves"), std::string::npos) << message;
+  EXPECT_NE(message.find("--max-elements"), std::string::npos) << message;
+  EXPECT_EQ(msh_error(square_22, 5), "no error");
+}
+
+TEST(GmshGeometry, GeoConstantsAreThoseOfDefineConstant) {
+  const std::string text =
+      "DefineConstant[ a = 1, b = {2, Name \"x = 3\"}, c = {3, Choices{0 = \"zero\", 1 = \"one\"}} ];\n"
+      "// DefineConstant[ d = 1 ];\n/* DefineConstant[ e = 1 ]; */ f = 2;\nDefineConstant [g=4];\n";
+  EXPECT_EQ(geo_constants(text), (std::set<std::string>{"a", "b", "c", "g"}));
+  EXPECT_TRUE(geo_constants("W = 20;\n").empty());
+}
+
+// Gmsh meshes in a child process: the caller's OpenMP thread count stays (Gmsh sets its
+// own to 1), the numbers replace the DefineConstant defaults, the limits hold.
+TEST(GmshGeometry, GeoMeshingKeepsTheThreadCountAndTakesTheNumbers) {
+  if (!gmsh_api_available()) GTEST_SKIP() << "built without the Gmsh library (.geo files refused)";
+  const int threads = omp_get_max_threads();
+  omp_set_num_threads(2);
+  int team = 0;
+#pragma omp parallel  // the caller's thread pool exists when the child is forked
+  {
+#pragma omp atomic
+    ++team;
+  }
+  EXPECT_EQ(team, 2);
+  const GeoFile geo(rectangle_geo());
+  const auto plain = read_gmsh_boundary(geo.path, false);
+  EXPECT_EQ(omp_get_max_threads(), 2);
+  omp_set_num_threads(threads);
+  ASSERT_EQ(plain.pieces.size(), 4u);
+  EXPECT_NEAR(plain.pieces[0].end.x(), 2.0, 1e-12);
+  GmshOptions options;
+  options.numbers = {{"W", 3.5}, {"unused", 1.0}};
+  const auto wider = read_gmsh_boundary(geo.path, false, options);
+  EXPECT_NEAR(wider.pieces[0].end.x(), 3.5, 1e-12);
+  // Gmsh's mesh over the element limit: refused after meshing, naming the .geo file.
+  const GeoFile fine(rectangle_geo("Transfinite Curve {1} = 2001;\n"), "fine.geo");
+  options.limits.max_elements = 1000;
+  try {
+    read_gmsh_boundary(fine.path, false, options);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.where().file, fine.path.string());
+    EXPECT_NE(std::string(e.what()).find("more than 1000 line elements"), std::string::npos) << e.what();
+  }
+}
+
+TEST(GmshGeometry, GeoOverTheLimitsStopsWithTheReason) {
+  if (!gmsh_api_available()) GTEST_SKIP() << "built without the Gmsh library (.geo files refused)";
+  GmshOptions options;
+  options.limits.max_elements = 1000;  // Gmsh may take 65 MB
+  const GeoFile huge(rectangle_geo("Transfinite Curve {1} = 1e9;\n"), "huge.geo");
+  try {
+    read_gmsh_boundary(huge.path, false, options);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("Gmsh stopped while meshing the file"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("65 MB"), std::string::npos) << e.what();
+  }
+  options.limits.gmsh_timeout_seconds = 0.25;
+  const GeoFile endless(rectangle_geo("For i In {1:1e15}\nEndFor\n"), "endless.geo");
+  try {
+    read_gmsh_boundary(endless.path, false, options);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("did not finish meshing the file within 0.25 s (--gmsh-timeout)"),
+              std::string::npos) << e.what();
+  }
+}
+
+// The problem file's parameters reach the .geo as Gmsh numbers; a --set value for no
+// parameter goes to a .geo that declares it, and is refused when none does.
+TEST(GmshGeometry, ParametersAndSetValuesReachTheGeo) {
+  if (!gmsh_api_available()) GTEST_SKIP() << "built without the Gmsh library (.geo files refused)";
+  const GeoFile geo(rectangle_geo(), "rectangle.geo");
+  const std::string toml = "analysis = \"plane_stress\"\ngeometry = \"" + geo.path.filename().string() +
+                           "\"\n[parameters]\nW = 3.0\n[material]\nE = 1.0\nnu = 0.3\n"
+                           "[[boundary]]\nname = \"left\"\nu1 = 0.0\nu2 = 0.0\n";
+  const std::string file = (geo.path.parent_path() / "rectangle.toml").string();
+  EXPECT_NEAR(parse_problem(toml, file).problem.body.pieces[0].end.x(), 3.0, 1e-12);
+  EXPECT_NEAR(parse_problem(toml, file, {{"W", 4.0}}).problem.body.pieces[0].end.x(), 4.0, 1e-12);
+  const std::string without = with(toml, "[parameters]\nW = 3.0\n", "");
+  const auto set = parse_problem(without, file, {{"W", 5.0}});
+  EXPECT_NEAR(set.problem.body.pieces[0].end.x(), 5.0, 1e-12);
+  EXPECT_EQ(set.parameters.at("W"), 5.0);  // echoed
+  try {
+    parse_problem(without, file, {{"H", 5.0}});
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("no .geo file of it declares 'H' with DefineConstant"), std::string::npos)
+        << e.what();
   }
 }
 

@@ -178,11 +178,30 @@ TEST_F(IoOutputDirectory, ParentThatIsAFileFailsWithThePath) {
   EXPECT_EQ(entries(), (std::vector<std::string>{"file"}));
 }
 
+// Recorded load steps go into a sub-folder, created in the staging folder.
+TEST_F(IoOutputDirectory, FilesOfASubFolder) {
+  OutputDirectory out;
+  out.add("summary.json", "{}\n");
+  out.add("steps/contact_step1.csv", "a\n");
+  out.add("steps/contact_step2.csv", "b\n");
+  out.commit(root_ / "run");
+  EXPECT_EQ(read(root_ / "run/steps/contact_step2.csv"), "b\n");
+  EXPECT_EQ(entries(), (std::vector<std::string>{"run", "run/.bemcontact-output", "run/steps", "run/steps/contact_step1.csv",
+                                                 "run/steps/contact_step2.csv", "run/summary.json"}));
+  OutputDirectory again;  // the next run replaces the folder whole, its steps/ too
+  again.add("summary.json", "{}\n");
+  again.commit(root_ / "run");
+  EXPECT_EQ(entries(), (std::vector<std::string>{"run", "run/.bemcontact-output", "run/summary.json"}));
+}
+
 TEST_F(IoOutputDirectory, RejectsNamesThatAreNotPlainFileNames) {
   OutputDirectory out;
   EXPECT_THROW(out.add("", "x"), Error);
   EXPECT_THROW(out.add("..", "x"), Error);
-  EXPECT_THROW(out.add("sub/file.csv", "x"), Error);
+  EXPECT_THROW(out.add("sub/../file.csv", "x"), Error);
+  EXPECT_THROW(out.add("a/b/file.csv", "x"), Error);
+  EXPECT_THROW(out.add("sub/", "x"), Error);
+  EXPECT_THROW(out.add("../file.csv", "x"), Error);
   EXPECT_THROW(out.add("/etc/passwd", "x"), Error);
   out.add("a.csv", "x");
   EXPECT_THROW(out.add("a.csv", "y"), Error);
