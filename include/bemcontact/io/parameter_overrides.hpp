@@ -20,7 +20,8 @@ struct ParameterValue {
 
 using ParameterOverrides = std::map<std::string, ParameterValue>;
 
-// "NAME=VALUE" with VALUE a number; throws InputError (key "--set ...") saying what is wrong.
+// "NAME=VALUE" with VALUE a number or an expression in the file's syntax ("2*250", "R/4");
+// throws InputError (key "--set ...") for a malformed assignment or a name set twice.
 void add_parameter_override(ParameterOverrides& overrides, const std::string& assignment);
 
 }  // namespace bemcontact::io
