@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <functional>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -32,6 +33,13 @@ double out_of_plane_stress(AnalysisType type, const Material& material, double s
 double StressTensor::von_mises() const {
   const double d12 = s11 - s22, d13 = s11 - s33, d23 = s22 - s33;
   return std::sqrt(0.5 * (d12 * d12 + d13 * d13 + d23 * d23) + 3.0 * s12 * s12);
+}
+
+std::array<double, 3> StressTensor::principal() const {
+  const double mean = 0.5 * (s11 + s22), radius = std::hypot(0.5 * (s11 - s22), s12);
+  std::array<double, 3> values{mean + radius, mean - radius, s33};
+  std::sort(values.begin(), values.end(), std::greater<>());
+  return values;
 }
 
 namespace {

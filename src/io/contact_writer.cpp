@@ -23,11 +23,15 @@ std::string number(double value) {
   return std::string(buffer, end);
 }
 
+}  // namespace
+
 std::string file_stem(const std::string& name) {
   std::string out;
   for (const char c : name) out += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
   return out;
 }
+
+namespace {
 
 nlohmann::json summary_json(const contact::ContactSummary& s) {
   return {{"time", s.time},
