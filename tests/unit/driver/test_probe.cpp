@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -14,6 +15,7 @@
 #include "bemcontact/driver/probe.hpp"
 #include "bemcontact/driver/run.hpp"
 #include "bemcontact/io/contact_file.hpp"
+#include "bemcontact/io/parameter_overrides.hpp"
 #include "bemcontact/io/run_summary.hpp"
 #include "bemcontact/reference/hertz.hpp"
 #include "bemcontact/reference/lame.hpp"
@@ -306,6 +308,115 @@ TEST(Probe, AQuarterWithTwoSymmetryLinesGivesTheWholePlatesValues) {
   }
   EXPECT_TRUE(a[6].on_boundary);
   EXPECT_TRUE(a[7].on_boundary);
+}
+
+// --set values are replayed from summary.json's evaluated parameters: the mesh made again
+// is the run's (here a finer contact zone), so the probe accepts it.
+TEST(Probe, ARunWithOverriddenParametersIsMeshedWithThem) {
+  RunOptions options;
+  io::add_parameter_override(options.overrides, "contact_elements=20");
+  const auto output = run_problem(example_text("contact_hertz_sphere.toml"), "contact_hertz_sphere.toml", options);
+  RunFiles folder;
+  for (const auto& file : output.files.files()) folder.files[file.name] = file.content;
+  const auto rows = probe(folder, lines({{Vec2(0.0, -0.01), Vec2(0.0, -0.1), 4}}));
+  EXPECT_EQ(rows.size(), 4u);
+}
+
+// A line that crosses the hole: its points in the hole are left out and named in a
+// warning and in probe.json; the VTK polyline is broken there.
+TEST(Probe, PointsOfALineInsideNoBodyAreLeftOutAndReported) {
+  const auto folder = run(example_text("plate_tension.toml"), "plate_tension.toml");
+  // The plate is [-1, 1] x [0, 2]: the line runs from outside, through it and out again.
+  const auto output = probe_run(folder.reader(), lines({{Vec2(-2.0, 1.0), Vec2(2.0, 1.0), 9}}), {});
+  const auto rows = rows_of(output);
+  ASSERT_EQ(rows.size(), 5u);
+  EXPECT_EQ(rows.front().point, 2);
+  EXPECT_TRUE(rows.front().on_boundary);
+  ASSERT_EQ(output.warnings.size(), 1u);
+  EXPECT_NE(output.warnings[0].find("line 1: 4 of its points lie inside no body"), std::string::npos)
+      << output.warnings[0];
+  for (const auto& file : output.files.files())
+    if (file.name == "probe.json") {
+      const auto json = nlohmann::json::parse(file.content);
+      EXPECT_EQ(json["outside"].size(), 4u);
+      EXPECT_EQ(json["lines"][0]["outside"], 4);
+      EXPECT_EQ(json["rows"], 5);
+    }
+}
+
+TEST(Probe, RefusesWhatIsNotAFinishedRun) {
+  const auto folder = run(example_text("plate_tension.toml"), "plate_tension.toml");
+  const auto request = lines({{Vec2(-0.5, 1.0), Vec2(0.5, 1.0), 3}});
+  ProbeOptions options;
+  options.run_name = "out/plate";
+  EXPECT_NE(input_error([&] { probe_run(RunFiles{}.reader(), request, options); })
+                .find("out/plate: not the output folder of a run: it has no summary.json"),
+            std::string::npos);
+  RunFiles meshed;
+  const auto mesh = mesh_problem(example_text("plate_tension.toml"), "plate_tension.toml", {});
+  for (const auto& file : mesh.files.files()) meshed.files[file.name] = file.content;
+  EXPECT_NE(input_error([&] { probe_run(meshed.reader(), request, options); }).find("`bemcontact mesh`"),
+            std::string::npos);
+  auto unfinished = folder;
+  unfinished.files.erase("boundary.csv");
+  EXPECT_NE(input_error([&] { probe_run(unfinished.reader(), request, options); }).find("the run has no boundary.csv"),
+            std::string::npos);
+  EXPECT_NE(input_error([&] { probe_run(folder.reader(), ProbeRequest{}, options); }).find("give points"),
+            std::string::npos);
+  options.limits.max_interior_points = 2;
+  EXPECT_NE(input_error([&] { probe_run(folder.reader(), request, options); }).find("raise it with --max-points"),
+            std::string::npos);
+}
+
+// The solution belongs to the text the run read: a changed copy, a changed input file (for
+// a folder without the copy) or a mesh that no longer matches the stored nodes is refused.
+TEST(Probe, RefusesAProblemTextThatChangedSinceTheRun) {
+  const std::string text = example_text("plate_tension.toml");
+  const auto folder = run(text, "plate_tension.toml");
+  const auto request = lines({{Vec2(-0.5, 1.0), Vec2(0.5, 1.0), 3}});
+  auto tampered = folder;
+  tampered.files["problem.toml"] = replaced(text, "P = 1.0", "P = 2.0");
+  EXPECT_NE(input_error([&] { probe_run(tampered.reader(), request, {}); })
+                .find("problem.toml was changed after the run: its SHA-256 is not summary.json's input.sha256"),
+            std::string::npos);
+
+  // A folder written before problem.toml existed: the input file, if unchanged, serves.
+  auto older = folder;
+  older.files.erase("problem.toml");
+  ProbeOptions options;
+  std::string input = text;
+  options.read_input = [&](const std::string& path) -> std::optional<std::string> {
+    EXPECT_NE(path.find("plate_tension.toml"), std::string::npos);
+    return input;
+  };
+  EXPECT_EQ(rows_of(probe_run(older.reader(), request, options)).size(), 3u);
+  input = replaced(text, "elements = 4", "elements = 5");
+  EXPECT_NE(input_error([&] { probe_run(older.reader(), request, options); }).find("changed since the run"),
+            std::string::npos);
+  options.read_input = [](const std::string&) { return std::optional<std::string>(); };
+  EXPECT_NE(input_error([&] { probe_run(older.reader(), request, options); }).find("cannot be read"),
+            std::string::npos);
+
+  // boundary.csv from another mesh (e.g. another version's mesher).
+  auto stale = folder;
+  auto& csv = stale.files["boundary.csv"];
+  const auto x = csv.find(',', csv.find('\n')) + 1;  // node 0's x
+  csv.replace(x, csv.find(',', x) - x, "-0.7");
+  const auto stale_message = input_error([&] { probe_run(stale.reader(), request, {}); });
+  EXPECT_NE(stale_message.find("does not match boundary.csv"),
+            std::string::npos)
+      << stale_message;
+}
+
+TEST(Probe, AListedPointInsideNoBodyIsAnErrorNamingItsLine) {
+  const auto folder = run(example_text("plate_tension.toml"), "plate_tension.toml");
+  const auto message = input_error([&] { probe_run(folder.reader(), listed({{0.0, 1.0}, {3.0, 1.0}, {5.0, 5.0}}), {}); });
+  EXPECT_NE(message.find("points.csv:2: point (3, 1) lies inside no body (and 1 more points of the file)"),
+            std::string::npos)
+      << message;
+  EXPECT_NE(input_error([&] { probe_run(folder.reader(), lines({{Vec2(3.0, 0.0), Vec2(3.0, 1.0), 3}}), {}); })
+                .find("none of the 3 points lies inside a body"),
+            std::string::npos);
 }
 
 }  // namespace
