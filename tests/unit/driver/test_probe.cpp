@@ -220,7 +220,8 @@ TEST(Probe, HertzSupportAlongTheAxisMatchesHuber) {
 // (near-boundary blend), the outer end outside the tube's chords but on the true circle
 // (on the boundary), and the interface point belongs to both layers, each with its own
 // hoop stress. Against the closed form within validate dd-two-layer-ring's bounds, the
-// discretisation error of the arcs' chords (1 % on u, 2 % of p on stresses).
+// discretisation error of the arcs' chords (1 % on u, 2 % of p on stresses; measured 0.27 %
+// and 0.79 %).
 TEST(Probe, RayThroughTheCompoundRingMatchesTheClosedFormInEachLayer) {
   const std::string text = example_text("dd_two_layer_ring.toml");
   const auto folder = run(text, "dd_two_layer_ring.toml");
