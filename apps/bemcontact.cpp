@@ -336,7 +336,8 @@ int main(int argc, char** argv) {
   probe->add_option("OUTPUT_DIR", probe_run_dir, "the output folder of a run")->required();
   probe->add_option("--points", probe_points, "CSV file of points x,y (one per line; a header allowed)");
   probe->add_option("--line", probe_lines, "x0,y0,x1,y1,n: n points from (x0, y0) to (x1, y1), ends included "
-                                           "(repeatable)");
+                                           "(repeatable)")
+      ->allow_extra_args(false);  // one line per --line: a word after it is OUTPUT_DIR
   probe->add_option("-o,--output", probe_output, "folder of the probe's files, replaced whole (default: OUTPUT_DIR/probe)");
   probe->add_flag("-q,--quiet", quiet, "print nothing but warnings and errors");
   probe->add_option("--max-points", probe_limits.max_interior_points, "largest number of points (default 2000000)")

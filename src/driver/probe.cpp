@@ -49,15 +49,22 @@ InputError run_error(const ProbeOptions& options, const std::string& message) {
   return InputError(SourceLocation{options.run_name, 0, ""}, message);
 }
 
+// A string member of a JSON object, or "" (a damaged summary is refused, never a crash).
+std::string text_at(const json& object, const char* key) {
+  if (!object.is_object() || !object.contains(key) || !object[key].is_string()) return "";
+  return object[key].get<std::string>();
+}
+
 json read_summary(const FileReader& run_files, const ProbeOptions& options) {
   const auto text = run_files("summary.json");
   if (!text)
     throw run_error(options, "not the output folder of a run: it has no summary.json (bemcontact run FILE -o DIR "
                              "writes one)");
   json summary = json::parse(*text, nullptr, false);
-  if (summary.is_discarded() || !summary.is_object() || !summary.contains("input"))
-    throw run_error(options, "summary.json is not a run summary of bemcontact (it does not parse, or has no input)");
-  const std::string command = summary.value("command", "");
+  if (summary.is_discarded() || !summary.is_object() || text_at(summary.value("input", json()), "sha256").empty())
+    throw run_error(options, "summary.json is not a run summary of bemcontact (it does not parse, or has no "
+                             "input.sha256)");
+  const std::string command = text_at(summary, "command");
   if (command != "run")
     throw run_error(options, "the folder holds the output of `bemcontact " + command +
                                  "`, not of a run: probe needs a solved problem (bemcontact run FILE -o DIR)");
@@ -67,15 +74,15 @@ json read_summary(const FileReader& run_files, const ProbeOptions& options) {
 // The problem text the run solved: problem.toml, or the input file for older runs; either
 // must still have the SHA-256 the summary recorded.
 std::string read_problem_text(const FileReader& run_files, const json& summary, const ProbeOptions& options) {
-  const std::string recorded = summary["input"].value("sha256", "");
+  const std::string recorded = text_at(summary["input"], "sha256");
   if (const auto copy = run_files("problem.toml")) {
     if (io::sha256_hex(*copy) != recorded)
       throw run_error(options, "problem.toml was changed after the run: its SHA-256 is not summary.json's "
                                "input.sha256, so the stored solution does not belong to it; run the problem again");
     return *copy;
   }
-  const std::string path = summary["input"].value("path", "");
-  const std::string file = path.empty() ? summary["input"].value("file", "") : path;
+  const std::string path = text_at(summary["input"], "path");
+  const std::string file = path.empty() ? text_at(summary["input"], "file") : path;
   const auto original = options.read_input && !file.empty() ? options.read_input(file) : std::nullopt;
   if (!original)
     throw run_error(options, "the folder has no problem.toml (the run is older than `probe`) and its input file '" +
@@ -161,9 +168,9 @@ void check_same_nodes(const StoredRegion& region, const std::vector<Vec2>& store
 
 StoredRun load_run(const FileReader& run_files, const json& summary, const ProbeOptions& options) {
   const std::string text = read_problem_text(run_files, summary, options);
-  const std::string path = summary["input"].value("path", "");
+  const std::string path = text_at(summary["input"], "path");
   // The recorded path: messages name the file, and relative geometry files resolve from it.
-  const std::string file_name = path.empty() ? summary["input"].value("file", "problem.toml") : path;
+  const std::string file_name = path.empty() ? text_at(summary["input"], "file") : path;
   const auto overrides = recorded_parameters(summary);
   StoredRun run;
   switch (problem_kind(text)) {
@@ -228,6 +235,10 @@ void check_listed_points_held(const bem::ProbeResult& result, const AskedPoints&
   }
 }
 
+std::size_t request_count(const AskedPoints& asked, int line) {
+  return static_cast<std::size_t>(std::count(asked.line.begin(), asked.line.end(), line));
+}
+
 // One warning per line with points outside every body, naming the first few.
 std::vector<std::string> outside_warnings(const bem::ProbeResult& result, const AskedPoints& asked,
                                           std::size_t lines) {
@@ -237,8 +248,10 @@ std::vector<std::string> outside_warnings(const bem::ProbeResult& result, const 
     for (const Index j : result.outside)
       if (asked.line[j] == static_cast<int>(k)) out.push_back(j);
     if (out.empty()) continue;
-    std::string text = "line " + std::to_string(k) + ": " + std::to_string(out.size()) +
-                       " of its points lie inside no body and are left out:";
+    const std::size_t count = request_count(asked, static_cast<int>(k));
+    std::string text = "line " + std::to_string(k) + ": " + std::to_string(out.size()) + " of its " +
+                       std::to_string(count) + (out.size() == 1 ? " points is" : " points are") +
+                       " inside no body and left out:";
     for (std::size_t i = 0; i < out.size() && i < 5; ++i) text += (i ? ", " : " ") + point_text(asked.positions[out[i]]);
     if (out.size() > 5) text += ", ...";
     warnings.push_back(text);
@@ -283,7 +296,7 @@ json probe_json(const json& summary, const StoredRun& run, const ProbeRequest& r
           {"run", options.run_name},
           {"title", run.title},
           {"analysis", to_string(run.analysis)},
-          {"kind", summary.value("kind", "")},
+          {"kind", text_at(summary, "kind")},
           {"input", summary["input"]},
           {"bodies", bodies},
           {"points_file", request.points_file},

@@ -268,5 +268,5 @@ def test_probe_errors_name_the_point_and_warn_for_lines(tmp_path):
     with pytest.raises(bc.InputError, match=r"lines\[0\]"):
         result.probe(lines=[(0, 0, 1, 1, 1)])
     table = result.probe(lines=[(-1.0, 0.5, 1.0, 0.5, 5)], output=tmp_path / "probe")
-    assert len(table) == 3 and "2 of its points lie inside no body" in table.warnings[0]
+    assert len(table) == 3 and "2 of its 5 points are inside no body" in table.warnings[0]
     assert (tmp_path / "probe" / "probe.vtk").exists()

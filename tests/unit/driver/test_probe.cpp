@@ -334,7 +334,7 @@ TEST(Probe, PointsOfALineInsideNoBodyAreLeftOutAndReported) {
   EXPECT_EQ(rows.front().point, 2);
   EXPECT_TRUE(rows.front().on_boundary);
   ASSERT_EQ(output.warnings.size(), 1u);
-  EXPECT_NE(output.warnings[0].find("line 1: 4 of its points lie inside no body"), std::string::npos)
+  EXPECT_NE(output.warnings[0].find("line 1: 4 of its 9 points are inside no body and left out: (-2, 1), (-1.5, 1),"), std::string::npos)
       << output.warnings[0];
   for (const auto& file : output.files.files())
     if (file.name == "probe.json") {
@@ -358,6 +358,14 @@ TEST(Probe, RefusesWhatIsNotAFinishedRun) {
   for (const auto& file : mesh.files.files()) meshed.files[file.name] = file.content;
   EXPECT_NE(input_error([&] { probe_run(meshed.reader(), request, options); }).find("`bemcontact mesh`"),
             std::string::npos);
+  for (const char* damaged : {"{\"input\": 3, \"command\": \"run\"}", "[1]", "{\"input\": {\"sha256\": 5}}", "{"}) {
+    auto broken = folder;
+    broken.files["summary.json"] = damaged;
+    EXPECT_NE(input_error([&] { probe_run(broken.reader(), request, options); })
+                  .find("summary.json is not a run summary of bemcontact"),
+              std::string::npos)
+        << damaged;
+  }
   auto unfinished = folder;
   unfinished.files.erase("boundary.csv");
   EXPECT_NE(input_error([&] { probe_run(unfinished.reader(), request, options); }).find("the run has no boundary.csv"),
