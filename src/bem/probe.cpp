@@ -140,4 +140,81 @@ ProbeResult probe_points(const std::vector<ProbeRegion>& regions, const std::vec
   return result;
 }
 
+StressTensor stress_in_frame(const StressTensor& stress, const Vec2& d) {
+  Mat2 q;
+  q << d, Vec2(-d.y(), d.x());
+  Mat2 sigma;
+  sigma << stress.s11, stress.s12, stress.s12, stress.s22;
+  const Mat2 local = q.transpose() * sigma * q;
+  return {local(0, 0), local(1, 1), 0.5 * (local(0, 1) + local(1, 0)), stress.s33};
+}
+
+namespace {
+
+// Weights of the samples s[first..last] (increasing) in the integrals of sigma and of
+// sigma (t/2 - s'), s' = s - s[0]: Simpson's rule when they are equally spaced (the 3/8 rule
+// on the last three intervals of an odd count), exact for sigma up to quadratic; otherwise
+// sigma's piecewise-linear interpolant integrated exactly.
+void add_piece_weights(const std::vector<double>& s, std::size_t first, std::size_t last, std::vector<double>& membrane,
+                       std::vector<double>& bending) {
+  const double t = s.back() - s.front();
+  const auto lever = [&](std::size_t j) { return 0.5 * t - (s[j] - s.front()); };
+  const std::size_t intervals = last - first;
+  const double h = (s[last] - s[first]) / static_cast<double>(intervals);
+  bool uniform = intervals >= 2;
+  for (std::size_t k = first + 1; k <= last && uniform; ++k)
+    uniform = std::abs(s[k] - s[k - 1] - h) <= 1e-9 * std::abs(h) * static_cast<double>(intervals);
+  if (!uniform) {
+    for (std::size_t k = first + 1; k <= last; ++k) {
+      const double step = s[k] - s[k - 1], w0 = lever(k - 1), w1 = lever(k);
+      membrane[k - 1] += 0.5 * step;
+      membrane[k] += 0.5 * step;
+      bending[k - 1] += step / 6.0 * (2.0 * w0 + w1);
+      bending[k] += step / 6.0 * (w0 + 2.0 * w1);
+    }
+    return;
+  }
+  std::vector<double> w(intervals + 1, 0.0);
+  const std::size_t simpson = intervals % 2 == 0 ? intervals : intervals - 3;
+  for (std::size_t k = 0; k + 2 <= simpson; k += 2) {
+    w[k] += h / 3.0;
+    w[k + 1] += 4.0 * h / 3.0;
+    w[k + 2] += h / 3.0;
+  }
+  if (simpson != intervals)
+    for (const auto& [offset, weight] : {std::pair{0, 1.0}, std::pair{1, 3.0}, std::pair{2, 3.0}, std::pair{3, 1.0}})
+      w[simpson + offset] += 3.0 * h / 8.0 * weight;
+  for (std::size_t k = 0; k <= intervals; ++k) {
+    membrane[first + k] += w[k];
+    bending[first + k] += w[k] * lever(first + k);
+  }
+}
+
+}  // namespace
+
+LinearisedStress linearised_stress(const std::vector<double>& s, const std::vector<StressTensor>& stress) {
+  LinearisedStress result;
+  if (s.size() < 2 || !(s.back() > s.front())) return result;
+  // Pieces between repeated abscissae (an interface: each side's values end its piece).
+  std::vector<double> membrane(s.size(), 0.0), bending(s.size(), 0.0);
+  std::size_t first = 0;
+  for (std::size_t k = 1; k <= s.size(); ++k)
+    if (k == s.size() || s[k] == s[k - 1]) {
+      if (k - 1 > first) add_piece_weights(s, first, k - 1, membrane, bending);
+      first = k;
+    }
+  const double t = s.back() - s.front();
+  const auto add = [](StressTensor& sum, const StressTensor& value, double weight) {
+    sum.s11 += weight * value.s11;
+    sum.s22 += weight * value.s22;
+    sum.s12 += weight * value.s12;
+    sum.s33 += weight * value.s33;
+  };
+  for (std::size_t j = 0; j < s.size(); ++j) {
+    add(result.membrane, stress[j], membrane[j] / t);
+    add(result.bending, stress[j], bending[j] * 6.0 / (t * t));
+  }
+  return result;
+}
+
 }  // namespace bemcontact::bem

@@ -270,17 +270,43 @@ std::vector<io::ProbeRow> probe_rows(const bem::ProbeResult& result, const Asked
 
 json point_json(const Vec2& p) { return json::array({p.x(), p.y()}); }
 
-json probe_json(const json& summary, const StoredRun& run, const ProbeRequest& request, const AskedPoints& asked,
-                const std::vector<io::ProbeRow>& rows, const bem::ProbeResult& result, const ProbeOptions& options,
-                const std::vector<std::string>& warnings, double seconds) {
+// The line's membrane and bending stresses in its own frame (along it, across it, their
+// shear, s33); the bending of the across and out-of-plane components only, as pressure-vessel
+// codes bend (ASME VIII-2, 5-A): null when some of its points lie inside no body.
+json linearised_json(const std::vector<io::ProbeRow>& rows, const io::ProbeLine& line, int number,
+                     std::size_t outside) {
+  if (outside > 0) return nullptr;
+  const Vec2 along = (line.end - line.start).normalized();
+  std::vector<double> s;
+  std::vector<bem::StressTensor> stress;
+  for (const auto& row : rows)
+    if (row.line == number) s.push_back(row.distance), stress.push_back(bem::stress_in_frame(row.value.stress, along));
+  const auto parts = bem::linearised_stress(s, stress);
+  const bem::StressTensor& m = parts.membrane;
+  const double across = parts.bending.s22, hoop = parts.bending.s33;
+  const bem::StressTensor start{m.s11, m.s22 + across, m.s12, m.s33 + hoop}, end{m.s11, m.s22 - across, m.s12, m.s33 - hoop};
+  return {{"membrane", {{"along", m.s11}, {"across", m.s22}, {"shear", m.s12}, {"s33", m.s33}, {"von_mises", m.von_mises()}}},
+          {"bending", {{"across", across}, {"s33", hoop}}},
+          {"membrane_plus_bending_von_mises", {{"start", start.von_mises()}, {"end", end.von_mises()}}}};
+}
+
+// Per --line: its ends, points, how many lie inside no body, and its linearised stress.
+json lines_json(const ProbeRequest& request, const AskedPoints& asked, const std::vector<io::ProbeRow>& rows,
+                const bem::ProbeResult& result) {
   json lines = json::array();
   for (std::size_t k = 0; k < request.lines.size(); ++k) {
     const auto& line = request.lines[k];
     std::size_t outside = 0;
     for (const Index j : result.outside) outside += asked.line[j] == static_cast<int>(k) + 1;
     lines.push_back({{"start", point_json(line.start)}, {"end", point_json(line.end)}, {"points", line.count},
-                     {"outside", outside}});
+                     {"outside", outside}, {"linearised", linearised_json(rows, line, static_cast<int>(k) + 1, outside)}});
   }
+  return lines;
+}
+
+json probe_json(const json& summary, const StoredRun& run, const ProbeRequest& request, const AskedPoints& asked,
+                const std::vector<io::ProbeRow>& rows, const bem::ProbeResult& result, const json& lines,
+                const ProbeOptions& options, const std::vector<std::string>& warnings, double seconds) {
   json outside = json::array();
   for (const Index k : result.outside)
     outside.push_back({{"point", k}, {"line", asked.line[k]}, {"position", point_json(asked.positions[k])}});
@@ -314,7 +340,7 @@ json probe_json(const json& summary, const StoredRun& run, const ProbeRequest& r
 }
 
 std::string report_text(const StoredRun& run, const AskedPoints& asked, const std::vector<io::ProbeRow>& rows,
-                        const bem::ProbeResult& result, const ProbeOptions& options) {
+                        const bem::ProbeResult& result, const json& lines, const ProbeOptions& options) {
   char line[512];
   std::string report = "probe of " + options.run_name + ": " + run.title + "\n";
   std::size_t on_boundary = 0;
@@ -328,6 +354,17 @@ std::string report_text(const StoredRun& run, const AskedPoints& asked, const st
   std::snprintf(line, sizeof line, "  max von Mises = %.6g at (%.6g, %.6g) in '%s'\n", peak->value.stress.von_mises(),
                 peak->position.x(), peak->position.y(), run.regions[peak->body].name.c_str());
   report += line;
+  for (std::size_t k = 0; k < lines.size(); ++k) {
+    const json& linearised = lines[k]["linearised"];
+    if (linearised.is_null()) continue;
+    const json& both = linearised["membrane_plus_bending_von_mises"];
+    std::snprintf(line, sizeof line,
+                  "  line %zu linearised: von Mises of the membrane stress %.6g, of membrane + bending %.6g at its "
+                  "start, %.6g at its end\n",
+                  k + 1, linearised["membrane"]["von_mises"].get<double>(), both["start"].get<double>(),
+                  both["end"].get<double>());
+    report += line;
+  }
   return report;
 }
 
@@ -359,10 +396,11 @@ ProbeOutput probe_run(const FileReader& run_files, const ProbeRequest& request, 
   output.files.add("probe.csv", io::probe_csv(rows, names));
   output.files.add("probe.vtk", io::probe_vtk(rows, names, run.title + " (probe)"));
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-  output.files.add("probe.json", io::write_json_string(probe_json(summary, run, request, asked, rows, result, options,
-                                                                  output.warnings, seconds)));
+  const json lines = lines_json(request, asked, rows, result);
+  output.files.add("probe.json", io::write_json_string(probe_json(summary, run, request, asked, rows, result, lines,
+                                                                  options, output.warnings, seconds)));
   check_output_finite(output.files);
-  output.report = report_text(run, asked, rows, result, options);
+  output.report = report_text(run, asked, rows, result, lines, options);
   return output;
 }
 

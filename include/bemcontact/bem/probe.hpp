@@ -49,4 +49,20 @@ PointPlace place_in_region(const ProbeRegion& region, const Vec2& point);
 ProbeResult probe_points(const std::vector<ProbeRegion>& regions, const std::vector<Vec2>& points,
                          const ProgressCallback& progress = {});
 
+// The membrane and bending parts of the stress through a straight section of length t, the
+// straight-line linearisation of pressure-vessel codes, each component on its own:
+//   membrane = (1/t) int_0^t sigma ds,   bending = (6/t^2) int_0^t sigma (t/2 - s) ds,
+// the bending part as at the section's start (s = 0; its opposite at the end), over samples
+// at increasing s from 0 to t: Simpson's rule where they are equally spaced (the 3/8 rule
+// closing an odd count), the piecewise-linear interpolant integrated exactly otherwise; a
+// repeated s (an interface, each side's value) ends one piece and starts the next.
+// The stress in the frame of the unit direction d: s11 along d, s22 across it (d turned a
+// quarter counter-clockwise), s12 their shear, s33 as it is.
+StressTensor stress_in_frame(const StressTensor& stress, const Vec2& d);
+
+struct LinearisedStress {
+  StressTensor membrane, bending;
+};
+LinearisedStress linearised_stress(const std::vector<double>& s, const std::vector<StressTensor>& stress);
+
 }  // namespace bemcontact::bem
