@@ -113,7 +113,9 @@ int command_probe(const std::string& run_dir, const std::string& points_file, co
   driver::ProbeRequest request;
   if (!points_file.empty()) {
     request.points_file = points_file;
-    request.listed = io::parse_points_file(io::read_problem_text(points_file), points_file);
+    const auto text = file_text(points_file);
+    if (!text) throw InputError(SourceLocation{points_file, 0, ""}, "cannot read the points file (missing, a folder or unreadable)");
+    request.listed = io::parse_points_file(*text, points_file);
   }
   for (const auto& line : lines) request.lines.push_back(io::parse_probe_line(line));
   driver::ProbeOptions options;
