@@ -114,7 +114,8 @@ int command_probe(const std::string& run_dir, const std::string& points_file, co
   if (!points_file.empty()) {
     request.points_file = points_file;
     const auto text = file_text(points_file);
-    if (!text) throw InputError(SourceLocation{points_file, 0, ""}, "cannot read the points file (missing, a folder or unreadable)");
+    if (!text)
+      throw InputError(SourceLocation{points_file, 0, ""}, "cannot read the points file (missing, a folder or unreadable)");
     request.listed = io::parse_points_file(*text, points_file);
   }
   for (const auto& line : lines) request.lines.push_back(io::parse_probe_line(line));
@@ -259,7 +260,8 @@ std::string global_option_hint(int argc, char** argv) {
   bool after_command = false;
   for (int k = 1; k < argc; ++k) {
     const std::string word = argv[k];
-    if (word == "run" || word == "mesh" || word == "validate" || word == "plot" || word == "probe") after_command = true;
+    if (word == "run" || word == "mesh" || word == "validate" || word == "plot" || word == "probe")
+      after_command = true;
     else if (after_command && (word == "--threads" || word.rfind("--threads=", 0) == 0))
       return "bemcontact: --threads is a global option: write it before the sub-command, e.g. "
              "bemcontact --threads 2 run FILE";
@@ -340,7 +342,8 @@ int main(int argc, char** argv) {
   probe->add_option("--line", probe_lines, "x0,y0,x1,y1,n: n points from (x0, y0) to (x1, y1), ends included "
                                            "(repeatable)")
       ->allow_extra_args(false);  // one line per --line: a word after it is OUTPUT_DIR
-  probe->add_option("-o,--output", probe_output, "folder of the probe's files, replaced whole (default: OUTPUT_DIR/probe)");
+  probe->add_option("-o,--output", probe_output,
+                    "folder of the probe's files, replaced whole (default: OUTPUT_DIR/probe)");
   probe->add_flag("-q,--quiet", quiet, "print nothing but warnings and errors");
   probe->add_option("--max-points", probe_limits.max_interior_points, "largest number of points (default 2000000)")
       ->check(CLI::PositiveNumber);
@@ -378,7 +381,10 @@ int main(int argc, char** argv) {
   try {
     if (distributed && !*run)
       throw InputError(SourceLocation{input, 0, ""}, "only `run` works on several processes (mpirun -n N); run `" +
-                                             std::string(*mesh ? "mesh" : *validate ? "validate" : *probe ? "probe" : "plot") +
+                                             std::string(*mesh       ? "mesh"
+                                                         : *validate ? "validate"
+                                                         : *probe    ? "probe"
+                                                                     : "plot") +
                                              "` on one process");
     for (const auto& assignment : assignments) io::add_parameter_override(run_options.overrides, assignment);
     run_options.limits.max_memory_bytes = max_memory_gb * 1e9;

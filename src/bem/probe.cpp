@@ -5,7 +5,8 @@
 
 namespace bemcontact::bem {
 
-std::vector<double> chord_bulges(const geometry::BoundaryMesh& mesh, const std::vector<geometry::BoundaryPiece>& pieces) {
+std::vector<double> chord_bulges(const geometry::BoundaryMesh& mesh,
+                                 const std::vector<geometry::BoundaryPiece>& pieces) {
   std::vector<double> bulges(mesh.elements.size(), 0.0);
   for (std::size_t k = 0; k < mesh.elements.size(); ++k) {
     const auto& element = mesh.elements[k];
@@ -26,7 +27,8 @@ PointPlace place_in_region(const ProbeRegion& region, const Vec2& point) {
   if (projection.element < 0) return PointPlace::outside;
   if (projection.distance <= round_off) return PointPlace::boundary;
   if (point_inside(mesh, point, round_off)) return PointPlace::inside;
-  const double bulge = projection.element < static_cast<Index>(region.bulge.size()) ? region.bulge[projection.element] : 0.0;
+  const bool has_bulge = projection.element < static_cast<Index>(region.bulge.size());
+  const double bulge = has_bulge ? region.bulge[projection.element] : 0.0;
   return projection.distance <= bulge + round_off ? PointPlace::boundary : PointPlace::outside;
 }
 

@@ -214,7 +214,8 @@ AskedPoints asked_points(const ProbeRequest& request) {
 }
 
 void check_point_count(std::size_t count, const ProbeOptions& options) {
-  if (count == 0) throw InputError(SourceLocation{"command line", 0, ""}, "give points: --points FILE or --line x0,y0,x1,y1,n");
+  if (count == 0)
+    throw InputError(SourceLocation{"command line", 0, ""}, "give points: --points FILE or --line x0,y0,x1,y1,n");
   if (static_cast<std::int64_t>(count) > options.limits.max_interior_points)
     throw InputError(SourceLocation{"command line", 0, ""},
                      std::to_string(count) + " points, over the limit of " +
@@ -230,8 +231,9 @@ void check_listed_points_held(const bem::ProbeResult& result, const AskedPoints&
     for (const Index j : result.outside) listed_outside += asked.line[j] == 0;
     throw InputError(SourceLocation{request.points_file, p.line, ""},
                      "point " + point_text(p.position) + " lies inside no body" +
-                         (listed_outside > 1 ? " (and " + std::to_string(listed_outside - 1) + " more points of the file)"
-                                             : std::string()));
+                         (listed_outside > 1
+                              ? " (and " + std::to_string(listed_outside - 1) + " more points of the file)"
+                              : std::string()));
   }
 }
 
@@ -252,7 +254,8 @@ std::vector<std::string> outside_warnings(const bem::ProbeResult& result, const 
     std::string text = "line " + std::to_string(k) + ": " + std::to_string(out.size()) + " of its " +
                        std::to_string(count) + (out.size() == 1 ? " points is" : " points are") +
                        " inside no body and left out:";
-    for (std::size_t i = 0; i < out.size() && i < 5; ++i) text += (i ? ", " : " ") + point_text(asked.positions[out[i]]);
+    for (std::size_t i = 0; i < out.size() && i < 5; ++i)
+      text += (i ? ", " : " ") + point_text(asked.positions[out[i]]);
     if (out.size() > 5) text += ", ...";
     warnings.push_back(text);
   }
@@ -284,8 +287,10 @@ json linearised_json(const std::vector<io::ProbeRow>& rows, const io::ProbeLine&
   const auto parts = bem::linearised_stress(s, stress);
   const bem::StressTensor& m = parts.membrane;
   const double across = parts.bending.s22, hoop = parts.bending.s33;
-  const bem::StressTensor start{m.s11, m.s22 + across, m.s12, m.s33 + hoop}, end{m.s11, m.s22 - across, m.s12, m.s33 - hoop};
-  return {{"membrane", {{"along", m.s11}, {"across", m.s22}, {"shear", m.s12}, {"s33", m.s33}, {"von_mises", m.von_mises()}}},
+  const bem::StressTensor start{m.s11, m.s22 + across, m.s12, m.s33 + hoop};
+  const bem::StressTensor end{m.s11, m.s22 - across, m.s12, m.s33 - hoop};
+  return {{"membrane",
+           {{"along", m.s11}, {"across", m.s22}, {"shear", m.s12}, {"s33", m.s33}, {"von_mises", m.von_mises()}}},
           {"bending", {{"across", across}, {"s33", hoop}}},
           {"membrane_plus_bending_von_mises", {{"start", start.von_mises()}, {"end", end.von_mises()}}}};
 }
@@ -298,8 +303,11 @@ json lines_json(const ProbeRequest& request, const AskedPoints& asked, const std
     const auto& line = request.lines[k];
     std::size_t outside = 0;
     for (const Index j : result.outside) outside += asked.line[j] == static_cast<int>(k) + 1;
-    lines.push_back({{"start", point_json(line.start)}, {"end", point_json(line.end)}, {"points", line.count},
-                     {"outside", outside}, {"linearised", linearised_json(rows, line, static_cast<int>(k) + 1, outside)}});
+    lines.push_back({{"start", point_json(line.start)},
+                     {"end", point_json(line.end)},
+                     {"points", line.count},
+                     {"outside", outside},
+                     {"linearised", linearised_json(rows, line, static_cast<int>(k) + 1, outside)}});
   }
   return lines;
 }

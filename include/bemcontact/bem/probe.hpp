@@ -25,7 +25,8 @@ struct ProbeRegion {
 
 // Per element of `mesh`: how far the piece's true curve lies outside the element's chord
 // (the sagitta of a straight element on an arc that bulges outward; 0 otherwise).
-std::vector<double> chord_bulges(const geometry::BoundaryMesh& mesh, const std::vector<geometry::BoundaryPiece>& pieces);
+std::vector<double> chord_bulges(const geometry::BoundaryMesh& mesh,
+                                 const std::vector<geometry::BoundaryPiece>& pieces);
 
 enum class PointPlace { outside, inside, boundary };
 
