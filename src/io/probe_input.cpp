@@ -71,13 +71,15 @@ std::array<std::size_t, 2> coordinate_columns(const std::vector<std::string>& he
   if (header.size() == 2) return {0, 1};
   std::vector<std::string> names;
   for (const auto& field : header) names.push_back(column_name(field));
-  for (const auto& [first, second] : {std::pair{"x", "y"}, std::pair{"r", "z"}}) {
+  // ParaView's CSV export names the coordinates Points:0, Points:1, Points:2.
+  for (const auto& [first, second] : {std::pair{"x", "y"}, std::pair{"r", "z"}, std::pair{"points:0", "points:1"}}) {
     const auto x = std::find(names.begin(), names.end(), first), y = std::find(names.begin(), names.end(), second);
     if (x != names.end() && y != names.end())
       return {static_cast<std::size_t>(x - names.begin()), static_cast<std::size_t>(y - names.begin())};
   }
   throw InputError(where, "the header '" + joined(header) +
-                              "' names no columns x and y (or r and z); write x,y as the first line, or no header");
+                              "' names no columns x and y (or r and z, Points:0 and Points:1); write x,y as the first line, or no "
+                              "header");
 }
 
 // A header holds no number (a data line with a typo is an error, not a header).

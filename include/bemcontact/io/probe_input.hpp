@@ -18,7 +18,8 @@ struct ListedPoint {
 
 // CSV text, one point per line: "x,y" (commas, or spaces or tabs). Blank lines and lines
 // starting with '#' are skipped. A first line that holds no number is a header: its columns
-// named x and y (or r and z) are read, so a file with more columns works (interior.csv);
+// named x and y (or r and z, or ParaView's Points:0 and Points:1) are read, so a file with
+// more columns works (interior.csv, a ParaView export);
 // a header of two columns names them whatever they are called.
 std::vector<ListedPoint> parse_points_file(std::string_view text, const std::string& file_name);
 

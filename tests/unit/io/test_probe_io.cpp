@@ -39,6 +39,8 @@ TEST(ProbeInput, PointsFilesWithOrWithoutHeaderCommasOrSpaces) {
   ASSERT_EQ(interior.size(), 2u);
   EXPECT_EQ(interior[1].position, Vec2(3.0, 4.0));
   EXPECT_EQ(parse_points_file("R,Z,w\n1,2,3\n", "p.csv").at(0).position, Vec2(1.0, 2.0));
+  EXPECT_EQ(parse_points_file("\"s\",\"Points:0\",\"Points:1\",\"Points:2\"\n7,1,2,0\n", "paraview.csv").at(0).position,
+            Vec2(1.0, 2.0));
 }
 
 TEST(ProbeInput, PointsFileErrorsNameTheFileAndLine) {
