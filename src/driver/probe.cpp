@@ -262,12 +262,37 @@ std::vector<std::string> outside_warnings(const bem::ProbeResult& result, const 
   return warnings;
 }
 
+// The rows of a line's point on an interface in the order the line crosses it: the body of
+// the line's previous point first, that of its next point last (polylines and the
+// linearisation follow the rows).
+void order_along_line(std::vector<io::ProbeRow>& rows) {
+  for (std::size_t first = 0; first < rows.size();) {
+    std::size_t last = first;
+    while (last + 1 < rows.size() && rows[last + 1].point == rows[first].point) ++last;
+    const int line = rows[first].line;
+    if (line > 0 && last > first) {
+      const bool has_previous = first > 0 && rows[first - 1].line == line;
+      const bool has_next = last + 1 < rows.size() && rows[last + 1].line == line;
+      const auto rank = [&](const io::ProbeRow& row) {
+        if (has_previous && row.body == rows[first - 1].body) return 0;
+        if (has_next && row.body == rows[last + 1].body) return 2;
+        return 1;
+      };
+      std::stable_sort(rows.begin() + static_cast<std::ptrdiff_t>(first),
+                       rows.begin() + static_cast<std::ptrdiff_t>(last + 1),
+                       [&](const io::ProbeRow& a, const io::ProbeRow& b) { return rank(a) < rank(b); });
+    }
+    first = last + 1;
+  }
+}
+
 std::vector<io::ProbeRow> probe_rows(const bem::ProbeResult& result, const AskedPoints& asked) {
   std::vector<io::ProbeRow> rows;
   for (const auto& value : result.values) {
     const Index k = value.point;
     rows.push_back({k, asked.line[k], asked.distance[k], asked.positions[k], value.region, value});
   }
+  order_along_line(rows);
   return rows;
 }
 

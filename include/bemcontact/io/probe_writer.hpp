@@ -2,7 +2,8 @@
 // The files of `bemcontact probe` (docs/probe.md), as strings for OutputDirectory:
 //   probe.csv  point,line,distance,x,y,body,on_boundary,u1,u2,s11,s22,s12,s33,von_mises,s1,s2,s3
 //              one row per point and body (or region) holding it, in the order asked
-//              (a point on an interface has a row for each side);
+//              (a point on an interface has a row for each side, in the order a line
+//              crosses it);
 //   probe.vtk  the same rows as VTK POLYDATA: each --line a polyline (broken where its
 //              points lie outside every body), the points of a points file as vertices;
 //              point data u, von_mises, s11..s33, stress, s1, s2, s3, distance, line,

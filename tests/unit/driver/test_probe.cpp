@@ -269,6 +269,25 @@ TEST(Probe, RayThroughTheCompoundRingMatchesTheClosedFormInEachLayer) {
   EXPECT_EQ(at_interface, 2);
   EXPECT_LT(u_error / u_scale, 1e-2);
   EXPECT_LT(s_error, 2e-2 * exact.inner_pressure);
+
+  // Walked from outside in, the interface's rows come in the order crossed (tube, then
+  // liner), and the section's linearisation is the same with the bending reversed.
+  const auto linearised = [&](const io::ProbeLine& line) {
+    const auto output = probe_run(folder.reader(), lines({line}), {});
+    for (const auto& file : output.files.files())
+      if (file.name == "probe.json") return nlohmann::json::parse(file.content)["lines"][0]["linearised"];
+    return nlohmann::json();
+  };
+  const io::ProbeLine inward{2.0 * direction, direction, 21};
+  const auto reversed = probe(folder, lines({inward}));
+  ASSERT_EQ(reversed.size(), 22u);
+  EXPECT_EQ(reversed[10].body, "tube");
+  EXPECT_EQ(reversed[11].body, "liner");
+  const auto out = linearised({direction, 2.0 * direction, 21}), in = linearised(inward);
+  for (const char* component : {"along", "across", "s33"})
+    EXPECT_NEAR(out["membrane"][component].get<double>(), in["membrane"][component].get<double>(), 1e-9) << component;
+  for (const char* component : {"across", "s33"})
+    EXPECT_NEAR(out["bending"][component].get<double>(), -in["bending"][component].get<double>(), 1e-9) << component;
 }
 
 // A square plate with a central hole: the quarter with two symmetry lines (three images),
