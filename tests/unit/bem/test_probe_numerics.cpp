@@ -55,6 +55,25 @@ TEST(ProbeNumerics, ChordBulgesAreTheSagittasOfOutwardArcs) {
   }
 }
 
+// The symmetry lines of a half or quarter model carry no elements and lie inside the whole
+// body: points on them are inside (the winding number alone is ambiguous there), as points
+// on the axis of an axisymmetric body always were.
+TEST(ProbeNumerics, PointsOnSymmetryLinesAreInside) {
+  const std::string quarter =
+      "analysis = \"plane_stress\"\n[material]\nE = 1000.0\nnu = 0.25\n"
+      "[[boundary]]\nfrom = [1.0, 0.0]\nto = [4.0, 0.0]\nsymmetry = true\n"
+      "[[boundary]]\nfrom = [4.0, 0.0]\nto = [4.0, 4.0]\nelements = 5\n"
+      "[[boundary]]\nfrom = [4.0, 4.0]\nto = [0.0, 4.0]\nelements = 5\nt2 = 1.0\n"
+      "[[boundary]]\nfrom = [0.0, 4.0]\nto = [0.0, 1.0]\nsymmetry = true\n"
+      "[[boundary]]\nshape = \"arc\"\nfrom = [0.0, 1.0]\nto = [1.0, 0.0]\ncenter = [0.0, 0.0]\ndirection = \"cw\"\n"
+      "elements = 4\n";
+  const auto mesh = mesh_body(io::parse_problem(quarter, "quarter.toml").problem);
+  for (const Vec2& on_line : {Vec2(2.0, 0.0), Vec2(3.999, 0.0), Vec2(0.0, 2.5), Vec2(0.0, 1.2)})
+    EXPECT_TRUE(point_inside(mesh, on_line, 1e-9)) << on_line.transpose();
+  for (const Vec2& off : {Vec2(-0.5, 2.0), Vec2(2.0, -0.1), Vec2(0.0, 0.5), Vec2(5.0, 0.0)})
+    EXPECT_FALSE(point_inside(mesh, off, 1e-9)) << off.transpose();
+}
+
 std::vector<double> uniform(int n, double t) {
   std::vector<double> s;
   for (int k = 0; k < n; ++k) s.push_back(t * k / (n - 1));
