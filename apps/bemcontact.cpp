@@ -12,11 +12,15 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <map>
+#include <optional>
+#include <sstream>
 #include <nlohmann/json.hpp>
 
 #include "bemcontact/core/error.hpp"
+#include "bemcontact/driver/probe.hpp"
 #include "bemcontact/driver/run.hpp"
 #include "bemcontact/io/output_directory.hpp"
 #include "bemcontact/io/toml_reader.hpp"
@@ -92,6 +96,49 @@ int command_run(const std::string& input, const std::string& output_dir, bool qu
                  output_dir.c_str());
     return solver_failed;
   }
+  if (!quiet) {
+    std::printf("%s", output.report.c_str());
+    print_written(output_dir, output.files);
+  }
+  return ok;
+}
+
+// A file's whole text, or nothing when it is missing or unreadable.
+std::optional<std::string> file_text(const std::filesystem::path& path) {
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(path, error)) return std::nullopt;
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (!in && !in.eof()) return std::nullopt;
+  return text.str();
+}
+
+// `probe`: values at new points of a finished run, from the files of its folder; the
+// probe's files replace the folder `output_dir` whole (default RUN_DIR/probe).
+int command_probe(const std::string& run_dir, const std::string& points_file, const std::vector<std::string>& lines,
+                  std::string output_dir, bool quiet, const ResourceLimits& limits) {
+  if (!std::filesystem::is_directory(run_dir))
+    throw InputError(SourceLocation{run_dir, 0, ""}, "no such run folder (bemcontact run FILE -o DIR writes one)");
+  driver::ProbeRequest request;
+  if (!points_file.empty()) {
+    request.points_file = points_file;
+    const auto text = file_text(points_file);
+    if (!text)
+      throw InputError(SourceLocation{points_file, 0, ""}, "cannot read the points file (missing, a folder or unreadable)");
+    request.listed = io::parse_points_file(*text, points_file);
+  }
+  for (const auto& line : lines) request.lines.push_back(io::parse_probe_line(line));
+  driver::ProbeOptions options;
+  options.run_name = run_dir;
+  options.read_input = [](const std::string& path) { return file_text(path); };
+  options.progress = make_progress(quiet);
+  options.limits = limits;
+  const auto output = driver::probe_run(
+      [&](const std::string& name) { return file_text(std::filesystem::path(run_dir) / name); }, request, options);
+  for (const auto& warning : output.warnings) std::fprintf(stderr, "bemcontact: warning: %s\n", warning.c_str());
+  if (output_dir.empty()) output_dir = (std::filesystem::path(run_dir) / "probe").string();
+  output.files.commit(output_dir);
   if (!quiet) {
     std::printf("%s", output.report.c_str());
     print_written(output_dir, output.files);
@@ -223,7 +270,8 @@ std::string global_option_hint(int argc, char** argv) {
   bool after_command = false;
   for (int k = 1; k < argc; ++k) {
     const std::string word = argv[k];
-    if (word == "run" || word == "mesh" || word == "validate" || word == "plot") after_command = true;
+    if (word == "run" || word == "mesh" || word == "validate" || word == "plot" || word == "probe")
+      after_command = true;
     else if (after_command && (word == "--threads" || word.rfind("--threads=", 0) == 0))
       return "bemcontact: --threads is a global option: write it before the sub-command, e.g. "
              "bemcontact --threads 2 run FILE";
@@ -297,6 +345,22 @@ int main(int argc, char** argv) {
   plot->add_option("-o,--output", plot_output, "folder of the figures (default: SOURCE/figures or STEM_figures)");
   plot->add_option("--format", plot_format, "png or svg")->check(CLI::IsMember({"png", "svg"}));
 
+  std::string probe_run_dir, probe_points, probe_output;
+  std::vector<std::string> probe_lines;
+  ResourceLimits probe_limits;
+  auto* probe = app.add_subcommand("probe", "displacements and stresses at new points of a finished run, from its "
+                                            "boundary solution (no new solve): probe.csv, probe.vtk, probe.json");
+  probe->add_option("OUTPUT_DIR", probe_run_dir, "the output folder of a run")->required();
+  probe->add_option("--points", probe_points, "CSV file of points x,y (one per line; a header allowed)");
+  probe->add_option("--line", probe_lines, "x0,y0,x1,y1,n: n points from (x0, y0) to (x1, y1), ends included "
+                                           "(repeatable)")
+      ->allow_extra_args(false);  // one line per --line: a word after it is OUTPUT_DIR
+  probe->add_option("-o,--output", probe_output,
+                    "folder of the probe's files, replaced whole (default: OUTPUT_DIR/probe)");
+  probe->add_flag("-q,--quiet", quiet, "print nothing but warnings and errors");
+  probe->add_option("--max-points", probe_limits.max_interior_points, "largest number of points (default 2000000)")
+      ->check(CLI::PositiveNumber);
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {
@@ -330,12 +394,17 @@ int main(int argc, char** argv) {
   try {
     if (distributed && !*run)
       throw InputError(SourceLocation{input, 0, ""}, "only `run` works on several processes (mpirun -n N); run `" +
-                                             std::string(*mesh ? "mesh" : *validate ? "validate" : "plot") +
+                                             std::string(*mesh       ? "mesh"
+                                                         : *validate ? "validate"
+                                                         : *probe    ? "probe"
+                                                                     : "plot") +
                                              "` on one process");
     for (const auto& assignment : assignments) io::add_parameter_override(run_options.overrides, assignment);
     run_options.limits.max_memory_bytes = max_memory_gb * 1e9;
     if (*run) return command_run(input, output_dir, quiet, run_options, false);
     if (*mesh) return command_run(input, output_dir, quiet, run_options, true);
+    if (*probe) input = probe_run_dir;  // geometry errors name the run's folder
+    if (*probe) return command_probe(probe_run_dir, probe_points, probe_lines, probe_output, quiet, probe_limits);
     if (*validate) {
       if (!report_dir.empty() && json_path.empty()) json_path = (std::filesystem::path(report_dir) / "validate.json").string();
       if (!report_dir.empty()) std::filesystem::create_directories(report_dir);

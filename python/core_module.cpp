@@ -5,11 +5,14 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <array>
 #include <map>
+#include <optional>
 #include <string>
 #include <variant>
 
 #include "bemcontact/core/error.hpp"
+#include "bemcontact/driver/probe.hpp"
 #include "bemcontact/driver/run.hpp"
 #include "bemcontact/io/expression.hpp"
 #include "bemcontact/io/gmsh_geometry.hpp"
@@ -65,6 +68,40 @@ py::dict run(const std::string& text, const std::string& file_name,
   return as_dict(output);
 }
 
+// `bemcontact probe` on a result's files in memory: points (their position in the list
+// stands for the line of a points file in messages) and lines (x0, y0, x1, y1, n).
+py::dict probe(const std::map<std::string, py::bytes>& files, const std::vector<std::array<double, 2>>& points,
+               const std::vector<std::tuple<double, double, double, double, int>>& lines, int threads) {
+  std::map<std::string, std::string> contents;
+  for (const auto& [name, content] : files) contents[name] = std::string(content);
+  driver::ProbeRequest request;
+  request.points_file = "<points>";
+  for (std::size_t k = 0; k < points.size(); ++k)
+    request.listed.push_back({Vec2(points[k][0], points[k][1]), static_cast<int>(k) + 1});
+  for (const auto& [x0, y0, x1, y1, n] : lines) request.lines.push_back({Vec2(x0, y0), Vec2(x1, y1), n});
+  driver::ProbeOptions options;
+  options.run_name = "the result";
+  driver::ProbeOutput output;
+  {
+    py::gil_scoped_release released;
+    if (threads > 0) omp_set_num_threads(threads);
+    output = driver::probe_run(
+        [&](const std::string& name) -> std::optional<std::string> {
+          const auto found = contents.find(name);
+          if (found == contents.end()) return std::nullopt;
+          return found->second;
+        },
+        request, options);
+  }
+  py::dict probe_files;
+  for (const auto& file : output.files.files()) probe_files[py::str(file.name)] = py::bytes(file.content);
+  py::dict result;
+  result["files"] = probe_files;
+  result["report"] = output.report;
+  result["warnings"] = output.warnings;
+  return result;
+}
+
 void commit(const std::map<std::string, py::bytes>& files, const std::string& directory) {
   io::OutputDirectory output;
   for (const auto& [name, content] : files) output.add(name, std::string(content));
@@ -88,6 +125,8 @@ PYBIND11_MODULE(_core, m) {
         py::arg("threads") = 0, py::arg("gmsh_timeout") = 60.0,
         "Solve (or only mesh) a problem text; returns files, report, warnings. gmsh_timeout: the seconds a .geo "
         "file may take to mesh (as --gmsh-timeout).");
+  m.def("probe", &probe, py::arg("files"), py::arg("points"), py::arg("lines"), py::arg("threads") = 0,
+        "Values at new points of a result (as `bemcontact probe`); returns files, report, warnings.");
   m.def("commit", &commit, py::arg("files"), py::arg("directory"),
         "Replace `directory` whole by these files (as `bemcontact run -o`).");
 }

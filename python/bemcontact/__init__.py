@@ -133,6 +133,31 @@ class Result:
         """Rigid-body and platen motions and forces per step."""
         return self.table("motions")
 
+    def probe(self, points=(), lines=(), output=None, threads=0):
+        """Displacements and stresses at new points, from this result's boundary solution (no
+        new solve), as `bemcontact probe`: `points` a sequence of (x, y), `lines` of
+        (x0, y0, x1, y1, n) (n points, ends included). Returns probe.csv as a Table (a row per
+        point and body holding it), with `.warnings` (points of lines inside no body, left
+        out), `.summary` (probe.json) and `.files`; `output` also writes the files there (the
+        folder replaced whole). A listed point inside no body is an InputError naming its
+        place in the list (from 1)."""
+        points = [(float(x), float(y)) for x, y in np.asarray(points, dtype=float).reshape(-1, 2)]
+        checked = []
+        for k, line in enumerate(lines):
+            x0, y0, x1, y1, n = line
+            if int(n) != n or n < 2 or (x0, y0) == (x1, y1):
+                raise InputError(f"lines[{k}] = {tuple(line)!r}: a line is (x0, y0, x1, y1, n) with n >= 2 points "
+                                 f"(a whole number, ends included) and two different ends")
+            checked.append((float(x0), float(y0), float(x1), float(y1), int(n)))
+        raw = _core.probe(self.files, points, checked, int(threads))
+        table = Table("probe.csv", raw["files"]["probe.csv"].decode())
+        table.files = dict(raw["files"])
+        table.warnings = list(raw["warnings"])
+        table.summary = json.loads(table.files["probe.json"])
+        if output is not None:
+            _core.commit(table.files, os.fspath(output))
+        return table
+
     def save(self, directory):
         """Write the files to `directory`, replacing it whole (as `bemcontact run -o`)."""
         _core.commit(self.files, os.fspath(directory))

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <functional>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -32,6 +33,13 @@ double out_of_plane_stress(AnalysisType type, const Material& material, double s
 double StressTensor::von_mises() const {
   const double d12 = s11 - s22, d13 = s11 - s33, d23 = s22 - s33;
   return std::sqrt(0.5 * (d12 * d12 + d13 * d13 + d23 * d23) + 3.0 * s12 * s12);
+}
+
+std::array<double, 3> StressTensor::principal() const {
+  const double mean = 0.5 * (s11 + s22), radius = std::hypot(0.5 * (s11 - s22), s12);
+  std::array<double, 3> values{mean + radius, mean - radius, s33};
+  std::sort(values.begin(), values.end(), std::greater<>());
+  return values;
 }
 
 namespace {
@@ -122,11 +130,29 @@ std::vector<StressTensor> boundary_stresses(const geometry::BoundaryMesh& mesh, 
   return stresses;
 }
 
+namespace {
+
+// The axis of an axisymmetric body and its symmetry lines carry no elements and lie inside
+// the whole body: a point on one is tested a little off it, on the body's side (on the
+// closing segment itself the winding number is ambiguous).
+Vec2 off_element_free_pieces(const geometry::BoundaryMesh& mesh, const Vec2& query) {
+  for (std::size_t p = 0; p < mesh.piece_skipped.size(); ++p) {
+    if (!mesh.piece_skipped[p]) continue;
+    for (const auto& w : mesh.vertices) {
+      if (w.piece_in != static_cast<int>(p)) continue;
+      const Vec2 a = mesh.vertices[p].position, along = w.position - a;
+      const double f = std::clamp((query - a).dot(along) / along.squaredNorm(), 0.0, 1.0);
+      if ((a + f * along - query).norm() <= 1e-9 * mesh.scale)
+        return query + 1e-6 * mesh.scale * Vec2(-along.y(), along.x()).normalized();
+    }
+  }
+  return query;
+}
+
+}  // namespace
+
 bool point_inside(const geometry::BoundaryMesh& mesh, const Vec2& query, double tolerance) {
-  // In axisymmetry the axis is inside the body, not its boundary: test a point just off it.
-  bool has_axis = false;
-  for (bool skipped : mesh.piece_skipped) has_axis = has_axis || skipped;
-  const Vec2 point = has_axis && std::abs(query.x()) <= 1e-9 * mesh.scale ? Vec2(1e-6 * mesh.scale, query.y()) : query;
+  const Vec2 point = off_element_free_pieces(mesh, query);
   // Outside the bounding box (or not a number): outside, before any product can overflow.
   if (!point.allFinite()) return false;
   Vec2 lo = mesh.elements.empty() ? point : mesh.elements.front().start, hi = lo;

@@ -117,8 +117,10 @@ io::RunSummary summary_envelope(const char* kind, const char* command, std::stri
   return s;
 }
 
-// summary.json, last, listing the files added before it.
+// summary.json, last, listing the files added before it. A run also keeps its problem text
+// (problem.toml, byte for byte: its SHA-256 is the summary's), from which `probe` meshes it again.
 void add_summary(io::RunSummary& summary, RunOutput& output) {
+  if (summary.command == "run") output.files.add("problem.toml", std::string(summary.input_text));
   summary.warnings = output.warnings;
   summary.estimate = output.estimate;
   summary.outputs = output.files.names();

@@ -26,11 +26,15 @@ std::string number(double value) {
 // Every recorded load step's files go into this sub-folder of the output folder.
 constexpr const char* steps_folder = "steps/";
 
+}  // namespace
+
 std::string file_stem(const std::string& name) {
   std::string out;
   for (const char c : name) out += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
   return out;
 }
+
+namespace {
 
 nlohmann::json summary_json(const contact::ContactSummary& s) {
   return {{"time", s.time},

@@ -297,6 +297,35 @@ std::string point_cloud_vtk(std::string_view title, const std::vector<Vec2>& poi
   return std::move(out).str();
 }
 
+std::string polyline_vtk(std::string_view title, const std::vector<Vec2>& points,
+                         const std::vector<std::vector<Index>>& lines, const std::vector<Vec2>& displacement,
+                         const std::vector<bem::StressTensor>& stress,
+                         const std::vector<std::pair<std::string, std::vector<double>>>& scalars,
+                         const std::pair<std::string, std::vector<std::string>>& names) {
+  require_size(displacement.size(), points.size(), "the displacement");
+  require_size(stress.size(), points.size(), "the stress");
+  Text out;
+  vtk_header(out, title);
+  if (!names.first.empty()) vtk_string_field(out, names.first.c_str(), names.second);
+  vtk_points(out, points);
+  std::vector<bool> on_line(points.size(), false);
+  for (const auto& line : lines)
+    for (const Index i : line) on_line[i] = true;
+  std::vector<std::vector<Index>> vertices;
+  for (std::size_t i = 0; i < points.size(); ++i)
+    if (!on_line[i]) vertices.push_back({static_cast<Index>(i)});
+  if (!vertices.empty()) vtk_cells(out, "VERTICES", vertices);
+  if (!lines.empty()) vtk_cells(out, "LINES", lines);
+  out << "POINT_DATA " << static_cast<Index>(points.size()) << '\n';
+  vtk_vectors(out, "u", displacement);
+  vtk_stress(out, stress);
+  for (const auto& [name, values] : scalars) {
+    require_size(values.size(), points.size(), ("point data '" + name + "'").c_str());
+    vtk_scalars(out, name.c_str(), "double", values);
+  }
+  return std::move(out).str();
+}
+
 std::string boundary_csv(const geometry::BoundaryMesh& mesh, const bem::BoundarySolution& solution) {
   check_boundary(mesh, solution);
   Text out;

@@ -419,3 +419,72 @@ TEST(CommandLine, GeoRunsKeepTheirThreadsAndStopAtTheTimeout) {
       << stopped.output;
   fs::remove_all(dir);
 }
+
+std::string file_content(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+TEST(CommandLine, ProbeWritesItsFilesIntoTheRunFolderOrOneGiven) {
+  const fs::path dir = scratch("probe");
+  const auto out = run("run " + example("plate_tension.toml") + " -o " + (dir / "out").string());
+  ASSERT_EQ(out.exit_code, 0) << out.output;
+  EXPECT_EQ(file_content(dir / "out" / "problem.toml"), example_text("plate_tension.toml"));
+  write(dir / "pts.csv", "x,y\n0,0.5\n0.5,1.5\n");
+  const auto probed = run("probe " + (dir / "out").string() + " --points " + (dir / "pts.csv").string() +
+                          " --line -1,1,1,1,5 --line 0,0,0,2,3");
+  ASSERT_EQ(probed.exit_code, 0) << probed.output;
+  EXPECT_NE(probed.output.find("10 points: 10 rows"), std::string::npos) << probed.output;
+  for (const char* name : {"probe.csv", "probe.vtk", "probe.json", ".bemcontact-output"})
+    EXPECT_TRUE(fs::exists(dir / "out" / "probe" / name)) << name;
+  std::ifstream in(dir / "out" / "probe" / "probe.json");
+  const auto summary = nlohmann::json::parse(in);
+  EXPECT_EQ(summary["rows"], 10);
+  EXPECT_EQ(summary["lines"].size(), 2u);
+  const auto elsewhere = run("probe " + (dir / "out").string() + " --line -1,1,1,1,3 -q -o " + (dir / "section").string());
+  EXPECT_EQ(elsewhere.exit_code, 0) << elsewhere.output;
+  EXPECT_EQ(elsewhere.output, "");
+  EXPECT_TRUE(fs::exists(dir / "section" / "probe.csv"));
+  // A later run into the folder replaces the probe with the rest.
+  ASSERT_EQ(run("run " + example("plate_tension.toml") + " -q -o " + (dir / "out").string()).exit_code, 0);
+  EXPECT_FALSE(fs::exists(dir / "out" / "probe"));
+  fs::remove_all(dir);
+}
+
+TEST(CommandLine, ProbeErrorsAreBadInputAndWriteNothing) {
+  const fs::path dir = scratch("probe_errors");
+  const auto missing = run("probe " + (dir / "nothing").string() + " --line 0,0,1,1,3");
+  EXPECT_EQ(missing.exit_code, 2) << missing.output;
+  EXPECT_NE(missing.output.find("nothing: no such run folder"), std::string::npos) << missing.output;
+  write(dir / "plate.toml", example_text("plate_tension.toml"));
+  ASSERT_EQ(run("run " + (dir / "plate.toml").string() + " -q -o " + (dir / "out").string()).exit_code, 0);
+  const std::string folder = (dir / "out").string();
+  const auto no_points = run("probe " + folder);
+  EXPECT_EQ(no_points.exit_code, 2) << no_points.output;
+  EXPECT_NE(no_points.output.find("give points: --points FILE or --line"), std::string::npos) << no_points.output;
+  const auto no_file = run("probe " + folder + " --points " + (dir / "none.csv").string());
+  EXPECT_EQ(no_file.exit_code, 2) << no_file.output;
+  EXPECT_NE(no_file.output.find("none.csv"), std::string::npos) << no_file.output;
+  write(dir / "bad.csv", "x,y\n0,1\n0,one\n");
+  const auto bad = run("probe " + folder + " --points " + (dir / "bad.csv").string());
+  EXPECT_EQ(bad.exit_code, 2) << bad.output;
+  EXPECT_NE(bad.output.find("bad.csv:3: y = 'one' is not a finite number"), std::string::npos) << bad.output;
+  write(dir / "far.csv", "0,1\n7,1\n");
+  const auto far = run("probe " + folder + " --points " + (dir / "far.csv").string());
+  EXPECT_EQ(far.exit_code, 2) << far.output;
+  EXPECT_NE(far.output.find("far.csv:2: point (7, 1) lies inside no body"), std::string::npos) << far.output;
+  const auto bad_line = run("probe " + folder + " --line 0,0,1,1");
+  EXPECT_EQ(bad_line.exit_code, 2) << bad_line.output;
+  EXPECT_NE(bad_line.output.find("--line 0,0,1,1"), std::string::npos) << bad_line.output;
+  EXPECT_FALSE(fs::exists(dir / "out" / "probe"));
+  // A run folder without problem.toml (older) whose input file changed since.
+  fs::remove(dir / "out" / "problem.toml");
+  ASSERT_EQ(run("probe " + folder + " --line -1,1,1,1,3 -q").exit_code, 0);
+  write(dir / "plate.toml", example_text("plate_tension.toml") + "\n# edited\n");
+  const auto changed = run("probe " + folder + " --line -1,1,1,1,3");
+  EXPECT_EQ(changed.exit_code, 2) << changed.output;
+  EXPECT_NE(changed.output.find("plate.toml' changed since the run"), std::string::npos) << changed.output;
+  fs::remove_all(dir);
+}

@@ -262,3 +262,35 @@ def test_geo_numbers_threads_and_timeout(tmp_path):
                          str(tmp_path / "endless.toml"))
     with pytest.raises(bc.InputError, match="did not finish meshing the file within 0.3 s"):
         endless.mesh(gmsh_timeout=0.3)
+
+
+def test_probe_gives_the_runs_interior_points_and_the_command_lines_files(binary, tmp_path):
+    # The same Somigliana integrals on the same boundary values: the run's interior points
+    # exactly; a uniform field on a line; and the files `bemcontact probe` writes.
+    result = bc.Problem.from_dict(tension_plate()).run()
+    inner = result.interior()
+    table = result.probe(points=np.column_stack([inner["x"], inner["y"]]), lines=[(0.0, 0.5, 2.0, 0.5, 5)])
+    listed = table["line"] == 0
+    for column in ("u1", "u2", "s11", "s22", "s12", "s33"):
+        np.testing.assert_array_equal(table[column][listed], inner[column])
+    on_line = table["line"] == 1
+    assert on_line.sum() == 5
+    assert table["on_boundary"][on_line].tolist() == [1, 0, 0, 0, 1]
+    np.testing.assert_allclose(table["s11"][on_line], 2.0, rtol=1e-6)
+    assert list(table["body"]) == ["body"] * 7
+    assert table.summary["rows"] == 7 and table.warnings == []
+    result.save(tmp_path / "run")
+    subprocess.run([binary, "probe", str(tmp_path / "run"), "--line", "0,0.5,2,0.5,5", "-q"], check=True)
+    alone = result.probe(lines=[(0, 0.5, 2, 0.5, 5)])
+    assert (tmp_path / "run" / "probe" / "probe.csv").read_bytes() == alone.files["probe.csv"]
+
+
+def test_probe_errors_name_the_point_and_warn_for_lines(tmp_path):
+    result = bc.Problem.from_dict(tension_plate()).run()
+    with pytest.raises(bc.InputError, match=r"<points>:2: point \(5, 0.5\) lies inside no body"):
+        result.probe(points=[(1.0, 0.5), (5.0, 0.5)])
+    with pytest.raises(bc.InputError, match=r"lines\[0\]"):
+        result.probe(lines=[(0, 0, 1, 1, 1)])
+    table = result.probe(lines=[(-1.0, 0.5, 1.0, 0.5, 5)], output=tmp_path / "probe")
+    assert len(table) == 3 and "2 of its 5 points are inside no body" in table.warnings[0]
+    assert (tmp_path / "probe" / "probe.vtk").exists()

@@ -14,6 +14,9 @@ struct StressTensor {
   double s11 = 0.0, s22 = 0.0, s12 = 0.0, s33 = 0.0;
   // Hencky-von Mises equivalent stress (section II.6).
   double von_mises() const;
+  // The three principal stresses, largest first: the in-plane pair and s33 (the
+  // out-of-plane direction is principal in plane and axisymmetric states).
+  std::array<double, 3> principal() const;
 };
 
 // Resultant of the tractions on one boundary (bem/resultants.hpp).

@@ -46,6 +46,10 @@ std::vector<std::string> contact_file_names(const std::string& contact);
 std::vector<std::string> region_file_names(const std::string& region);
 std::vector<std::string> model_file_names();
 
+// The stem of a body's, region's or contact's files (<stem>_boundary.csv): its name with
+// characters other than letters and digits turned into '_'.
+std::string file_stem(const std::string& name);
+
 std::string contact_csv(const std::vector<contact::PairResult>& pairs);
 // The same pairs as VTK vertices (<contact>.vtk): point data p_n, p_t, gap, slip_ratio,
 // jump_n, jump_t, status (0 open, 1 stick, 2 slip: field data status_names) and normal.

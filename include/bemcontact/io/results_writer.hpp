@@ -68,5 +68,13 @@ std::string point_cloud_vtk(std::string_view title, const std::vector<Vec2>& poi
                             const std::vector<std::pair<std::string, std::vector<double>>>& scalars,
                             const std::vector<std::pair<std::string, std::vector<Vec2>>>& vectors,
                             const std::pair<std::string, std::vector<std::string>>& names = {});
+// Points joined by polylines (point indices, in order) and the points of no line as
+// vertices, with point data u, the stresses (as interior.vtk), then `scalars`, and
+// optionally one string array of field data.
+std::string polyline_vtk(std::string_view title, const std::vector<Vec2>& points,
+                         const std::vector<std::vector<Index>>& lines, const std::vector<Vec2>& displacement,
+                         const std::vector<bem::StressTensor>& stress,
+                         const std::vector<std::pair<std::string, std::vector<double>>>& scalars,
+                         const std::pair<std::string, std::vector<std::string>>& names = {});
 
 }  // namespace bemcontact::io
