@@ -193,7 +193,7 @@ RingKernels ring_kernel_log_parts(const KelvinAxisymmetric& kelvin, const Vec2& 
   return displacement_traction(kelvin, g, normal, log_weights(g, 2).w);
 }
 
-// 3D interior-stress kernels (Brebbia & Dominguez), d = y - x, d.n = (y - x).n:
+// 3D interior-stress kernels [BrebbiaDominguez1992], d = y - x, d.n = (y - x).n:
 //   D3_jab = [(1-2nu)(delta_ja d_b + delta_jb d_a - delta_ab d_j)/rho^3
 //             + 3 d_j d_a d_b / rho^5] / (8 pi (1-nu))
 //   S3_jab = mu / (4 pi (1-nu)) { 3 (d.n) [(1-2nu) delta_ab d_j + nu (delta_ja d_b + delta_jb d_a)]/rho^5

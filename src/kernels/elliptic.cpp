@@ -9,7 +9,7 @@ namespace {
 
 constexpr double half_pi = 0.5 * std::numbers::pi;
 
-// AGM (Abramowitz & Stegun 17.6): a_0 = 1, b_0 = sqrt(m1), c_0^2 = m;
+// AGM [AbramowitzStegun1972, 17.6]: a_0 = 1, b_0 = sqrt(m1), c_0^2 = m;
 // a_{n+1} = (a_n + b_n)/2, b_{n+1} = sqrt(a_n b_n), c_{n+1} = (a_n - b_n)/2 = c_n^2 / (4 a_{n+1});
 //   K = pi / (2 a_inf),   K - E = K sum_n 2^{n-1} c_n^2,   a_inf = a_{n+1} - sum_{k>n+1} c_k.
 // Convergence is quadratic: once c_{n+1} < 1e-4 a_{n+1}, c_{n+2} = c_{n+1}^2 / (4 a) is taken in

@@ -10,7 +10,7 @@ struct Constants {
   double A, B, C;
 };
 
-// Timoshenko & Goodier (section 29), with N the common denominator.
+// [TimoshenkoGoodier1970, §29], with N the common denominator.
 Constants constants(const CurvedBeamEndCouple& beam) {
   const double a = beam.inner_radius, b = beam.outer_radius, M = beam.moment;
   const double a2 = a * a, b2 = b * b, log_ratio = std::log(b / a);

@@ -168,7 +168,7 @@ std::vector<Record> run_hertz_sphere(const Context& context) {
 }
 
 // Spence (V.5.2.4): c/a within 0.03 of (E.1) (uncoupled model) and of the coupled value
-// 0.513 (DESIGN.md section 6); friction lowers a and raises p0; c/a for 1, 4, 16, 64 steps.
+// 0.513 ([thesis.md, Spence's (E.1)]); friction lowers a and raises p0; c/a for 1, 4, 16, 64 steps.
 // The thesis' ball (a/R = 0.07) sits about 0.02 below the half-space values: the curvature
 // of the ball tilts its surface by r/R, which its large normal displacement turns into a
 // radial one of the size of Spence's coupling. The tolerance 0.03 holds that O(a/R) term;
@@ -189,7 +189,7 @@ std::vector<Record> run_spence_sphere(const Context& context) {
     problem.friction = beta;
     const auto result = contact::solve_contact(with_operator(context, problem), context.progress);
     const double c_over_a = result.summary.stick_ratio();
-    const double coupled = beta == 0.1 ? 0.513 : 0.9997;  // DESIGN.md section 6, 640 steps
+    const double coupled = beta == 0.1 ? 0.513 : 0.9997;  // [thesis.md, Spence's (E.1)], 640 steps
     records.push_back(compare_scaled("c_over_a", c_over_a, coupled, 1.0, 0.03));
     records.push_back(report_value("steps_taken_adaptive", result.steps_taken));
     auto uncoupled = problem;
@@ -255,7 +255,7 @@ std::vector<Record> run_spence_sphere(const Context& context) {
 // kernels, Hertz's paraboloid gap), solved by the same contact solver. Frictionless: a, p0
 // and delta within 0.5 % of Hertz (60 hat elements over 1.43 a). With friction: c/a within
 // 0.01 of (E.1) when uncoupled (the approximation (E.1) makes) and of the coupled value
-// 0.513 / 0.9997 (DESIGN.md section 6). This checks the solver, the incremental Coulomb law
+// 0.513 / 0.9997 ([thesis.md, Spence's (E.1)]). This checks the solver, the incremental Coulomb law
 // and the measure of c apart from the BEM bodies.
 std::vector<Record> run_spence_halfspace(const Context& context) {
   std::vector<Record> records;
@@ -288,7 +288,7 @@ std::vector<Record> run_spence_halfspace(const Context& context) {
     settings.friction = beta;
     settings.increments = file.problem.increments;
     const double spence = reference::spence_stick_ratio(beta, gamma);
-    const double coupled_reference = beta == 0.1 ? 0.513 : 0.9997;  // DESIGN.md section 6, 640 steps
+    const double coupled_reference = beta == 0.1 ? 0.513 : 0.9997;  // [thesis.md, Spence's (E.1)], 640 steps
     const auto u = contact::solve_load_history(uncoupled_model.condensed, uncoupled_model.pairs, settings);
     const auto c = contact::solve_load_history(coupled_model.condensed, coupled_model.pairs, settings);
     records.push_back(compare_scaled("c_over_a_uncoupled_vs_E1", u.summary.stick_ratio(),

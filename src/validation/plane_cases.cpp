@@ -268,7 +268,7 @@ std::vector<Record> run_corner_refinement(const Context& context) {
   return records;
 }
 
-// Curved bar under end couples (Timoshenko & Goodier 29), examples/curved_beam.toml:
+// Curved bar under end couples [TimoshenkoGoodier1970, §29], examples/curved_beam.toml:
 // s_tt at every boundary node within 1 % of the peak |s_tt| with linear elements. The
 // worst node is the one next to an inner corner, where the error of linear elements is
 // first order (5.6, 2.6, 1.2, 0.61 % for n = 8, 16, 32, 64): n = 64 is their mesh for the

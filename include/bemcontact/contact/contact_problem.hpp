@@ -148,7 +148,7 @@ struct ContactProblem {
   double friction = 0.0;  // beta (Coulomb)
   // false drops the normal displacements due to tangential tractions from the condensed
   // operator (the pressure then stays the frictionless one): the uncoupled (Goodman-type)
-  // approximation under which Spence's (E.1) holds (DESIGN.md section 6).
+  // approximation under which Spence's (E.1) holds ([thesis.md, Spence's (E.1)]).
   bool tangential_coupling = true;
   // Load history over the pseudo-time 0 < t <= end_time: every prescribed value of the
   // elastic bodies follows data_amplitude, each force load and rigid displacement its own.

@@ -5,7 +5,7 @@
 //
 // Two solvers:
 //  - solve_step_newton: semi-smooth Newton / primal-dual active set on the nonlinear
-//    complementarity functions (Alart-Curnier form, c = 1 / mean diag M)
+//    complementarity functions ([AlartCurnier1991] form, c = 1 / mean diag M)
 //      C_n = lambda_n - max(0, lambda_n - c (d - w_n))        (unilateral; c (d - w_n) bilateral)
 //      C_t = tau - proj_[-g, g](tau - c s)
 //    The slip direction is part of the solution. Each iteration solves one dense linear

@@ -29,7 +29,7 @@
 // stress components a b = rr, zz, rz, tt at x (tt = hoop, the 3D yy at theta = 0),
 //   D(i, ab) = int_0^{2pi} D3_jab(x, y(theta)) e_i(theta)_j dtheta,  S(i, ab) likewise with S3,
 // where D3, S3 are the 3D kernels of sigma_ab(x) = int D3_jab p_j - int S3_jab u_j
-// (Brebbia & Dominguez; written out in axisymmetric.cpp). The unit tests check D and S by
+// ([BrebbiaDominguez1992]; written out in axisymmetric.cpp). The unit tests check D and S by
 // finite differences of U and T with respect to the source point and Hooke's law.
 #include <array>
 

@@ -18,8 +18,8 @@
 // (spectrally accurate: the integrand is periodic and analytic). Both to ~1e-13 relative.
 //
 // As m -> 1 (field point close to the source) H(p, j) = H_reg + H_log ln(1/m1), with H_log
-// analytic in m1 and H_reg analytic apart from a pole m1^{j-p} when j < p (Abramowitz &
-// Stegun 15.3.10-12). ring_integral_log_parts returns the H_log, from their power series.
+// analytic in m1 and H_reg analytic apart from a pole m1^{j-p} when j < p
+// [AbramowitzStegun1972, 15.3.10-12]. ring_integral_log_parts returns the H_log, from their power series.
 #include <array>
 
 namespace bemcontact::kernels {

@@ -1,5 +1,5 @@
 #pragma once
-// Restarted GMRES(m) (thesis Alg IV.3 and IV.4; Saad and Schultz 1986) on a LinearOperator:
+// Restarted GMRES(m) ([Kosior1997, Alg IV.3, IV.4]; [SaadSchultz1986]) on a LinearOperator:
 // Arnoldi with modified Gram-Schmidt (one re-orthogonalisation pass when cancellation is
 // detected), Givens rotations for the small least-squares problem, restart every m steps.
 //

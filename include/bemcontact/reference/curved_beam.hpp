@@ -1,6 +1,6 @@
 #pragma once
 // Curved bar (annular sector a <= r <= b) in pure bending by end couples M per unit
-// thickness: Timoshenko & Goodier, Theory of Elasticity, section 29. With the stress
+// thickness: [TimoshenkoGoodier1970, §29]. With the stress
 // function phi = A ln r + B r^2 ln r + C r^2,
 //   s_rr = A/r^2 + B (1 + 2 ln r) + 2C,   s_tt = -A/r^2 + B (3 + 2 ln r) + 2C,   s_rt = 0,
 //   A = -4M/N a^2 b^2 ln(b/a),   B = -2M/N (b^2 - a^2),

@@ -1,6 +1,6 @@
 #pragma once
 // Rigid flat punch of half-width a pressed without friction on an elastic half-plane
-// (Sadowsky; Johnson (2.64)), plane problem, load P per unit length:
+// (Sadowsky; [Johnson1985, (2.64)]), plane problem, load P per unit length:
 //   p(x) = P / (pi sqrt(a^2 - x^2))  for |x| < a, 0 outside (integrable edge singularity).
 // Frame: x1 along the surface from the centre of the punch; the half-plane lies below its
 // surface, depth into it. The punch face stays flat: the indentation (normal displacement

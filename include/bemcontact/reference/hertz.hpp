@@ -1,5 +1,5 @@
 #pragma once
-// Hertz contact (Annex D, after Johnson [CON 2]): a sphere on a half-space (point contact,
+// Hertz contact ([Kosior1997, Annex D], after [Johnson1985]): a sphere on a half-space (point contact,
 // with Huber's stresses) and a cylinder on a half-plane (line contact, plane problems).
 //
 // Frame used by the field functions: each body is treated as a half-space whose surface is
@@ -48,7 +48,7 @@ struct HertzPointContact {
   double approach() const;        // delta: approach of distant points of the two bodies
   double pressure(double r) const;  // zero for r >= a
 
-  // Fields in one of the two bodies (its own E, nu), Johnson (3.41)-(3.45):
+  // Fields in one of the two bodies (its own E, nu), [Johnson1985, (3.41)-(3.45)]:
   // surface displacement (D.10)-(D.11): u_r = -(1-2nu)(1+nu) p0 a^2 / (3 E r) (1 - (1-r^2/a^2)^1.5),
   //   indentation (1-nu^2) pi p0 (2a^2 - r^2) / (4 a E) inside, and outside
   //   (1-nu^2) p0 / (2 a E) [ (2a^2 - r^2) asin(a/r) + a r sqrt(1 - a^2/r^2) ].
@@ -81,7 +81,7 @@ struct HertzLineContact {
   double half_width() const;    // a
   double max_pressure() const;  // p0
   double pressure(double x) const;
-  // Stress on the symmetry axis at a depth (McEwen; Johnson (4.49)), with zeta = z/a:
+  // Stress on the symmetry axis at a depth (McEwen; [Johnson1985, (4.49)]), with zeta = z/a:
   //   s_xx = -p0 [ (1 + 2 zeta^2) / sqrt(1 + zeta^2) - 2 zeta ],  s_zz = -p0 / sqrt(1 + zeta^2)
   // returned as s11 = s_xx (along the surface), s22 = s_zz (normal), s12 = 0,
   // s33 = nu (s11 + s22) in plane strain, 0 in plane stress.

@@ -15,7 +15,7 @@
 // in plane strain. With the load along x2 (phi = theta - pi/2) these are the formulas printed
 // in II.7.3.2 with theta from x1: on the hole s_tt = P (1 + 2 cos 2theta), so s_tt = 3P at
 // theta = 0, the point (a, 0) where the hole's tangent is along the load, and s_tt = -P at
-// theta = 90 deg. (DESIGN.md's "3P at theta = 90 deg" measures theta from the load axis.)
+// theta = 90 deg. ([thesis.md]: "3P at theta = 90 deg" measures theta from the load axis.)
 // The displacement carries no rigid-body motion: for the default load u2 = 0 on x2 = 0 and
 // u1 = 0 on x1 = 0, the symmetry conditions of the thesis quarter model. Loading a finite model with traction(x, n) or displacement(x) on its outer
 // boundary reproduces the field exactly.

@@ -1,6 +1,6 @@
 #pragma once
 // A rigid pin in the hole of an annular plate with clearance, frictionless: the conformal
-// contact that Persson (1964) solved for an infinite plate, here solved semi-analytically,
+// contact that [Persson1964] solved for an infinite plate, here solved semi-analytically,
 // independently of the boundary elements, for a plate clamped on its outer circle (the
 // geometry of examples/contact_pin_in_hole.toml).
 //

@@ -11,7 +11,7 @@
 // Scope: (E.1) is Spence's AXISYMMETRIC result (Annex E: "un demi-espace et un indenteur
 // axisymetrique"); it holds for a flat circular punch and for the Hertzian sphere alike
 // (the same c for both: "valable pour un indenteur plat ou de forme elliptique"). The normal
-// pressure is the frictionless one: per DESIGN.md section 6, (E.1) neglects the coupling of
+// pressure is the frictionless one: per [thesis.md, Spence's (E.1)], (E.1) neglects the coupling of
 // the shear traction into the normal displacement, and a computation that keeps it gives
 // c = 0.513 instead of 0.530 in the thesis case. It is not a plane (2D strip) result: with
 // the plane-stress gamma = 0.26 of the thesis' rigid punch (V.5.1) it would give c = 0.29 at

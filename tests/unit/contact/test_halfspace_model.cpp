@@ -21,7 +21,7 @@ std::vector<double> radii(double extent, int intervals) {
 }
 
 TEST(HalfSpaceModel, FlexibilityGivesHertzSurfaceDisplacements) {
-  // Hertz pressure on the lower half-space: u_r (Johnson (3.41)) and the indentation
+  // Hertz pressure on the lower half-space: u_r ([Johnson1985, (3.41)]) and the indentation
   // profile u_z(0) - u_z(r) = pi p0 r^2 / (4 a) (1 - nu^2) / E inside the contact.
   const reference::HertzPointContact hertz{31.5, 1.0, reference::contact_modulus(ball, support)};
   const double a = hertz.contact_radius();

@@ -1,6 +1,6 @@
 // Complete elliptic integrals by the AGM against independent long-double references:
 // the Maclaurin series in m for m <= 1/2, the logarithmic series in m1 = 1 - m
-// (Abramowitz & Stegun 17.3.34 and 17.3.36) for m >= 1/2, and closed-form values.
+// ([AbramowitzStegun1972, 17.3.34, 17.3.36]) for m >= 1/2, and closed-form values.
 #include <gtest/gtest.h>
 
 #include <cmath>

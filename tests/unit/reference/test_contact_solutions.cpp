@@ -54,7 +54,7 @@ const Material support{72000.0, 0.32};
 TEST(ReferenceHertz, ThesisCaseNumbers) {
   const double inf = std::numeric_limits<double>::infinity();
   const ref::HertzPointContact hz = ref::hertz_point_contact(31.5, 1.0, ball, inf, support);
-  // DESIGN.md section 4, to the printed precision.
+  // The thesis' printed values (docs/thesis.md), to the printed precision.
   EXPECT_NEAR(hz.contact_radius(), 0.07004, 5e-6);
   EXPECT_NEAR(hz.max_pressure(), 3065.8, 0.05);
   EXPECT_NEAR(hz.approach(), 4.906e-3, 5e-7);
@@ -224,7 +224,7 @@ TEST(ReferenceHertzLine, HalfWidthPressureAndFlamantAxisStresses) {
 
 // ---------------------------------------------------------------------- flat punch
 // Surface indentation of a half-plane: u(x) = -(2 / (pi E')) int p(s) ln|x - s| ds + C
-// (Johnson (2.25b)); this is the integral over the punch's face, or of g(s) ln|x - s| with
+// ([Johnson1985, (2.25b)]); this is the integral over the punch's face, or of g(s) ln|x - s| with
 // g = `pressure` times a weight when `weight` is given. With s = a sin(phi), ds = sqrt(a^2 -
 // s^2) dphi absorbs the edge singularity: the integrand is g(s) sqrt((a - s)(a + s)) ln|x - s|
 // evaluated at the same rounded s as the library (so the rounding cancels); a node whose s

@@ -197,7 +197,7 @@ TEST(ReferenceCantilever, BoundaryConditionsOfTheHalfModel) {
     // Free edges x2 = +-H/2.
     EXPECT_NEAR(beam.stress({x, 50.0}).traction({0.0, 1.0}).norm(), 0.0, 1e-14);
     EXPECT_NEAR(beam.stress({x, -50.0}).traction({0.0, -1.0}).norm(), 0.0, 1e-14);
-    // Axis OA of the half model: u1 = 0, p2 = 0 (DESIGN.md pitfall) ...
+    // Axis OA of the half model: u1 = 0, p2 = 0 ([thesis.md, §II.7.2]) ...
     EXPECT_EQ(beam.displacement({x, 0.0}).x(), 0.0);
     EXPECT_EQ(beam.stress({x, 0.0}).traction({0.0, -1.0}).y(), 0.0);
   }
