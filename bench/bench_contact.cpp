@@ -24,7 +24,7 @@ contact::ContactProblem ball(int elements, bool thesis, bool friction) {
   for (const auto* side : {&contact.side1, &contact.side2}) problem.region(*side).body.pieces[side->piece].elements = elements;
   problem.solver.algorithm = thesis ? contact::Algorithm::thesis : contact::Algorithm::newton;
   if (friction) {
-    problem.friction = 0.1;
+    problem.set_friction(0.1);
     problem.increments = 16;
   }
   return problem;

@@ -35,19 +35,21 @@ double seconds_since(Clock::time_point start) {
 }
 
 // The law of every pair: its contact's (`groups`: the pair offsets of the contacts), or,
-// when the groups are not the problem's contacts, the problem's.
+// when the groups are not the problem's contacts (a model of its own, such as the
+// half-space model), the one contact's law for all pairs.
 struct PairLaws {
   std::vector<ContactKind> kind;
   Vector friction;
 };
 PairLaws pair_laws(const ContactProblem& problem, const std::vector<Index>& groups) {
   const Index n = groups.back();
-  PairLaws laws{std::vector<ContactKind>(static_cast<std::size_t>(n), problem.kind), Vector::Constant(n, problem.friction)};
+  const ContactLaw all = problem.contacts.size() == 1 ? problem.contacts.front().law : ContactLaw{};
+  PairLaws laws{std::vector<ContactKind>(static_cast<std::size_t>(n), all.kind), Vector::Constant(n, all.friction)};
   if (groups.size() != problem.contacts.size() + 1) return laws;
   for (std::size_t c = 0; c < problem.contacts.size(); ++c)
     for (Index i = groups[c]; i < groups[c + 1]; ++i) {
-      laws.kind[static_cast<std::size_t>(i)] = problem.contact_kind(c);
-      laws.friction[i] = problem.contact_friction(c);
+      laws.kind[static_cast<std::size_t>(i)] = problem.contacts[c].law.kind;
+      laws.friction[i] = problem.contacts[c].law.friction;
     }
   return laws;
 }
@@ -153,7 +155,7 @@ void check_zones_not_clipped(const ContactModel& model, const std::vector<PairSt
   const bool axisymmetric = problem.analysis == AnalysisType::axisymmetric;
   for (std::size_t c = 0; c < problem.contacts.size(); ++c) {
     const auto& contact = model.prepared().contacts[c];
-    if (contact.smooth_ends.empty() || problem.contact_kind(c) != ContactKind::unilateral) continue;
+    if (contact.smooth_ends.empty() || problem.contacts[c].law.kind != ContactKind::unilateral) continue;
     const bool side_face = zone_faces_sideways(contact.pairs);
     std::vector<bool> in_contact;
     std::vector<double> coordinate;
@@ -172,10 +174,8 @@ void check_history_options(const ContactProblem& problem) {
   if (problem.increments < 1) throw Error("contact: the number of load increments must be >= 1");
   if (!(problem.end_time > 0.0)) throw Error("contact: the history's end_time must be > 0");
   if (problem.max_steps < problem.increments) throw Error("contact: max_steps must be >= increments");
-  if (problem.friction < 0.0) throw Error("contact: the friction coefficient must be >= 0");
   for (const auto& contact : problem.contacts)
-    if (contact.friction && !(*contact.friction >= 0.0))
-      throw Error("contact '" + contact.name + "': the friction coefficient must be >= 0");
+    if (!(contact.law.friction >= 0.0)) throw Error("contact '" + contact.name + "': the friction coefficient must be >= 0");
 }
 
 std::string format_residual(double value) {

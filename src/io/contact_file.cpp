@@ -353,16 +353,20 @@ void read_bodies(toml::table& root_table, const TableReader& root, FileContext& 
     root.fail("body", "every body is rigid; a contact problem needs at least one elastic body");
 }
 
-void read_law(const TableReader& reader, contact::ContactProblem& problem) {
-  problem.kind = reader.choice("kind", {"unilateral", "bilateral"}, "unilateral") == "bilateral"
-                     ? contact::ContactKind::bilateral
-                     : contact::ContactKind::unilateral;
-  problem.friction = reader.optional_number("friction").value_or(0.0);
-  if (!(problem.friction >= 0.0)) reader.fail("friction", "the friction coefficient must be >= 0");
-  problem.tangential_coupling = reader.boolean_or("coupling", true);
-  if (reader.has("coupling") && problem.friction == 0.0)
+// A contact's law, its defaults applied here; and the tangential coupling (one for all
+// contacts, checked by the caller).
+contact::ContactLaw read_law(const TableReader& reader, bool& coupling) {
+  contact::ContactLaw law;
+  law.kind = reader.choice("kind", {"unilateral", "bilateral"}, "unilateral") == "bilateral"
+                 ? contact::ContactKind::bilateral
+                 : contact::ContactKind::unilateral;
+  law.friction = reader.optional_number("friction").value_or(0.0);
+  if (!(law.friction >= 0.0)) reader.fail("friction", "the friction coefficient must be >= 0");
+  coupling = reader.boolean_or("coupling", true);
+  if (reader.has("coupling") && law.friction == 0.0)
     reader.fail("coupling", "'coupling' acts on the tangential tractions of friction; with friction = 0 it has "
                             "no effect (remove it, or give a friction coefficient)");
+  return law;
 }
 
 void read_pairing(const TableReader& reader, contact::ContactInterface& contact) {
@@ -668,8 +672,8 @@ ContactFile parse_contact_problem(std::string_view text, const std::string& file
     interface.side1 = read_side(contact, problem, 0, 1);
     interface.side2 = read_side(contact, problem, 1, 2);
     read_pairing(contact, interface);
+    interface.law = read_law(contact, problem.tangential_coupling);
     problem.contacts.push_back(interface);
-    read_law(contact, problem);
     read_solver(contact, problem);
     if (const toml::table* load = contact.optional_table("load", "[contact.load]"))
       read_force_load(TableReader(*load, "contact.load", context, contact.line()), problem);
@@ -711,29 +715,15 @@ ContactFile parse_contact_problem(std::string_view text, const std::string& file
             if (mine->piece >= 0 && side->body == mine->body && side->region == mine->region && side->piece == mine->piece)
               contact.fail("boundary1", "a boundary is in two contacts ('" + other.name + "' and '" + interface.name +
                                             "'); split it into two boundaries");
-      // Each contact its own law (kind, friction); the first one's is also the problem's. The
-      // tangential coupling shapes the condensed operator: one for every contact.
-      const bool coupling = problem.tangential_coupling;
-      read_law(contact, problem);
-      interface.kind = problem.kind;
-      interface.friction = problem.friction;
+      // Each contact its own law (kind, friction). The tangential coupling shapes the
+      // condensed operator: one for every contact.
+      bool coupling = true;
+      interface.law = read_law(contact, coupling);
+      if (index == 1) problem.tangential_coupling = coupling;
       problem.contacts.push_back(interface);
       if (index > 1 && coupling != problem.tangential_coupling)
         contact.fail("coupling", "every contact must have the same tangential coupling as the first (it is a property "
                                  "of the condensed operator); kind and friction may differ per contact");
-    }
-    if (!problem.contacts.empty()) {
-      // One law for all: it is the problem's (the contacts keep none of their own).
-      problem.kind = problem.contact_kind(0);
-      problem.friction = problem.contact_friction(0);
-      bool uniform = true;
-      for (std::size_t c = 0; c < problem.contacts.size(); ++c)
-        uniform = uniform && problem.contact_kind(c) == problem.kind && problem.contact_friction(c) == problem.friction;
-      if (uniform)
-        for (auto& contact : problem.contacts) {
-          contact.kind.reset();
-          contact.friction.reset();
-        }
     }
     static const toml::table empty;
     const toml::table* solver = root.optional_table("solver", "[solver]");

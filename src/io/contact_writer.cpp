@@ -213,21 +213,20 @@ std::string hertz_comparison(const contact::ContactProblem& problem, const conta
 // The contact law: kind and friction of every contact (null when the contacts differ:
 // `contacts` then gives each one's), and the tangential coupling.
 nlohmann::json law_json(const contact::ContactProblem& problem) {
-  nlohmann::json law = {{"kind", contact::to_string(problem.kind)},
-                        {"friction", problem.friction},
+  const contact::ContactLaw first = problem.contacts.empty() ? contact::ContactLaw{} : problem.contacts.front().law;
+  nlohmann::json law = {{"kind", contact::to_string(first.kind)},
+                        {"friction", first.friction},
                         {"tangential_coupling", problem.tangential_coupling}};
   if (problem.contacts.empty()) return law;
   nlohmann::json contacts = nlohmann::json::array();
   bool uniform = true;
-  for (std::size_t c = 0; c < problem.contacts.size(); ++c) {
-    contacts.push_back({{"name", problem.contacts[c].name},
-                        {"kind", contact::to_string(problem.contact_kind(c))},
-                        {"friction", problem.contact_friction(c)}});
-    uniform = uniform && problem.contact_kind(c) == problem.contact_kind(0) &&
-              problem.contact_friction(c) == problem.contact_friction(0);
+  for (const auto& contact : problem.contacts) {
+    contacts.push_back({{"name", contact.name},
+                        {"kind", contact::to_string(contact.law.kind)},
+                        {"friction", contact.law.friction}});
+    uniform = uniform && contact.law == first;
   }
-  law["kind"] = uniform ? nlohmann::json(contact::to_string(problem.contact_kind(0))) : nlohmann::json(nullptr);
-  law["friction"] = uniform ? nlohmann::json(problem.contact_friction(0)) : nlohmann::json(nullptr);
+  if (!uniform) law["kind"] = law["friction"] = nullptr;
   law["contacts"] = contacts;
   return law;
 }
@@ -280,7 +279,7 @@ std::string contact_report_text(const contact::ContactProblem& problem, const co
         result.contacts.size() == 1 ? std::string("contact")
                                     : "contact '" + contact.name + "' (" + body_label(problem, problem.contacts[c].side1) +
                                           " / " + body_label(problem, problem.contacts[c].side2) + ")";
-    if (c < problem.contacts.size() ? problem.contact_friction(c) > 0.0 : problem.friction > 0.0)
+    if (c < problem.contacts.size() && problem.contacts[c].law.friction > 0.0)
       std::snprintf(line, sizeof line,
                     "%s: %zu pairs, %d in contact over [%.6g, %.6g], a = %.6g, stick zone [%.6g, %.6g] (half-width c = "
                     "%.6g, offset %.6g, c/a = %.4f)\n",

@@ -178,7 +178,7 @@ std::vector<Record> run_spence_sphere(const Context& context) {
   auto file = load_contact_example(context, "contact_spence_sphere.toml");
   file.problem.drop_interior_points();  // the stress grid is for plots, not checked here
   auto frictionless = file.problem;
-  frictionless.friction = 0.0;
+  frictionless.set_friction(0.0);
   frictionless.increments = 1;
   const auto reference_result = contact::solve_contact(with_operator(context, frictionless), context.progress);
   const double gamma = reference::spence_gamma(file.problem.elastic(0).material, file.problem.elastic(1).material);
@@ -186,7 +186,7 @@ std::vector<Record> run_spence_sphere(const Context& context) {
     const std::size_t first = records.size();
     const double spence = reference::spence_stick_ratio(beta, std::abs(gamma));
     auto problem = file.problem;
-    problem.friction = beta;
+    problem.set_friction(beta);
     const auto result = contact::solve_contact(with_operator(context, problem), context.progress);
     const double c_over_a = result.summary.stick_ratio();
     const double coupled = beta == 0.1 ? 0.513 : 0.9997;  // [thesis.md, Spence's (E.1)], 640 steps
@@ -217,7 +217,7 @@ std::vector<Record> run_spence_sphere(const Context& context) {
       const double R = file.parameters.at("R"), P = file.parameters.at("P");
       auto flatter = load_contact_example(context, "contact_spence_sphere.toml", {{"R", 4.0 * R}, {"P", P / 4.0}}).problem;
       flatter.drop_interior_points();
-      flatter.friction = beta;
+      flatter.set_friction(beta);
       const auto f = contact::solve_contact(with_operator(context, flatter), context.progress);
       records.push_back(compare_scaled("c_over_a_R4", f.summary.stick_ratio(), coupled, 1.0,
                                        0.01));
@@ -227,7 +227,7 @@ std::vector<Record> run_spence_sphere(const Context& context) {
         auto p = load_contact_example(context, "contact_spence_sphere.toml",
                                       {{"R", 16.0 * R}, {"P", P / 16.0}, {"contact_elements", elements}}).problem;
         p.drop_interior_points();
-        p.friction = beta;
+        p.set_friction(beta);
         return contact::solve_contact(with_operator(context, p), context.progress).summary.stick_ratio();
       };
       const double c16 = sixteen(30);
@@ -273,7 +273,7 @@ std::vector<Record> run_spence_halfspace(const Context& context) {
   contact::drop_tangential_coupling(uncoupled_model.condensed);
 
   auto settings = file.problem;
-  settings.friction = 0.0;
+  settings.set_friction(0.0);
   settings.increments = 1;
   std::size_t first = records.size();
   const auto frictionless = contact::solve_load_history(coupled_model.condensed, coupled_model.pairs, settings);
@@ -285,7 +285,7 @@ std::vector<Record> run_spence_halfspace(const Context& context) {
   const double gamma = std::abs(reference::spence_gamma(sphere, flat));
   for (const double beta : {0.1, 0.6}) {
     first = records.size();
-    settings.friction = beta;
+    settings.set_friction(beta);
     settings.increments = file.problem.increments;
     const double spence = reference::spence_stick_ratio(beta, gamma);
     const double coupled_reference = beta == 0.1 ? 0.513 : 0.9997;  // [thesis.md, Spence's (E.1)], 640 steps
@@ -311,7 +311,7 @@ std::vector<Record> run_flat_punch(const Context& context) {
   for (const Thesis t : {Thesis{0.05, 1.39, 6.51, 2.90}, Thesis{0.10, 1.43, 6.37, 3.87}}) {
     const std::size_t first = records.size();
     auto problem = file.problem;
-    problem.friction = t.beta;
+    problem.set_friction(t.beta);
     const auto result = contact::solve_contact(with_operator(context, problem), context.progress);
     records.push_back(report_only("p_n_at_0_vs_thesis", pressure_at(result.pairs, 0.0), t.p0));
     records.push_back(report_only("p_n_at_4.68_vs_thesis", pressure_at(result.pairs, 4.68), t.pI));
@@ -380,7 +380,7 @@ std::vector<Record> run_non_matching(const Context& context) {
                                          {"contact_elements", "30/" + std::to_string(support_elements)}});
     auto spence_file = load_contact_example(context, "contact_spence_sphere.toml", overrides);
     spence_file.problem.drop_interior_points();
-    spence_file.problem.friction = 0.1;
+    spence_file.problem.set_friction(0.1);
     const auto spence = contact::solve_contact(with_operator(context, spence_file.problem), context.progress);
     const std::size_t second = records.size();
     records.push_back(compare_scaled("c_over_a", spence.summary.stick_ratio(), 0.513, 1.0, 0.03));
@@ -456,7 +456,7 @@ std::vector<Record> run_contact_quadratic(const Context& context) {
   auto spence = spence_file.problem;
   spence.drop_interior_points();
   spence.mesh.interpolation = Interpolation::quadratic;
-  spence.friction = 0.1;
+  spence.set_friction(0.1);
   first = records.size();
   records.push_back(
       compare_scaled("c_over_a", contact::solve_contact(with_operator(context, spence), context.progress).summary.stick_ratio(), 0.513, 1.0, 0.03));

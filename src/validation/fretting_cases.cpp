@@ -43,8 +43,8 @@ Fretting load_fretting(const Context& context, double ratio, const std::vector<V
   problem.drop_interior_points();
   const double P = -problem.forces.at(0).force, R = f.file.parameters.at("R");
   f.theory.hertz = {P, R, reference::contact_modulus(problem.elastic(0).material, problem.elastic(1).material, problem.analysis)};
-  f.theory.friction = problem.friction;
-  f.mu_p0 = problem.friction * f.theory.hertz.max_pressure();
+  f.theory.friction = problem.contacts.front().law.friction;
+  f.mu_p0 = f.theory.friction * f.theory.hertz.max_pressure();
   f.Q_star = problem.forces.at(1).force;
   return f;
 }
@@ -187,7 +187,7 @@ std::vector<Record> run_nowell_hills(const Context& context) {
   const double P = -problem.forces.at(0).force, Q = problem.forces.at(1).force, R = file.parameters.at("R");
   reference::PartialSlipLine theory;
   theory.hertz = {P, R, reference::contact_modulus(problem.elastic(0).material, problem.elastic(1).material, problem.analysis)};
-  theory.friction = problem.friction;
+  theory.friction = problem.contacts.front().law.friction;
   const double a = theory.hertz.half_width(), mu_p0 = theory.friction * theory.hertz.max_pressure();
   const double sigma_B = file.parameters.at("sigma_B");
   const auto result = contact::solve_contact(with_operator(context, problem), context.progress);

@@ -113,6 +113,15 @@ struct BoundaryRef {
   int piece = -1;  // -1: the whole contour of a rigid body
 };
 
+// The law of one contact: the one place a contact's law lives (filled by the reader with
+// the problem's defaults applied there; the solvers and writers read it from here). Laws to
+// come (non-local friction, normal compliance, wear) extend it.
+struct ContactLaw {
+  ContactKind kind = ContactKind::unilateral;
+  double friction = 0.0;  // Coulomb's beta; 0: frictionless
+  bool operator==(const ContactLaw&) const = default;
+};
+
 // One contact interface: body 1's zone nodes are paired with the points they face on
 // side 2 (pairing.hpp).
 struct ContactInterface {
@@ -128,14 +137,11 @@ struct ContactInterface {
   // side 1's node (e.g. Hertz's r^2 / 2R between two flats); empty for none. Negative
   // values are overlaps, as with the interference.
   bem::ScalarField initial_gap;
-  // This contact's own law; unset: the problem's (ContactProblem::kind, friction).
-  std::optional<ContactKind> kind;
-  std::optional<double> friction;
+  ContactLaw law;
 };
 
-// Bodies, contacts, their laws and one load history. The problem's law (kind, friction)
-// is that of every contact that does not set its own; the tangential coupling and the
-// solver are shared by every contact.
+// Bodies, contacts (each with its law) and one load history. The tangential coupling and
+// the solver are shared by every contact.
 struct ContactProblem {
   std::string title;
   std::string source_file;
@@ -144,8 +150,6 @@ struct ContactProblem {
   bem::OperatorChoice operator_choice;  // every region's boundary element system
   std::vector<Body> bodies;
   std::vector<ContactInterface> contacts;
-  ContactKind kind = ContactKind::unilateral;
-  double friction = 0.0;  // beta (Coulomb)
   // false drops the normal displacements due to tangential tractions from the condensed
   // operator (the pressure then stays the frictionless one): the uncoupled (Goodman-type)
   // approximation under which Spence's (E.1) holds ([thesis.md, Spence's (E.1)]).
@@ -184,15 +188,15 @@ struct ContactProblem {
   }
   dd::Subdomain& region(const BoundaryRef& ref) { return bodies.at(ref.body).regions.at(ref.region); }
   const dd::Subdomain& region(const BoundaryRef& ref) const { return bodies.at(ref.body).regions.at(ref.region); }
-  // The law of contact c: its own, or the problem's.
-  ContactKind contact_kind(std::size_t c) const { return contacts.at(c).kind.value_or(kind); }
-  double contact_friction(std::size_t c) const { return contacts.at(c).friction.value_or(friction); }
   // Some contact has friction (the load path matters: adaptive steps, 16 increments).
   bool has_friction() const {
-    if (contacts.empty()) return friction > 0.0;
-    for (std::size_t c = 0; c < contacts.size(); ++c)
-      if (contact_friction(c) > 0.0) return true;
+    for (const auto& contact : contacts)
+      if (contact.law.friction > 0.0) return true;
     return false;
+  }
+  // Every contact's friction coefficient (reference cases and tests that vary it).
+  void set_friction(double beta) {
+    for (auto& contact : contacts) contact.law.friction = beta;
   }
 };
 

@@ -56,7 +56,7 @@ inline ContactProblem flat_punch(double a, double W, int contact_elements, doubl
   add(support, line("contact", {a, 0.0}, {-a, 0.0}, contact_elements), free_condition());
   add(support, line("top left", {-a, 0.0}, {-W, 0.0}, 16, W / a, geometry::RefineToward::start), free_condition());
   add(support, line("left", {-W, 0.0}, {-W, -H}, 10), free_condition());
-  problem.kind = bilateral ? ContactKind::bilateral : ContactKind::unilateral;
+  problem.contacts.front().law.kind = bilateral ? ContactKind::bilateral : ContactKind::unilateral;
   ForceLoad load;
   load.body = 0;
   load.piece = 2;
@@ -102,7 +102,7 @@ inline ContactProblem cylinder_on_block(double R, double theta, int contact_elem
   add(support, line("contact", {b, 0.0}, {-b, 0.0}, contact_elements), free_condition());
   add(support, line("top left", {-b, 0.0}, {-W, 0.0}, 16, W / b, geometry::RefineToward::start), free_condition());
   add(support, line("left", {-W, 0.0}, {-W, -W}, 10), free_condition());
-  problem.kind = ContactKind::unilateral;
+  problem.contacts.front().law.kind = ContactKind::unilateral;
   ForceLoad load;
   load.body = 0;
   load.piece = 2;

@@ -17,7 +17,7 @@ TEST(ContactIo, ExamplesReadWithTheirSettings) {
   const std::string dir = BEMCONTACT_EXAMPLES_DIR;
   const auto hertz = io::read_contact_file(dir + "/contact_hertz_sphere.toml");
   EXPECT_EQ(hertz.problem.analysis, AnalysisType::axisymmetric);
-  EXPECT_EQ(hertz.problem.kind, contact::ContactKind::unilateral);
+  EXPECT_EQ(hertz.problem.contacts.front().law.kind, contact::ContactKind::unilateral);
   EXPECT_EQ(hertz.problem.contacts.front().pair_normal, contact::PairNormal::body2);
   ASSERT_EQ(hertz.problem.forces.size(), 1u);
   EXPECT_DOUBLE_EQ(hertz.problem.forces[0].force, -31.5);
@@ -25,10 +25,10 @@ TEST(ContactIo, ExamplesReadWithTheirSettings) {
   EXPECT_EQ(hertz.problem.bodies[0].name, "ball");
   EXPECT_DOUBLE_EQ(hertz.problem.elastic(0).material.young_modulus, 432000.0);
   const auto spence = io::read_contact_file(dir + "/contact_spence_sphere.toml");
-  EXPECT_DOUBLE_EQ(spence.problem.friction, 0.1);
+  EXPECT_DOUBLE_EQ(spence.problem.contacts.front().law.friction, 0.1);
   EXPECT_EQ(spence.problem.increments, 16);
   const auto punch = io::read_contact_file(dir + "/contact_flat_punch.toml");
-  EXPECT_EQ(punch.problem.kind, contact::ContactKind::bilateral);
+  EXPECT_EQ(punch.problem.contacts.front().law.kind, contact::ContactKind::bilateral);
   EXPECT_EQ(punch.problem.analysis, AnalysisType::plane_stress);
   EXPECT_TRUE(punch.problem.forces.empty());
   EXPECT_TRUE(io::is_contact_file(dir + "/contact_punch_halfplane.toml"));
@@ -59,7 +59,7 @@ TEST(ContactIo, WritersHoldEveryPairAndTheSummary) {
   io::fill_contact_summary(blocks, file.problem, result);
   const auto summary = io::summary_json(blocks);
   EXPECT_EQ(summary.at("kind"), "contact");
-  EXPECT_EQ(summary.at("options").at("law").at("kind"), contact::to_string(file.problem.kind));
+  EXPECT_EQ(summary.at("options").at("law").at("kind"), contact::to_string(file.problem.contacts.front().law.kind));
   EXPECT_EQ(summary.at("mesh").at("regions").size(), 2u);
   EXPECT_TRUE(summary.at("reactions").contains("punch"));
   const auto& c = summary.at("results").at("contact");

@@ -69,8 +69,8 @@ TEST(ContactLaws, EachContactFollowsItsOwnFriction) {
     const auto joint = io::parse_contact_problem(problem_text(punch_on_block(0, "") + punch_on_block(1, frictional), algorithm),
                                                  "joint.toml");
     ASSERT_EQ(joint.problem.contacts.size(), 2u);
-    EXPECT_DOUBLE_EQ(joint.problem.contact_friction(0), 0.0);
-    EXPECT_DOUBLE_EQ(joint.problem.contact_friction(1), 0.5);
+    EXPECT_DOUBLE_EQ(joint.problem.contacts[0].law.friction, 0.0);
+    EXPECT_DOUBLE_EQ(joint.problem.contacts[1].law.friction, 0.5);
     const auto both = solve_contact(joint.problem);
     const auto alone0 = solve_contact(io::parse_contact_problem(problem_text(punch_on_block(0, ""), algorithm), "a.toml").problem);
     const auto alone1 =
@@ -96,13 +96,15 @@ TEST(ContactLaws, EachContactFollowsItsOwnFriction) {
   }
 }
 
-// Contacts of one law keep none of their own (the problem's law, which a caller may set);
-// different tangential couplings are refused with the contact's line.
-TEST(ContactLaws, OneLawIsTheProblemsAndCouplingsMustAgree) {
+// Every contact holds its law, the defaults applied by the reader (one place per law: the
+// solvers and writers read it there); different tangential couplings are refused with the
+// contact's line.
+TEST(ContactLaws, EachContactHoldsItsLawAndCouplingsMustAgree) {
   const auto same = io::parse_contact_problem(
-      problem_text(punch_on_block(0, "friction = 0.2\n") + punch_on_block(1, "friction = 0.2\n"), "newton"), "same.toml");
-  EXPECT_DOUBLE_EQ(same.problem.friction, 0.2);
-  EXPECT_FALSE(same.problem.contacts[1].friction.has_value());
+      problem_text(punch_on_block(0, "friction = 0.2\n") + punch_on_block(1, "kind = \"bilateral\"\n"), "newton"),
+      "same.toml");
+  EXPECT_EQ(same.problem.contacts[0].law, (ContactLaw{ContactKind::unilateral, 0.2}));
+  EXPECT_EQ(same.problem.contacts[1].law, (ContactLaw{ContactKind::bilateral, 0.0}));
   try {
     io::parse_contact_problem(problem_text(punch_on_block(0, "friction = 0.2\n") +
                                                punch_on_block(1, "friction = 0.2\ncoupling = false\n"),

@@ -53,7 +53,6 @@ TEST(HalfSpaceModel, FrictionlessSolutionIsHertz) {
   const auto model = halfspace_sphere_model(spec);
   ContactProblem settings;
   settings.analysis = AnalysisType::axisymmetric;
-  settings.kind = ContactKind::unilateral;
   const auto history = solve_load_history(model.condensed, model.pairs, settings);
   EXPECT_NEAR(history.summary.contact_radius, hertz.contact_radius(), 5e-3 * hertz.contact_radius());
   EXPECT_NEAR(history.summary.centre_pressure, hertz.max_pressure(), 2e-3 * hertz.max_pressure());

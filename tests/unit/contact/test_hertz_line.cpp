@@ -69,7 +69,7 @@ TEST(ContactAlgorithms, ThesisAndNewtonAgreeWithoutFriction) {
 
 TEST(ContactAlgorithms, ThesisAndNewtonAgreeWithFriction) {
   auto problem = cylinder({10.0, 0.3}, {1.0, 0.3}, 24);
-  problem.friction = 0.1;
+  problem.set_friction(0.1);
   problem.increments = 4;
   const auto newton = solve_contact(problem);
   problem.solver.algorithm = Algorithm::thesis;

@@ -37,7 +37,7 @@ TEST(ContactHertzSphere, CoarseMeshMatchesHertz) {
 
 TEST(ContactHertzSphere, AlgorithmsAgreeWithFrictionAndIncrements) {
   auto problem = coarse_ball();
-  problem.friction = 0.1;
+  problem.set_friction(0.1);
   problem.increments = 4;
   const auto newton = solve_contact(problem);
   problem.solver.algorithm = Algorithm::thesis;

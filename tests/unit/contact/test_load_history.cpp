@@ -180,7 +180,7 @@ TEST(LoadHistory, RecordedStepsAreAParaViewTimeSeries) {
                                            {{"n", 10.0}})
                      .problem;
   problem.record_steps = true;
-  problem.friction = 0.0;  // frictionless: the equal steps as given
+  problem.set_friction(0.0);  // frictionless: the equal steps as given
   problem.adaptive = false;
   problem.forces.pop_back();  // P only
   problem.increments = 4;
