@@ -44,7 +44,8 @@ void drop_tangential_coupling(CondensedProblem& problem) {
     for (Index j = 0; j < problem.pairs; ++j) problem.M(2 * i, 2 * j + 1) = 0.0;
 }
 
-namespace {
+// Types of the condensation's state (ContactModel::Build), named for the class's linkage.
+namespace condensation {
 
 // Where a region's variable dofs come from.
 enum class BlockKind { side1, side2, platen };
@@ -73,43 +74,73 @@ Index block_offset(const RegionVariables& variables, BlockKind kind, std::size_t
   return -1;
 }
 
-}  // namespace
+}  // namespace condensation
+
+using condensation::Block;
+using condensation::BlockKind;
+using condensation::RegionVariables;
+using condensation::block_offset;
+using condensation::rotation_arm;
+
+// The state the phases of the condensation hand on to each other (docs/model.md, steps 2-6).
+struct ContactModel::Build {
+  Index n = 0;              // pairs
+  Index force_motions = 0;  // motions that are force loads' approaches
+  Index K = 0;              // motions
+  Index nq = 0;             // contact unknowns q = (x, delta): 2n + K
+  Index groups = 0;         // load groups of the bodies' own data
+  std::vector<condensation::RegionVariables> variables;        // per region
+  std::vector<dd::Connectivity> bonds;                          // per body
+  std::vector<std::vector<bem::PointConstraint>> pins;          // per region: the free motions' pins
+  std::vector<std::pair<int, Index>> pin_of_motion;             // per free motion: region, pin index
+  std::vector<Matrix> flexibility, G, own_response;             // per region (factor_regions)
+  std::vector<Matrix> response, response0;                      // per region (form_affine_responses)
+  std::vector<int> load_of_body;                                // per body: its rigid motion's load, or -1
+  Matrix W;                                                     // 2n x nq: the jumps' map
+};
 
 ContactModel::ContactModel(const ContactProblem& problem, const bem::ProgressCallback& progress)
     : problem_(problem), prepared_(prepare_contact(problem)) {
-  // The pairs of every contact, one after the other.
+  Build build;
+  number_pairs_and_motions(build);
+  collect_region_variables(build);
+  factor_regions(build, progress);
+  eliminate_bonds(build);
+  form_affine_responses(build);
+  assemble_jumps_and_loads(build);
+  assemble_motion_equations(build);
+}
+
+// Step 2-3 of docs/model.md: the pairs of every contact one after the other, and the
+// motions: the force loads' approaches first, then the free motions of bodies held only by
+// their contacts (free_motions.hpp).
+void ContactModel::number_pairs_and_motions(Build& build) {
   pair_offsets_.push_back(0);
   for (const auto& contact : prepared_.contacts) {
     pairs_.insert(pairs_.end(), contact.pairs.begin(), contact.pairs.end());
     pair_offsets_.push_back(static_cast<Index>(pairs_.size()));
   }
-  const Index n = static_cast<Index>(pairs_.size());  // 0 for bodies without contacts
-  // Motions: the force load's approach first, then the free motions of bodies held only by
-  // their contacts (free_motions.hpp).
-  free_motions_ = contact::free_motions(problem, prepared_, pairs_, pair_offsets_);
-  const Index force_motions = static_cast<Index>(problem.forces.size());
-  const Index K = force_motions + static_cast<Index>(free_motions_.pins.size());
-  const Index nq = 2 * n + K;  // q = (x, delta): delta_k in column 2n + k
+  build.n = static_cast<Index>(pairs_.size());  // 0 for bodies without contacts
+  free_motions_ = contact::free_motions(problem_, prepared_, pairs_, pair_offsets_);
+  build.force_motions = static_cast<Index>(problem_.forces.size());
+  build.K = build.force_motions + static_cast<Index>(free_motions_.pins.size());
+  build.nq = 2 * build.n + build.K;  // q = (x, delta): delta_k in column 2n + k
+  // The bodies' own data by load group (0: data_amplitude; g: boundary_amplitudes[g - 1]).
+  build.groups = static_cast<Index>(problem_.boundary_amplitudes.size()) + 1;
+}
+
+// Step 4's data: the variable nodes of every region (bond nodes, contact zone nodes, platen
+// nodes) and the pins of the free motions.
+void ContactModel::collect_region_variables(Build& build) {
+  const auto& problem = problem_;
   const auto& regions = prepared_.regions;
-  const std::size_t region_count = regions.size();
-
-  // Frames of the pairs: w = Q [u] (rows n, t), p = R x (columns -n, t).
-  auto Q = [&](Index g) {
-    Mat2 q;
-    q.row(0) = pairs_[g].normal.transpose();
-    q.row(1) = pairs_[g].tangent.transpose();
-    return q;
-  };
-  auto R = [&](Index g) {
-    Mat2 r;
-    r.col(0) = -pairs_[g].normal;
-    r.col(1) = pairs_[g].tangent;
-    return r;
-  };
-
-  // Variable nodes of every region: bond nodes, contact zone nodes, platen nodes.
-  std::vector<RegionVariables> variables(region_count);
-  std::vector<dd::Connectivity> bonds(problem.bodies.size());
+  auto& variables = build.variables;
+  auto& bonds = build.bonds;
+  auto& pins = build.pins;
+  auto& pin_of_motion = build.pin_of_motion;
+  variables.assign(regions.size(), {});
+  bonds.assign(problem.bodies.size(), {});
+  pins.assign(regions.size(), {});
   for (std::size_t b = 0; b < problem.bodies.size(); ++b) {
     const auto& members = prepared_.body_regions[b];
     if (members.size() < 2) continue;
@@ -150,19 +181,31 @@ ContactModel::ContactModel(const ContactProblem& problem, const bem::ProgressCal
     for (const Index node : prepared_.platens[p].nodes) v.nodes.push_back({node, bem::ConditionKind::displacement});
   }
   // Free motions: a variable point constraint each, its datum after the region's nodes.
-  std::vector<std::vector<bem::PointConstraint>> pins(region_count);
-  std::vector<std::pair<int, Index>> pin_of_motion;  // per free motion: region, index among its pins
   for (const auto& motion : free_motions_.pins) {
     pin_of_motion.emplace_back(motion.region, static_cast<Index>(pins[motion.region].size()));
     pins[motion.region].push_back(motion.constraint);
   }
 
-  // Factor every region; its data from the contact unknowns before the bonds: G_r q.
+}
+
+// Step 4: every region factored once (bem::FactoredBody), its unit responses (the
+// flexibility of its variable data), its own data's responses by load group, and its data
+// from the contact unknowns before the bonds, G_r q.
+void ContactModel::factor_regions(Build& build, const bem::ProgressCallback& progress) {
+  const auto& problem = problem_;
+  const auto& regions = prepared_.regions;
+  const std::size_t region_count = regions.size();
+  const Index n = build.n, nq = build.nq, force_motions = build.force_motions, groups = build.groups;
+  const auto& variables = build.variables;
+  const auto& pins = build.pins;
+  const auto& pin_of_motion = build.pin_of_motion;
+  auto& flexibility = build.flexibility;
+  auto& G = build.G;
+  auto& own_response = build.own_response;
+  flexibility.assign(region_count, {});
+  G.assign(region_count, {});
+  own_response.assign(region_count, {});
   factored_.resize(region_count);
-  std::vector<Matrix> flexibility(region_count), G(region_count);
-  // The bodies' own data by load group (0: data_amplitude; g: boundary_amplitudes[g - 1]).
-  const Index groups = static_cast<Index>(problem.boundary_amplitudes.size()) + 1;
-  std::vector<Matrix> own_response(region_count);
   for (std::size_t r = 0; r < region_count; ++r) {
     bem::ProgressCallback region_progress;
     if (progress)
@@ -204,7 +247,7 @@ ContactModel::ContactModel(const ContactProblem& problem, const bem::ProgressCal
       const auto& contact = prepared_.contacts[block.contact];
       const Index first = pair_offsets_[block.contact];
       for (Index i = 0; i < static_cast<Index>(contact.pairs.size()); ++i) {
-        const Mat2 Ri = R(first + i);
+        const Mat2 Ri = pairs_[first + i].traction_frame();
         if (block.kind == BlockKind::side1) {
           G[r].block<2, 2>(block.offset + 2 * i, 2 * (first + i)) = Ri;
         } else {
@@ -217,7 +260,20 @@ ContactModel::ContactModel(const ContactProblem& problem, const bem::ProgressCal
     }
   }
 
-  // Bonds: equilibrium of the nodal tractions at every bond pair, K U + L q + l0 = 0.
+}
+
+// Step 5: each body's bond unknowns eliminated by one dense solve of the bonds' nodal
+// equilibrium K U + L q + l0 = 0 (the conforming method's Schur complement): every region's
+// data becomes an affine function of the contact unknowns, D_r q + d0_r.
+void ContactModel::eliminate_bonds(Build& build) {
+  const auto& problem = problem_;
+  const std::size_t region_count = prepared_.regions.size();
+  const Index nq = build.nq, groups = build.groups;
+  const auto& variables = build.variables;
+  const auto& bonds = build.bonds;
+  const auto& flexibility = build.flexibility;
+  const auto& G = build.G;
+  const auto& own_response = build.own_response;
   data_map_ = G;
   data_offset_.assign(region_count, Matrix());
   for (std::size_t r = 0; r < region_count; ++r) data_offset_[r] = Matrix::Zero(G[r].rows(), groups);
@@ -260,9 +316,18 @@ ContactModel::ContactModel(const ContactProblem& problem, const bem::ProgressCal
     }
   }
 
-  // Complementary fields as affine maps of q: C_r (D_r q + d0_r) + c0_r.
-  std::vector<Matrix> response(region_count);
-  std::vector<Matrix> response0(region_count);  // dofs x groups
+}
+
+// Step 5's result: each region's complementary field at its variable nodes as an affine
+// map of q, C_r (D_r q + d0_r) + c0_r.
+void ContactModel::form_affine_responses(Build& build) {
+  const std::size_t region_count = prepared_.regions.size();
+  const auto& flexibility = build.flexibility;
+  const auto& own_response = build.own_response;
+  auto& response = build.response;
+  auto& response0 = build.response0;
+  response.assign(region_count, {});
+  response0.assign(region_count, {});
   for (std::size_t r = 0; r < region_count; ++r) {
     // The data map is 2x2 pair frames and the transfer's few entries (bond rows aside): a
     // sparse product, O(dofs x nonzeros) instead of O(dofs^2 x nq).
@@ -271,11 +336,24 @@ ContactModel::ContactModel(const ContactProblem& problem, const bem::ProgressCal
     response0[r] = flexibility[r] * data_offset_[r] + own_response[r];
   }
 
+}
+
+// Step 6: the jumps w = w0(t) + M x + b delta of every pair in its frame, with the loads
+// (the bodies' own data by group, interferences, rigid bodies' prescribed motions) and the
+// gaps.
+void ContactModel::assemble_jumps_and_loads(Build& build) {
+  const auto& problem = problem_;
+  const auto& regions = prepared_.regions;
+  const Index n = build.n, nq = build.nq, K = build.K, groups = build.groups;
+  const auto& variables = build.variables;
+  const auto& response = build.response;
+  const auto& response0 = build.response0;
   // Jumps w = Q (u1 - u2) per pair; loads: the bodies' own data (load 0), then each rigid
   // body's prescribed translation.
   auto& cp = condensed_;
   cp.pairs = n;
-  Matrix W = Matrix::Zero(2 * n, nq);
+  build.W = Matrix::Zero(2 * n, nq);
+  auto& W = build.W;
   cp.loads.push_back({problem.data_amplitude, Vector::Zero(2 * n), Vector::Zero(K)});
   for (const auto& amplitude : problem.boundary_amplitudes) cp.loads.push_back({amplitude, Vector::Zero(2 * n), Vector::Zero(K)});
   // Interferences: the overlap d - interference of each pair, as a jump +interference along
@@ -286,7 +364,8 @@ ContactModel::ContactModel(const ContactProblem& problem, const bem::ProgressCal
     for (Index g = pair_offsets_[c]; g < pair_offsets_[c + 1]; ++g) load.a[2 * g] = pairs_[g].interference;
     cp.loads.push_back(load);
   }
-  std::vector<int> load_of_body(problem.bodies.size(), -1);
+  auto& load_of_body = build.load_of_body;
+  load_of_body.assign(problem.bodies.size(), -1);
   for (std::size_t b = 0; b < problem.bodies.size(); ++b) {
     const auto& rigid = problem.bodies[b].rigid;
     if (!rigid || (!rigid->displacement && !rigid->rotation)) continue;
@@ -300,7 +379,7 @@ ContactModel::ContactModel(const ContactProblem& problem, const bem::ProgressCal
     const Index o2 = contact.region2 >= 0 ? block_offset(variables[contact.region2], BlockKind::side2, c) : -1;
     for (Index i = 0; i < static_cast<Index>(contact.pairs.size()); ++i) {
       const auto& pair = contact.pairs[i];
-      const Mat2 Qg = Q(first + i);
+      const Mat2 Qg = pairs_[first + i].frame();
       Matrix u = response[contact.region1].middleRows(o1 + 2 * i, 2);
       Matrix u0 = response0[contact.region1].middleRows(o1 + 2 * i, 2);  // 2 x groups
       if (contact.region2 >= 0) {
@@ -350,6 +429,19 @@ ContactModel::ContactModel(const ContactProblem& problem, const bem::ProgressCal
   for (const auto& region : regions) cp.length_scale = std::max(cp.length_scale, region.mesh.scale);
   cp.motions = K;
   cp.b = W.rightCols(K);
+}
+
+// Step 6: the motions' equations f x + f_delta delta = force(t) - F0(t): each force load's
+// platen or rigid body in equilibrium with its force, each free motion's pin without
+// reaction.
+void ContactModel::assemble_motion_equations(Build& build) {
+  const auto& problem = problem_;
+  const Index n = build.n, nq = build.nq, K = build.K, force_motions = build.force_motions, groups = build.groups;
+  const auto& variables = build.variables;
+  const auto& pin_of_motion = build.pin_of_motion;
+  const auto& response = build.response;
+  const auto& response0 = build.response0;
+  auto& cp = condensed_;
   Matrix F = Matrix::Zero(K, nq);
   Matrix F0 = Matrix::Zero(K, groups);
   cp.force = Vector::Zero(K);
@@ -366,10 +458,10 @@ ContactModel::ContactModel(const ContactProblem& problem, const bem::ProgressCal
         if (prepared_.contacts[c].rigid_body != load.body) continue;
         for (Index g = pair_offsets_[c]; g < pair_offsets_[c + 1]; ++g) {
           if (load.component < 2) {
-            F.block<1, 2>(row, 2 * g) = pairs_[g].weight * R(g).row(load.component);
+            F.block<1, 2>(row, 2 * g) = pairs_[g].weight * pairs_[g].traction_frame().row(load.component);
           } else {  // the moment of the traction about the reference: arm_x t_y - arm_y t_x
             const Vec2 arm = rotation_arm(problem, load.body, pairs_[g].position1);
-            F.block<1, 2>(row, 2 * g) = pairs_[g].weight * (arm.x() * R(g).row(1) - arm.y() * R(g).row(0));
+            F.block<1, 2>(row, 2 * g) = pairs_[g].weight * (arm.x() * pairs_[g].traction_frame().row(1) - arm.y() * pairs_[g].traction_frame().row(0));
           }
         }
       }

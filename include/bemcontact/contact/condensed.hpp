@@ -104,6 +104,16 @@ class ContactModel {
   Vec2 traction(Index pair, const Vector& x) const;
 
  private:
+  // The condensation in the steps of docs/model.md, each filling the state it hands on.
+  struct Build;
+  void number_pairs_and_motions(Build& build);
+  void collect_region_variables(Build& build);
+  void factor_regions(Build& build, const bem::ProgressCallback& progress);
+  void eliminate_bonds(Build& build);
+  void form_affine_responses(Build& build);
+  void assemble_jumps_and_loads(Build& build);
+  void assemble_motion_equations(Build& build);
+
   ContactProblem problem_;
   PreparedContact prepared_;
   CondensedProblem condensed_;

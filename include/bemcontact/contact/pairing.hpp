@@ -31,6 +31,21 @@ struct ContactPair {
   double interference = 0.0;  // the contact's (applied by its amplitude: ContactModel's loads)
   double weight = 0.0;  // integral of the node's shape function over body 1's zone (2 pi r in axisymmetry)
   bool on_axis = false; // axisymmetric pair on r = 0: no tangential traction by symmetry
+
+  // The pair's frames: w = frame() [u] (rows n, t), and the traction on side 1 from the
+  // unknowns x = (lambda_n, tau), p = traction_frame() x (columns -n, t).
+  Mat2 frame() const {
+    Mat2 q;
+    q.row(0) = normal.transpose();
+    q.row(1) = tangent.transpose();
+    return q;
+  }
+  Mat2 traction_frame() const {
+    Mat2 r;
+    r.col(0) = -normal;
+    r.col(1) = tangent;
+    return r;
+  }
 };
 
 // One elastic region as meshed for the contact solve: its contact zones and any platen
