@@ -22,8 +22,8 @@
 #include "bemcontact/core/error.hpp"
 #include "bemcontact/driver/probe.hpp"
 #include "bemcontact/driver/run.hpp"
-#include "bemcontact/io/output_directory.hpp"
-#include "bemcontact/io/toml_reader.hpp"
+#include "bemcontact/io/output/output_directory.hpp"
+#include "bemcontact/io/input/problem_text.hpp"
 #include "bemcontact/operators/dense_lu.hpp"
 #include "bemcontact/validation/validation.hpp"
 #ifdef BEMCONTACT_WITH_MPI

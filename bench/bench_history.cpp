@@ -6,7 +6,7 @@
 #include <benchmark/benchmark.h>
 
 #include "bemcontact/contact/contact_solver.hpp"
-#include "bemcontact/io/contact_file.hpp"
+#include "bemcontact/io/input/contact_file.hpp"
 
 namespace {
 

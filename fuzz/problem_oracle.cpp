@@ -7,7 +7,7 @@
 
 #include "bemcontact/core/error.hpp"
 #include "bemcontact/driver/run.hpp"
-#include "bemcontact/io/gmsh_geometry.hpp"
+#include "bemcontact/io/input/gmsh_geometry.hpp"
 
 namespace bemcontact::fuzz {
 

@@ -14,10 +14,11 @@
 #include "bemcontact/core/error.hpp"
 #include "bemcontact/driver/probe.hpp"
 #include "bemcontact/driver/run.hpp"
-#include "bemcontact/io/expression.hpp"
-#include "bemcontact/io/gmsh_geometry.hpp"
-#include "bemcontact/io/output_directory.hpp"
+#include "bemcontact/io/input/expression.hpp"
+#include "bemcontact/io/input/gmsh_geometry.hpp"
+#include "bemcontact/io/output/output_directory.hpp"
 #include "bemcontact/operators/dense_lu.hpp"
+#include "bemcontact/io/text_format.hpp"
 
 namespace py = pybind11;
 using namespace bemcontact;

@@ -5,7 +5,7 @@
 #include <cstdio>
 
 #include "bemcontact/bem/analysis.hpp"
-#include "bemcontact/io/problem_file.hpp"
+#include "bemcontact/io/input/problem_file.hpp"
 
 int main(int argc, char** argv) {
   if (argc != 2) {

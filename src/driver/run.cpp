@@ -15,16 +15,16 @@
 #include "bemcontact/dd/solver.hpp"
 #include "bemcontact/driver/resource_check.hpp"
 #include "bemcontact/operators/dense_lu.hpp"
-#include "bemcontact/io/contact_file.hpp"
-#include "bemcontact/io/contact_writer.hpp"
-#include "bemcontact/io/decomposition_file.hpp"
-#include "bemcontact/io/decomposition_writer.hpp"
-#include "bemcontact/io/json_writer.hpp"
-#include "bemcontact/io/problem_file.hpp"
-#include "bemcontact/io/results_writer.hpp"
-#include "bemcontact/io/run_summary.hpp"
+#include "bemcontact/io/input/contact_file.hpp"
+#include "bemcontact/io/output/contact_writer.hpp"
+#include "bemcontact/io/input/decomposition_file.hpp"
+#include "bemcontact/io/output/decomposition_writer.hpp"
+#include "bemcontact/io/output/json_writer.hpp"
+#include "bemcontact/io/input/problem_file.hpp"
+#include "bemcontact/io/output/results_writer.hpp"
+#include "bemcontact/io/output/run_summary.hpp"
 #include "bemcontact/geometry/boundary.hpp"
-#include "bemcontact/io/toml_reader.hpp"
+#include "bemcontact/io/input/problem_text.hpp"
 
 namespace bemcontact::driver {
 
@@ -305,7 +305,7 @@ RunOutput run_body(std::string_view text, const std::string& file_name, const Ru
   auto summary = summary_envelope("body", "run", text, file_name, file.problem.title, file.problem.analysis);
   summary.parameters = file.parameters;
   summary.options.update({{"mesh", io::mesh_options_json(file.problem.mesh)}});
-  summary.problem = io::problem_echo_json(file);
+  summary.problem = io::problem_echo_json(file.problem, file.parameters, file.output.vtk);
   summary.mesh = meshes_json({{file.problem.body.name, &result.mesh}});
   summary.results = {{"solve", {{"unknowns", result.report.unknowns},
                                 {"operator", result.report.operator_kind},
@@ -353,17 +353,6 @@ RunOutput run_body(std::string_view text, const std::string& file_name, const Ru
 }
 
 }  // namespace
-
-ProblemKind problem_kind(std::string_view text) {
-  // Text that does not parse is left to the one-body reader to report.
-  try {
-    const toml::table root = toml::parse(text);
-    if (root.contains("subdomain")) return ProblemKind::decomposition;
-    if (root.contains("contact") || root.contains("body")) return ProblemKind::contact;
-  } catch (const toml::parse_error&) {
-  }
-  return ProblemKind::body;
-}
 
 RunOutput run_problem(std::string_view text, const std::string& file_name, const RunOptions& options) {
   RunOutput output;
@@ -454,7 +443,7 @@ RunOutput mesh_problem(std::string_view text, const std::string& file_name, cons
   auto summary = summary_envelope("body", "mesh", text, file_name, file.problem.title, file.problem.analysis);
   summary.parameters = file.parameters;
   summary.options.update({{"mesh", io::mesh_options_json(file.problem.mesh)}});
-  summary.problem = io::problem_echo_json(file);
+  summary.problem = io::problem_echo_json(file.problem, file.parameters, file.output.vtk);
   summary.mesh = meshes_json({{file.problem.body.name, &mesh}});
   add_summary(summary, output);
   check_output_finite(output.files);

@@ -2,7 +2,7 @@
 #include <cmath>
 
 #include "bemcontact/bem/analysis.hpp"
-#include "bemcontact/io/problem_file.hpp"
+#include "bemcontact/io/input/problem_file.hpp"
 #include "bemcontact/reference/lame.hpp"
 #include "bemcontact/reference/uniaxial_tension.hpp"
 #include "bemcontact/validation/case_groups.hpp"

@@ -8,7 +8,7 @@
 
 #include "bemcontact/contact/contact_solver.hpp"
 #include "bemcontact/contact/halfspace_model.hpp"
-#include "bemcontact/io/contact_file.hpp"
+#include "bemcontact/io/input/contact_file.hpp"
 #include "bemcontact/reference/flat_punch.hpp"
 #include "bemcontact/reference/hertz.hpp"
 #include "bemcontact/reference/spence.hpp"

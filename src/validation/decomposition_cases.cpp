@@ -10,7 +10,7 @@
 #include "bemcontact/dd/monolithic.hpp"
 #include "bemcontact/dd/plate_strips.hpp"
 #include "bemcontact/dd/solver.hpp"
-#include "bemcontact/io/decomposition_file.hpp"
+#include "bemcontact/io/input/decomposition_file.hpp"
 #include "bemcontact/reference/circular_inclusion.hpp"
 #include "bemcontact/reference/two_layer_ring.hpp"
 #include "bemcontact/reference/uniaxial_tension.hpp"

@@ -10,7 +10,7 @@
 #include <sstream>
 
 #include "bemcontact/contact/contact_solver.hpp"
-#include "bemcontact/io/contact_file.hpp"
+#include "bemcontact/io/input/contact_file.hpp"
 #include "bemcontact/reference/fretting.hpp"
 #include "bemcontact/validation/case_groups.hpp"
 #include "bemcontact/validation/contact_support.hpp"

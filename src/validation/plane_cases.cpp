@@ -4,7 +4,7 @@
 #include <numbers>
 
 #include "bemcontact/bem/analysis.hpp"
-#include "bemcontact/io/problem_file.hpp"
+#include "bemcontact/io/input/problem_file.hpp"
 #include "bemcontact/reference/cantilever.hpp"
 #include "bemcontact/reference/curved_beam.hpp"
 #include "bemcontact/reference/kirsch.hpp"

@@ -13,7 +13,7 @@
 #include <sstream>
 #include <unistd.h>
 
-#include "bemcontact/io/gmsh_geometry.hpp"
+#include "bemcontact/io/input/gmsh_geometry.hpp"
 
 namespace fs = std::filesystem;
 

@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "bemcontact/dd/solver.hpp"
-#include "bemcontact/io/decomposition_file.hpp"
+#include "bemcontact/io/input/decomposition_file.hpp"
 
 namespace bemcontact::io {
 namespace {

@@ -7,7 +7,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "bemcontact/io/problem_file.hpp"
+#include "bemcontact/io/input/problem_file.hpp"
 
 namespace bemcontact::io {
 namespace {

@@ -1,6 +1,7 @@
 # The layering rule of README.md ("Layers, lowest first: ..."): every
 # #include "bemcontact/<layer>/..." in src/<layer>/ and include/bemcontact/<layer>/ names its
-# own layer or an earlier one. Run: cmake -DSOURCE_DIR=<repository> -P layering.cmake
+# own layer or an earlier one; in io/, input/ and output/ never include each other. Run:
+# cmake -DSOURCE_DIR=<repository> -P layering.cmake
 file(READ "${SOURCE_DIR}/README.md" readme)
 string(REGEX MATCH "Layers, lowest first: ([a-z_, \n]+)\\." order_line "${readme}")
 if(NOT CMAKE_MATCH_1)
@@ -17,11 +18,24 @@ file(GLOB_RECURSE files "${SOURCE_DIR}/src/*.cpp" "${SOURCE_DIR}/src/*.hpp" "${S
 set(failures "")
 set(edges 0)
 foreach(path IN LISTS files)
-  string(REGEX MATCH "/(src|include/bemcontact)/([a-z_]+)/[^/]+$" _ "${path}")
+  file(RELATIVE_PATH relative "${SOURCE_DIR}" "${path}")
+  string(REGEX MATCH "^(src|include/bemcontact)/([a-z_]+)/" _ "${relative}")
   set(own "${CMAKE_MATCH_2}")
   if(NOT DEFINED rank_${own})
     string(APPEND failures "\n  ${path}: layer '${own}' is not in README.md's order")
     continue()
+  endif()
+  # Within io/: input (the readers) and output (the writers) include neither the other.
+  string(REGEX MATCH "^(src|include/bemcontact)/io/(input|output)/" _ "${relative}")
+  set(io_side "${CMAKE_MATCH_2}")
+  if(io_side)
+    file(STRINGS "${path}" io_includes REGEX "^#include \"(bemcontact/)?io/(input|output)/")
+    foreach(line IN LISTS io_includes)
+      string(REGEX MATCH "io/(input|output)/" _ "${line}")
+      if(NOT CMAKE_MATCH_1 STREQUAL io_side)
+        string(APPEND failures "\n  ${path} (io/${io_side}) includes ${line}: readers and writers stay apart")
+      endif()
+    endforeach()
   endif()
   file(STRINGS "${path}" includes REGEX "^#include \"bemcontact/[a-z_]+/")
   foreach(line IN LISTS includes)

@@ -18,8 +18,8 @@
 
 #include "bemcontact/bem/progress.hpp"
 #include "bemcontact/core/limits.hpp"
-#include "bemcontact/io/output_directory.hpp"
-#include "bemcontact/io/probe_input.hpp"
+#include "bemcontact/io/output/output_directory.hpp"
+#include "bemcontact/io/input/probe_input.hpp"
 
 namespace bemcontact::driver {
 

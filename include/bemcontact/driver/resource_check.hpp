@@ -5,7 +5,7 @@
 #include "bemcontact/contact/contact_problem.hpp"
 #include "bemcontact/core/limits.hpp"
 #include "bemcontact/dd/decomposition.hpp"
-#include "bemcontact/io/output_directory.hpp"
+#include "bemcontact/io/output/output_directory.hpp"
 
 namespace bemcontact::driver {
 

@@ -11,14 +11,15 @@
 #include "bemcontact/bem/progress.hpp"
 #include "bemcontact/core/limits.hpp"
 #include "bemcontact/dd/distribution.hpp"
-#include "bemcontact/io/output_directory.hpp"
-#include "bemcontact/io/parameter_overrides.hpp"
+#include "bemcontact/io/output/output_directory.hpp"
+#include "bemcontact/io/input/parameter_overrides.hpp"
+#include "bemcontact/io/input/problem_text.hpp"
 
 namespace bemcontact::driver {
 
-enum class ProblemKind { body, decomposition, contact };
-// By the tables of the text: [[subdomain]] -> decomposition, [contact] -> contact.
-ProblemKind problem_kind(std::string_view text);
+// By the tables of the text (io/input/problem_text.hpp).
+using io::ProblemKind;
+using io::problem_kind;
 
 struct RunOptions {
   io::ParameterOverrides overrides;

@@ -6,7 +6,7 @@
 #include "bemcontact/bem/problem.hpp"
 #include "bemcontact/bem/solution.hpp"
 #include "bemcontact/geometry/mesh.hpp"
-#include "bemcontact/io/problem_file.hpp"
+#include "bemcontact/io/input/problem_file.hpp"
 #include "bemcontact/validation/validation.hpp"
 
 namespace bemcontact::validation {

@@ -3,7 +3,7 @@
 #include <vector>
 
 #include "bemcontact/contact/contact_solver.hpp"
-#include "bemcontact/io/contact_file.hpp"
+#include "bemcontact/io/input/contact_file.hpp"
 #include "bemcontact/reference/flat_punch.hpp"
 #include "bemcontact/validation/validation.hpp"
 

@@ -10,7 +10,7 @@
 #include <string>
 
 #include "bemcontact/bem/analysis.hpp"
-#include "bemcontact/io/problem_file.hpp"
+#include "bemcontact/io/input/problem_file.hpp"
 
 namespace bemcontact::bem {
 namespace {

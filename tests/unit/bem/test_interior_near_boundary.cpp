@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "bemcontact/bem/analysis.hpp"
-#include "bemcontact/io/problem_file.hpp"
+#include "bemcontact/io/input/problem_file.hpp"
 #include "bemcontact/reference/lame.hpp"
 
 using namespace bemcontact;

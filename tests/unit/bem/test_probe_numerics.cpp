@@ -7,7 +7,7 @@
 
 #include "bemcontact/bem/analysis.hpp"
 #include "bemcontact/bem/probe.hpp"
-#include "bemcontact/io/problem_file.hpp"
+#include "bemcontact/io/input/problem_file.hpp"
 #include "support/example_text.hpp"
 
 namespace bemcontact::bem {

@@ -9,7 +9,7 @@
 
 #include "bemcontact/bem/analysis.hpp"
 #include "bemcontact/core/error.hpp"
-#include "bemcontact/io/problem_file.hpp"
+#include "bemcontact/io/input/problem_file.hpp"
 
 namespace bemcontact::bem {
 namespace {

@@ -8,8 +8,8 @@
 #include <nlohmann/json.hpp>
 
 #include "bemcontact/contact/contact_solver.hpp"
-#include "bemcontact/io/contact_file.hpp"
-#include "bemcontact/io/contact_writer.hpp"
+#include "bemcontact/io/input/contact_file.hpp"
+#include "bemcontact/io/output/contact_writer.hpp"
 
 namespace bemcontact {
 

@@ -13,7 +13,7 @@
 
 #include "bemcontact/contact/contact_solver.hpp"
 #include "bemcontact/core/error.hpp"
-#include "bemcontact/io/contact_file.hpp"
+#include "bemcontact/io/input/contact_file.hpp"
 
 namespace bemcontact::contact {
 namespace {

@@ -10,8 +10,8 @@
 #include "bemcontact/contact/contact_solver.hpp"
 #include "bemcontact/contact/free_motions.hpp"
 #include "bemcontact/geometry/mesh.hpp"
-#include "bemcontact/io/contact_file.hpp"
-#include "bemcontact/io/contact_writer.hpp"
+#include "bemcontact/io/input/contact_file.hpp"
+#include "bemcontact/io/output/contact_writer.hpp"
 #include "support/example_text.hpp"
 
 namespace bemcontact::contact {

@@ -12,7 +12,7 @@
 #include "bemcontact/contact/condensed.hpp"
 #include "bemcontact/contact/contact_solver.hpp"
 #include "bemcontact/contact/halfspace_model.hpp"
-#include "bemcontact/io/contact_file.hpp"
+#include "bemcontact/io/input/contact_file.hpp"
 
 namespace bemcontact::contact {
 namespace {

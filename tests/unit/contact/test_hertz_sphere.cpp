@@ -5,8 +5,8 @@
 #include <limits>
 
 #include "bemcontact/contact/contact_solver.hpp"
-#include "bemcontact/io/contact_file.hpp"
-#include "bemcontact/io/contact_writer.hpp"
+#include "bemcontact/io/input/contact_file.hpp"
+#include "bemcontact/io/output/contact_writer.hpp"
 #include "bemcontact/reference/hertz.hpp"
 
 namespace bemcontact::contact {

@@ -4,7 +4,7 @@
 
 #include "bemcontact/contact/contact_solver.hpp"
 #include "bemcontact/core/error.hpp"
-#include "bemcontact/io/contact_file.hpp"
+#include "bemcontact/io/input/contact_file.hpp"
 #include "support/example_text.hpp"
 
 namespace bemcontact::contact {
@@ -171,7 +171,7 @@ TEST(LoadHistory, ClosedPairsHaveTheirGapAsJumpInEveryKindOfContact) {
 
 }  // namespace bemcontact::contact
 
-#include "bemcontact/io/contact_writer.hpp"
+#include "bemcontact/io/output/contact_writer.hpp"
 
 namespace bemcontact::contact {
 

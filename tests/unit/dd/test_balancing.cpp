@@ -5,7 +5,7 @@
 #include "bemcontact/dd/interface_operator.hpp"
 #include "bemcontact/dd/plate_strips.hpp"
 #include "bemcontact/dd/solver.hpp"
-#include "bemcontact/io/decomposition_file.hpp"
+#include "bemcontact/io/input/decomposition_file.hpp"
 
 namespace bemcontact::dd {
 namespace {

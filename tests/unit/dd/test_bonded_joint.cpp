@@ -4,7 +4,7 @@
 
 #include "bemcontact/dd/monolithic.hpp"
 #include "bemcontact/dd/solver.hpp"
-#include "bemcontact/io/decomposition_file.hpp"
+#include "bemcontact/io/input/decomposition_file.hpp"
 
 namespace bemcontact::dd {
 

@@ -5,8 +5,8 @@
 
 #include "bemcontact/dd/plate_strips.hpp"
 #include "bemcontact/dd/solver.hpp"
-#include "bemcontact/io/decomposition_file.hpp"
-#include "bemcontact/io/decomposition_writer.hpp"
+#include "bemcontact/io/input/decomposition_file.hpp"
+#include "bemcontact/io/output/decomposition_writer.hpp"
 
 namespace bemcontact::io {
 namespace {

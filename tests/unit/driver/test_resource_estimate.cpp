@@ -10,7 +10,7 @@
 #include "bemcontact/dd/plate_strips.hpp"
 #include "bemcontact/driver/resource_check.hpp"
 #include "bemcontact/driver/run.hpp"
-#include "bemcontact/io/problem_file.hpp"
+#include "bemcontact/io/input/problem_file.hpp"
 #include "support/example_text.hpp"
 
 namespace bemcontact::driver {

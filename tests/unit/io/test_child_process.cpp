@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "bemcontact/core/limits.hpp"
-#include "bemcontact/io/child_process.hpp"
+#include "bemcontact/io/input/child_process.hpp"
 
 namespace bemcontact::io {
 namespace {

@@ -7,7 +7,8 @@
 #include <numbers>
 #include <thread>
 
-#include "bemcontact/io/expression.hpp"
+#include "bemcontact/io/input/expression.hpp"
+#include "bemcontact/io/text_format.hpp"
 
 namespace bemcontact::io {
 namespace {

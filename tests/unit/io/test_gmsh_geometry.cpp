@@ -9,9 +9,9 @@
 #include <string>
 
 #include "bemcontact/core/error.hpp"
-#include "bemcontact/io/gmsh_geometry.hpp"
-#include "bemcontact/io/problem_file.hpp"
-#include "bemcontact/io/toml_reader.hpp"
+#include "bemcontact/io/input/gmsh_geometry.hpp"
+#include "bemcontact/io/input/problem_file.hpp"
+#include "bemcontact/io/input/problem_text.hpp"
 
 namespace bemcontact::io {
 

@@ -7,7 +7,7 @@
 
 #include <cmath>
 
-#include "bemcontact/io/json_writer.hpp"
+#include "bemcontact/io/output/json_writer.hpp"
 
 namespace bemcontact::io {
 namespace {

@@ -10,7 +10,7 @@
 #include <thread>
 
 #include "bemcontact/core/error.hpp"
-#include "bemcontact/io/output_directory.hpp"
+#include "bemcontact/io/output/output_directory.hpp"
 
 namespace bemcontact::io {
 namespace {

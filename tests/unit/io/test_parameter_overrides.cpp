@@ -5,7 +5,7 @@
 #include <functional>
 #include <string>
 
-#include "bemcontact/io/problem_file.hpp"
+#include "bemcontact/io/input/problem_file.hpp"
 
 namespace bemcontact::io {
 namespace {

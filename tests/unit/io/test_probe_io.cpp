@@ -6,10 +6,10 @@
 
 #include "bemcontact/bem/analysis.hpp"
 #include "bemcontact/core/error.hpp"
-#include "bemcontact/io/probe_input.hpp"
-#include "bemcontact/io/probe_writer.hpp"
-#include "bemcontact/io/problem_file.hpp"
-#include "bemcontact/io/results_writer.hpp"
+#include "bemcontact/io/input/probe_input.hpp"
+#include "bemcontact/io/output/probe_writer.hpp"
+#include "bemcontact/io/input/problem_file.hpp"
+#include "bemcontact/io/output/results_writer.hpp"
 #include "support/example_text.hpp"
 
 namespace bemcontact::io {

@@ -2,18 +2,18 @@
 // condition signatures, axisymmetric specifics, reading from disk, and every bundled example.
 #include <gtest/gtest.h>
 
-#include "bemcontact/io/contact_file.hpp"
-#include "bemcontact/io/decomposition_file.hpp"
+#include "bemcontact/io/input/contact_file.hpp"
+#include "bemcontact/io/input/decomposition_file.hpp"
 
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
 #include "bemcontact/geometry/boundary.hpp"
-#include "bemcontact/io/json_writer.hpp"
-#include "bemcontact/io/gmsh_geometry.hpp"
-#include "bemcontact/io/problem_file.hpp"
-#include "bemcontact/io/toml_reader.hpp"
+#include "bemcontact/io/output/json_writer.hpp"
+#include "bemcontact/io/input/gmsh_geometry.hpp"
+#include "bemcontact/io/input/problem_file.hpp"
+#include "bemcontact/io/input/problem_text.hpp"
 
 namespace bemcontact::io {
 namespace {
@@ -350,7 +350,7 @@ TEST(IoProblemFile, ReadsFromDiskAndEchoesOptions) {
   EXPECT_EQ(file.problem.source_file, path.string());
   EXPECT_EQ(file.problem.body.pieces.size(), 4u);
 
-  const nlohmann::json echo = problem_echo_json(file);
+  const nlohmann::json echo = problem_echo_json(file.problem, file.parameters, file.output.vtk);
   EXPECT_EQ(echo["analysis"], "plane_stress");
   EXPECT_EQ(echo["interpolation"], "constant");
   EXPECT_EQ(echo["mesh"]["corner_shift"], 0.25);

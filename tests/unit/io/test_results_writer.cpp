@@ -5,7 +5,7 @@
 #include <sstream>
 
 #include "bemcontact/core/error.hpp"
-#include "bemcontact/io/results_writer.hpp"
+#include "bemcontact/io/output/results_writer.hpp"
 
 namespace bemcontact::io {
 namespace {

@@ -2,7 +2,7 @@
 
 #include <string>
 
-#include "bemcontact/io/run_summary.hpp"
+#include "bemcontact/io/output/run_summary.hpp"
 
 namespace bemcontact::io {
 

@@ -1,7 +1,7 @@
 // Edit distance and "did you mean" for misspelt keys and names.
 #include <gtest/gtest.h>
 
-#include "bemcontact/io/suggestions.hpp"
+#include "bemcontact/io/input/suggestions.hpp"
 
 namespace bemcontact::io {
 namespace {

@@ -1,0 +1,456 @@
+#include "bemcontact/io/output/contact_writer.hpp"
+#include "bemcontact/io/file_names.hpp"
+
+#include <algorithm>
+#include <optional>
+
+#include <cctype>
+#include <charconv>
+
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+#include "bemcontact/io/output/json_writer.hpp"
+#include "bemcontact/reference/hertz.hpp"
+#include "bemcontact/io/output/results_writer.hpp"
+
+namespace bemcontact::io {
+namespace {
+
+std::string number(double value) {
+  char buffer[64];
+  const auto end = std::to_chars(buffer, buffer + sizeof buffer, value).ptr;
+  return std::string(buffer, end);
+}
+
+// Every recorded load step's files go into this sub-folder of the output folder.
+constexpr const char* steps_folder = "steps/";
+
+}  // namespace
+
+
+namespace {
+
+nlohmann::json summary_json(const contact::ContactSummary& s) {
+  return {{"time", s.time},
+          {"a", s.contact_radius},
+          {"c", s.stick_radius},
+          {"c_over_a", s.stick_ratio()},
+          {"peak_pressure", s.peak_pressure},
+          {"centre_pressure", s.centre_pressure},
+          {"normal_force", s.normal_force},
+          {"tangential_force", s.tangential_force},
+          {"approach", s.approach},
+          {"pairs_in_contact", s.pairs_in_contact},
+          {"stick_zone", {s.stick_start, s.stick_end}},
+          {"stick_offset", s.stick_offset},
+          {"contact_zone", {s.contact_start, s.contact_end}},
+          {"dissipated_energy", s.dissipated_energy},
+          {"iterations",
+           {{"newton", s.newton_iterations},
+            {"kalker", s.kalker_iterations},
+            {"threshold", s.threshold_iterations},
+            {"gmres_cycles", s.gmres_cycles}}},
+          {"residual", s.residual}};
+}
+
+}  // namespace
+
+
+std::string contact_csv(const std::vector<contact::PairResult>& pairs) {
+  std::string out = "pair,x,y,coordinate,nx,ny,gap,p_n,p_t,slip_ratio,jump_n,jump_t,status\n";
+  for (std::size_t i = 0; i < pairs.size(); ++i) {
+    const auto& p = pairs[i];
+    out += std::to_string(i) + "," + number(p.position.x()) + "," + number(p.position.y()) + "," +
+           number(p.coordinate) + "," + number(p.normal.x()) + "," + number(p.normal.y()) + "," + number(p.gap) + "," +
+           number(p.p_n) + "," + number(p.p_t) + "," + number(p.slip_ratio) + "," + number(p.jump_n) + "," +
+           number(p.jump_t) + "," + contact::to_string(p.status) + "\n";
+  }
+  return out;
+}
+
+namespace {
+
+// The pairs' point data: tractions, gap, slip, jumps, status (0 open, 1 stick, 2 slip).
+struct PairFields {
+  std::vector<Vec2> points, normals;
+  std::vector<std::pair<std::string, std::vector<double>>> scalars;
+};
+
+PairFields pair_fields(const std::vector<contact::PairResult>& pairs) {
+  PairFields f;
+  std::vector<double> gap, p_n, p_t, slip_ratio, jump_n, jump_t, status;
+  for (const auto& p : pairs) {
+    f.points.push_back(p.position);
+    f.normals.push_back(p.normal);
+    gap.push_back(p.gap), p_n.push_back(p.p_n), p_t.push_back(p.p_t), slip_ratio.push_back(p.slip_ratio);
+    jump_n.push_back(p.jump_n), jump_t.push_back(p.jump_t), status.push_back(static_cast<double>(p.status));
+  }
+  f.scalars = {{"p_n", p_n}, {"p_t", p_t}, {"gap", gap}, {"slip_ratio", slip_ratio}, {"jump_n", jump_n},
+               {"jump_t", jump_t}, {"status", status}};
+  return f;
+}
+
+}  // namespace
+
+std::string contact_vtk(const std::vector<contact::PairResult>& pairs, std::string_view title) {
+  const auto f = pair_fields(pairs);
+  return point_cloud_vtk(title, f.points, f.scalars, {{"normal", f.normals}},
+                         {"status_names", {contact::to_string(contact::PairStatus::open),
+                                           contact::to_string(contact::PairStatus::stick),
+                                           contact::to_string(contact::PairStatus::slip)}});
+}
+
+std::string contact_vtp(const std::vector<contact::PairResult>& pairs) {
+  const auto f = pair_fields(pairs);
+  return point_cloud_vtp(f.points, f.scalars, {{"normal", f.normals}});
+}
+
+std::string contact_steps_csv(const contact::ContactInterfaceResult& result) {
+  std::string out =
+      "step,time,a,c,stick_start,stick_end,stick_offset,contact_start,contact_end,peak_pressure,centre_pressure,normal_force,tangential_force,approach,pairs_in_contact,"
+      "dissipated_energy,"
+      "newton_iterations,kalker_iterations,threshold_iterations,gmres_cycles,residual\n";
+  for (std::size_t k = 0; k < result.steps.size(); ++k) {
+    const auto& s = result.steps[k];
+    out += std::to_string(k + 1) + "," + number(s.time) + "," + number(s.contact_radius) + "," +
+           number(s.stick_radius) + "," + number(s.stick_start) + "," + number(s.stick_end) + "," +
+           number(s.stick_offset) + "," +
+           number(s.contact_start) + "," + number(s.contact_end) + "," + number(s.peak_pressure) + "," + number(s.centre_pressure) + "," +
+           number(s.normal_force) + "," + number(s.tangential_force) + "," + number(s.approach) + "," + std::to_string(s.pairs_in_contact) + "," +
+           number(s.dissipated_energy) + "," +
+           std::to_string(s.newton_iterations) + "," + std::to_string(s.kalker_iterations) + "," +
+           std::to_string(s.threshold_iterations) + "," + std::to_string(s.gmres_cycles) + "," + number(s.residual) +
+           "\n";
+  }
+  return out;
+}
+
+namespace {
+
+nlohmann::json interface_json(const contact::ContactInterfaceResult& result) {
+  nlohmann::json j = summary_json(result.summary);
+  j["name"] = result.name;
+  j["pairs"] = result.pairs.size();
+  nlohmann::json steps = nlohmann::json::array();
+  for (const auto& s : result.steps) steps.push_back(summary_json(s));
+  j["steps"] = steps;
+  return j;
+}
+
+std::string body_label(const contact::ContactProblem& problem, const contact::BoundaryRef& side) {
+  return problem.bodies[side.body].name;
+}
+
+// Hertz's solution for an axisymmetric ball (an arc zone on side 1 facing a straight
+// elastic zone, or a flat zone facing a rigid sphere) pressed by a force; none otherwise.
+struct HertzReference {
+  double R, a, p0, approach;
+};
+
+std::optional<HertzReference> hertz_reference(const contact::ContactProblem& problem) {
+  if (problem.analysis != AnalysisType::axisymmetric || problem.forces.size() != 1 || problem.contacts.size() != 1)
+    return std::nullopt;
+  const auto& contact = problem.contacts.front();
+  const auto& side1 = problem.region(contact.side1).body;
+  const auto& zone1 = side1.pieces[contact.side1.piece];
+  const auto& body2 = problem.bodies[contact.side2.body];
+  double R = 0.0;
+  Material material2{std::numeric_limits<double>::infinity(), 0.3};  // rigid: E* from side 1 alone
+  if (body2.rigid) {
+    if (body2.rigid->profile != "sphere" || zone1.shape != geometry::PieceShape::line) return std::nullopt;
+    R = geometry::arc_radius(body2.rigid->contour.front());
+  } else {
+    const auto& zone2 = problem.region(contact.side2).body.pieces[contact.side2.piece];
+    if (zone1.shape != geometry::PieceShape::arc || zone2.shape != geometry::PieceShape::line) return std::nullopt;
+    R = geometry::arc_radius(zone1);
+    material2 = problem.region(contact.side2).body.material;
+  }
+  // The force at the end of the history (its amplitude there).
+  const auto& load = problem.forces.front();
+  const double P = std::abs(load.force * load.amplitude.at(problem.end_time));
+  if (P == 0.0) return std::nullopt;
+  const auto hertz = reference::hertz_point_contact(P, R, side1.material, std::numeric_limits<double>::infinity(),
+                                                    material2);
+  return HertzReference{R, hertz.contact_radius(), hertz.max_pressure(), hertz.approach()};
+}
+
+// Hertz's a, p0 and delta next to the computed ones, when hertz_reference applies.
+std::string hertz_comparison(const contact::ContactProblem& problem, const contact::ContactSummary& s) {
+  const auto hertz = hertz_reference(problem);
+  if (!hertz) return "";
+  char line[256];
+  std::string out;
+  std::snprintf(line, sizeof line, "  Hertz (R = %.6g): a = %.6g (computed %.6g, %+.2f %%)\n", hertz->R, hertz->a,
+                s.contact_radius, 100.0 * (s.contact_radius / hertz->a - 1.0));
+  out += line;
+  std::snprintf(line, sizeof line, "                   p0 = %.6g (centre %.6g, %+.2f %%)\n", hertz->p0,
+                s.centre_pressure, 100.0 * (s.centre_pressure / hertz->p0 - 1.0));
+  out += line;
+  std::snprintf(line, sizeof line, "                   delta = %.6g (computed %.6g, %+.2f %%)\n", hertz->approach,
+                std::abs(s.approach), 100.0 * (std::abs(s.approach) / hertz->approach - 1.0));
+  out += line;
+  return out;
+}
+
+// The contact law: kind and friction of every contact (null when the contacts differ:
+// `contacts` then gives each one's), and the tangential coupling.
+nlohmann::json law_json(const contact::ContactProblem& problem) {
+  const contact::ContactLaw first = problem.contacts.empty() ? contact::ContactLaw{} : problem.contacts.front().law;
+  nlohmann::json law = {{"kind", contact::to_string(first.kind)},
+                        {"friction", first.friction},
+                        {"tangential_coupling", problem.tangential_coupling}};
+  if (problem.contacts.empty()) return law;
+  nlohmann::json contacts = nlohmann::json::array();
+  bool uniform = true;
+  for (const auto& contact : problem.contacts) {
+    contacts.push_back({{"name", contact.name},
+                        {"kind", contact::to_string(contact.law.kind)},
+                        {"friction", contact.law.friction}});
+    uniform = uniform && contact.law == first;
+  }
+  if (!uniform) law["kind"] = law["friction"] = nullptr;
+  law["contacts"] = contacts;
+  return law;
+}
+
+}  // namespace
+
+nlohmann::json contact_summary_json(const contact::ContactProblem& problem, const contact::ContactResult& result) {
+  nlohmann::json j = interface_json(result);
+  const auto law = law_json(problem);
+  j["kind"] = law["kind"];
+  j["algorithm"] = contact::to_string(problem.solver.algorithm);
+  if (problem.solver.algorithm == contact::Algorithm::thesis) {
+    j["gmres_restart"] = problem.solver.gmres_restart;
+    j["max_gmres_cycles"] = problem.solver.max_gmres_cycles;
+    j["xi"] = problem.solver.xi;
+  } else {
+    j["tolerance"] = problem.solver.tolerance;
+  }
+  j["friction"] = law["friction"];
+  j["tangential_coupling"] = problem.tangential_coupling;
+  j["increments"] = problem.increments;
+  j["history"] = {{"end_time", problem.end_time},
+                  {"adaptive", problem.adaptive && problem.has_friction()},
+                  {"steps_taken", result.steps_taken},
+                  {"rejected_steps", result.rejected_steps},
+                  {"rule", "a step in which more than max_state_changes pairs of one contact change state (open, "
+                           "stick, slip) is redone in halves; the step grows back by 2 after an accepted one"},
+                  {"max_state_changes", problem.max_state_changes}};
+  j["unknowns"] = result.unknowns;
+  // The closed form the plots draw next to the pressure (Hertz: p0 sqrt(1 - (r/a)^2)).
+  if (const auto hertz = hertz_reference(problem))
+    j["reference"] = {{"name", "hertz_sphere"}, {"R", hertz->R}, {"a", hertz->a}, {"p0", hertz->p0},
+                      {"approach", hertz->approach}};
+  if (!problem.contacts.empty()) {
+    const auto& first = problem.contacts.front();
+    j["bodies"] = {body_label(problem, first.side1), body_label(problem, first.side2)};
+  }
+  j["timings"] = timings_json(result.timings);
+  return j;
+}
+
+std::string contact_report_text(const contact::ContactProblem& problem, const contact::ContactResult& result) {
+  char line[256];
+  std::string out = problem.title + " (" + to_string(problem.analysis) +
+                    "; units: those of the file, a consistent set such as mm, N, MPa)\n";
+  for (std::size_t c = 0; c < result.contacts.size(); ++c) {
+    const auto& contact = result.contacts[c];
+    const auto& s = contact.summary;
+    const std::string label =
+        result.contacts.size() == 1 ? std::string("contact")
+                                    : "contact '" + contact.name + "' (" + body_label(problem, problem.contacts[c].side1) +
+                                          " / " + body_label(problem, problem.contacts[c].side2) + ")";
+    if (c < problem.contacts.size() && problem.contacts[c].law.friction > 0.0)
+      std::snprintf(line, sizeof line,
+                    "%s: %zu pairs, %d in contact over [%.6g, %.6g], a = %.6g, stick zone [%.6g, %.6g] (half-width c = "
+                    "%.6g, offset %.6g, c/a = %.4f)\n",
+                    label.c_str(), contact.pairs.size(), s.pairs_in_contact, s.contact_start, s.contact_end,
+                    s.contact_radius, s.stick_start, s.stick_end, s.stick_radius, s.stick_offset, s.stick_ratio());
+    else
+      std::snprintf(line, sizeof line, "%s: %zu pairs, %d in contact over [%.6g, %.6g], a = %.6g (frictionless)\n",
+                    label.c_str(), contact.pairs.size(), s.pairs_in_contact, s.contact_start, s.contact_end,
+                    s.contact_radius);
+    out += line;
+    std::snprintf(line, sizeof line,
+                  "  peak pressure %.6g, centre pressure %.6g, normal force %.6g, tangential force %.6g, approach %.6g\n",
+                  s.peak_pressure, s.centre_pressure, s.normal_force, s.tangential_force, s.approach);
+    out += line;
+  }
+  if (problem.contacts.empty()) return out;
+  const auto& s = result.summary;
+  std::snprintf(line, sizeof line, "  %s algorithm, %d load step%s (%d redone in halves): newton %d, kalker %d, threshold %d, gmres cycles %d\n",
+                contact::to_string(problem.solver.algorithm), result.steps_taken, result.steps_taken == 1 ? "" : "s",
+                result.rejected_steps, s.newton_iterations,
+                s.kalker_iterations, s.threshold_iterations, s.gmres_cycles);
+  out += line;
+  out += hertz_comparison(problem, s);
+  return out;
+}
+
+std::vector<std::string> motion_columns(const contact::ContactProblem& problem, const contact::ContactResult& result) {
+  const bool axisymmetric = problem.analysis == AnalysisType::axisymmetric;
+  std::vector<std::string> columns;
+  for (const auto& load : problem.forces) {
+    std::string stem = problem.bodies[load.body].name;
+    if (load.named) {
+      stem += "_" + load.name;
+    } else {
+      if (load.piece >= 0) stem += "_" + problem.bodies[load.body].regions[load.region].body.pieces[load.piece].name;
+      if (load.component == 0) stem += axisymmetric ? "_r" : "_x";
+      if (load.component == 1) stem += axisymmetric ? "_z" : "_y";
+    }
+    stem = file_stem(stem);
+    columns.push_back(stem + (load.component == 2 ? "_moment" : "_force"));
+    columns.push_back(stem + (load.component == 2 ? "_rotation" : "_displacement"));
+  }
+  for (const auto& motion : result.free_motions)
+    columns.push_back(file_stem(problem.bodies[motion.body].name) + "_" + motion.direction +
+                      (motion.direction == "rotation" ? "" : "_displacement"));
+  // A name met again (a load named like a direction of a free body) gets _2, _3, ...
+  std::vector<std::string> unique;
+  for (const auto& column : columns) {
+    std::string name = column;
+    for (int k = 2; std::find(unique.begin(), unique.end(), name) != unique.end(); ++k)
+      name = column + "_" + std::to_string(k);
+    unique.push_back(name);
+  }
+  return unique;
+}
+
+std::vector<std::pair<std::string, std::string>> contact_output_files(const contact::ContactProblem& problem,
+                                                                      const contact::ContactResult& result, bool vtk) {
+  std::vector<std::pair<std::string, std::string>> files;
+  for (const auto& contact : result.contacts) {
+    const std::string stem = file_stem(contact.name);
+    files.emplace_back(stem + ".csv", contact_csv(contact.pairs));
+    if (vtk) files.emplace_back(stem + ".vtk", contact_vtk(contact.pairs, problem.title + ": contact " + contact.name));
+    files.emplace_back(stem + "_steps.csv", contact_steps_csv(contact));
+    for (std::size_t k = 0; k < contact.step_pairs.size(); ++k)
+      files.emplace_back(steps_folder + stem + "_step" + std::to_string(k + 1) + ".csv", contact_csv(contact.step_pairs[k]));
+    if (vtk && !contact.step_pairs.empty()) {
+      // Every step's pairs as a ParaView time series.
+      std::vector<std::pair<double, std::string>> series;
+      for (std::size_t k = 0; k < contact.step_pairs.size(); ++k) {
+        const std::string name = steps_folder + stem + "_step" + std::to_string(k + 1) + ".vtp";
+        files.emplace_back(name, contact_vtp(contact.step_pairs[k]));
+        series.emplace_back(contact.steps[k].time, name);
+      }
+      files.emplace_back(stem + ".pvd", time_series_pvd(series));
+    }
+  }
+  if (!result.records.empty() && result.records.front().motions.size() > 0) {
+    std::string out = "step,time";
+    for (const auto& column : motion_columns(problem, result)) out += "," + column;
+    const Index K = result.records.front().motions.size();
+    out += "\n";
+    for (std::size_t s = 0; s < result.records.size(); ++s) {
+      const auto& r = result.records[s];
+      out += std::to_string(s + 1) + "," + number(r.time);
+      for (Index k = 0; k < K; ++k) {
+        if (k < static_cast<Index>(problem.forces.size())) out += "," + number(r.forces[k]);
+        out += "," + number(r.motions[k]);
+      }
+      out += "\n";
+    }
+    files.emplace_back("motions.csv", out);
+  }
+  for (std::size_t r = 0; r < result.meshes.size(); ++r) {
+    const std::string stem = file_stem(result.body_names[r]);
+    files.emplace_back(stem + "_boundary.csv", boundary_csv(result.meshes[r], result.boundary[r]));
+    if (vtk) files.emplace_back(stem + "_boundary.vtk", boundary_vtk(result.meshes[r], result.boundary[r], problem.title));
+    if (!result.interior[r].points.empty()) {
+      files.emplace_back(stem + "_interior.csv", interior_csv(result.interior[r]));
+      if (vtk) files.emplace_back(stem + "_interior.vtk", interior_vtk(result.interior[r], problem.title));
+    }
+    for (std::size_t k = 0; k < result.step_boundary.size(); ++k)
+      files.emplace_back(steps_folder + stem + "_boundary_step" + std::to_string(k + 1) + ".csv",
+                         boundary_csv(result.meshes[r], result.step_boundary[k][r]));
+    if (vtk && !result.step_boundary.empty()) {
+      // Every step's boundary fields as a ParaView time series.
+      std::vector<std::pair<double, std::string>> series;
+      for (std::size_t k = 0; k < result.step_boundary.size(); ++k) {
+        const std::string name = steps_folder + stem + "_boundary_step" + std::to_string(k + 1) + ".vtp";
+        files.emplace_back(name, boundary_vtp(result.meshes[r], result.step_boundary[k][r]));
+        series.emplace_back(result.records[k].time, name);
+      }
+      files.emplace_back(stem + "_boundary.pvd", time_series_pvd(series));
+    }
+  }
+  return files;
+}
+
+void fill_contact_summary(RunSummary& summary, const contact::ContactProblem& problem,
+                          const contact::ContactResult& result) {
+  int rigid = 0;
+  for (const auto& body : problem.bodies) rigid += body.rigid.has_value();
+  summary.kind = problem.contacts.empty() ? "bodies" : "contact";
+  summary.problem = {{"bodies", problem.bodies.size()},
+                     {"rigid_bodies", rigid},
+                     {"regions", result.meshes.size()},
+                     {"contacts", problem.contacts.size()},
+                     {"force_loads", problem.forces.size()}};
+  const auto& solver = problem.solver;
+  summary.options.update(
+      {{"mesh", mesh_options_json(problem.mesh)},
+       {"law", law_json(problem)},
+       {"solver", {{"algorithm", contact::to_string(solver.algorithm)},
+                   {"tolerance", solver.tolerance},
+                   {"max_iterations", solver.max_iterations},
+                   {"gmres_restart", solver.gmres_restart},
+                   {"xi", solver.xi},
+                   {"max_gmres_cycles", solver.max_gmres_cycles},
+                   {"max_threshold_iterations", solver.max_threshold_iterations}}},
+       {"history", {{"end_time", problem.end_time},
+                    {"increments", problem.increments},
+                    {"adaptive", problem.adaptive && problem.has_friction()},
+                    {"max_state_changes", problem.max_state_changes},
+                    {"max_steps", problem.max_steps},
+                    {"record_steps", problem.record_steps}}}});
+  Index nodes = 0, elements = 0;
+  nlohmann::json regions = nlohmann::json::object();
+  for (std::size_t r = 0; r < result.meshes.size(); ++r) {
+    const auto& mesh = result.meshes[r];
+    nodes += mesh.node_count();
+    elements += mesh.element_count();
+    regions[result.body_names[r]] = {{"nodes", mesh.node_count()},
+                                     {"elements", mesh.element_count()},
+                                     {"graded_toward_vertices", mesh_transitions_json(mesh)}};
+    // Per region, the contact zones included (the resultant of the contact tractions).
+    summary.reactions[result.body_names[r]] = resultants_json(result.boundary[r].resultants, problem.analysis);
+  }
+  summary.mesh = {{"nodes", nodes}, {"elements", elements}, {"regions", regions}};
+  summary.timings = timings_json(result.timings);
+  if (!problem.contacts.empty()) summary.results["contact"] = contact_summary_json(problem, result);
+  nlohmann::json contacts = nlohmann::json::array();
+  for (const auto& contact : result.contacts) contacts.push_back(interface_json(contact));
+  summary.results["contacts"] = contacts;
+}
+
+std::vector<std::pair<std::string, std::string>> contact_mesh_files(const contact::ContactProblem& problem,
+                                                                    const contact::PreparedContact& prepared) {
+  std::vector<std::pair<std::string, std::string>> files;
+  for (const auto& region : prepared.regions) {
+    const auto& body = problem.bodies[region.body];
+    const std::string stem = file_stem(body.regions.size() == 1 ? body.name : region.definition.name);
+    files.emplace_back(stem + "_mesh_nodes.csv", mesh_nodes_csv(region.mesh));
+    files.emplace_back(stem + "_mesh_elements.csv", mesh_elements_csv(region.mesh));
+    files.emplace_back(stem + "_mesh.vtk", mesh_vtk(region.mesh, problem.title));
+  }
+  for (std::size_t c = 0; c < prepared.contacts.size(); ++c) {
+    std::string out = "pair,x1,y1,x2,y2,nx,ny,gap,weight\n";
+    const auto& pairs = prepared.contacts[c].pairs;
+    for (std::size_t i = 0; i < pairs.size(); ++i) {
+      const auto& p = pairs[i];
+      out += std::to_string(i) + "," + number(p.position1.x()) + "," + number(p.position1.y()) + "," +
+             number(p.position2.x()) + "," + number(p.position2.y()) + "," + number(p.normal.x()) + "," +
+             number(p.normal.y()) + "," + number(p.gap) + "," + number(p.weight) + "\n";
+    }
+    files.emplace_back(file_stem(problem.contacts[c].name) + "_pairs.csv", out);
+  }
+  return files;
+}
+
+}  // namespace bemcontact::io

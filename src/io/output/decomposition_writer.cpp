@@ -1,0 +1,164 @@
+#include "bemcontact/io/output/decomposition_writer.hpp"
+
+#include <sstream>
+
+#include "bemcontact/io/output/json_writer.hpp"
+#include "bemcontact/io/output/results_writer.hpp"
+#include "bemcontact/io/text_format.hpp"
+
+namespace bemcontact::io {
+
+namespace {
+
+const char* kind_name(bem::ConditionKind kind) {
+  return kind == bem::ConditionKind::displacement ? "displacement" : "traction";
+}
+
+}  // namespace
+
+std::string file_safe_name(const std::string& name) {
+  std::string safe = name.empty() ? "subdomain" : name;
+  for (char& c : safe)
+    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_')) c = '_';
+  return safe;
+}
+
+std::string interface_csv(const dd::DecompositionResult& result) {
+  std::ostringstream out;
+  out << "interface,pair,kind,x,y,subdomain_a,node_a,subdomain_b,node_b,u1_a,u2_a,u1_b,u2_b,t1_a,t2_a,t1_b,t2_b,"
+         "jump_u1,jump_u2,jump_t1,jump_t2\n";
+  for (const auto& interface : result.connectivity.interfaces) {
+    const auto& a = result.subdomains[interface.subdomain_a];
+    const auto& b = result.subdomains[interface.subdomain_b];
+    for (std::size_t j = 0; j < interface.pairs.size(); ++j) {
+      const auto& pair = interface.pairs[j];
+      const Vec2 ua = a.boundary.displacement[pair.node_a], ub = b.boundary.displacement[pair.node_b];
+      const Vec2 ta = a.boundary.traction[pair.node_a], tb = b.boundary.traction[pair.node_b];
+      const Vec2 ju = ua - ub, jt = ta + tb;
+      out << csv_field(interface.name) << ',' << j << ',' << kind_name(pair.kind) << ','
+          << format_number(pair.position.x()) << ',' << format_number(pair.position.y()) << ',' << csv_field(a.name)
+          << ',' << pair.node_a << ',' << csv_field(b.name) << ',' << pair.node_b;
+      for (const Vec2* v : {&ua, &ub, &ta, &tb, &ju, &jt})
+        out << ',' << format_number(v->x()) << ',' << format_number(v->y());
+      out << '\n';
+    }
+  }
+  return out.str();
+}
+
+std::string interface_vtk(const dd::DecompositionResult& result, const std::string& title) {
+  std::vector<const dd::NodePair*> pairs;
+  std::vector<Vec2> jump_u, jump_t;
+  for (const auto& interface : result.connectivity.interfaces) {
+    const auto& a = result.subdomains[interface.subdomain_a].boundary;
+    const auto& b = result.subdomains[interface.subdomain_b].boundary;
+    for (const auto& pair : interface.pairs) {
+      pairs.push_back(&pair);
+      jump_u.push_back(a.displacement[pair.node_a] - b.displacement[pair.node_b]);
+      jump_t.push_back(a.traction[pair.node_a] + b.traction[pair.node_b]);
+    }
+  }
+  const std::size_t n = pairs.size();
+  std::ostringstream out;
+  std::string safe_title = title;
+  for (char& c : safe_title)
+    if (c == '\n' || c == '\r') c = ' ';
+  out << "# vtk DataFile Version 3.0\n" << safe_title.substr(0, 255) << " (interfaces)\nASCII\nDATASET POLYDATA\n";
+  out << "POINTS " << n << " double\n";
+  for (const auto* pair : pairs)
+    out << format_number(pair->position.x()) << ' ' << format_number(pair->position.y()) << " 0\n";
+  out << "VERTICES " << n << ' ' << 2 * n << '\n';
+  for (std::size_t k = 0; k < n; ++k) out << "1 " << k << '\n';
+  out << "POINT_DATA " << n << '\n';
+  for (const auto& [name, values] : {std::pair{"jump_u", &jump_u}, std::pair{"jump_t", &jump_t}}) {
+    out << "VECTORS " << name << " double\n";
+    for (const Vec2& v : *values) out << format_number(v.x()) << ' ' << format_number(v.y()) << " 0\n";
+  }
+  out << "SCALARS displacement_continuity int 1\nLOOKUP_TABLE default\n";
+  for (const auto* pair : pairs) out << (pair->kind == bem::ConditionKind::displacement ? 1 : 0) << '\n';
+  return out.str();
+}
+
+std::string gmres_history_csv(const operators::GmresResult& gmres) {
+  std::ostringstream out;
+  out << "iteration,relative_residual\n";
+  for (std::size_t k = 0; k < gmres.residual_history.size(); ++k)
+    out << k << ',' << format_number(gmres.residual_history[k]) << '\n';
+  return out.str();
+}
+
+std::vector<NamedFile> decomposition_files(const dd::DecompositionResult& result, const std::string& title,
+                                           bool vtk) {
+  std::vector<NamedFile> files;
+  for (const auto& sub : result.subdomains) {
+    const std::string prefix = file_safe_name(sub.name) + "_";
+    files.emplace_back(prefix + "boundary.csv", boundary_csv(sub.mesh, sub.boundary));
+    if (vtk) files.emplace_back(prefix + "boundary.vtk", boundary_vtk(sub.mesh, sub.boundary, title + " / " + sub.name));
+    if (!sub.interior.points.empty()) {
+      files.emplace_back(prefix + "interior.csv", interior_csv(sub.interior));
+      if (vtk) files.emplace_back(prefix + "interior.vtk", interior_vtk(sub.interior, title + " / " + sub.name));
+    }
+  }
+  files.emplace_back("interface.csv", interface_csv(result));
+  if (vtk) files.emplace_back("interface.vtk", interface_vtk(result, title));
+  files.emplace_back("gmres.csv", gmres_history_csv(result.gmres));
+  return files;
+}
+
+nlohmann::json decomposition_summary_json(const dd::DecompositionProblem& problem,
+                                          const dd::DecompositionResult& result) {
+  nlohmann::json j;
+  j["method"] = dd::to_string(result.method);
+  j["preconditioner"] = dd::to_string(result.preconditioner);
+  if (result.preconditioner == dd::InterfacePreconditioner::balancing) {
+    j["coarse_dimension"] = result.coarse_dimension;
+    j["floating_modes"] = result.floating_modes;
+  }
+  nlohmann::json subs = nlohmann::json::array();
+  for (std::size_t s = 0; s < result.subdomains.size(); ++s) {
+    const auto& sub = result.subdomains[s];
+    const auto& material = problem.subdomains[s].body.material;
+    subs.push_back({{"name", sub.name},
+                    {"nodes", sub.mesh.node_count()},
+                    {"elements", sub.mesh.element_count()},
+                    {"graded_toward_vertices", mesh_transitions_json(sub.mesh)},
+                    {"boundary_resultants", resultants_json(sub.boundary.resultants, problem.analysis)},
+                    {"material", {{"E", material.young_modulus}, {"nu", material.poisson_ratio}}},
+                    {"reciprocal_condition", condition_json(sub.reciprocal_condition)},
+                    {"process", s < result.owner.size() ? result.owner[s] : 0}});
+  }
+  j["subdomains"] = subs;
+  nlohmann::json interfaces = nlohmann::json::array();
+  for (std::size_t i = 0; i < result.connectivity.interfaces.size(); ++i) {
+    const auto& interface = result.connectivity.interfaces[i];
+    const auto& jump = result.jumps[i];
+    interfaces.push_back({{"name", interface.name},
+                          {"subdomains", {result.subdomains[interface.subdomain_a].name,
+                                          result.subdomains[interface.subdomain_b].name}},
+                          {"pairs", jump.pairs},
+                          {"displacement_pairs", jump.displacement_pairs},
+                          {"jump_u", jump.jump_u},
+                          {"jump_p", jump.jump_p}});
+  }
+  j["interfaces"] = interfaces;
+  j["interface_unknowns"] = result.interface_unknowns;
+  j["displacement_scale"] = result.displacement_scale;
+  j["gmres"] = {{"restart", dd::effective_restart(problem.options, result.interface_unknowns)},
+                {"tolerance", problem.options.tolerance},
+                {"max_iterations", problem.options.max_iterations},
+                {"status", operators::to_string(result.gmres.status)},
+                {"message", result.gmres.message},
+                {"iterations", result.gmres.iterations},
+                {"restarts", result.gmres.restarts},
+                {"relative_residual", result.gmres.relative_residual}};
+  if (problem.options.method == dd::InterfaceMethod::mixed)
+    j["displacement_nodes"] = problem.options.displacement_nodes;
+  j["explicit_operators"] = problem.options.explicit_operators;
+  j["subdomain_solves"] = result.subdomain_solves;
+  j["processes"] = result.processes;
+  j["factor_memory_bytes"] = result.factor_memory_bytes;
+  j["timings"] = timings_json(result.timings);
+  return j;
+}
+
+}  // namespace bemcontact::io
