@@ -212,3 +212,12 @@ TEST(CompressedSystem, AxisymmetricBodyMatchesTheDenseOne) {
     EXPECT_LT(dp, 100.0 * accuracy) << accuracy;
   }
 }
+
+namespace bemcontact::bem {
+
+// Likewise for hmat-oss: found by the configuration, then in the build.
+TEST(CompressedSystem, TheBuildHasHierarchicalMatricesWhenTheConfigurationFoundThem) {
+  EXPECT_EQ(operators::hmatrix_available(), static_cast<bool>(BEMCONTACT_EXPECT_HMAT));
+}
+
+}  // namespace bemcontact::bem

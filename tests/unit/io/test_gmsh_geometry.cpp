@@ -389,3 +389,13 @@ TEST(GmshGeometry, ParametersAndSetValuesReachTheGeo) {
 }
 
 }  // namespace bemcontact::io
+
+namespace bemcontact::io {
+
+// The .geo tests skip in a build without Gmsh; this one fails when the configuration found
+// Gmsh but the reader was built without it, so that they cannot all skip unnoticed.
+TEST(GmshGeometry, TheBuildReadsGeoFilesWhenTheConfigurationFoundGmsh) {
+  EXPECT_EQ(gmsh_api_available(), static_cast<bool>(BEMCONTACT_EXPECT_GMSH));
+}
+
+}  // namespace bemcontact::io
