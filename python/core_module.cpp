@@ -33,6 +33,10 @@ py::dict as_dict(const driver::RunOutput& output) {
   result["report"] = output.report;
   result["warnings"] = output.warnings;
   result["solver_failure"] = output.solver_failure;
+  const auto& failure = output.solver_failure_details;
+  result["solver_failure_details"] =
+      py::dict(py::arg("part") = failure.part, py::arg("iterations") = failure.iterations,
+               py::arg("residual") = failure.residual);
   return result;
 }
 
@@ -115,11 +119,44 @@ void commit(const std::map<std::string, py::bytes>& files, const std::string& di
 PYBIND11_MODULE(_core, m) {
   m.doc() = "bemcontact's native part; use the bemcontact package instead";
   operators::use_single_threaded_blas();
-  // Translators are tried last registered first: the base class goes first.
-  const auto& error = py::register_exception<Error>(m, "Error", PyExc_RuntimeError);
-  py::register_exception<InputError>(m, "InputError", error.ptr());
-  py::register_exception<GeometryError>(m, "GeometryError", error.ptr());
-  py::register_exception<SolverError>(m, "SolverError", error.ptr());
+  // The error classes, and a translator that gives each raised error its data as attributes:
+  // InputError.file/.line/.key/.detail, GeometryError.places/.detail (file, line, key per
+  // boundary), SolverError.part/.iterations/.residual/.step/.time (None where unknown).
+  static py::exception<Error> error(m, "Error", PyExc_RuntimeError);
+  static py::exception<InputError> input_error(m, "InputError", error.ptr());
+  static py::exception<GeometryError> geometry_error(m, "GeometryError", error.ptr());
+  static py::exception<SolverError> solver_error(m, "SolverError", error.ptr());
+  py::register_exception_translator([](std::exception_ptr raised) {
+    const auto raise = [](const py::object& type, const std::string& message, const py::dict& attributes) {
+      py::object instance = type(message);
+      for (const auto& [name, value] : attributes) instance.attr(name) = value;
+      PyErr_SetObject(type.ptr(), instance.ptr());
+    };
+    const auto place = [](const SourceLocation& where) {
+      return py::make_tuple(where.file, where.line > 0 ? py::object(py::int_(where.line)) : py::object(py::none()),
+                            where.key.empty() ? py::object(py::none()) : py::object(py::str(where.key)));
+    };
+    const auto known = [](auto value, auto unknown) { return value == unknown ? py::object(py::none()) : py::cast(value); };
+    try {
+      if (raised) std::rethrow_exception(raised);
+    } catch (const InputError& e) {
+      const auto [file, line, key] = place(e.where()).cast<std::tuple<py::object, py::object, py::object>>();
+      raise(input_error, e.what(), py::dict(py::arg("file") = file, py::arg("line") = line, py::arg("key") = key,
+                                            py::arg("detail") = e.detail()));
+    } catch (const GeometryError& e) {
+      py::list places;
+      for (const auto& where : e.where()) places.append(place(where));
+      raise(geometry_error, e.what(), py::dict(py::arg("places") = places, py::arg("detail") = e.detail()));
+    } catch (const SolverError& e) {
+      const auto& f = e.failure();
+      raise(solver_error, e.what(),
+            py::dict(py::arg("part") = f.part.empty() ? py::object(py::none()) : py::object(py::str(f.part)),
+                     py::arg("iterations") = known(f.iterations, -1), py::arg("residual") = known(f.residual, -1.0),
+                     py::arg("step") = known(f.step, -1), py::arg("time") = known(f.time, -1.0)));
+    } catch (const Error& e) {
+      raise(error, e.what(), py::dict());
+    }
+  });
   m.attr("__version__") = BEMCONTACT_VERSION;
   m.attr("reads_geo_files") = io::gmsh_api_available();  // .geo through the Gmsh library
   m.def("run", &run, py::arg("text"), py::arg("file_name"), py::arg("overrides"), py::arg("mesh_only") = false,

@@ -238,7 +238,13 @@ class Problem:
         if output is not None:
             result.save(output)
         if result.solver_failure:
-            raise SolverError(result.solver_failure + (f" (diagnostics in {output})" if output else ""))
+            error = SolverError(result.solver_failure + (f" (diagnostics in {output})" if output else ""))
+            details = raw["solver_failure_details"]
+            error.part = details["part"] or None
+            error.iterations = details["iterations"] if details["iterations"] >= 0 else None
+            error.residual = details["residual"] if details["residual"] >= 0 else None
+            error.step = error.time = None
+            raise error
         return result
 
     def __repr__(self):

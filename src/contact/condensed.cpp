@@ -221,8 +221,9 @@ void ContactModel::factor_regions(Build& build, const bem::ProgressCallback& pro
       if (std::string(error.what()).find("is singular") == std::string::npos) throw;
       throw SolverError(std::string(error.what()) + " In a contact problem each body must be held without its "
                         "contact zones (which carry tractions only): " + regions[r].label +
-                        " is free to move; prescribe displacements on it, bond it to a held region, or press it "
-                        "with a force load (a rigid platen).");
+                            " is free to move; prescribe displacements on it, bond it to a held region, or press "
+                            "it with a force load (a rigid platen).",
+                        error.failure());
     }
     const Index dofs = factored_[r]->variable_dofs();
     flexibility[r] = factored_[r]->unit_responses();
@@ -300,8 +301,9 @@ void ContactModel::eliminate_bonds(Build& build) {
       lu = std::make_unique<operators::DenseLU>(K, "the bond equations of body '" + problem.bodies[b].name + "'");
     } catch (const SolverError& error) {
       throw SolverError(std::string(error.what()) + ": body '" + problem.bodies[b].name +
-                        "' is free to move as a whole; prescribe displacements on one of its regions or press it "
-                        "with a force load.");
+                            "' is free to move as a whole; prescribe displacements on one of its regions or press "
+                            "it with a force load.",
+                        error.failure());
     }
     Matrix Uq = -L;
     lu->solve_in_place(Uq);

@@ -166,7 +166,7 @@ void check_zones_not_clipped(const ContactModel& model, const std::vector<PairSt
     const std::string axis = side_face ? (axisymmetric ? "z" : "y") : (axisymmetric ? "r" : "x");
     const std::string message =
         clipped_zone_message(problem.contacts[c].name, contact, in_contact, coordinate, axis, step, time);
-    if (!message.empty()) throw SolverError(message);
+    if (!message.empty()) throw SolverError(message, {"contact zone", -1, -1.0, step, time});
   }
 }
 
@@ -332,7 +332,9 @@ LoadHistory solve_load_history(const CondensedProblem& condensed, const std::vec
         message << " (a force that no contact state can carry, such as a tangential force above the friction limit "
                    "or without friction, has no solution)";
       }
-      throw SolverError(message.str());
+      throw SolverError(message.str(), {"contact step", trial.newton_iterations > 0 ? trial.newton_iterations
+                                                                                    : trial.kalker_iterations,
+                                         trial.residual, taken + 1, t_next});
     }
     const auto trial_state = statuses(pairs, trial, laws);
     if (adaptive && h > 2.0 * min_step) {
@@ -381,7 +383,8 @@ LoadHistory solve_load_history(const CondensedProblem& condensed, const std::vec
     if (adaptive && dt < base_step) dt = std::min(base_step, 2.0 * dt);
     if (taken > problem.max_steps)
       throw SolverError("contact: the history needs more than max_steps = " + std::to_string(problem.max_steps) +
-                        " steps (raise max_steps in [solver])");
+                            " steps (raise max_steps in [solver])",
+                        {"load history", -1, -1.0, taken, t});
     if (progress) progress("contact load steps", t / end);
   }
   if (history.steps.empty()) throw SolverError("contact: the load history has no step (end_time must be > 0)");
@@ -450,7 +453,7 @@ ContactResult solve_contact(const ContactProblem& problem, const bem::ProgressCa
     try {
       return solve_load_history(model.condensed(), model.pairs(), problem, progress, groups, check_zones, report);
     } catch (const SolverError& error) {
-      throw SolverError(error.what() + pulling_loads_hint(model));
+      throw SolverError(error.what() + pulling_loads_hint(model), error.failure());
     }
   }();
   result.timings.add("contact iterations", seconds_since(start));

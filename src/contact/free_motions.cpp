@@ -133,7 +133,8 @@ FreeMotions free_motions(const ContactProblem& problem, const PreparedContact& p
       throw SolverError("body '" + problem.bodies[b].name + "' is free to move: " + mode_name(dominant, type) +
                         " is held neither by its conditions nor by its contacts; prescribe a displacement that "
                         "stops it (a symmetry line, a clamped boundary, a point constraint) or press the body with a "
-                        "force load");
+                        "force load",
+                        {"free body"});
     }
 
     // Pin the free motions: one displacement component per motion, at nodes that carry

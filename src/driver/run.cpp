@@ -206,6 +206,7 @@ RunOutput run_decomposition(std::string_view text, const std::string& file_name,
   } else {
     // No answer from an unconverged iteration: only the diagnostics.
     output.files.add("gmres.csv", io::gmres_history_csv(result.gmres));
+    output.solver_failure_details = {"interface GMRES", result.gmres.iterations, result.gmres.relative_residual};
     output.solver_failure = "the interface problem did not converge: " + result.gmres.message + "; " +
                             convergence_advice(file.problem.options, result);
   }

@@ -111,7 +111,7 @@ DenseLU::DenseLU(Matrix matrix, const std::string& what, double singular_thresho
     if (norm == 0.0) {
       std::ostringstream out;
       out << what << " is singular: unknown " << j << " appears in no equation";
-      throw SolverError(out.str());
+      throw SolverError(out.str(), {"factorisation"});
     }
     column_scale_[j] = 1.0 / norm;
     factors_.col(j) *= column_scale_[j];
@@ -138,7 +138,7 @@ DenseLU::DenseLU(Matrix matrix, const std::string& what, double singular_thresho
         << "): the body can move as a rigid body, or conditions contradict each other. "
            "Prescribe displacements on a boundary or add [[constraint]] entries that fix "
            "both translations and the rotation.";
-    throw SolverError(out.str());
+    throw SolverError(out.str(), {"factorisation", -1, rcond_});
   }
 }
 

@@ -50,9 +50,25 @@ class GeometryError : public Error {
   std::string detail_;
 };
 
+// What a solver failure is about, where known (the Python module gives it as attributes):
+// the part that failed, its iterations and relative residual, the load step and its
+// pseudo-time.
+struct SolverFailure {
+  std::string part;         // "contact step", "contact zone", "interface GMRES", "factorisation", ...
+  int iterations = -1;      // -1: not an iteration
+  double residual = -1.0;   // relative; -1: none
+  int step = -1;            // load step (1-based); -1: none
+  double time = -1.0;       // its pseudo-time; -1: none
+};
+
 class SolverError : public Error {
  public:
-  using Error::Error;
+  explicit SolverError(const std::string& message, SolverFailure failure = {})
+      : Error(message), failure_(std::move(failure)) {}
+  const SolverFailure& failure() const { return failure_; }
+
+ private:
+  SolverFailure failure_;
 };
 
 }  // namespace bemcontact

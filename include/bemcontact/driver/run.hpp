@@ -12,6 +12,7 @@
 #include "bemcontact/core/limits.hpp"
 #include "bemcontact/dd/distribution.hpp"
 #include "bemcontact/io/output/output_directory.hpp"
+#include "bemcontact/core/error.hpp"
 #include "bemcontact/io/input/parameter_overrides.hpp"
 #include "bemcontact/io/input/problem_text.hpp"
 
@@ -40,6 +41,7 @@ struct RunOutput {
   // Set when the run wrote only diagnostics (an unconverged interface problem): the
   // command commits the files, prints this and exits with the solver's code.
   std::string solver_failure;
+  SolverFailure solver_failure_details;  // its iterations and residual
   nlohmann::json estimate = nlohmann::json::object();  // summary.json "estimate"
 };
 
