@@ -136,7 +136,7 @@ void build_tree(ClusterTree& out, const std::vector<Vec2>& points) {
 // recursive LU also spends about a third of each level's time on the update between the
 // two halves (measured 0.33-0.41 at the top level on plane and axisymmetric bodies of 8k-20k
 // unknowns), where the rows stand still; the rows' fraction x is mapped to the time's
-// with that share: with it the reports fell within 8 % of the elapsed time, against 25 %
+// with that share: with it the reports fell within 9 % of the elapsed time, against 25 %
 // for x itself. The top level's update still shows as one step (from 33 % to 67 %).
 double lu_time_fraction(double x) {
   constexpr double update = 1.0 / 3.0, half = (1.0 - update) / 2.0;
