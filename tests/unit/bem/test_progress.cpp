@@ -121,12 +121,16 @@ TEST(Progress, AxisymmetricCompressedReportsItsDiagonalBlocks) {
   expect_increasing_to_one(recorded, "diagonal blocks", 5);
 }
 
-// The dense path: the assembly by elements, the LU by panels of 128 columns.
+// The dense path: the assembly by elements, the LU by panels of 128 columns; then the
+// interior points, which end at 1 whichever thread computed the last one.
 TEST(Progress, DensePhasesIncreaseToOne) {
-  const auto recorded = solve_recording(strip(60, bem::OperatorKind::dense));  // 1 200 unknowns
-  EXPECT_EQ(recorded.phases, (std::vector<std::string>{"assembly of H and G", "LU factorisation"}));
+  auto problem = strip(60, bem::OperatorKind::dense);  // 1 200 unknowns
+  for (int k = 0; k < 40; ++k) problem.interior_points.push_back({Vec2(0.1 + 0.095 * k, 0.5)});
+  const auto recorded = solve_recording(problem);
+  EXPECT_EQ(recorded.phases, (std::vector<std::string>{"assembly of H and G", "LU factorisation", "interior points"}));
   expect_increasing_to_one(recorded, "assembly of H and G", 20);
   expect_increasing_to_one(recorded, "LU factorisation", 5);
+  expect_increasing_to_one(recorded, "interior points", 1);
 }
 
 // A listener may stop a solve (an interrupted run) by throwing, also from inside hmat-oss.
