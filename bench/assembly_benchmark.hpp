@@ -20,17 +20,24 @@ inline void measure_assembly(benchmark::State& state, const bem::ProblemDefiniti
       benchmark::Counter(pairs * 1e-9, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 
-// The whole one-body solve with `compressed` operators or dense ones. Counters: unknowns,
-// the compressed share of stored values.
-inline void measure_whole_solve(benchmark::State& state, bem::ProblemDefinition problem, bool compressed) {
+// The whole one-body solve with `compressed` operators or dense ones; with `progress`, a
+// listener hears the phases (as on a terminal), to show what the reports cost. Counters:
+// unknowns, the compressed share of stored values, the reports heard.
+inline void measure_whole_solve(benchmark::State& state, bem::ProblemDefinition problem, bool compressed,
+                                bool progress = false) {
   problem.operator_choice.kind = compressed ? bem::OperatorKind::compressed : bem::OperatorKind::dense;
   bem::BodyResult result;
+  double reports = 0.0;
+  bem::ProgressCallback listener;
+  if (progress) listener = [&reports](const std::string&, double) { reports += 1.0; };
   for (auto _ : state) {
-    result = bem::solve_body(problem);
+    reports = 0.0;
+    result = bem::solve_body(problem, listener);
     benchmark::DoNotOptimize(result.boundary.displacement.data());
   }
   state.counters["unknowns"] = static_cast<double>(result.report.unknowns);
   state.counters["stored_fraction"] = compressed ? result.report.compression_ratio : 1.0;
+  state.counters["reports"] = reports;
 }
 
 }  // namespace bemcontact::bench

@@ -107,14 +107,17 @@ BENCHMARK(BM_Dgemm)->Arg(1000)->Arg(2000)->Arg(4000)->Unit(benchmark::kMilliseco
 // The whole one-body solve (assembly, factorisation, solve, boundary stresses) dense
 // against compressed (hierarchical matrices, accuracy 1e-10, the default) on the square
 // plate: 2 000 to 8 000 unknowns both ways, 16 000 compressed. Counters: unknowns, the compressed share of stored
-// values. bench/scaling_compressed.sh goes to 128k unknowns with peak memory.
+// values. bench/scaling_compressed.sh goes to 128k unknowns with peak memory. With
+// progress = 1 a listener hears every phase (as the command on a terminal): the cost of the
+// reports, against the same size without.
 void BM_WholeSolve(benchmark::State& state) {
-  bench::measure_whole_solve(state, square_plate(static_cast<int>(state.range(0))), state.range(1) != 0);
+  bench::measure_whole_solve(state, square_plate(static_cast<int>(state.range(0))), state.range(1) != 0,
+                             state.range(2) != 0);
 }
 BENCHMARK(BM_WholeSolve)  // (dense at 16 000 unknowns would take 2 GB and a minute)
-    ->Args({1000, 0})->Args({1000, 1})->Args({2000, 0})->Args({2000, 1})->Args({4000, 0})->Args({4000, 1})
-    ->Args({8000, 1})
-    ->ArgNames({"elements", "compressed"})
+    ->Args({1000, 0, 0})->Args({1000, 1, 0})->Args({2000, 0, 0})->Args({2000, 1, 0})->Args({4000, 0, 0})
+    ->Args({4000, 0, 1})->Args({4000, 1, 0})->Args({4000, 1, 1})->Args({8000, 1, 0})->Args({8000, 1, 1})
+    ->ArgNames({"elements", "compressed", "progress"})
     ->Unit(benchmark::kMillisecond)
     ->Iterations(1);
 

@@ -86,10 +86,9 @@ BodyResult solve_body(const ProblemDefinition& problem, const ProgressCallback& 
   if (use_compressed_operator(problem.operator_choice, result.report.unknowns)) {
     operators::HMatrixOptions options;
     options.accuracy = problem.operator_choice.accuracy;
-    compressed.emplace(result.mesh, integrator, conditions, constraints, options, what);
+    compressed.emplace(result.mesh, integrator, conditions, constraints, options, what, progress);
     clock.lap("assembly");
-    if (progress) progress("factorisation", 0.0);
-    compressed->factorize(rigid_only);
+    compressed->factorize(rigid_only, progress);
     result.report.operator_kind = "compressed";
     result.report.compression_ratio = compressed->compression_ratio();
     result.report.reciprocal_condition = std::numeric_limits<double>::quiet_NaN();
@@ -107,14 +106,15 @@ BodyResult solve_body(const ProblemDefinition& problem, const ProgressCallback& 
     clock.lap("assembly");
     auto system = build_boundary_system(*matrices, conditions, constraints);
     const Matrix reaction_columns = system.A.block(0, dofs, dofs, static_cast<Index>(constraints.size()));
-    if (progress) progress("factorisation", 0.0);
-    const operators::DenseLU lu(std::move(system.A), what);
+    PhaseProgress phase(progress, "LU factorisation");
+    const operators::DenseLU lu(std::move(system.A), what, operators::DenseLU::default_singular_threshold,
+                                  phase.fractions());
     result.report.reciprocal_condition = lu.reciprocal_condition();
     y = lu.solve(system.b);
     if (rigid_only) y = rigid_mode_consistent_solution(lu, reaction_columns, y);
+    phase.finish();
   }
   if (!y.allFinite()) throw SolverError("the solution of body '" + body.name + "' is not finite");
-  if (progress) progress("factorisation", 1.0);
   clock.lap("solve");
 
   // Constraints that only fix rigid modes carry no reaction (see rigid_modes.hpp).

@@ -161,6 +161,8 @@ InfluenceMatrices assemble_influence_matrices(const geometry::BoundaryMesh& mesh
     m.G.col(j).setZero();
   }
   std::atomic<Index> elements_done{0};
+  PhaseProgress phase(progress, "assembly of H and G");
+  phase.start();
   ParallelErrors errors;
   const bool axisymmetric = integrator.type() == AnalysisType::axisymmetric;
   Vector radial_traction_integral = Vector::Zero(axisymmetric ? 2 * n : 0);
@@ -215,8 +217,8 @@ InfluenceMatrices assemble_influence_matrices(const geometry::BoundaryMesh& mesh
             if (axisymmetric) contributions.block<2, 1>(2 * i, static_cast<Index>(k)) = traction_term;
           }
           const Index done = ++elements_done;
-          if (progress && omp_get_thread_num() == 0)
-            progress("assembly", static_cast<double>(done) / static_cast<double>(mesh.element_count()));
+          if (phase && omp_get_thread_num() == 0)  // the listener hears the calling thread only
+            phase.report(static_cast<double>(done) / static_cast<double>(mesh.element_count()));
         });
       }
       errors.rethrow();
@@ -237,7 +239,7 @@ InfluenceMatrices assemble_influence_matrices(const geometry::BoundaryMesh& mesh
   }
   const auto diagonal = diagonal_blocks_from_exact_fields(mesh, integrator.type(), translation_sums, radial_residual);
   for (Index i = 0; i < n; ++i) m.H.block<2, 2>(2 * i, 2 * i) += diagonal[i];
-  if (progress) progress("assembly", 1.0);
+  phase.finish();
   return m;
 }
 

@@ -107,7 +107,8 @@ Matrix InfluenceBlocks::radial_traction(const std::vector<Index>& row_nodes, con
 CompressedBoundarySystem::CompressedBoundarySystem(const geometry::BoundaryMesh& mesh, const ElementIntegrator& integrator,
                                                    std::vector<NodeCondition> conditions,
                                                    std::vector<ConstraintEquation> constraints,
-                                                   const operators::HMatrixOptions& options, const std::string& what)
+                                                   const operators::HMatrixOptions& options, const std::string& what,
+                                                   const ProgressCallback& progress)
     : mesh_(mesh),
       traction_scale_(integrator.material().shear_modulus()),
       node_scale_(Vector::Zero(mesh.node_count())),
@@ -115,13 +116,20 @@ CompressedBoundarySystem::CompressedBoundarySystem(const geometry::BoundaryMesh&
       constraints_(std::move(constraints)),
       type_(integrator.type()),
       blocks_(mesh, integrator),
-      influence_(assemble_influence(options, "the influence matrices of " + what)),
-      diagonal_(diagonal_blocks(options, what)),
-      system_(assemble_system(options, what)),
+      influence_(assemble_influence(options, "the influence matrices of " + what, progress)),
+      diagonal_(diagonal_blocks(options, what, progress)),
+      system_(assemble_system(options, what, progress)),
       rhs_(prescribed_rhs()) {}
 
+void CompressedBoundarySystem::factorize(bool keep_transposed, const ProgressCallback& progress) {
+  PhaseProgress phase(progress, "H-LU factorisation");
+  system_.factorize(keep_transposed, phase.fractions());
+  phase.finish();
+}
+
 operators::HMatrix CompressedBoundarySystem::assemble_influence(const operators::HMatrixOptions& options,
-                                                                const std::string& what) {
+                                                                const std::string& what,
+                                                                const ProgressCallback& progress) {
   const Index n = mesh_.node_count();
   for (const auto& element : mesh_.elements)
     for (int a = 0; a < element.node_count; ++a) node_scale_[element.nodes[a]] += element.length;
@@ -153,11 +161,15 @@ operators::HMatrix CompressedBoundarySystem::assemble_influence(const operators:
         out[r + static_cast<Index>(c) * m] = scale * source(2 * row_index.find(rows[r] / 2) + rows[r] % 2, lc);
     }
   };
-  return operators::HMatrix(row_points, col_points, entries, options, what);
+  PhaseProgress phase(progress, "assembly of H and G");
+  operators::HMatrix influence(row_points, col_points, entries, options, what, phase.fractions());
+  phase.finish();
+  return influence;
 }
 
 std::vector<Mat2> CompressedBoundarySystem::diagonal_blocks(const operators::HMatrixOptions& options,
-                                                             const std::string& what) const {
+                                                             const std::string& what,
+                                                             const ProgressCallback& progress) const {
   // H' times the rigid translations (columns 0, 1) and, in axisymmetry, the radial
   // expansion u_r = r (column 2), in one product.
   const Index n = mesh_.node_count();
@@ -169,14 +181,15 @@ std::vector<Mat2> CompressedBoundarySystem::diagonal_blocks(const operators::HMa
   }
   const Matrix products = influence_.apply(fields);
   Vector radial_residual;
-  if (axisymmetric) radial_residual = radial_traction_integral(options, what) - products.col(2);
+  if (axisymmetric) radial_residual = radial_traction_integral(options, what, progress) - products.col(2);
   Matrix translation_sums = products.leftCols(2);
   if (!mesh_.images.empty()) translation_sums += blocks_.image_translation_sums();
   return diagonal_blocks_from_exact_fields(mesh_, type_, translation_sums, radial_residual);
 }
 
 Vector CompressedBoundarySystem::radial_traction_integral(const operators::HMatrixOptions& options,
-                                                          const std::string& what) const {
+                                                          const std::string& what,
+                                                          const ProgressCallback& progress) const {
   // sum_e int_e U p_e as the product of a compressed (2N x elements) matrix with the
   // elements' lengths; its columns are stored divided by the length, like those of H and G.
   const Index n = mesh_.node_count(), elements = mesh_.element_count();
@@ -202,13 +215,17 @@ Vector CompressedBoundarySystem::radial_traction_integral(const operators::HMatr
         out[r + static_cast<Index>(c) * m] =
             values(2 * row_index.find(rows[r] / 2) + rows[r] % 2, static_cast<Index>(c)) / lengths(cols[c], 0);
   };
+  PhaseProgress phase(progress, "diagonal blocks");
   const operators::HMatrix integrals(row_points, col_points, entries, options,
-                                     "the radial expansion's traction integrals of " + what);
-  return integrals.apply(lengths).col(0);
+                                     "the radial expansion's traction integrals of " + what, phase.fractions());
+  Vector integral = integrals.apply(lengths).col(0);
+  phase.finish();
+  return integral;
 }
 
 operators::HMatrix CompressedBoundarySystem::assemble_system(const operators::HMatrixOptions& options,
-                                                             const std::string& what) const {
+                                                             const std::string& what,
+                                                             const ProgressCallback& progress) const {
   const Index n = mesh_.node_count(), dofs = 2 * n, extra = static_cast<Index>(constraints_.size());
   std::vector<Vec2> points(dofs + extra);
   for (Index d = 0; d < dofs; ++d) points[d] = mesh_.nodes[d / 2].position;
@@ -272,7 +289,10 @@ operators::HMatrix CompressedBoundarySystem::assemble_system(const operators::HM
       }
     }
   };
-  return operators::HMatrix(points, points, entries, options, what);
+  PhaseProgress phase(progress, "system assembly");
+  operators::HMatrix system(points, points, entries, options, what, phase.fractions());
+  phase.finish();
+  return system;
 }
 
 Matrix CompressedBoundarySystem::apply_h_minus_g(const Matrix& U, const Matrix& P) const {

@@ -21,10 +21,10 @@ struct FactoredBody::Compressed {
   CompressedBoundarySystem system;
   Compressed(const geometry::BoundaryMesh& m, AnalysisType type, const Material& material,
              const std::vector<NodeCondition>& conditions, const std::vector<ConstraintEquation>& constraints,
-             const OperatorChoice& choice, const std::string& what)
+             const OperatorChoice& choice, const std::string& what, const ProgressCallback& progress)
       : mesh(m),
         integrator(type, material),
-        system(mesh, integrator, conditions, constraints, operators::HMatrixOptions{choice.accuracy}, what) {}
+        system(mesh, integrator, conditions, constraints, operators::HMatrixOptions{choice.accuracy}, what, progress) {}
 };
 
 FactoredBody::FactoredBody(FactoredBody&&) noexcept = default;
@@ -68,7 +68,7 @@ FactoredBody::FactoredBody(const geometry::BoundaryMesh& mesh, const BodyDefinit
   const std::string what = "the boundary element system of body '" + body.name + "'";
   const Index unknowns = 2 * mesh_.node_count() + static_cast<Index>(constraints_.size());
   if (use_compressed_operator(choice, unknowns)) {
-    build_compressed(body, type, choice, what);
+    build_compressed(body, type, choice, what, progress);
     return;
   }
   const ElementIntegrator integrator(type, body.material);
@@ -117,12 +117,16 @@ FactoredBody::FactoredBody(const geometry::BoundaryMesh& mesh, const BodyDefinit
   }
   for (Index i = 0; i < mesh_.node_count(); ++i)
     if (conditions_[i].on_axis) variable_rhs_.row(2 * i).setZero();
-  lu_ = operators::DenseLU(std::move(system.A), what);
+  PhaseProgress phase(progress, "LU factorisation");
+  lu_ = operators::DenseLU(std::move(system.A), what, operators::DenseLU::default_singular_threshold,
+                           phase.fractions());
+  phase.finish();
 }
 
 void FactoredBody::build_compressed(const BodyDefinition& body, AnalysisType type, const OperatorChoice& choice,
-                                    const std::string& what) {
-  compressed_ = std::make_unique<Compressed>(mesh_, type, body.material, conditions_, constraints_, choice, what);
+                                    const std::string& what, const ProgressCallback& progress) {
+  compressed_ =
+      std::make_unique<Compressed>(mesh_, type, body.material, conditions_, constraints_, choice, what, progress);
   const auto& system = compressed_->system;
   const Index n = mesh_.node_count(), dofs = 2 * n, rows = system.size();
   int groups = 1;
@@ -164,7 +168,7 @@ void FactoredBody::build_compressed(const BodyDefinition& body, AnalysisType typ
     fixed_rhs_[dofs + first_variable + q] = 0.0;
     group_rhs_[0][dofs + first_variable + q] = 0.0;
   }
-  compressed_->system.factorize();
+  compressed_->system.factorize(false, progress);
 }
 
 Matrix FactoredBody::solve_unknowns(const Matrix& variable_data, bool with_fixed_data) const {

@@ -347,6 +347,8 @@ InteriorSolution interior_values(const geometry::BoundaryMesh& mesh, const Eleme
   result.displacement.resize(m);
   result.stress.resize(m);
   std::atomic<Index> done{0};
+  PhaseProgress phase(progress, "interior points");
+  phase.start();
   ParallelErrors errors;
 #pragma omp parallel for schedule(dynamic, 4)
   for (Index k = 0; k < m; ++k) {
@@ -382,10 +384,12 @@ InteriorSolution interior_values(const geometry::BoundaryMesh& mesh, const Eleme
       s.s33 = (1 - t) * near.s33 + t * far.s33;
     }
     const Index count = ++done;
-    if (progress && omp_get_thread_num() == 0) progress("interior points", static_cast<double>(count) / m);
+    if (phase && omp_get_thread_num() == 0)  // the listener hears the calling thread only
+      phase.report(static_cast<double>(count) / static_cast<double>(m));
     });
   }
   errors.rethrow();
+  phase.finish();
   for (std::size_t i = 0; i < result.points.size(); ++i)
     if (!result.displacement[i].allFinite() || !stress_is_finite(result.stress[i]))
       throw SolverError("the interior values at " + point_text(result.points[i]) +

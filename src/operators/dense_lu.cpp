@@ -56,7 +56,7 @@ namespace {
 // computed by single-threaded BLAS in the same way whatever the thread count, so the
 // factors are bit-identical for every --threads value (OpenBLAS's own threaded dgetrf
 // changes its blocking with the thread count). Returns LAPACK's info.
-int factor_in_tiles(Index n, double* a, int* pivots) {
+int factor_in_tiles(Index n, double* a, int* pivots, const FractionCallback& progress) {
   constexpr Index panel_width = 128, tile_width = 256;
   const auto at = [&](Index row, Index column) { return a + row + column * n; };
   const int lda = static_cast<int>(n);
@@ -91,13 +91,18 @@ int factor_in_tiles(Index n, double* a, int* pivots) {
       apply(first, std::min(last, k));
       apply(std::max(first, k + kb), last);
     }
+    if (progress) {  // the flops left are those of the trailing matrix's LU, m^3 of n^3
+      const double left = static_cast<double>(n - k - kb) / static_cast<double>(n);
+      progress(1.0 - left * left * left);
+    }
   }
   return info;
 }
 
 }  // namespace
 
-DenseLU::DenseLU(Matrix matrix, const std::string& what, double singular_threshold)
+DenseLU::DenseLU(Matrix matrix, const std::string& what, double singular_threshold,
+                 const FractionCallback& progress)
     : factors_(std::move(matrix)) {
   const Index n = factors_.rows();
   if (n != factors_.cols() || n == 0)
@@ -120,7 +125,8 @@ DenseLU::DenseLU(Matrix matrix, const std::string& what, double singular_thresho
   const double anorm = dlange_("1", &size, &size, factors_.data(), &size, nullptr, 1);
   pivots_.resize(n);
   use_single_threaded_blas();
-  const int info = factor_in_tiles(n, factors_.data(), pivots_.data());
+  if (progress) progress(0.0);
+  const int info = factor_in_tiles(n, factors_.data(), pivots_.data(), progress);
   if (info < 0) throw SolverError(what + ": LAPACK dgetrf rejected its arguments");
   if (info > 0) {
     rcond_ = 0.0;

@@ -10,7 +10,7 @@ bool hmatrix_available() { return false; }
 struct HMatrix::Handle {};
 
 HMatrix::HMatrix(const std::vector<Vec2>&, const std::vector<Vec2>&, const BlockFunction&, const HMatrixOptions&,
-                 std::string what) {
+                 std::string what, const FractionCallback&) {
   throw InputError(SourceLocation{}, "the compressed operator (for " + what +
                                          ") needs hmat-oss: install libhmat-oss-dev and rebuild with "
                                          "-DBEMCONTACT_WITH_HMAT=ON, or use operator = \"dense\"");
@@ -19,7 +19,7 @@ HMatrix::~HMatrix() = default;
 HMatrix::HMatrix(HMatrix&&) noexcept = default;
 HMatrix& HMatrix::operator=(HMatrix&&) noexcept = default;
 Matrix HMatrix::apply(const Matrix&) const { return {}; }
-void HMatrix::factorize(bool) {}
+void HMatrix::factorize(bool, const FractionCallback&) {}
 void HMatrix::solve_in_place(Matrix&) const {}
 void HMatrix::solve_transposed_in_place(Matrix&) const {}
 std::size_t HMatrix::stored_values() const { return 0; }

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "bemcontact/bem/boundary_system.hpp"
+#include "bemcontact/bem/progress.hpp"
 #include "bemcontact/operators/hmatrix.hpp"
 
 namespace bemcontact::bem {
@@ -41,17 +42,20 @@ class InfluenceBlocks {
 
 class CompressedBoundarySystem {
  public:
-  // Plane or axisymmetric. `what` names the system in messages.
+  // Plane or axisymmetric. `what` names the system in messages. Progress phases:
+  // "assembly of H and G", in axisymmetry "diagonal blocks" (the radial expansion's
+  // traction integrals), "system assembly"; factorize: "H-LU factorisation".
   CompressedBoundarySystem(const geometry::BoundaryMesh& mesh, const ElementIntegrator& integrator,
                            std::vector<NodeCondition> conditions, std::vector<ConstraintEquation> constraints,
-                           const operators::HMatrixOptions& options, const std::string& what);
+                           const operators::HMatrixOptions& options, const std::string& what,
+                           const ProgressCallback& progress = {});
 
   Index size() const { return system_.rows(); }
   const Vector& rhs() const { return rhs_; }
   // First 2N rows of the reaction columns (for rigid_mode_consistent_solution).
   Matrix reaction_columns() const;
 
-  void factorize(bool keep_transposed = false) { system_.factorize(keep_transposed); }
+  void factorize(bool keep_transposed = false, const ProgressCallback& progress = {});
   // A y (before factorize) and the solves with A and A^T (after), in place, in the
   // unknowns' own units.
   Vector apply(const Vector& y) const;
@@ -91,10 +95,14 @@ class CompressedBoundarySystem {
   operators::HMatrix system_;     // A
   Vector rhs_;
 
-  operators::HMatrix assemble_influence(const operators::HMatrixOptions& options, const std::string& what);
-  std::vector<Mat2> diagonal_blocks(const operators::HMatrixOptions& options, const std::string& what) const;
-  Vector radial_traction_integral(const operators::HMatrixOptions& options, const std::string& what) const;
-  operators::HMatrix assemble_system(const operators::HMatrixOptions& options, const std::string& what) const;
+  operators::HMatrix assemble_influence(const operators::HMatrixOptions& options, const std::string& what,
+                                        const ProgressCallback& progress);
+  std::vector<Mat2> diagonal_blocks(const operators::HMatrixOptions& options, const std::string& what,
+                                    const ProgressCallback& progress) const;
+  Vector radial_traction_integral(const operators::HMatrixOptions& options, const std::string& what,
+                                  const ProgressCallback& progress) const;
+  operators::HMatrix assemble_system(const operators::HMatrixOptions& options, const std::string& what,
+                                     const ProgressCallback& progress) const;
   Vector prescribed_rhs() const;
 };
 

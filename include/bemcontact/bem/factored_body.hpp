@@ -14,6 +14,7 @@
 
 #include "bemcontact/bem/boundary_system.hpp"
 #include "bemcontact/bem/problem.hpp"
+#include "bemcontact/bem/progress.hpp"
 #include "bemcontact/operators/dense_lu.hpp"
 
 namespace bemcontact::bem {
@@ -76,7 +77,7 @@ class FactoredBody {
   BoundarySolution recover(const Vector& y, const Vector& variable_data, bool with_fixed_data) const;
   void solve_in_place(Matrix& rhs) const;  // with the dense LU or the H-LU
   void build_compressed(const BodyDefinition& body, AnalysisType type, const OperatorChoice& choice,
-                        const std::string& what);
+                        const std::string& what, const ProgressCallback& progress);
 
   geometry::BoundaryMesh mesh_;
   std::vector<VariableNode> variable_;

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "bemcontact/operators/linear_operator.hpp"
+#include "bemcontact/operators/progress.hpp"
 
 namespace bemcontact::operators {
 
@@ -19,12 +20,15 @@ std::string blas_core_name();
 
 class DenseLU {
  public:
+  static constexpr double default_singular_threshold = 1e-13;
+
   DenseLU() = default;
   // Factors a copy of `matrix` (square). Throws SolverError when it is singular to
   // working precision (reciprocal condition below `singular_threshold`); `what` names the
-  // system in the message.
+  // system in the message. `progress` hears the fraction of the factorisation's flops
+  // done, after each panel of 128 columns (from the calling thread).
   explicit DenseLU(Matrix matrix, const std::string& what = "the boundary element system",
-                   double singular_threshold = 1e-13);
+                   double singular_threshold = default_singular_threshold, const FractionCallback& progress = {});
 
   Index size() const { return factors_.rows(); }
   Vector solve(const Vector& rhs) const;

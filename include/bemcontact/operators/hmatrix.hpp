@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "bemcontact/core/types.hpp"
+#include "bemcontact/operators/progress.hpp"
 
 namespace bemcontact::operators {
 
@@ -32,8 +33,10 @@ using BlockFunction =
 class HMatrix {
  public:
   // rows / cols: the position of each row / column unknown (several may share one).
+  // `progress` hears the assembly's fraction after each block (thousands of calls, from
+  // the assembling thread); an exception from it stops the assembly.
   HMatrix(const std::vector<Vec2>& row_points, const std::vector<Vec2>& col_points, const BlockFunction& entries,
-          const HMatrixOptions& options, std::string what);
+          const HMatrixOptions& options, std::string what, const FractionCallback& progress = {});
   ~HMatrix();
   HMatrix(HMatrix&&) noexcept;
   HMatrix& operator=(HMatrix&&) noexcept;
@@ -47,8 +50,9 @@ class HMatrix {
 
   // H-LU in place (square only). keep_transposed also factors A^T, for
   // solve_transposed_in_place (twice the memory). Throws SolverError when a pivot
-  // vanishes or the factors are not finite.
-  void factorize(bool keep_transposed = false);
+  // vanishes or the factors are not finite. `progress` hears the fraction after each
+  // diagonal block (hmat-oss's progress hook), 1 at the end.
+  void factorize(bool keep_transposed = false, const FractionCallback& progress = {});
   bool factorized() const { return factorized_; }
   void solve_in_place(Matrix& rhs) const;
   void solve_transposed_in_place(Matrix& rhs) const;
