@@ -294,3 +294,26 @@ def test_probe_errors_name_the_point_and_warn_for_lines(tmp_path):
     table = result.probe(lines=[(-1.0, 0.5, 1.0, 0.5, 5)], output=tmp_path / "probe")
     assert len(table) == 3 and "2 of its 5 points are inside no body" in table.warnings[0]
     assert (tmp_path / "probe" / "probe.vtk").exists()
+
+
+def test_errors_carry_their_data(examples, tmp_path):
+    # An input error's place, a geometry error's boundaries, a solver failure's part.
+    with pytest.raises(bc.InputError) as raised:
+        bc.run(examples / "plate_tension.toml", P="1/0")
+    assert raised.value.file.endswith("plate_tension.toml") and raised.value.line > 0
+    assert raised.value.key == "parameters.P" and "finite" in raised.value.detail
+    crossing = bc.Problem.from_dict({"analysis": "plane_stress", "material": {"E": 1.0, "nu": 0.3},
+                                     "vertices": {"A": [0.0, 0.0], "B": [1.0, 1.0], "C": [1.0, 0.0], "D": [0.0, 1.0]},
+                                     "boundary": [{"name": "ab", "from": "A", "to": "B"},
+                                                  {"name": "bc", "from": "B", "to": "C"},
+                                                  {"name": "cd", "from": "C", "to": "D"},
+                                                  {"name": "da", "from": "D", "to": "A"}]},
+                                    name=str(tmp_path / "cross.toml"))
+    with pytest.raises(bc.GeometryError) as bad_geometry:
+        crossing.run()
+    assert bad_geometry.value.places and bad_geometry.value.places[0][0].endswith("cross.toml")
+    ball = bc.Problem.load(examples / "contact_hertz_sphere.toml")
+    with pytest.raises(bc.SolverError) as clipped:
+        ball.run(P=400.0)
+    assert clipped.value.part == "contact zone" and clipped.value.step == 1 and clipped.value.time == 1.0
+    assert clipped.value.iterations is None
