@@ -12,8 +12,8 @@
 namespace bemcontact {
 namespace {
 
-// A unit square, counter-clockwise: bottom, right, top, left.
-const std::string square = R"(title = "Square"
+// A unit square_file, counter-clockwise: bottom, right, top, left.
+const std::string square_file = R"(title = "Square"
 analysis = "plane_stress"
 
 [material]
@@ -92,7 +92,7 @@ void expect_placed(const GeometryError& error, const std::string& text, const st
 
 TEST(GeometryErrors, CrossingBoundariesGiveBothLines) {
   // The bottom runs from A to C, the top from B to D: they cross at the centre.
-  std::string text = replace(square, "from = \"A\"\nto = \"B\"", "from = \"A\"\nto = \"C\"");
+  std::string text = replace(square_file, "from = \"A\"\nto = \"B\"", "from = \"A\"\nto = \"C\"");
   text = replace(text, "from = \"B\"\nto = \"C\"", "from = \"C\"\nto = \"B\"");
   text = replace(text, "from = \"C\"\nto = \"D\"", "from = \"B\"\nto = \"D\"");
   const auto error = geometry_error_of(text);
@@ -101,7 +101,7 @@ TEST(GeometryErrors, CrossingBoundariesGiveBothLines) {
 }
 
 TEST(GeometryErrors, AClockwiseOuterContourListsItsBoundariesWithTheirLines) {
-  std::string text = replace(square, "from = \"A\"\nto = \"B\"", "from = \"B\"\nto = \"A\"");
+  std::string text = replace(square_file, "from = \"A\"\nto = \"B\"", "from = \"B\"\nto = \"A\"");
   text = replace(text, "from = \"B\"\nto = \"C\"", "from = \"C\"\nto = \"B\"");
   text = replace(text, "from = \"C\"\nto = \"D\"", "from = \"D\"\nto = \"C\"");
   text = replace(text, "from = \"D\"\nto = \"A\"", "from = \"A\"\nto = \"D\"");
@@ -110,10 +110,10 @@ TEST(GeometryErrors, AClockwiseOuterContourListsItsBoundariesWithTheirLines) {
 
 TEST(GeometryErrors, TwoBoundariesStartingAtOnePointAndOpenContours) {
   // A diagonal from B to D: B, the bottom's end, starts both it and the right side.
-  const std::string twice = square + "\n[[boundary]]\nname = \"diagonal\"\nfrom = \"B\"\nto = \"D\"\n";
+  const std::string twice = square_file + "\n[[boundary]]\nname = \"diagonal\"\nfrom = \"B\"\nto = \"D\"\n";
   expect_placed(geometry_error_of(twice), twice, {"right", "diagonal", "bottom"},
                 "both start at (1, 0), the end of 'bottom'");
-  const std::string open = replace(square, "to = \"D\"", "to = [0.0, 0.9]");
+  const std::string open = replace(square_file, "to = \"D\"", "to = [0.0, 0.9]");
   expect_placed(geometry_error_of(open), open, {"top"}, "open contour: no boundary starts at (0, 0.9)");
 }
 

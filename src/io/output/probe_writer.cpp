@@ -7,8 +7,6 @@ namespace bemcontact::io {
 
 namespace {
 
-std::string number(double value) { return format_number(value); }
-
 // The polylines of the --line rows: consecutive rows of one line whose points follow each
 // other (or are the same point, on an interface); a point outside every body breaks it.
 std::vector<std::vector<Index>> line_cells(const std::vector<ProbeRow>& rows) {
@@ -32,12 +30,12 @@ std::string probe_csv(const std::vector<ProbeRow>& rows, const std::vector<std::
     const auto& v = row.value;
     const auto& s = v.stress;
     const auto principal = s.principal();
-    out += std::to_string(row.point) + "," + std::to_string(row.line) + "," + number(row.distance) + "," +
-           number(row.position.x()) + "," + number(row.position.y()) + "," + csv_field(body_names.at(row.body)) +
-           "," + (v.on_boundary ? "1" : "0") + "," + number(v.displacement.x()) + "," + number(v.displacement.y()) +
-           "," + number(s.s11) + "," + number(s.s22) + "," + number(s.s12) + "," + number(s.s33) + "," +
-           number(s.von_mises()) + "," + number(principal[0]) + "," + number(principal[1]) + "," +
-           number(principal[2]) + "\n";
+    out += std::to_string(row.point) + "," + std::to_string(row.line) + "," + format_number(row.distance) + "," +
+           format_number(row.position.x()) + "," + format_number(row.position.y()) + "," + csv_field(body_names.at(row.body)) +
+           "," + (v.on_boundary ? "1" : "0") + "," + format_number(v.displacement.x()) + "," + format_number(v.displacement.y()) +
+           "," + format_number(s.s11) + "," + format_number(s.s22) + "," + format_number(s.s12) + "," + format_number(s.s33) + "," +
+           format_number(s.von_mises()) + "," + format_number(principal[0]) + "," + format_number(principal[1]) + "," +
+           format_number(principal[2]) + "\n";
   }
   return out;
 }
