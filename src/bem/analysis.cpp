@@ -83,7 +83,8 @@ BodyResult solve_body(const ProblemDefinition& problem, const ProgressCallback& 
   Vector y;
   std::optional<InfluenceMatrices> matrices;  // dense path
   std::optional<CompressedBoundarySystem> compressed;
-  if (use_compressed_operator(problem.operator_choice, result.report.unknowns)) {
+  if (use_compressed_operator(problem.operator_choice, result.report.unknowns,
+                              geometry::symmetry_line_count(result.mesh.images))) {
     operators::HMatrixOptions options;
     options.accuracy = problem.operator_choice.accuracy;
     compressed.emplace(result.mesh, integrator, conditions, constraints, options, what, progress);

@@ -67,7 +67,7 @@ FactoredBody::FactoredBody(const geometry::BoundaryMesh& mesh, const BodyDefinit
   constraints_ = resolve_point_constraints(mesh_, constrained, conditions_);
   const std::string what = "the boundary element system of body '" + body.name + "'";
   const Index unknowns = 2 * mesh_.node_count() + static_cast<Index>(constraints_.size());
-  if (use_compressed_operator(choice, unknowns)) {
+  if (use_compressed_operator(choice, unknowns, geometry::symmetry_line_count(mesh_.images))) {
     build_compressed(body, type, choice, what, progress);
     return;
   }

@@ -29,6 +29,21 @@ std::int64_t body_nodes(const bem::BodyDefinition& body, const geometry::MeshOpt
   return nodes;
 }
 
+// The distinct symmetry lines of a body (as geometry::symmetry_images counts them: two
+// pieces on one line are one line).
+int symmetry_lines(const bem::BodyDefinition& body) {
+  std::vector<std::pair<Vec2, double>> lines;
+  for (const auto& piece : body.pieces) {
+    if (!piece.symmetry) continue;
+    const Vec2 normal = geometry::point_on_piece(piece, 0.0).outward_normal;
+    const double level = normal.dot(piece.start);
+    bool known = false;
+    for (const auto& [n, l] : lines) known = known || (n.dot(normal) > 1.0 - 1e-9 && std::abs(l - level) <= 1e-9 * (1.0 + std::abs(l)));
+    if (!known) lines.emplace_back(normal, level);
+  }
+  return static_cast<int>(lines.size());
+}
+
 std::int64_t body_unknowns(const bem::BodyDefinition& body, const geometry::MeshOptions& mesh) {
   return 2 * body_nodes(body, mesh);
 }
@@ -118,7 +133,7 @@ BodyCost body_cost_alone(const bem::BodyDefinition& body, AnalysisType type, con
   const double elements = static_cast<double>(body_elements(body));
   const double interior = static_cast<double>(interior_points) * elements * interior_pair_seconds(type);
   const double t = std::max(1, threads);
-  cost.compressed = bem::use_compressed_operator(choice, cost.unknowns);
+  cost.compressed = bem::use_compressed_operator(choice, cost.unknowns, symmetry_lines(body));
   if (cost.compressed) {
     cost.peak_bytes = cost.held_bytes = compressed_bytes(cost.unknowns, transposed);
     cost.seconds = compressed_seconds(body, type, mesh, cost.unknowns, transposed) + interior / t;

@@ -81,6 +81,8 @@ struct ProblemDefinition {
 };
 
 // Whether a body of `unknowns` unknowns is solved on compressed operators.
-bool use_compressed_operator(const OperatorChoice& choice, Index unknowns);
+// `symmetry_lines`: the body's distinct symmetry lines (geometry/symmetry.hpp); with two,
+// `auto` stays dense.
+bool use_compressed_operator(const OperatorChoice& choice, Index unknowns, int symmetry_lines = 0);
 
 }  // namespace bemcontact::bem

@@ -34,6 +34,9 @@ struct ImageMap {
 // (z = const).
 std::vector<ImageMap> symmetry_images(const std::vector<BoundaryPiece>& pieces, bool axisymmetric);
 
+// The number of distinct symmetry lines behind a body's images (0, 1 or 2).
+inline int symmetry_line_count(const std::vector<ImageMap>& images) { return images.size() == 3 ? 2 : static_cast<int>(images.size()); }
+
 // The image of an element: its geometry mapped, traversed so that the image body lies on its
 // left (a reflection reverses it), node a of the image standing at the image of node a (its
 // fraction 1 - f when reversed), node indices kept.

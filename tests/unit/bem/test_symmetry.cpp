@@ -10,6 +10,7 @@
 #include "bemcontact/bem/analysis.hpp"
 #include "bemcontact/core/error.hpp"
 #include "bemcontact/io/input/problem_file.hpp"
+#include "bemcontact/operators/hmatrix.hpp"
 
 namespace bemcontact::bem {
 namespace {
@@ -174,6 +175,22 @@ TEST(SymmetryLines, CompressedOperatorsFoldTheImagesToo) {
     EXPECT_LT(d.displacement, 1e-8);
     EXPECT_LT(d.traction, 1e-7);
   }
+}
+
+}  // namespace bemcontact::bem
+
+namespace bemcontact::bem {
+
+// `auto` keeps a body with two symmetry lines dense at any size (hmat-oss compresses it very
+// slowly: README, Known limitations); one line compresses as usual; "compressed" is obeyed.
+TEST(SymmetryLines, AutoKeepsTwoLineBodiesDense) {
+  if (!operators::hmatrix_available()) GTEST_SKIP() << "built without hmat-oss";
+  const OperatorChoice automatic{};
+  const Index large = 10 * OperatorChoice::automatic_threshold;
+  EXPECT_FALSE(use_compressed_operator(automatic, large, 2));
+  EXPECT_TRUE(use_compressed_operator(automatic, large, 1));
+  EXPECT_TRUE(use_compressed_operator(OperatorChoice{OperatorKind::compressed}, large, 2));
+  EXPECT_EQ(geometry::symmetry_line_count(solve(holed_plate(true, "linear")).mesh.images), 2);
 }
 
 }  // namespace bemcontact::bem
