@@ -83,6 +83,7 @@ set(BEMCONTACT_IO_SOURCES
   src/io/input/parameter_overrides.cpp
   src/io/input/probe_input.cpp
   src/io/input/problem_file.cpp
+  src/io/input/problem_reader.cpp
   src/io/input/problem_schema.cpp
   src/io/input/problem_text.cpp
   src/io/input/suggestions.cpp

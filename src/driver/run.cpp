@@ -8,6 +8,8 @@
 #include <cstdarg>
 #include <cstdio>
 #include <nlohmann/json.hpp>
+#include <type_traits>
+#include <variant>
 
 #include "bemcontact/bem/analysis.hpp"
 #include "bemcontact/contact/contact_solver.hpp"
@@ -24,6 +26,7 @@
 #include "bemcontact/io/output/results_writer.hpp"
 #include "bemcontact/io/output/run_summary.hpp"
 #include "bemcontact/geometry/boundary.hpp"
+#include "bemcontact/io/input/problem_reader.hpp"
 #include "bemcontact/io/input/problem_text.hpp"
 
 namespace bemcontact::driver {
@@ -134,12 +137,10 @@ void append_transitions(std::string& report, const geometry::BoundaryMesh& mesh,
            t.name.c_str(), t.elements, t.elements_asked);
 }
 
-// Parses the text with `parse`, checks the resource limits before anything is solved, and
-// starts the output with the reader's warnings.
-template <class Parse>
-auto read_checked(Parse parse, std::string_view text, const std::string& file_name, const RunOptions& options,
-                  RunOutput& output) {
-  auto file = parse(text, file_name, options.overrides, options.limits);
+// Checks the resource limits of a file read before anything is solved, and starts the
+// output with the reader's warnings.
+template <class File>
+void check_read(const File& file, const RunOptions& options, RunOutput& output) {
   check_resources(file.problem, options.limits);
   const ResourceEstimate estimate = estimate_resources(file.problem);
   output.estimate = {{"unknowns", estimate.total_unknowns},
@@ -150,7 +151,6 @@ auto read_checked(Parse parse, std::string_view text, const std::string& file_na
                      {"threads", estimate.threads}};
   if (options.notice) options.notice(describe(estimate));
   output.warnings = file.warnings;
-  return file;
 }
 
 // What to change when the interface GMRES does not converge.
@@ -168,10 +168,10 @@ std::string convergence_advice(const dd::DecompositionOptions& options, const dd
 }
 
 // Several subdomains glued along interfaces (chapter IV).
-RunOutput run_decomposition(std::string_view text, const std::string& file_name, const RunOptions& options) {
-  const auto started = Clock::now();
+RunOutput run_decomposition(const io::DecompositionFile& file, std::string_view text, const std::string& file_name,
+                    const RunOptions& options, Clock::time_point started) {
   RunOutput output;
-  const auto file = read_checked(io::parse_decomposition, text, file_name, options, output);
+  check_read(file, options, output);
   for (const auto& subdomain : file.problem.subdomains)
     add_geometry_warnings(output.warnings, subdomain.body, "subdomain '" + subdomain.body.name + "'");
   const auto result = dd::solve_decomposition(file.problem, options.progress, options.parallel);
@@ -237,10 +237,10 @@ RunOutput run_decomposition(std::string_view text, const std::string& file_name,
 }
 
 // Bodies in contact (chapter V): elastic bodies of one or more regions, rigid indenters.
-RunOutput run_contact(std::string_view text, const std::string& file_name, const RunOptions& options) {
-  const auto started = Clock::now();
+RunOutput run_contact(const io::ContactFile& file, std::string_view text, const std::string& file_name,
+                    const RunOptions& options, Clock::time_point started) {
   RunOutput output;
-  const auto file = read_checked(io::parse_contact_problem, text, file_name, options, output);
+  check_read(file, options, output);
   for (const auto& body : file.problem.bodies)
     for (const auto& region : body.regions)
       add_geometry_warnings(output.warnings, region.body,
@@ -269,10 +269,10 @@ RunOutput run_contact(std::string_view text, const std::string& file_name, const
   return output;
 }
 
-RunOutput run_body(std::string_view text, const std::string& file_name, const RunOptions& options) {
-  const auto started = Clock::now();
+RunOutput run_body(const io::ProblemFile& file, std::string_view text, const std::string& file_name,
+                    const RunOptions& options, Clock::time_point started) {
   RunOutput output;
-  const auto file = read_checked(io::parse_problem, text, file_name, options, output);
+  check_read(file, options, output);
   const double read_seconds = seconds_since(started);
   add_geometry_warnings(output.warnings, file.problem.body, "");
   const auto result = bem::solve_body(file.problem, options.progress);
@@ -356,18 +356,26 @@ RunOutput run_body(std::string_view text, const std::string& file_name, const Ru
 }  // namespace
 
 RunOutput run_problem(std::string_view text, const std::string& file_name, const RunOptions& options) {
-  RunOutput output;
-  const ProblemKind kind = problem_kind(text);
+  const auto started = Clock::now();
+  // The text parsed once; its tables chose the reader (io/input/problem_reader.hpp).
+  const io::ReadProblem read = io::read_problem(text, file_name, options.overrides, options.limits);
+  const ProblemKind kind = io::kind_of(read);
   if (options.parallel.distribution.size > 1 && kind != ProblemKind::decomposition)
     throw InputError(SourceLocation{file_name, 0, ""},
                      "runs on several processes (mpirun -n " + std::to_string(options.parallel.distribution.size) +
                          ") serve decomposition files ([[subdomain]] tables); run this " +
                          (kind == ProblemKind::contact ? "contact" : "one-body") + " file on one process");
-  switch (kind) {
-    case ProblemKind::decomposition: output = run_decomposition(text, file_name, options); break;
-    case ProblemKind::contact: output = run_contact(text, file_name, options); break;
-    case ProblemKind::body: output = run_body(text, file_name, options); break;
-  }
+  RunOutput output = std::visit(
+      [&](const auto& file) {
+        using File = std::decay_t<decltype(file)>;
+        if constexpr (std::is_same_v<File, io::DecompositionFile>)
+          return run_decomposition(file, text, file_name, options, started);
+        else if constexpr (std::is_same_v<File, io::ContactFile>)
+          return run_contact(file, text, file_name, options, started);
+        else
+          return run_body(file, text, file_name, options, started);
+      },
+      read);
   check_output_finite(output.files);
   return output;
 }
@@ -407,31 +415,29 @@ RunOutput mesh_model(const contact::ContactProblem& problem, RunOutput output, i
 }  // namespace
 
 RunOutput mesh_problem(std::string_view text, const std::string& file_name, const RunOptions& options) {
-  const ProblemKind kind = problem_kind(text);
-  if (kind == ProblemKind::contact) {
+  io::ReadProblem read = io::read_problem(text, file_name, options.overrides, options.limits);
+  if (auto* contact_file = std::get_if<io::ContactFile>(&read)) {
     RunOutput output;
     // Meshing records no load steps: their memory is not asked for.
-    const auto parse_unrecorded = [](auto&&... arguments) {
-      auto file = io::parse_contact_problem(arguments...);
-      file.problem.record_steps = false;
-      return file;
-    };
-    const auto file = read_checked(parse_unrecorded, text, file_name, options, output);
+    contact_file->problem.record_steps = false;
+    const auto& file = *contact_file;
+    check_read(file, options, output);
     auto summary = summary_envelope(file.problem.contacts.empty() ? "bodies" : "contact", "mesh", text, file_name,
                                     file.problem.title, file.problem.analysis);
     summary.parameters = file.parameters;
     return mesh_model(file.problem, std::move(output), std::move(summary));
   }
-  if (kind == ProblemKind::decomposition) {
+  if (const auto* decomposition_file = std::get_if<io::DecompositionFile>(&read)) {
     RunOutput output;
-    const auto file = read_checked(io::parse_decomposition, text, file_name, options, output);
+    const auto& file = *decomposition_file;
+    check_read(file, options, output);
     auto model = contact::model_of(file.problem);
     auto summary = summary_envelope("decomposition", "mesh", text, file_name, file.problem.title,
                                     file.problem.analysis);
     summary.parameters = file.parameters;
     return mesh_model(model, std::move(output), std::move(summary));
   }
-  const auto file = io::parse_problem(text, file_name, options.overrides, options.limits);
+  const auto& file = std::get<io::ProblemFile>(read);
   RunOutput output;
   output.warnings = file.warnings;
   add_geometry_warnings(output.warnings, file.problem.body, "");

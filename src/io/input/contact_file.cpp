@@ -17,6 +17,7 @@
 #include "io/input/region_parser.hpp"
 #include "bemcontact/io/input/problem_schema.hpp"
 #include "bemcontact/io/input/expression.hpp"
+#include "io/input/readers.hpp"
 #include "io/input/toml_reader.hpp"
 #include "bemcontact/io/text_format.hpp"
 #include "bemcontact/io/file_names.hpp"
@@ -608,6 +609,11 @@ ContactFile read_contact_file(const std::filesystem::path& path, const Parameter
 ContactFile parse_contact_problem(std::string_view text, const std::string& file_name,
                                   const ParameterOverrides& overrides, const ResourceLimits& limits) {
   toml::table root_table = parse_toml_text(text, file_name);
+  return parse_contact_table(root_table, file_name, overrides, limits);
+}
+
+ContactFile parse_contact_table(toml::table& root_table, const std::string& file_name,
+                                const ParameterOverrides& overrides, const ResourceLimits& limits) {
   ContactFile result;
   FileContext context;
   context.overrides = overrides;

@@ -12,6 +12,7 @@
 #include "io/input/body_parser.hpp"
 #include "bemcontact/io/input/problem_schema.hpp"
 #include "bemcontact/io/input/suggestions.hpp"
+#include "io/input/readers.hpp"
 #include "io/input/toml_reader.hpp"
 #include "bemcontact/io/text_format.hpp"
 #include "bemcontact/io/file_names.hpp"
@@ -193,9 +194,13 @@ DecompositionFile read_decomposition_file(const std::filesystem::path& path, con
 }
 
 DecompositionFile parse_decomposition(std::string_view text, const std::string& file_name,
-                                      const ParameterOverrides& overrides,
-    const ResourceLimits& limits) {
+                                      const ParameterOverrides& overrides, const ResourceLimits& limits) {
   toml::table root_table = parse_toml_text(text, file_name);
+  return parse_decomposition_table(root_table, file_name, overrides, limits);
+}
+
+DecompositionFile parse_decomposition_table(toml::table& root_table, const std::string& file_name,
+                                            const ParameterOverrides& overrides, const ResourceLimits& limits) {
   DecompositionFile result;
   FileContext context;
   context.overrides = overrides;

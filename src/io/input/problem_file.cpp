@@ -9,6 +9,7 @@
 #include "io/input/body_parser.hpp"
 #include "bemcontact/io/input/problem_schema.hpp"
 #include "bemcontact/io/input/suggestions.hpp"
+#include "io/input/readers.hpp"
 #include "io/input/toml_reader.hpp"
 #include "bemcontact/io/input/problem_text.hpp"
 
@@ -72,7 +73,12 @@ bem::OperatorChoice read_operator_choice(const TableReader& root) {
 
 ProblemFile parse_problem(std::string_view text, const std::string& file_name, const ParameterOverrides& overrides,
     const ResourceLimits& limits) {
-  const toml::table root_table = parse_toml_text(text, file_name);
+  toml::table root_table = parse_toml_text(text, file_name);
+  return parse_problem_table(root_table, file_name, overrides, limits);
+}
+
+ProblemFile parse_problem_table(toml::table& root_table, const std::string& file_name,
+                                const ParameterOverrides& overrides, const ResourceLimits& limits) {
 
   ProblemFile result;
   FileContext context;

@@ -8,6 +8,7 @@
 #include <toml++/toml.h>
 
 #include "bemcontact/core/error.hpp"
+#include "io/input/readers.hpp"
 
 namespace bemcontact::io {
 
@@ -27,9 +28,7 @@ std::string read_problem_text(const std::filesystem::path& path) {
 
 ProblemKind problem_kind(std::string_view text) {
   try {
-    const toml::table root = toml::parse(text);
-    if (root.contains("subdomain")) return ProblemKind::decomposition;
-    if (root.contains("contact") || root.contains("body")) return ProblemKind::contact;
+    return kind_of_tables(toml::parse(text));
   } catch (const toml::parse_error&) {
   }
   return ProblemKind::body;
