@@ -97,11 +97,7 @@ BodyResult solve_body(const ProblemDefinition& problem, const ProgressCallback& 
     Matrix rhs = system.rhs();
     system.solve_in_place(rhs);
     y = rhs.col(0);
-    if (rigid_only)
-      y = rigid_mode_consistent_solution(
-          FactoredSolver{system.size(), [&](Matrix& b) { system.solve_in_place(b); },
-                         [&](Matrix& b) { system.solve_transposed_in_place(b); }},
-          system.reaction_columns(), y);
+    if (rigid_only) y = rigid_mode_consistent_solution(system, system.reaction_columns(), y);
   } else {
     matrices = assemble_influence_matrices(result.mesh, integrator, progress);
     clock.lap("assembly");

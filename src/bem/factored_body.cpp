@@ -31,16 +31,7 @@ FactoredBody::FactoredBody(FactoredBody&&) noexcept = default;
 FactoredBody& FactoredBody::operator=(FactoredBody&&) noexcept = default;
 FactoredBody::~FactoredBody() = default;
 
-double FactoredBody::reciprocal_condition() const {
-  return compressed_ ? std::numeric_limits<double>::quiet_NaN() : lu_.reciprocal_condition();
-}
-
-void FactoredBody::solve_in_place(Matrix& rhs) const {
-  if (compressed_)
-    compressed_->system.solve_in_place(rhs);
-  else
-    lu_.solve_in_place(rhs);
-}
+double FactoredBody::reciprocal_condition() const { return factors_->reciprocal_condition(); }
 
 FactoredBody::FactoredBody(const geometry::BoundaryMesh& mesh, const BodyDefinition& body, AnalysisType type,
                            std::vector<VariableNode> variable_nodes, const ProgressCallback& progress,
@@ -118,8 +109,9 @@ FactoredBody::FactoredBody(const geometry::BoundaryMesh& mesh, const BodyDefinit
   for (Index i = 0; i < mesh_.node_count(); ++i)
     if (conditions_[i].on_axis) variable_rhs_.row(2 * i).setZero();
   PhaseProgress phase(progress, "LU factorisation");
-  lu_ = operators::DenseLU(std::move(system.A), what, operators::DenseLU::default_singular_threshold,
-                           phase.fractions());
+  lu_ = std::make_unique<operators::DenseLU>(std::move(system.A), what, operators::DenseLU::default_singular_threshold,
+                                            phase.fractions());
+  factors_ = lu_.get();
   phase.finish();
 }
 
@@ -169,6 +161,7 @@ void FactoredBody::build_compressed(const BodyDefinition& body, AnalysisType typ
     group_rhs_[0][dofs + first_variable + q] = 0.0;
   }
   compressed_->system.factorize(false, progress);
+  factors_ = &compressed_->system;
 }
 
 Matrix FactoredBody::solve_unknowns(const Matrix& variable_data, bool with_fixed_data) const {
@@ -176,7 +169,7 @@ Matrix FactoredBody::solve_unknowns(const Matrix& variable_data, bool with_fixed
     throw Error("FactoredBody: expected " + std::to_string(variable_dofs()) + " variable data");
   Matrix rhs = variable_rhs_ * variable_data;
   if (with_fixed_data) rhs.colwise() += fixed_rhs_;
-  solve_in_place(rhs);
+  factors_->solve_in_place(rhs);
   return rhs;
 }
 
@@ -205,7 +198,7 @@ Matrix FactoredBody::unit_responses() const {
   for (Index first = 0; first < columns; first += kColumnBatch) {
     const Index count = std::min(kColumnBatch, columns - first);
     Matrix y = variable_rhs_.middleCols(first, count);
-    solve_in_place(y);
+    factors_->solve_in_place(y);
     out.middleCols(first, count) = complementary_of(y);
   }
   return out;
@@ -242,7 +235,7 @@ Matrix FactoredBody::complementary_of(const Matrix& y) const {
 
 Vector FactoredBody::group_complementary(int group) const {
   Matrix rhs = group_rhs_.at(group);
-  solve_in_place(rhs);
+  factors_->solve_in_place(rhs);
   Vector out(variable_dofs());
   const Index n = mesh_.node_count(), first_variable = static_cast<Index>(constraints_.size()) - variable_constraints_;
   for (std::size_t k = 0; k < variable_.size(); ++k)
@@ -267,7 +260,7 @@ BoundarySolution FactoredBody::solve_with_amplitudes(const Vector& variable_data
   for (std::size_t g = 0; g < group_rhs_.size(); ++g) rhs += amplitudes.at(g) * group_rhs_[g];
   {
     Matrix column = rhs;
-    solve_in_place(column);
+    factors_->solve_in_place(column);
     rhs = column.col(0);
   }
   std::vector<NodeCondition> conditions = conditions_;

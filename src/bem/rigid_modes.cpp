@@ -61,26 +61,20 @@ bool constraints_fix_only_rigid_modes(const Matrix& free_modes, const std::vecto
   return s[k - 1] > 1e-8 * s[0];
 }
 
-Vector rigid_mode_consistent_solution(const operators::DenseLU& lu, const Matrix& reaction_columns, const Vector& y) {
-  return rigid_mode_consistent_solution(
-      FactoredSolver{lu.size(), [&](Matrix& b) { lu.solve_in_place(b); },
-                     [&](Matrix& b) { lu.solve_transposed_in_place(b); }},
-      reaction_columns, y);
-}
-
-Vector rigid_mode_consistent_solution(const FactoredSolver& lu, const Matrix& reaction_columns, const Vector& y) {
-  const Index total = lu.size;
+Vector rigid_mode_consistent_solution(const operators::Factorization& lu, const Matrix& reaction_columns,
+                                      const Vector& y) {
+  const Index total = lu.size();
   const Index k = reaction_columns.cols();
   const Index dofs = total - k;
   // Left null vectors of the unconstrained operator: M^T [w; mu] = [0; e_q].
   Matrix left = Matrix::Zero(total, k);
   for (Index q = 0; q < k; ++q) left(dofs + q, q) = 1.0;
-  lu.solve_transposed(left);
+  lu.solve_transposed_in_place(left);
   // Replace the reaction columns G_c by W: M' = M + U V^T, U = [W - G_c; 0], V = [0; I].
   Matrix u = Matrix::Zero(total, k);
   u.topRows(dofs) = left.topRows(dofs) - reaction_columns;
   Matrix z = u;
-  lu.solve(z);
+  lu.solve_in_place(z);
   const Matrix capacitance = Matrix::Identity(k, k) + z.bottomRows(k);
   return y - z * capacitance.partialPivLu().solve(y.tail(k));
 }

@@ -15,6 +15,7 @@
 
 #include "bemcontact/bem/boundary_system.hpp"
 #include "bemcontact/bem/progress.hpp"
+#include "bemcontact/operators/factorization.hpp"
 #include "bemcontact/operators/hmatrix.hpp"
 
 namespace bemcontact::bem {
@@ -40,7 +41,7 @@ class InfluenceBlocks {
   std::vector<std::vector<Index>> node_elements_;
 };
 
-class CompressedBoundarySystem {
+class CompressedBoundarySystem : public operators::Factorization {
  public:
   // Plane or axisymmetric. `what` names the system in messages. Progress phases:
   // "assembly of H and G", in axisymmetry "diagonal blocks" (the radial expansion's
@@ -50,7 +51,7 @@ class CompressedBoundarySystem {
                            const operators::HMatrixOptions& options, const std::string& what,
                            const ProgressCallback& progress = {});
 
-  Index size() const { return system_.rows(); }
+  Index size() const override { return system_.rows(); }
   const Vector& rhs() const { return rhs_; }
   // First 2N rows of the reaction columns (for rigid_mode_consistent_solution).
   Matrix reaction_columns() const;
@@ -59,8 +60,8 @@ class CompressedBoundarySystem {
   // A y (before factorize) and the solves with A and A^T (after), in place, in the
   // unknowns' own units.
   Vector apply(const Vector& y) const;
-  void solve_in_place(Matrix& rhs) const;
-  void solve_transposed_in_place(Matrix& rhs) const;
+  void solve_in_place(Matrix& rhs) const override;
+  void solve_transposed_in_place(Matrix& rhs) const override;
   // G P - H U (2N rows) for boundary values in global components, one set per column.
   Matrix boundary_rhs(const Matrix& U, const Matrix& P) const;
   // || H u - G p || / max(|| G p ||, || H u ||), as boundary_equation_residual.

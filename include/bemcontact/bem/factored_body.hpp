@@ -75,7 +75,6 @@ class FactoredBody {
   // The complementary rows of solved unknowns y (one column per data vector).
   Matrix complementary_of(const Matrix& y) const;
   BoundarySolution recover(const Vector& y, const Vector& variable_data, bool with_fixed_data) const;
-  void solve_in_place(Matrix& rhs) const;  // with the dense LU or the H-LU
   void build_compressed(const BodyDefinition& body, AnalysisType type, const OperatorChoice& choice,
                         const std::string& what, const ProgressCallback& progress);
 
@@ -87,9 +86,10 @@ class FactoredBody {
   Vector fixed_rhs_;
   std::vector<Vector> group_rhs_;  // fixed_rhs_ split by load group (they sum to it)
   Matrix variable_rhs_;  // columns: right-hand side per unit variable datum
-  operators::DenseLU lu_;  // dense path
+  std::unique_ptr<operators::DenseLU> lu_;  // dense path
   struct Compressed;       // the mesh copy, integrator and system it refers to
   std::unique_ptr<Compressed> compressed_;
+  const operators::Factorization* factors_ = nullptr;  // the one of the two that is factored
 };
 
 }  // namespace bemcontact::bem

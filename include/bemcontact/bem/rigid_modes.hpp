@@ -30,13 +30,7 @@ bool constraints_fix_only_rigid_modes(const Matrix& free_modes, const std::vecto
 // returns the solution with the multipliers along the left null space instead
 // (Sherman-Morrison-Woodbury on the K reaction columns: K transposed and K direct solves).
 // `reaction_columns` are the first 2N rows of M's last K columns.
-// Any factored system: its size and its solves with A and A^T, in place.
-struct FactoredSolver {
-  Index size;
-  std::function<void(Matrix&)> solve, solve_transposed;
-};
-Vector rigid_mode_consistent_solution(const FactoredSolver& solver, const Matrix& reaction_columns, const Vector& y);
-Vector rigid_mode_consistent_solution(const operators::DenseLU& lu, const Matrix& reaction_columns,
+Vector rigid_mode_consistent_solution(const operators::Factorization& system, const Matrix& reaction_columns,
                                       const Vector& y);
 
 }  // namespace bemcontact::bem

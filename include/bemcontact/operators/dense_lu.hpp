@@ -5,6 +5,7 @@
 // differ, weigh alike in the condition estimate.
 #include <string>
 
+#include "bemcontact/operators/factorization.hpp"
 #include "bemcontact/operators/linear_operator.hpp"
 #include "bemcontact/operators/progress.hpp"
 
@@ -18,7 +19,7 @@ void use_single_threaded_blas();
 // environment forces one), or "" for another BLAS; reported in summary.json.
 std::string blas_core_name();
 
-class DenseLU {
+class DenseLU : public Factorization {
  public:
   static constexpr double default_singular_threshold = 1e-13;
 
@@ -30,11 +31,11 @@ class DenseLU {
   explicit DenseLU(Matrix matrix, const std::string& what = "the boundary element system",
                    double singular_threshold = default_singular_threshold, const FractionCallback& progress = {});
 
-  Index size() const { return factors_.rows(); }
+  Index size() const override { return factors_.rows(); }
   Vector solve(const Vector& rhs) const;
-  void solve_in_place(Matrix& rhs) const;  // several right-hand sides
-  void solve_transposed_in_place(Matrix& rhs) const;  // A^T x = rhs
-  double reciprocal_condition() const { return rcond_; }
+  void solve_in_place(Matrix& rhs) const override;  // several right-hand sides
+  void solve_transposed_in_place(Matrix& rhs) const override;  // A^T x = rhs
+  double reciprocal_condition() const override { return rcond_; }
 
  private:
   void solve_columns(char transpose, Matrix& rhs) const;
