@@ -23,6 +23,7 @@
 #include "bemcontact/driver/probe.hpp"
 #include "bemcontact/driver/run.hpp"
 #include "bemcontact/io/output/output_directory.hpp"
+#include "bemcontact/io/input/problem_schema.hpp"
 #include "bemcontact/io/input/problem_text.hpp"
 #include "bemcontact/operators/dense_lu.hpp"
 #include "bemcontact/validation/validation.hpp"
@@ -279,6 +280,54 @@ std::string global_option_hint(int argc, char** argv) {
   return {};
 }
 
+// `bemcontact keys`: the schema's tables (problem_schema.hpp); --write-docs regenerates
+// docs/keys.md and the key tables of the other pages.
+int command_keys(const std::vector<std::string>& ids, const std::string& docs_dir) {
+  if (!docs_dir.empty()) {
+    namespace fs = std::filesystem;
+    auto write_if_changed = [](const fs::path& path, const std::string& text) {
+      std::ifstream in(path);
+      std::stringstream old;
+      old << in.rdbuf();
+      if (in && old.str() == text) return;
+      std::ofstream(path) << text;
+      std::printf("wrote %s\n", path.string().c_str());
+    };
+    write_if_changed(fs::path(docs_dir) / "keys.md", io::schema::reference_markdown());
+    std::vector<fs::path> pages;
+    for (const auto& entry : fs::directory_iterator(docs_dir))
+      if (entry.path().extension() == ".md" && entry.path().filename() != "keys.md") pages.push_back(entry.path());
+    std::sort(pages.begin(), pages.end());
+    for (const auto& page : pages) {
+      std::ifstream in(page);
+      std::stringstream text;
+      text << in.rdbuf();
+      try {
+        write_if_changed(page, io::schema::with_key_tables(text.str()));
+      } catch (const std::invalid_argument& e) {
+        std::fprintf(stderr, "bemcontact keys: %s: %s\n", page.string().c_str(), e.what());
+        return bad_input;
+      }
+    }
+    return ok;
+  }
+  if (ids.empty()) {
+    for (const auto& table : io::schema::tables()) std::printf("%-20s %s\n", table.id.c_str(), table.title.c_str());
+    return ok;
+  }
+  for (const auto& id : ids) {
+    const io::schema::Table* found = nullptr;
+    for (const auto& table : io::schema::tables())
+      if (table.id == id) found = &table;
+    if (!found) {
+      std::fprintf(stderr, "bemcontact keys: no table '%s' (bemcontact keys lists them)\n", id.c_str());
+      return bad_input;
+    }
+    std::printf("%s (%s)\n\n%s\n\n", found->title.c_str(), found->id.c_str(), io::schema::markdown(*found).c_str());
+  }
+  return ok;
+}
+
 int main(int argc, char** argv) {
   CLI::App app{"bemcontact: boundary elements for 2D and axisymmetric elasticity and frictional contact"};
   app.require_subcommand(1);
@@ -345,6 +394,12 @@ int main(int argc, char** argv) {
   plot->add_option("-o,--output", plot_output, "folder of the figures (default: SOURCE/figures or STEM_figures)");
   plot->add_option("--format", plot_format, "png or svg")->check(CLI::IsMember({"png", "svg"}));
 
+  std::vector<std::string> key_tables;
+  std::string docs_dir;
+  auto* keys = app.add_subcommand("keys", "the keys of each table of a problem file: type, default, meaning "
+                                          "(docs/keys.md); without ID, the tables");
+  keys->add_option("ID", key_tables, "a table's id (e.g. boundary, contact, contact.solver)");
+  keys->add_option("--write-docs", docs_dir, "regenerate DIR/keys.md and the key tables of DIR/*.md");
   std::string probe_run_dir, probe_points, probe_output;
   std::vector<std::string> probe_lines;
   ResourceLimits probe_limits;
@@ -397,10 +452,12 @@ int main(int argc, char** argv) {
                                              std::string(*mesh       ? "mesh"
                                                          : *validate ? "validate"
                                                          : *probe    ? "probe"
+                                                         : *keys     ? "keys"
                                                                      : "plot") +
                                              "` on one process");
     for (const auto& assignment : assignments) io::add_parameter_override(run_options.overrides, assignment);
     run_options.limits.max_memory_bytes = max_memory_gb * 1e9;
+    if (*keys) return command_keys(key_tables, docs_dir);
     if (*run) return command_run(input, output_dir, quiet, run_options, false);
     if (*mesh) return command_run(input, output_dir, quiet, run_options, true);
     if (*probe) input = probe_run_dir;  // geometry errors name the run's folder

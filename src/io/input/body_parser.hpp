@@ -18,7 +18,7 @@ namespace bemcontact::io {
 struct BodyContext {
   const FileContext* file = nullptr;
   std::string path;                         // "" for the root table, later e.g. "body[2]"
-  std::vector<std::string> enclosing_keys;  // other keys allowed in the same table
+  const schema::Table* table = nullptr;     // the whole table's keys (the body's and the file's)
   int fallback_line = 1;                    // line for messages about the table itself
 };
 

@@ -28,20 +28,6 @@ namespace {
 
 constexpr double kPi = 3.141592653589793;
 
-const std::vector<std::string>& solver_keys() {
-  static const std::vector<std::string> keys{"increments", "algorithm", "gmres_restart", "max_gmres_cycles", "xi",
-                                             "tolerance", "max_iterations", "record_steps", "adaptive",
-                                             "max_state_changes", "max_steps", "operator", "accuracy"};
-  return keys;
-}
-const std::vector<std::string>& law_keys() { return schema::contact_law_keys(); }
-const std::vector<std::string>& pairing_keys() { return schema::contact_pairing_keys(); }
-std::vector<std::string> joined(std::initializer_list<const std::vector<std::string>*> lists,
-                                std::vector<std::string> extra) {
-  for (const auto* list : lists) extra.insert(extra.end(), list->begin(), list->end());
-  return extra;
-}
-
 // A boundary of an elastic body by name, searched in all its regions.
 contact::BoundaryRef boundary_named(const contact::ContactProblem& problem, int body, const std::string& name,
                                     const TableReader& reader, std::string_view key) {
@@ -93,15 +79,12 @@ contact::Amplitude read_amplitude(const TableReader& reader, std::string_view ke
   const FileContext& context = reader.context();
   if (const toml::table* table = node.as_table()) {
     const TableReader cyclic(*table, reader.key_path(key), context, reader.line());
-    cyclic.check_keys({"mean", "amplitude", "cycles", "start", "period"}, "a cyclic amplitude");
+    cyclic.check_keys(schema::table("amplitude.cyclic"));
     const double mean = cyclic.optional_number("mean").value_or(0.0);
     const double size = cyclic.number("amplitude");
     const int cycles = cyclic.integer_or("cycles", 1);
     const double start = cyclic.optional_number("start").value_or(0.0);
     const double period = cyclic.optional_number("period").value_or(1.0);
-    if (cycles < 1 || cycles > 10000) cyclic.fail("cycles", "must be between 1 and 10000");
-    if (!(period > 0.0)) cyclic.fail("period", "must be > 0");
-    if (!(start >= 0.0)) cyclic.fail("start", "must be >= 0");
     amplitude.points.emplace_back(start, mean);
     for (int c = 0; c < cycles; ++c) {
       const double t0 = start + c * period;
@@ -127,11 +110,9 @@ contact::Amplitude read_amplitude(const TableReader& reader, std::string_view ke
 }
 
 contact::RigidBody read_rigid(const TableReader& rigid, const FileContext& context, double extent) {
-  rigid.check_keys({"profile", "center", "apex", "radius", "half_width", "edge_radius", "half_angle", "height",
-                    "points", "displacement", "rotation", "amplitude"},
-                   "a [body.rigid] table");
+  rigid.check_keys(schema::table("rigid"));
   contact::ProfileShape shape;
-  shape.profile = rigid.choice("profile", {"sphere", "cylinder", "flat", "cone", "contour"}, "");
+  shape.profile = rigid.choice("profile");
   if (shape.profile.empty()) rigid.fail("profile", "missing: sphere, cylinder, flat, cone or contour");
   const bool round = shape.profile == "sphere" || shape.profile == "cylinder";
   auto only_for = [&](const char* key, bool allowed, const std::string& which) {
@@ -182,9 +163,6 @@ contact::RigidBody read_rigid(const TableReader& rigid, const FileContext& conte
     if (!body.reference)
       rigid.fail("rotation", "a contour has no centre to rotate about (use a profile with a center)");
     body.rotation = rigid.number("rotation");
-    if (!(std::abs(*body.rotation) <= 0.1))
-      rigid.fail("rotation", "the rotation (radians, counter-clockwise) must be small: |rotation| <= 0.1 (the "
-                             "model is linear in it), found " + format_number(*body.rotation));
   }
   if (rigid.has("amplitude")) {
     if (!body.displacement && !body.rotation)
@@ -295,14 +273,13 @@ void read_bodies(toml::table& root_table, const TableReader& root, FileContext& 
         output_names.claim(where, region_file_names(name), kind + (" '" + name + "'"));
     };
     if (reader.has("rigid")) {
-      reader.check_keys({"name", "rigid"}, "a rigid [[body]] table (a rigid body has a profile, no material or boundary)");
+      reader.check_keys(schema::table("body.rigid_body"));
       body.regions.clear();
       problem.bodies.push_back(std::move(body));  // the profile is read once every elastic body is known
       continue;
     }
     if (reader.has("region")) {
-      reader.check_keys({"name", "region"}, "a [[body]] table with [[body.region]] tables (the body-level keys go in "
-                                            "each region)");
+      reader.check_keys(schema::table("body.regions"));
       toml::array* regions = table.get("region")->as_array();
       if (!regions || !regions->is_array_of_tables() || regions->empty())
         reader.fail("region", "must be one or more [[body.region]] tables");
@@ -313,11 +290,12 @@ void read_bodies(toml::table& root_table, const TableReader& root, FileContext& 
         const std::string region_path = path + ".region[" + std::to_string(r) + "]";
         const TableReader region_reader(region_table, region_path,
                                         context, line_of(region_node) > 0 ? line_of(region_node) : line);
-        region_reader.check_keys(joined({&schema::body_keys()}, {"name", "interior"}), "a [[body.region]] table");
+        region_reader.check_keys(schema::table("region"));
         const std::string name = region_reader.optional_name("name").value_or(body.name + "_" + std::to_string(r));
         add_region_name(name, region_reader, "region");
         const auto amplitudes = take_boundary_amplitudes(region_table, region_path, context, region_reader.line(), problem);
-        auto region = parse_region(region_table, region_path, context, region_reader.line(), name);
+        auto region = parse_region(region_table, region_path, context, region_reader.line(), name,
+                                   schema::table("region"), schema::table("body.boundary"));
         set_load_groups(region, amplitudes);
         if (regions->size() > 1 && std::none_of(region.piece_interface.begin(), region.piece_interface.end(),
                                                 [](const std::string& s) { return !s.empty(); }))
@@ -327,10 +305,11 @@ void read_bodies(toml::table& root_table, const TableReader& root, FileContext& 
         body.regions.push_back(std::move(region));
       }
     } else {
-      reader.check_keys(joined({&schema::body_keys()}, {"name", "interior"}), "a [[body]] table");
+      reader.check_keys(schema::table("body"));
       add_region_name(body.name, reader, "body");
       const auto amplitudes = take_boundary_amplitudes(table, path, context, line, problem);
-      auto region = parse_region(table, path, context, line, body.name);
+      auto region = parse_region(table, path, context, line, body.name, schema::table("body"),
+                                 schema::table("body.boundary"));
       set_load_groups(region, amplitudes);
       for (std::size_t k = 0; k < region.piece_interface.size(); ++k)
         if (!region.piece_interface[k].empty())
@@ -361,11 +340,10 @@ void read_bodies(toml::table& root_table, const TableReader& root, FileContext& 
 // contacts, checked by the caller).
 contact::ContactLaw read_law(const TableReader& reader, bool& coupling) {
   contact::ContactLaw law;
-  law.kind = reader.choice("kind", {"unilateral", "bilateral"}, "unilateral") == "bilateral"
+  law.kind = reader.choice("kind") == "bilateral"
                  ? contact::ContactKind::bilateral
                  : contact::ContactKind::unilateral;
   law.friction = reader.optional_number("friction").value_or(0.0);
-  if (!(law.friction >= 0.0)) reader.fail("friction", "the friction coefficient must be >= 0");
   coupling = reader.boolean_or("coupling", true);
   if (reader.has("coupling") && law.friction == 0.0)
     reader.fail("coupling", "'coupling' acts on the tangential tractions of friction; with friction = 0 it has "
@@ -375,10 +353,6 @@ contact::ContactLaw read_law(const TableReader& reader, bool& coupling) {
 
 void read_pairing(const TableReader& reader, contact::ContactInterface& contact) {
   contact.interference = reader.optional_number("interference").value_or(0.0);
-  if (!(contact.interference >= 0.0 && std::isfinite(contact.interference)))
-    reader.fail("interference", "the interference (initial overlap of the contact zones along the pair normal, "
-                                "e.g. the radial interference of a shrink fit) must be a finite number >= 0, found " +
-                                    format_number(contact.interference));
   if (reader.has("interference_amplitude")) {
     if (contact.interference == 0.0)
       reader.fail("interference_amplitude", "the amplitude is that of the interference, which is not given");
@@ -390,7 +364,7 @@ void read_pairing(const TableReader& reader, contact::ContactInterface& contact)
       reader.fail("gap", "the prescribed initial gap is zero everywhere: it would have no effect (remove it)");
     contact.initial_gap = value.field;
   }
-  const std::string normal = reader.choice("normal", {"common", "body1", "body2"}, "common");
+  const std::string normal = reader.choice("normal");
   contact.pair_normal = normal == "body1"   ? contact::PairNormal::body1
                         : normal == "body2" ? contact::PairNormal::body2
                                             : contact::PairNormal::common;
@@ -399,10 +373,6 @@ void read_pairing(const TableReader& reader, contact::ContactInterface& contact)
 void read_solver(const TableReader& reader, contact::ContactProblem& problem) {
   problem.operator_choice = read_operator_keys(reader);
   problem.increments = reader.integer_or("increments", problem.has_friction() ? 16 : 1);
-  if (problem.increments < 1) reader.fail("increments", "the number of load increments must be >= 1");
-  if (problem.increments > 100000)
-    reader.fail("increments", std::to_string(problem.increments) +
-                                  " load increments is over the limit of 100000 (each one is a contact solve)");
   problem.record_steps = reader.boolean_or("record_steps", false);
   problem.record_steps_where = reader.where("record_steps");
   problem.adaptive = reader.boolean_or("adaptive", problem.has_friction());
@@ -410,28 +380,19 @@ void read_solver(const TableReader& reader, contact::ContactProblem& problem) {
     reader.fail("adaptive", "adaptive stepping follows the stick and slip zones; frictionless contact does not depend "
                             "on the load path, so it would have no effect (remove it, or give a friction coefficient)");
   problem.max_state_changes = reader.integer_or("max_state_changes", problem.max_state_changes);
-  if (problem.max_state_changes < 1) reader.fail("max_state_changes", "must be >= 1");
   problem.max_steps = reader.integer_or("max_steps", std::max(problem.max_steps, problem.increments));
   if (problem.max_steps < problem.increments)
     reader.fail("max_steps", "must be >= increments (" + std::to_string(problem.increments) + ")");
   if (!problem.adaptive)
     for (const char* key : {"max_state_changes"})
       if (reader.has(key)) reader.fail(key, "'" + std::string(key) + "' tunes the adaptive stepping, which is off");
-  problem.solver.algorithm = reader.choice("algorithm", {"newton", "thesis"}, "newton") == "thesis"
+  problem.solver.algorithm = reader.choice("algorithm") == "thesis"
                                  ? contact::Algorithm::thesis
                                  : contact::Algorithm::newton;
   problem.solver.gmres_restart = reader.integer_or("gmres_restart", problem.solver.gmres_restart);
-  if (problem.solver.gmres_restart < 1) reader.fail("gmres_restart", "m of GMRES(m) must be >= 1");
   problem.solver.max_gmres_cycles = reader.integer_or("max_gmres_cycles", problem.solver.max_gmres_cycles);
-  if (problem.solver.max_gmres_cycles < 1) reader.fail("max_gmres_cycles", "must be >= 1");
-  if (const auto xi = reader.optional_number("xi")) {
-    if (!(*xi > 0.0 && *xi < 1.0)) reader.fail("xi", "must satisfy 0 < xi < 1");
-    problem.solver.xi = *xi;
-  }
-  if (const auto tolerance = reader.optional_number("tolerance")) {
-    if (!(*tolerance > 0.0 && *tolerance < 1.0)) reader.fail("tolerance", "must satisfy 0 < tolerance < 1");
-    problem.solver.tolerance = *tolerance;
-  }
+  problem.solver.xi = reader.optional_number("xi").value_or(problem.solver.xi);
+  problem.solver.tolerance = reader.optional_number("tolerance").value_or(problem.solver.tolerance);
   if (problem.solver.algorithm != contact::Algorithm::thesis)
     for (const char* thesis_key : {"gmres_restart", "max_gmres_cycles", "xi"})
       if (reader.has(thesis_key))
@@ -442,12 +403,11 @@ void read_solver(const TableReader& reader, contact::ContactProblem& problem) {
     reader.fail("tolerance", "'tolerance' is the Newton algorithm's; the thesis algorithm stops on xi (give xi "
                              "instead, or set algorithm = \"newton\")");
   problem.solver.max_iterations = reader.integer_or("max_iterations", problem.solver.max_iterations);
-  if (problem.solver.max_iterations < 1) reader.fail("max_iterations", "must be >= 1");
 }
 
 // A total force on a boundary of an elastic body (a rigid platen) or on a rigid body.
 void read_force_load(const TableReader& load, contact::ContactProblem& problem) {
-  load.check_keys({"name", "body", "boundary", "component", "force", "amplitude"}, "a load table");
+  load.check_keys(schema::table("load"));
   contact::ForceLoad force;
   const auto body_name = load.optional_string("body");
   if (!body_name) load.fail("body", "missing: the body that carries the force");
@@ -542,7 +502,7 @@ void read_history(const TableReader& root, FileContext& context, contact::Contac
   for (const auto& amplitude : problem.boundary_amplitudes) last_time(amplitude);
   if (const toml::table* table = root.optional_table("history", "[history]")) {
     const TableReader history(*table, "history", context, root.line());
-    history.check_keys({"end_time", "data_amplitude"}, "the [history] table");
+    history.check_keys(schema::table("history"));
     if (history.has("data_amplitude")) {
       problem.data_amplitude = read_amplitude(history, "data_amplitude");
       last_time(problem.data_amplitude);
@@ -620,9 +580,7 @@ ContactFile parse_contact_table(toml::table& root_table, const std::string& file
   context.limits = limits;
   context.file = file_name;
   const TableReader root(root_table, "", context, 1);
-  root.check_keys({"title", "analysis", "interpolation", "parameters", "mesh", "output", "body", "contact", "solver",
-                   "load", "history"},
-                  "the top level of a contact file");
+  root.check_keys(schema::table("contact.file"));
   auto& problem = result.problem;
   problem.source_file = file_name;
   read_file_header(root, context, file_name, problem.analysis, problem.title, problem.mesh.interpolation);
@@ -633,7 +591,7 @@ ContactFile parse_contact_table(toml::table& root_table, const std::string& file
   read_mesh_options(root, context, problem.mesh);
   if (const toml::table* output = root.optional_table("output", "[output]")) {
     const TableReader reader(*output, "output", context, root.line());
-    reader.check_keys({"vtk"}, "the [output] table");
+    reader.check_keys(schema::table("output"));
     result.vtk = reader.boolean_or("vtk", true);
   }
   OutputNames output_names;
@@ -649,10 +607,10 @@ ContactFile parse_contact_table(toml::table& root_table, const std::string& file
     if (const toml::table* table = root.optional_table("solver", "[solver]")) {
       // Only the operator applies: the other keys set the contact solver.
       const TableReader solver(*table, "solver", context, root.line());
-      for (const auto& key : solver_keys())
+      for (const auto& key : schema::table("contact.solver").names())
         if (key != "operator" && key != "accuracy" && solver.has(key))
           solver.fail(key, "'" + key + "' sets the contact solver; without [[contact]] tables it has no effect");
-      solver.check_keys(solver_keys(), "the [solver] table");
+      solver.check_keys(schema::table("contact.solver"));
       problem.operator_choice = read_operator_keys(solver);
     }
     read_force_loads(root, context, problem);
@@ -666,8 +624,7 @@ ContactFile parse_contact_table(toml::table& root_table, const std::string& file
     // One contact between the two bodies: pairing, law, solver and load in one table.
     single.emplace(*table, "contact", context, root.line());
     const TableReader& contact = *single;
-    contact.check_keys(joined({&law_keys(), &pairing_keys(), &solver_keys()}, {"boundary1", "boundary2", "load"}),
-                       "the [contact] table");
+    contact.check_keys(schema::table("contact.single"));
     for (const char* key : {"solver", "load"})
       if (root.has(key))
         root.fail(key, "[" + std::string(key) + "] goes with [[contact]] tables; with a single [contact] table put " +
@@ -699,8 +656,7 @@ ContactFile parse_contact_table(toml::table& root_table, const std::string& file
       ++index;
       const std::string path = "contact[" + std::to_string(index) + "]";
       const TableReader contact(*node.as_table(), path, context, line_of(node) > 0 ? line_of(node) : root.line());
-      contact.check_keys(joined({&law_keys(), &pairing_keys()}, {"name", "body1", "boundary1", "body2", "boundary2"}),
-                         "a [[contact]] table (solver keys go in [solver], a force in [load])");
+      contact.check_keys(schema::table("contact"));
       contact::ContactInterface interface;
       interface.name = contact.optional_name("name").value_or(contacts->size() == 1 ? "contact" : "contact" + std::to_string(index));
       for (const auto& other : problem.contacts)
@@ -737,7 +693,7 @@ ContactFile parse_contact_table(toml::table& root_table, const std::string& file
     static const toml::table empty;
     const toml::table* solver = root.optional_table("solver", "[solver]");
     const TableReader solver_keys_reader(solver ? *solver : empty, "solver", context, root.line());
-    solver_keys_reader.check_keys(solver_keys(), "the [solver] table");
+    solver_keys_reader.check_keys(schema::table("contact.solver"));
     read_solver(solver_keys_reader, problem);
     read_force_loads(root, context, problem);
   }

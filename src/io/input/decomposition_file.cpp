@@ -22,44 +22,14 @@ namespace bemcontact::io {
 
 namespace {
 
-const std::vector<std::string>& root_keys() {
-  static const std::vector<std::string> keys{"title",  "analysis", "interpolation", "parameters",
-                                             "mesh",   "output",   "decomposition", "vertices",
-                                             "subdomain", "solver"};
-  return keys;
-}
-const std::vector<std::string>& decomposition_keys() {
-  static const std::vector<std::string> keys{"method",         "restart",             "tolerance",
-                                             "max_iterations", "interface_tolerance", "displacement_nodes",
-                                             "explicit_operators", "preconditioner"};
-  return keys;
-}
-const std::vector<std::string>& subdomain_keys() {
-  static std::vector<std::string> keys = [] {
-    std::vector<std::string> k{"name", "interior"};
-    k.insert(k.end(), schema::body_keys().begin(), schema::body_keys().end());
-    return k;
-  }();
-  return keys;
-}
-const std::vector<std::string>& interface_boundary_keys() {
-  static std::vector<std::string> keys = [] {
-    std::vector<std::string> k = schema::boundary_keys();
-    k.push_back("interface");
-    return k;
-  }();
-  return keys;
-}
-
-
 // [parameters]: numbers or expressions of the parameters above (as in one-body files).
 
 void read_options(const TableReader& root, const FileContext& context, dd::DecompositionOptions& options) {
   const toml::table* table = root.optional_table("decomposition", "[decomposition]");
   if (!table) return;
   const TableReader reader(*table, "decomposition", context, root.line());
-  reader.check_keys(decomposition_keys(), "the [decomposition] table");
-  const std::string method = reader.choice("method", {"conforming", "mixed", "hybrid"}, "conforming");
+  reader.check_keys(schema::table("decomposition"));
+  const std::string method = reader.choice("method");
   options.set_method(method == "conforming" ? dd::InterfaceMethod::conforming
                      : method == "hybrid"   ? dd::InterfaceMethod::hybrid
                                             : dd::InterfaceMethod::mixed);
@@ -72,28 +42,10 @@ void read_options(const TableReader& root, const FileContext& context, dd::Decom
     options.preconditioner = balancing ? dd::InterfacePreconditioner::balancing : dd::InterfacePreconditioner::none;
   }
   options.restart = reader.integer_or("restart", options.restart);
-  if (reader.has("restart") && options.restart < 1)
-    reader.fail("restart", "the GMRES restart length m must be >= 1, found " + std::to_string(options.restart));
   options.max_iterations = reader.integer_or("max_iterations", options.max_iterations);
-  if (options.max_iterations < 1)
-    reader.fail("max_iterations", "max_iterations must be >= 1, found " + std::to_string(options.max_iterations));
-  if (const auto tol = reader.optional_number("tolerance")) {
-    if (!(*tol > 0.0 && *tol < 1.0))
-      reader.fail("tolerance", "the GMRES tolerance (relative residual) must satisfy 0 < tolerance < 1, found " +
-                                   format_number(*tol));
-    options.tolerance = *tol;
-  }
-  if (const auto tol = reader.optional_number("interface_tolerance")) {
-    if (!(*tol > 0.0 && *tol < 0.1))
-      reader.fail("interface_tolerance", "the interface tolerance (a fraction of the geometry size) must satisfy "
-                                         "0 < interface_tolerance < 0.1, found " + format_number(*tol));
-    options.interface_tolerance = *tol;
-  }
+  options.tolerance = reader.optional_number("tolerance").value_or(options.tolerance);
+  options.interface_tolerance = reader.optional_number("interface_tolerance").value_or(options.interface_tolerance);
   options.displacement_nodes = reader.integer_or("displacement_nodes", options.displacement_nodes);
-  if (options.displacement_nodes < 1)
-    reader.fail("displacement_nodes", "displacement_nodes (interface nodes with displacement continuity in the "
-                                      "mixed method) must be >= 1, found " +
-                                          std::to_string(options.displacement_nodes));
   options.explicit_operators = reader.boolean_or("explicit_operators", options.explicit_operators);
   if (reader.has("explicit_operators") && !options.explicit_operators &&
       options.preconditioner == dd::InterfacePreconditioner::balancing)
@@ -108,7 +60,7 @@ std::vector<bem::InteriorPoint> read_points(const TableReader& sub, const FileCo
   const toml::table* table = sub.optional_table("interior", "[" + sub.key_path("interior") + "]");
   if (!table) return points;
   const TableReader interior(*table, sub.key_path("interior"), context, sub.line());
-  interior.check_keys({"points", "grid"}, "an interior table");
+  interior.check_keys(schema::table("interior"));
   if (const toml::node* node = interior.find("points")) {
     const toml::array* list = node->as_array();
     if (!list) interior.fail("points", "must be a list of points [" + context.point_form() + ", ...], found " +
@@ -129,7 +81,8 @@ std::vector<bem::InteriorPoint> read_points(const TableReader& sub, const FileCo
 }  // namespace
 
 dd::Subdomain parse_region(toml::table& table, const std::string& path, FileContext& context, int line,
-                           const std::string& name, const toml::table* shared_vertices) {
+                           const std::string& name, const schema::Table& table_keys,
+                           const schema::Table& boundary_table, const toml::table* shared_vertices) {
   const TableReader sub(table, path, context, line);
   if (name.empty()) sub.fail("name", "the name must not be empty");
   dd::Subdomain subdomain;
@@ -142,7 +95,7 @@ dd::Subdomain parse_region(toml::table& table, const std::string& path, FileCont
       ++b;
       toml::table& boundary = *boundary_node.as_table();
       const TableReader reader(boundary, path + ".boundary[" + std::to_string(b) + "]", context, sub.line());
-      reader.check_keys(interface_boundary_keys(), "each boundary table");
+      reader.check_keys(boundary_table);
       std::string interface;
       if (reader.has("interface")) {
         const auto value = reader.optional_string("interface");
@@ -163,7 +116,7 @@ dd::Subdomain parse_region(toml::table& table, const std::string& path, FileCont
       for (const auto& [key, value] : *shared_vertices)
         if (!own->contains(key.str())) own->insert(key, value);
   }
-  subdomain.body = parse_body(table, BodyContext{&context, path, {"name", "interior"}, sub.line()});
+  subdomain.body = parse_body(table, BodyContext{&context, path, &table_keys, sub.line()});
   subdomain.body.name = name;
   subdomain.piece_interface.assign(subdomain.body.pieces.size(), "");
   for (std::size_t p = 0; p < interfaces.size() && p < subdomain.body.pieces.size(); ++p)
@@ -212,7 +165,7 @@ DecompositionFile parse_decomposition_table(toml::table& root_table, const std::
     if (root.has(key))
       root.fail(key, "'" + key + "' belongs in each [[subdomain]] table in a file with subdomains (write [subdomain." +
                          key + "] or [[subdomain." + key + "]] after the subdomain's [[subdomain]] line)");
-  root.check_keys(root_keys(), "the top level of a file with subdomains");
+  root.check_keys(schema::table("decomposition.file"));
 
   auto& problem = result.problem;
   problem.source_file = file_name;
@@ -221,13 +174,13 @@ DecompositionFile parse_decomposition_table(toml::table& root_table, const std::
   read_options(root, context, problem.options);
   if (const toml::table* table = root.optional_table("solver", "[solver]")) {
     const TableReader solver(*table, "solver", context, root.line());
-    solver.check_keys(schema::solver_keys(), "the [solver] table");
+    solver.check_keys(schema::table("solver"));
     problem.operator_choice = read_operator_keys(solver);
   }
   read_mesh_options(root, context, problem.mesh);
   if (const toml::table* table = root.optional_table("output", "[output]")) {
     const TableReader output(*table, "output", context, root.line());
-    output.check_keys(schema::output_keys(), "the [output] table");
+    output.check_keys(schema::table("output"));
     result.output.vtk = output.boolean_or("vtk", true);
   }
 
@@ -259,7 +212,7 @@ DecompositionFile parse_decomposition_table(toml::table& root_table, const std::
     toml::table& table = *node.as_table();
     const std::string path = "subdomain[" + std::to_string(index) + "]";
     const TableReader sub(table, path, context, root.where("subdomain").line);
-    sub.check_keys(subdomain_keys(), "a [[subdomain]] table");
+    sub.check_keys(schema::table("subdomain"));
     const std::string name = sub.optional_name("name").value_or("subdomain" + std::to_string(index));
     const auto [existing, inserted] = name_lines.emplace(name, sub.line());
     if (!inserted)
@@ -271,7 +224,8 @@ DecompositionFile parse_decomposition_table(toml::table& root_table, const std::
       sub.fail("name", "subdomain '" + name + "' and the subdomain at line " + std::to_string(same_file->second) +
                            " would write files of one name (file names keep letters and digits and write every other "
                            "character as '_'): choose another name");
-    dd::Subdomain subdomain = parse_region(table, path, context, sub.line(), name, shared);
+    dd::Subdomain subdomain = parse_region(table, path, context, sub.line(), name, schema::table("subdomain"),
+                                                   schema::table("region.boundary"), shared);
     if (std::none_of(subdomain.piece_interface.begin(), subdomain.piece_interface.end(),
                      [](const std::string& s) { return !s.empty(); }))
       sub.fail("boundary", "subdomain '" + name + "' has no boundary with interface = \"...\"; every subdomain "

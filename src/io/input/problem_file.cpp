@@ -26,7 +26,7 @@ std::vector<bem::InteriorPoint> read_interior(const TableReader& root, const Fil
   const toml::table* table = root.optional_table("interior", "[interior]");
   if (!table) return points;
   const TableReader interior(*table, "interior", context, root.line());
-  interior.check_keys(schema::interior_keys(), "the [interior] table");
+  interior.check_keys(schema::table("interior"));
   if (const toml::node* node = interior.find("points")) {
     const toml::array* list = node->as_array();
     if (!list)
@@ -65,7 +65,7 @@ bem::OperatorChoice read_operator_choice(const TableReader& root) {
   const toml::table* table = root.optional_table("solver", "[solver]");
   if (!table) return {};
   const TableReader solver(*table, "solver", root.context(), root.line());
-  solver.check_keys(schema::solver_keys(), "the [solver] table");
+  solver.check_keys(schema::table("solver"));
   return read_operator_keys(solver);
 }
 
@@ -86,16 +86,14 @@ ProblemFile parse_problem_table(toml::table& root_table, const std::string& file
   context.overrides = overrides;
   context.limits = limits;
   const TableReader root(root_table, "", context, 1);
-  std::vector<std::string> root_keys = schema::file_keys();
-  root_keys.insert(root_keys.end(), schema::body_keys().begin(), schema::body_keys().end());
-  root.check_keys(root_keys, "the top level of the file");
+  root.check_keys(schema::table("file"));
 
   bem::ProblemDefinition& problem = result.problem;
   problem.source_file = file_name;
   read_file_header(root, context, file_name, problem.analysis, problem.title, problem.mesh.interpolation);
   result.parameters = context.parameters;
 
-  problem.body = parse_body(root_table, BodyContext{&context, "", schema::file_keys(), 1});
+  problem.body = parse_body(root_table, BodyContext{&context, "", &schema::table("file"), 1});
   problem.interior_points = read_interior(root, context);
   check_gmsh_overrides(root, context, result.parameters);
 
@@ -103,7 +101,7 @@ ProblemFile parse_problem_table(toml::table& root_table, const std::string& file
   problem.operator_choice = read_operator_choice(root);
   if (const toml::table* table = root.optional_table("output", "[output]")) {
     const TableReader output(*table, "output", context, root.line());
-    output.check_keys(schema::output_keys(), "the [output] table");
+    output.check_keys(schema::table("output"));
     result.output.vtk = output.boolean_or("vtk", true);
   }
   result.warnings = context.warnings;

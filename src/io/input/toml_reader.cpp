@@ -7,6 +7,7 @@
 #include <fstream>
 #include <limits>
 #include <sstream>
+#include <stdexcept>
 
 #include "bemcontact/io/input/problem_schema.hpp"
 #include "bemcontact/io/input/suggestions.hpp"
@@ -150,6 +151,86 @@ void TableReader::check_keys(const std::vector<std::string>& valid, std::string_
   SourceLocation location{context_.file, line(), key_path(name)};
   if (first->source().begin.line > 0) location.line = static_cast<int>(first->source().begin.line);
   throw InputError(location, message);
+}
+
+void TableReader::check_keys(const schema::Table& table) const {
+  check_keys(table.names(), table.section);
+  schema_ = &table;
+  for (const auto& key : table.keys)
+    if (const toml::node* node = find(key.name)) check_value(key, *node);
+}
+
+void TableReader::check_value(const schema::Key& key, const toml::node& node) const {
+  using schema::Type;
+  const std::string found = ", found " + describe_node(node);
+  switch (key.type) {
+    case Type::number:
+    case Type::integer: {
+      const double value = key.type == Type::integer ? read_integer(node, where(key.name), context_)
+                                                     : read_number(node, where(key.name), context_);
+      if (key.range && !key.range->contains(value))
+        fail(key.name, "'" + key.name + "' (" + key.meaning + ") must " + key.range->condition(key.name) +
+                           ", found " + format_number(value) + (key.range_hint.empty() ? "" : "; " + key.range_hint));
+      return;
+    }
+    case Type::boolean:
+      if (!node.is_boolean()) fail(key.name, "must be true or false" + found);
+      return;
+    case Type::string:
+    case Type::name:
+      if (!node.is_string()) fail(key.name, "must be a string in quotes" + found);
+      if (key.type == Type::name)
+        if (const std::string problem = name_problem(*node.value<std::string>()); !problem.empty())
+          fail(key.name, problem);
+      return;
+    case Type::choice: {
+      const auto value = node.value_exact<std::string>();
+      if (!value) fail(key.name, "must be one of " + quoted_list(key.choices) + " (in quotes)" + found);
+      if (std::find(key.choices.begin(), key.choices.end(), *value) == key.choices.end())
+        fail(key.name, "invalid value '" + *value + "'." + did_you_mean(*value, key.choices) +
+                           " Valid values: " + quoted_list(key.choices));
+      return;
+    }
+    case Type::point:
+      if (!node.is_string() && !node.is_array())
+        fail(key.name, "must be a vertex name in quotes or a point " + context_.point_form() + found);
+      return;
+    case Type::points:
+      if (!node.is_array()) fail(key.name, "must be a list of points or numbers in brackets [...]" + found);
+      return;
+    case Type::field:
+      if (!node.is_number() && !node.is_string() && !node.is_table())
+        fail(key.name, "must be a number, an expression in quotes or a table of values { table = [...], along = "
+                       "\"x\" }" + found);
+      return;
+    case Type::amplitude:
+      if (!node.is_array() && !node.is_table())
+        fail(key.name, "must be a table of points [[t, value], ...] or a cyclic amplitude { mean, amplitude, "
+                       "cycles, start, period }" + found);
+      return;
+    case Type::table:
+      if (!node.is_table()) fail(key.name, "must be a table ([" + key_path(key.name) + "])" + found);
+      return;
+    case Type::tables:
+      if (!node.is_array_of_tables())
+        fail(key.name, "must be tables: write [[" + key_path(key.name) + "]] with double brackets, one table per "
+                       "entry" + found);
+      return;
+    case Type::table_or_tables:
+    case Type::grid:
+      if (!node.is_table() && !node.is_array_of_tables())
+        fail(key.name, "must be a table or a list of tables" + found);
+      return;
+  }
+}
+
+std::string TableReader::choice(std::string_view key) const {
+  if (!schema_) throw std::logic_error("TableReader::choice: check_keys(table) first");
+  const schema::Key& entry = schema_->key(key);
+  if (entry.default_value.empty()) return choice(key, entry.choices, std::nullopt);
+  if (std::find(entry.choices.begin(), entry.choices.end(), entry.default_value) == entry.choices.end())
+    throw std::logic_error("TableReader::choice: the default of '" + entry.name + "' depends on other keys");
+  return choice(key, entry.choices, entry.default_value);
 }
 
 const toml::node* TableReader::find(std::string_view key) const { return table_.get(key); }

@@ -16,6 +16,7 @@
 #include "bemcontact/core/limits.hpp"
 #include "bemcontact/io/input/expression.hpp"
 #include "bemcontact/io/input/parameter_overrides.hpp"
+#include "bemcontact/io/input/problem_schema.hpp"
 
 namespace bemcontact::io {
 
@@ -85,6 +86,9 @@ class TableReader {
   // closest valid key, and lists the valid keys. `section` (e.g. "the [mesh] table")
   // lets the message point to the table where a misplaced key belongs.
   void check_keys(const std::vector<std::string>& valid, std::string_view section) const;
+  // The same against a table of the schema (problem_schema.hpp), then each key's value:
+  // its type, its choices, its range. The table is kept for choice(key).
+  void check_keys(const schema::Table& table) const;
 
   const toml::node* find(std::string_view key) const;
   bool has(std::string_view key) const { return find(key) != nullptr; }
@@ -100,6 +104,8 @@ class TableReader {
   // One of `choices`; `fallback` empty = required.
   std::string choice(std::string_view key, const std::vector<std::string>& choices,
                      std::optional<std::string> fallback) const;
+  // One of the schema's choices for `key`, its default when absent (required without one).
+  std::string choice(std::string_view key) const;
   // A sub-table, or nullptr when absent; throws when the key holds something else.
   const toml::table* optional_table(std::string_view key, std::string_view header) const;
 
@@ -108,6 +114,9 @@ class TableReader {
   std::string path_;
   const FileContext& context_;
   int fallback_line_;
+  mutable const schema::Table* schema_ = nullptr;  // set by check_keys(table)
+
+  void check_value(const schema::Key& key, const toml::node& node) const;
 };
 
 }  // namespace bemcontact::io
