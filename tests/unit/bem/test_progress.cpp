@@ -130,7 +130,9 @@ TEST(Progress, DensePhasesIncreaseToOne) {
   EXPECT_EQ(recorded.phases, (std::vector<std::string>{"assembly of H and G", "LU factorisation", "interior points"}));
   expect_increasing_to_one(recorded, "assembly of H and G", 20);
   expect_increasing_to_one(recorded, "LU factorisation", 5);
-  expect_increasing_to_one(recorded, "interior points", 1);
+  // Only the calling thread reports (a Python listener must hear one thread): on a loaded
+  // machine the other thread may take every point, so no report in between is guaranteed.
+  expect_increasing_to_one(recorded, "interior points", 0);
 }
 
 // A listener may stop a solve (an interrupted run) by throwing, also from inside hmat-oss.
