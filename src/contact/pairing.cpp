@@ -505,38 +505,6 @@ PreparedContact prepare_contact(const ContactProblem& problem) {
   return prepared;
 }
 
-namespace {
-
-// A model of one elastic body made of the given regions, without contact.
-ContactProblem one_body_model(const std::string& title, const std::string& source_file, AnalysisType analysis,
-                              const geometry::MeshOptions& mesh, const std::string& name,
-                              std::vector<dd::Subdomain> regions) {
-  ContactProblem model;
-  model.title = title;
-  model.source_file = source_file;
-  model.analysis = analysis;
-  model.mesh = mesh;
-  Body body;
-  body.name = name;
-  body.regions = std::move(regions);
-  model.bodies.push_back(std::move(body));
-  return model;
-}
-
-}  // namespace
-
-ContactProblem model_of(const bem::ProblemDefinition& problem) {
-  dd::Subdomain region;
-  region.body = problem.body;
-  region.piece_interface.assign(problem.body.pieces.size(), "");
-  region.interior_points = problem.interior_points;
-  return one_body_model(problem.title, problem.source_file, problem.analysis, problem.mesh, problem.body.name, {region});
-}
-
-ContactProblem model_of(const dd::DecompositionProblem& problem) {
-  return one_body_model(problem.title, problem.source_file, problem.analysis, problem.mesh, "body", problem.subdomains);
-}
-
 ContactProblem two_body_problem(int piece1, int piece2) {
   ContactProblem problem;
   problem.bodies.resize(2);

@@ -13,14 +13,12 @@
 #include "bemcontact/dd/interface.hpp"
 #include "bemcontact/driver/resource_check.hpp"
 #include "bemcontact/driver/run.hpp"
-#include "bemcontact/io/input/contact_file.hpp"
 #include "bemcontact/io/output/contact_writer.hpp"
-#include "bemcontact/io/input/decomposition_file.hpp"
 #include "bemcontact/io/output/decomposition_writer.hpp"
 #include "bemcontact/io/input/expression.hpp"
 #include "bemcontact/io/output/json_writer.hpp"
 #include "bemcontact/io/output/probe_writer.hpp"
-#include "bemcontact/io/input/problem_file.hpp"
+#include "bemcontact/io/input/problem_reader.hpp"
 #include "bemcontact/io/output/run_summary.hpp"
 #include "bemcontact/io/file_names.hpp"
 #include "bemcontact/io/input/problem_text.hpp"
@@ -117,36 +115,41 @@ ResourceLimits unbounded_limits() {
   return limits;
 }
 
-StoredRun mesh_one_body(std::string_view text, const std::string& file_name, const io::ParameterOverrides& overrides) {
-  const auto file = io::parse_problem(text, file_name, overrides, unbounded_limits());
-  StoredRun run{file.problem.title, file.problem.analysis, {}};
-  const auto& body = file.problem.body;
-  run.regions.push_back({body.name, "boundary.csv", bem::mesh_body(file.problem), body.material, body.pieces, {}});
-  return run;
-}
-
-StoredRun mesh_decomposition(std::string_view text, const std::string& file_name,
-                             const io::ParameterOverrides& overrides) {
-  const auto file = io::parse_decomposition(text, file_name, overrides, unbounded_limits());
-  StoredRun run{file.problem.title, file.problem.analysis, {}};
-  auto meshes = dd::mesh_subdomains(file.problem);
-  for (std::size_t s = 0; s < meshes.size(); ++s) {
-    const auto& body = file.problem.subdomains[s].body;
-    run.regions.push_back({body.name, io::file_safe_name(body.name) + "_boundary.csv", std::move(meshes[s]),
-                           body.material, body.pieces, {}});
-  }
-  return run;
-}
-
-StoredRun mesh_contact(std::string_view text, const std::string& file_name, const io::ParameterOverrides& overrides) {
-  const auto file = io::parse_contact_problem(text, file_name, overrides, unbounded_limits());
-  StoredRun run{file.problem.title, file.problem.analysis, {}};
-  auto prepared = contact::prepare_contact(file.problem);
-  for (auto& region : prepared.regions) {
-    const auto& body = file.problem.bodies[region.body];
-    const std::string name = body.regions.size() == 1 ? body.name : region.definition.name;
-    run.regions.push_back({name, io::file_stem(name) + "_boundary.csv", std::move(region.mesh),
-                           region.definition.material, region.definition.pieces, {}});
+// The run's regions meshed again by the solver that ran them (the model's route), with
+// the files their boundary solutions were written to.
+StoredRun mesh_again(std::string_view text, const std::string& file_name, const io::ParameterOverrides& overrides) {
+  const auto input = io::read_problem(text, file_name, overrides, unbounded_limits());
+  const auto& model = input.model;
+  StoredRun run{model.title, model.analysis, {}};
+  switch (contact::route_of(model)) {
+    case contact::SolverRoute::direct: {
+      const auto problem = contact::single_region_problem(model);
+      const auto& body = problem.body;
+      const auto& named = model.bodies[0];
+      const std::string csv = (named.named ? io::file_stem(named.name) + "_" : std::string()) + "boundary.csv";
+      run.regions.push_back({body.name, csv, bem::mesh_body(problem), body.material, body.pieces, {}});
+      break;
+    }
+    case contact::SolverRoute::decomposition: {
+      const auto problem = contact::decomposition_problem(model, input.decomposition, input.region_word);
+      auto meshes = dd::mesh_subdomains(problem);
+      for (std::size_t s = 0; s < meshes.size(); ++s) {
+        const auto& body = problem.subdomains[s].body;
+        run.regions.push_back({body.name, io::file_stem(body.name) + "_boundary.csv", std::move(meshes[s]),
+                               body.material, body.pieces, {}});
+      }
+      break;
+    }
+    case contact::SolverRoute::condensed: {
+      auto prepared = contact::prepare_contact(model);
+      for (auto& region : prepared.regions) {
+        const auto& body = model.bodies[region.body];
+        const std::string name = body.regions.size() == 1 ? body.name : region.definition.name;
+        run.regions.push_back({name, io::file_stem(name) + "_boundary.csv", std::move(region.mesh),
+                               region.definition.material, region.definition.pieces, {}});
+      }
+      break;
+    }
   }
   return run;
 }
@@ -174,12 +177,7 @@ StoredRun load_run(const FileReader& run_files, const json& summary, const Probe
   // The recorded path: messages name the file, and relative geometry files resolve from it.
   const std::string file_name = path.empty() ? text_at(summary["input"], "file") : path;
   const auto overrides = recorded_parameters(summary);
-  StoredRun run;
-  switch (problem_kind(text)) {
-    case ProblemKind::body: run = mesh_one_body(text, file_name, overrides); break;
-    case ProblemKind::decomposition: run = mesh_decomposition(text, file_name, overrides); break;
-    case ProblemKind::contact: run = mesh_contact(text, file_name, overrides); break;
-  }
+  StoredRun run = mesh_again(text, file_name, overrides);
   for (auto& region : run.regions) {
     const auto csv = run_files(region.csv);
     if (!csv)

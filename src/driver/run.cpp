@@ -8,8 +8,6 @@
 #include <cstdarg>
 #include <cstdio>
 #include <nlohmann/json.hpp>
-#include <type_traits>
-#include <variant>
 
 #include "bemcontact/bem/analysis.hpp"
 #include "bemcontact/contact/contact_solver.hpp"
@@ -17,17 +15,14 @@
 #include "bemcontact/dd/solver.hpp"
 #include "bemcontact/driver/resource_check.hpp"
 #include "bemcontact/operators/dense_lu.hpp"
-#include "bemcontact/io/input/contact_file.hpp"
+#include "bemcontact/geometry/boundary.hpp"
+#include "bemcontact/io/file_names.hpp"
+#include "bemcontact/io/input/problem_reader.hpp"
 #include "bemcontact/io/output/contact_writer.hpp"
-#include "bemcontact/io/input/decomposition_file.hpp"
 #include "bemcontact/io/output/decomposition_writer.hpp"
 #include "bemcontact/io/output/json_writer.hpp"
-#include "bemcontact/io/input/problem_file.hpp"
 #include "bemcontact/io/output/results_writer.hpp"
 #include "bemcontact/io/output/run_summary.hpp"
-#include "bemcontact/geometry/boundary.hpp"
-#include "bemcontact/io/input/problem_reader.hpp"
-#include "bemcontact/io/input/problem_text.hpp"
 
 namespace bemcontact::driver {
 
@@ -137,12 +132,12 @@ void append_transitions(std::string& report, const geometry::BoundaryMesh& mesh,
            t.name.c_str(), t.elements, t.elements_asked);
 }
 
-// Checks the resource limits of a file read before anything is solved, and starts the
-// output with the reader's warnings.
-template <class File>
-void check_read(const File& file, const RunOptions& options, RunOutput& output) {
-  check_resources(file.problem, options.limits);
-  const ResourceEstimate estimate = estimate_resources(file.problem);
+// Checks the resource limits of the problem a solver takes before anything is solved, and
+// starts the output with the reader's warnings.
+template <class Problem>
+void check_read(const Problem& problem, const io::ProblemInput& input, const RunOptions& options, RunOutput& output) {
+  check_resources(problem, options.limits);
+  const ResourceEstimate estimate = estimate_resources(problem);
   output.estimate = {{"unknowns", estimate.total_unknowns},
                      {"largest_body_unknowns", estimate.unknowns},
                      {"memory_bytes", estimate.bytes},
@@ -150,8 +145,11 @@ void check_read(const File& file, const RunOptions& options, RunOutput& output) 
                      {"seconds", estimate.seconds},
                      {"threads", estimate.threads}};
   if (options.notice) options.notice(describe(estimate));
-  output.warnings = file.warnings;
+  output.warnings = input.warnings;
 }
+
+// A body the file named writes <name>_boundary.csv, ...; a one-body file boundary.csv.
+std::string file_prefix(const contact::Body& body) { return body.named ? io::file_stem(body.name) + "_" : ""; }
 
 // What to change when the interface GMRES does not converge.
 std::string convergence_advice(const dd::DecompositionOptions& options, const dd::DecompositionResult& result) {
@@ -168,22 +166,22 @@ std::string convergence_advice(const dd::DecompositionOptions& options, const dd
 }
 
 // Several subdomains glued along interfaces (chapter IV).
-RunOutput run_decomposition(const io::DecompositionFile& file, std::string_view text, const std::string& file_name,
-                    const RunOptions& options, Clock::time_point started) {
+RunOutput run_decomposition(const io::ProblemInput& input, const dd::DecompositionProblem& problem, std::string_view text,
+                            const std::string& file_name, const RunOptions& options, Clock::time_point started) {
   RunOutput output;
-  check_read(file, options, output);
-  for (const auto& subdomain : file.problem.subdomains)
+  check_read(problem, input, options, output);
+  for (const auto& subdomain : problem.subdomains)
     add_geometry_warnings(output.warnings, subdomain.body, "subdomain '" + subdomain.body.name + "'");
-  const auto result = dd::solve_decomposition(file.problem, options.progress, options.parallel);
+  const auto result = dd::solve_decomposition(problem, options.progress, options.parallel);
   for (const auto& subdomain : result.subdomains) {
     add_mesh_warnings(output.warnings, subdomain.mesh, "subdomain '" + subdomain.name + "'");
     if (result.converged())
       add_small_strain_warning(output.warnings, subdomain.mesh, subdomain.boundary, "subdomain '" + subdomain.name + "'");
   }
-  auto summary = summary_envelope("decomposition", "run", text, file_name, file.problem.title, file.problem.analysis);
-  summary.parameters = file.parameters;
-  const auto& o = file.problem.options;
-  summary.options.update({{"mesh", io::mesh_options_json(file.problem.mesh)},
+  auto summary = summary_envelope("decomposition", "run", text, file_name, problem.title, problem.analysis);
+  summary.parameters = input.parameters;
+  const auto& o = problem.options;
+  summary.options.update({{"mesh", io::mesh_options_json(problem.mesh)},
                           {"method", dd::to_string(o.method)},
                           {"preconditioner", dd::to_string(o.preconditioner)},
                           {"restart", o.restart},
@@ -191,34 +189,34 @@ RunOutput run_decomposition(const io::DecompositionFile& file, std::string_view 
                           {"max_iterations", o.max_iterations},
                           {"interface_tolerance", o.interface_tolerance},
                           {"displacement_nodes", o.displacement_nodes}});
-  summary.problem = {{"subdomains", file.problem.subdomains.size()}};
+  summary.problem = {{"subdomains", problem.subdomains.size()}};
   std::vector<std::pair<std::string, const geometry::BoundaryMesh*>> meshes;
   for (const auto& subdomain : result.subdomains) {
     meshes.emplace_back(subdomain.name, &subdomain.mesh);
     if (result.converged())
-      summary.reactions[subdomain.name] = io::resultants_json(subdomain.boundary.resultants, file.problem.analysis);
+      summary.reactions[subdomain.name] = io::resultants_json(subdomain.boundary.resultants, problem.analysis);
   }
   summary.mesh = meshes_json(meshes);
-  summary.results = {{"decomposition", io::decomposition_summary_json(file.problem, result)}};
+  summary.results = {{"decomposition", io::decomposition_summary_json(problem, result)}};
   if (result.converged()) {
-    for (const auto& [name, content] : io::decomposition_files(result, file.problem.title, file.output.vtk))
+    for (const auto& [name, content] : io::decomposition_files(result, problem.title, input.vtk))
       output.files.add(name, content);
   } else {
     // No answer from an unconverged iteration: only the diagnostics.
     output.files.add("gmres.csv", io::gmres_history_csv(result.gmres));
     output.solver_failure_details = {"interface GMRES", result.gmres.iterations, result.gmres.relative_residual};
     output.solver_failure = "the interface problem did not converge: " + result.gmres.message + "; " +
-                            convergence_advice(file.problem.options, result);
+                            convergence_advice(problem.options, result);
   }
   summary.timings = {{"total", seconds_since(started)}};
   add_summary(summary, output);
 
   std::string& report = output.report;
-  append(report, "%s\n  %zu subdomains, method %s, %ld interface unknowns\n", file.problem.title.c_str(),
+  append(report, "%s\n  %zu subdomains, method %s, %ld interface unknowns\n", problem.title.c_str(),
          result.subdomains.size(), dd::to_string(result.method), static_cast<long>(result.interface_unknowns));
   if (result.processes > 1) append(report, "  %d processes (MPI), PETSc GMRES\n", result.processes);
   append(report, "  GMRES(%d), preconditioner %s: %d iterations, relative residual %.3g\n",
-         dd::effective_restart(file.problem.options, result.interface_unknowns),
+         dd::effective_restart(problem.options, result.interface_unknowns),
          dd::to_string(result.preconditioner), result.gmres.iterations, result.gmres.relative_residual);
   if (result.preconditioner == dd::InterfacePreconditioner::balancing)
     append(report, "  coarse space: %ld rigid modes\n", static_cast<long>(result.coarse_dimension));
@@ -229,7 +227,7 @@ RunOutput run_decomposition(const io::DecompositionFile& file, std::string_view 
     const auto& subdomain = result.subdomains[s];
     append_transitions(report, subdomain.mesh, "subdomain '" + subdomain.name + "': ");
     if (result.converged())
-      report += io::reactions_text(subdomain.boundary.resultants, file.problem.analysis,
+      report += io::reactions_text(subdomain.boundary.resultants, problem.analysis,
                                    "subdomain '" + subdomain.name + "': ");
   }
   append(report, "  time %.3f s\n", seconds_since(started));
@@ -237,56 +235,58 @@ RunOutput run_decomposition(const io::DecompositionFile& file, std::string_view 
 }
 
 // Bodies in contact (chapter V): elastic bodies of one or more regions, rigid indenters.
-RunOutput run_contact(const io::ContactFile& file, std::string_view text, const std::string& file_name,
-                    const RunOptions& options, Clock::time_point started) {
+RunOutput run_contact(const io::ProblemInput& input, std::string_view text, const std::string& file_name,
+                      const RunOptions& options, Clock::time_point started) {
+  const contact::ContactProblem& problem = input.model;
   RunOutput output;
-  check_read(file, options, output);
-  for (const auto& body : file.problem.bodies)
+  check_read(problem, input, options, output);
+  for (const auto& body : problem.bodies)
     for (const auto& region : body.regions)
       add_geometry_warnings(output.warnings, region.body,
                             body.regions.size() == 1 ? "body '" + body.name + "'"
                                                      : "region '" + region.body.name + "' of body '" + body.name + "'");
-  const auto result = contact::solve_contact(file.problem, options.progress);
+  const auto result = contact::solve_contact(problem, options.progress);
   output.warnings.insert(output.warnings.end(), result.warnings.begin(), result.warnings.end());
   for (std::size_t r = 0; r < result.meshes.size(); ++r) {
     add_mesh_warnings(output.warnings, result.meshes[r], result.region_labels[r]);
     add_small_strain_warning(output.warnings, result.meshes[r], result.boundary[r], result.region_labels[r]);
   }
   // Moved, not copied: recorded steps make these files large.
-  for (auto& [name, content] : io::contact_output_files(file.problem, result, file.vtk))
+  for (auto& [name, content] : io::contact_output_files(problem, result, input.vtk))
     output.files.add(name, std::move(content));
-  auto summary = summary_envelope("contact", "run", text, file_name, file.problem.title, file.problem.analysis);
-  summary.parameters = file.parameters;
-  io::fill_contact_summary(summary, file.problem, result);
+  auto summary = summary_envelope("contact", "run", text, file_name, problem.title, problem.analysis);
+  summary.parameters = input.parameters;
+  io::fill_contact_summary(summary, problem, result);
   add_summary(summary, output);
-  output.report = io::contact_report_text(file.problem, result);
+  output.report = io::contact_report_text(problem, result);
   for (std::size_t r = 0; r < result.meshes.size(); ++r) {
     const std::string label = result.region_labels[r] + ": ";
     append_transitions(output.report, result.meshes[r], label);
-    output.report += io::reactions_text(result.boundary[r].resultants, file.problem.analysis, label);
+    output.report += io::reactions_text(result.boundary[r].resultants, problem.analysis, label);
   }
   append(output.report, "  time %.3f s\n", seconds_since(started));
   return output;
 }
 
-RunOutput run_body(const io::ProblemFile& file, std::string_view text, const std::string& file_name,
-                    const RunOptions& options, Clock::time_point started) {
+RunOutput run_body(const io::ProblemInput& input, const bem::ProblemDefinition& problem, std::string_view text,
+                   const std::string& file_name, const RunOptions& options, Clock::time_point started) {
   RunOutput output;
-  check_read(file, options, output);
+  check_read(problem, input, options, output);
   const double read_seconds = seconds_since(started);
-  add_geometry_warnings(output.warnings, file.problem.body, "");
-  const auto result = bem::solve_body(file.problem, options.progress);
+  add_geometry_warnings(output.warnings, problem.body, "");
+  const auto result = bem::solve_body(problem, options.progress);
   add_mesh_warnings(output.warnings, result.mesh, "");
   add_small_strain_warning(output.warnings, result.mesh, result.boundary, "");
 
   const auto write_started = Clock::now();
   io::OutputDirectory& out = output.files;
-  out.add("boundary.csv", io::boundary_csv(result.mesh, result.boundary));
-  if (!result.interior.points.empty()) out.add("interior.csv", io::interior_csv(result.interior));
-  if (file.output.vtk) {
-    out.add("boundary.vtk", io::boundary_vtk(result.mesh, result.boundary, file.problem.title));
+  const std::string prefix = file_prefix(input.model.bodies[0]);
+  out.add(prefix + "boundary.csv", io::boundary_csv(result.mesh, result.boundary));
+  if (!result.interior.points.empty()) out.add(prefix + "interior.csv", io::interior_csv(result.interior));
+  if (input.vtk) {
+    out.add(prefix + "boundary.vtk", io::boundary_vtk(result.mesh, result.boundary, problem.title));
     if (!result.interior.points.empty())
-      out.add("interior.vtk", io::interior_vtk(result.interior, file.problem.title));
+      out.add(prefix + "interior.vtk", io::interior_vtk(result.interior, problem.title));
   }
   double max_vm = 0.0, max_u = 0.0;
   Index max_vm_node = 0;
@@ -303,11 +303,11 @@ RunOutput run_body(const io::ProblemFile& file, std::string_view text, const std
   timings["write"] = seconds_since(write_started);
   timings["total"] = seconds_since(started);
   const auto& peak = result.mesh.nodes[max_vm_node].position;
-  auto summary = summary_envelope("body", "run", text, file_name, file.problem.title, file.problem.analysis);
-  summary.parameters = file.parameters;
-  summary.options.update({{"mesh", io::mesh_options_json(file.problem.mesh)}});
-  summary.problem = io::problem_echo_json(file.problem, file.parameters, file.output.vtk);
-  summary.mesh = meshes_json({{file.problem.body.name, &result.mesh}});
+  auto summary = summary_envelope("body", "run", text, file_name, problem.title, problem.analysis);
+  summary.parameters = input.parameters;
+  summary.options.update({{"mesh", io::mesh_options_json(problem.mesh)}});
+  summary.problem = io::problem_echo_json(problem, input.parameters, input.vtk);
+  summary.mesh = meshes_json({{problem.body.name, &result.mesh}});
   summary.results = {{"solve", {{"unknowns", result.report.unknowns},
                                 {"operator", result.report.operator_kind},
                                 {"compression_ratio", result.report.compression_ratio},
@@ -320,26 +320,26 @@ RunOutput run_body(const io::ProblemFile& file, std::string_view text, const std
                      {"interior_points", result.interior.points.size()},
                      {"interior_points_dropped_outside", result.interior.dropped_points.size()},
                      {"max_interior_von_mises", interior_max_vm}};
-  summary.reactions[file.problem.body.name] = io::resultants_json(result.boundary.resultants, file.problem.analysis);
+  summary.reactions[problem.body.name] = io::resultants_json(result.boundary.resultants, problem.analysis);
   summary.timings = timings;
   add_summary(summary, output);
 
   std::string& report = output.report;
-  append(report, "%s\n", file.problem.title.c_str());
-  append(report, "  %s, %s elements: %ld nodes, %ld elements, %ld unknowns\n", to_string(file.problem.analysis),
-         to_string(file.problem.mesh.interpolation), static_cast<long>(result.mesh.node_count()),
+  append(report, "%s\n", problem.title.c_str());
+  append(report, "  %s, %s elements: %ld nodes, %ld elements, %ld unknowns\n", to_string(problem.analysis),
+         to_string(problem.mesh.interpolation), static_cast<long>(result.mesh.node_count()),
          static_cast<long>(result.mesh.element_count()), static_cast<long>(result.report.unknowns));
   append_transitions(report, result.mesh, "");
   if (result.report.operator_kind == "compressed")
     append(report, "  compressed operator (accuracy %.3g): %.3g %% of the dense values stored, relative residual = %.3g\n",
-           file.problem.operator_choice.accuracy, 100.0 * result.report.compression_ratio,
+           problem.operator_choice.accuracy, 100.0 * result.report.compression_ratio,
            result.report.relative_residual);
   else
     append(report, "  condition estimate 1/rcond = %.3g, relative residual = %.3g\n",
            1.0 / result.report.reciprocal_condition, result.report.relative_residual);
   append(report, "  max |u| on the boundary = %.6g, max von Mises = %.6g at (%.6g, %.6g)\n", max_u, max_vm,
          peak.x(), peak.y());
-  report += io::reactions_text(result.boundary.resultants, file.problem.analysis, "");
+  report += io::reactions_text(result.boundary.resultants, problem.analysis, "");
   if (!result.interior.points.empty())
     append(report, "  %zu interior points (%zu outside dropped), max von Mises = %.6g\n",
            result.interior.points.size(), result.interior.dropped_points.size(), interior_max_vm);
@@ -357,25 +357,25 @@ RunOutput run_body(const io::ProblemFile& file, std::string_view text, const std
 
 RunOutput run_problem(std::string_view text, const std::string& file_name, const RunOptions& options) {
   const auto started = Clock::now();
-  // The text parsed once; its tables chose the reader (io/input/problem_reader.hpp).
-  const io::ReadProblem read = io::read_problem(text, file_name, options.overrides, options.limits);
-  const ProblemKind kind = io::kind_of(read);
-  if (options.parallel.distribution.size > 1 && kind != ProblemKind::decomposition)
+  // The text parsed once into the model; what it holds picks the solver (docs/model.md).
+  const io::ProblemInput input = io::read_problem(text, file_name, options.overrides, options.limits);
+  const contact::SolverRoute route = contact::route_of(input.model);
+  if (options.parallel.distribution.size > 1 && route != contact::SolverRoute::decomposition)
     throw InputError(SourceLocation{file_name, 0, ""},
                      "runs on several processes (mpirun -n " + std::to_string(options.parallel.distribution.size) +
-                         ") serve decomposition files ([[subdomain]] tables); run this " +
-                         (kind == ProblemKind::contact ? "contact" : "one-body") + " file on one process");
-  RunOutput output = std::visit(
-      [&](const auto& file) {
-        using File = std::decay_t<decltype(file)>;
-        if constexpr (std::is_same_v<File, io::DecompositionFile>)
-          return run_decomposition(file, text, file_name, options, started);
-        else if constexpr (std::is_same_v<File, io::ContactFile>)
-          return run_contact(file, text, file_name, options, started);
-        else
-          return run_body(file, text, file_name, options, started);
-      },
-      read);
+                         ") serve one body of several regions without contact (the decomposition); this problem "
+                         "takes the " + contact::to_string(route) + " solver: run it on one process");
+  RunOutput output;
+  switch (route) {
+    case contact::SolverRoute::direct:
+      output = run_body(input, contact::single_region_problem(input.model), text, file_name, options, started);
+      break;
+    case contact::SolverRoute::decomposition:
+      output = run_decomposition(input, contact::decomposition_problem(input.model, input.decomposition, input.region_word),
+                                 text, file_name, options, started);
+      break;
+    case contact::SolverRoute::condensed: output = run_contact(input, text, file_name, options, started); break;
+  }
   check_output_finite(output.files);
   return output;
 }
@@ -415,43 +415,39 @@ RunOutput mesh_model(const contact::ContactProblem& problem, RunOutput output, i
 }  // namespace
 
 RunOutput mesh_problem(std::string_view text, const std::string& file_name, const RunOptions& options) {
-  io::ReadProblem read = io::read_problem(text, file_name, options.overrides, options.limits);
-  if (auto* contact_file = std::get_if<io::ContactFile>(&read)) {
-    RunOutput output;
-    // Meshing records no load steps: their memory is not asked for.
-    contact_file->problem.record_steps = false;
-    const auto& file = *contact_file;
-    check_read(file, options, output);
-    auto summary = summary_envelope(file.problem.contacts.empty() ? "bodies" : "contact", "mesh", text, file_name,
-                                    file.problem.title, file.problem.analysis);
-    summary.parameters = file.parameters;
-    return mesh_model(file.problem, std::move(output), std::move(summary));
-  }
-  if (const auto* decomposition_file = std::get_if<io::DecompositionFile>(&read)) {
-    RunOutput output;
-    const auto& file = *decomposition_file;
-    check_read(file, options, output);
-    auto model = contact::model_of(file.problem);
-    auto summary = summary_envelope("decomposition", "mesh", text, file_name, file.problem.title,
-                                    file.problem.analysis);
-    summary.parameters = file.parameters;
+  io::ProblemInput input = io::read_problem(text, file_name, options.overrides, options.limits);
+  // Meshing records no load steps: their memory is not asked for.
+  input.model.record_steps = false;
+  const contact::SolverRoute route = contact::route_of(input.model);
+  RunOutput output;
+  if (route != contact::SolverRoute::direct) {
+    const auto& model = input.model;
+    if (route == contact::SolverRoute::decomposition)
+      check_read(contact::decomposition_problem(model, input.decomposition, input.region_word), input, options, output);
+    else
+      check_read(model, input, options, output);
+    const char* kind = route == contact::SolverRoute::decomposition ? "decomposition"
+                       : model.contacts.empty()                    ? "bodies"
+                                                                   : "contact";
+    auto summary = summary_envelope(kind, "mesh", text, file_name, model.title, model.analysis);
+    summary.parameters = input.parameters;
     return mesh_model(model, std::move(output), std::move(summary));
   }
-  const auto& file = std::get<io::ProblemFile>(read);
-  RunOutput output;
-  output.warnings = file.warnings;
-  add_geometry_warnings(output.warnings, file.problem.body, "");
-  const auto mesh = bem::mesh_body(file.problem);
-  output.files.add("mesh_nodes.csv", io::mesh_nodes_csv(mesh));
-  output.files.add("mesh_elements.csv", io::mesh_elements_csv(mesh));
-  output.files.add("mesh.vtk", io::mesh_vtk(mesh, file.problem.title));
-  append(output.report, "%s: %ld nodes, %ld elements\n", file.problem.title.c_str(),
+  const auto problem = contact::single_region_problem(input.model);
+  output.warnings = input.warnings;
+  add_geometry_warnings(output.warnings, problem.body, "");
+  const auto mesh = bem::mesh_body(problem);
+  const std::string prefix = file_prefix(input.model.bodies[0]);
+  output.files.add(prefix + "mesh_nodes.csv", io::mesh_nodes_csv(mesh));
+  output.files.add(prefix + "mesh_elements.csv", io::mesh_elements_csv(mesh));
+  output.files.add(prefix + "mesh.vtk", io::mesh_vtk(mesh, problem.title));
+  append(output.report, "%s: %ld nodes, %ld elements\n", problem.title.c_str(),
          static_cast<long>(mesh.node_count()), static_cast<long>(mesh.element_count()));
-  auto summary = summary_envelope("body", "mesh", text, file_name, file.problem.title, file.problem.analysis);
-  summary.parameters = file.parameters;
-  summary.options.update({{"mesh", io::mesh_options_json(file.problem.mesh)}});
-  summary.problem = io::problem_echo_json(file.problem, file.parameters, file.output.vtk);
-  summary.mesh = meshes_json({{file.problem.body.name, &mesh}});
+  auto summary = summary_envelope("body", "mesh", text, file_name, problem.title, problem.analysis);
+  summary.parameters = input.parameters;
+  summary.options.update({{"mesh", io::mesh_options_json(problem.mesh)}});
+  summary.problem = io::problem_echo_json(problem, input.parameters, input.vtk);
+  summary.mesh = meshes_json({{problem.body.name, &mesh}});
   add_summary(summary, output);
   check_output_finite(output.files);
   return output;

@@ -36,7 +36,7 @@ expect_failure() {  # expected exit code, message fragment, problem file
     echo "test-mpi: $(basename "$3"): exit $code as expected"
   fi
 }
-expect_failure 2 "serve decomposition files" "$root/examples/plate_hole.toml"
+expect_failure 2 "serve one body of several regions" "$root/examples/plate_hole.toml"
 grep -v displacement_nodes "$root/examples/dd_strips_2.toml" | sed 's/^method = .*/method = "hybrid"/' > "$work/hybrid.toml"
 expect_failure 3 "is free to move" "$work/hybrid.toml"
 

@@ -70,14 +70,19 @@ struct OperatorChoice {
 };
 const char* to_string(OperatorKind kind);
 
-struct ProblemDefinition {
+// What every problem starts with, whatever it holds (one body, a decomposition, bodies
+// and contacts).
+struct ProblemHeader {
   std::string title;
   std::string source_file;
   AnalysisType analysis = AnalysisType::plane_strain;
-  geometry::MeshOptions mesh;  // interpolation, corner shift
+  geometry::MeshOptions mesh;           // interpolation, continuity, corner shift and transition
+  OperatorChoice operator_choice;       // every region's boundary element system
+};
+
+struct ProblemDefinition : ProblemHeader {
   BodyDefinition body;
   std::vector<InteriorPoint> interior_points;
-  OperatorChoice operator_choice;
 };
 
 // Whether a body of `unknowns` unknowns is solved on compressed operators.

@@ -105,6 +105,9 @@ struct Body {
   SourceLocation where;  // its table in the problem file, for messages
   std::vector<dd::Subdomain> regions;  // empty for a rigid body
   std::optional<RigidBody> rigid;
+  // The file named it ([[body]] tables): its output files carry the name whichever solver
+  // runs it (<body>_boundary.csv); a one-body file's are boundary.csv.
+  bool named = false;
 };
 
 struct BoundaryRef {
@@ -142,12 +145,7 @@ struct ContactInterface {
 
 // Bodies, contacts (each with its law) and one load history. The tangential coupling and
 // the solver are shared by every contact.
-struct ContactProblem {
-  std::string title;
-  std::string source_file;
-  AnalysisType analysis = AnalysisType::plane_strain;
-  geometry::MeshOptions mesh;
-  bem::OperatorChoice operator_choice;  // every region's boundary element system
+struct ContactProblem : bem::ProblemHeader {
   std::vector<Body> bodies;
   std::vector<ContactInterface> contacts;
   // false drops the normal displacements due to tangential tractions from the condensed
@@ -205,6 +203,21 @@ struct ContactProblem {
 // contact.
 ContactProblem model_of(const bem::ProblemDefinition& problem);
 ContactProblem model_of(const dd::DecompositionProblem& problem);
+
+// Which solver a model takes (docs/model.md), from what it holds: one elastic body of one
+// region, with nothing but its own data (no contact, rigid body, force load, amplitude or
+// history): the direct solve; one such body of several regions: the thesis' iterative
+// decomposition (chapter IV); anything else: the condensed interface problem.
+enum class SolverRoute { direct, decomposition, condensed };
+SolverRoute route_of(const ContactProblem& model);
+const char* to_string(SolverRoute route);
+
+// A model of route direct as the direct solver's problem, and one of route decomposition
+// as the decomposition's (with its solver options; `region_word` names its parts in
+// messages: "subdomain" or "region"). std::logic_error for a model of another route.
+bem::ProblemDefinition single_region_problem(const ContactProblem& model);
+dd::DecompositionProblem decomposition_problem(const ContactProblem& model, const dd::DecompositionOptions& options,
+                                               const std::string& region_word);
 
 // Two one-region elastic bodies named body1 and body2 and one contact between piece1 of
 // the first and piece2 of the second (pieces to be added by the caller when -1).

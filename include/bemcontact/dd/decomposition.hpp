@@ -73,12 +73,7 @@ inline constexpr double kAutoRestartBytes = 256e6;
 // The restart length used for `options` on an interface of `unknowns` unknowns.
 int effective_restart(const DecompositionOptions& options, Index unknowns);
 
-struct DecompositionProblem {
-  std::string title;
-  std::string source_file;
-  AnalysisType analysis = AnalysisType::plane_strain;
-  geometry::MeshOptions mesh;
-  bem::OperatorChoice operator_choice;  // every subdomain's boundary element system
+struct DecompositionProblem : bem::ProblemHeader {
   std::vector<Subdomain> subdomains;
   DecompositionOptions options;
   std::string part_word = "subdomain";  // in messages: "region" when they are a body's regions

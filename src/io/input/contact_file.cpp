@@ -262,6 +262,7 @@ void read_bodies(toml::table& root_table, const TableReader& root, FileContext& 
     body.where = SourceLocation{context.file, reader.line(), path};
     body.name = reader.optional_name("name").value_or(path);
     if (body.name.empty()) reader.fail("name", "the name must not be empty");
+    body.named = true;
     if (const auto [existing, inserted] = body_lines.emplace(body.name, reader.line()); !inserted)
       reader.fail("name", "the body name '" + body.name + "' is already used at line " +
                               std::to_string(existing->second) + "; body names must be unique");

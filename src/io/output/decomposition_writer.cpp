@@ -1,5 +1,7 @@
 #include "bemcontact/io/output/decomposition_writer.hpp"
 
+#include "bemcontact/io/file_names.hpp"
+
 #include <sstream>
 
 #include "bemcontact/io/output/json_writer.hpp"
@@ -15,13 +17,6 @@ const char* kind_name(bem::ConditionKind kind) {
 }
 
 }  // namespace
-
-std::string file_safe_name(const std::string& name) {
-  std::string safe = name.empty() ? "subdomain" : name;
-  for (char& c : safe)
-    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_')) c = '_';
-  return safe;
-}
 
 std::string interface_csv(const dd::DecompositionResult& result) {
   std::ostringstream out;
@@ -91,7 +86,7 @@ std::vector<NamedFile> decomposition_files(const dd::DecompositionResult& result
                                            bool vtk) {
   std::vector<NamedFile> files;
   for (const auto& sub : result.subdomains) {
-    const std::string prefix = file_safe_name(sub.name) + "_";
+    const std::string prefix = file_stem(sub.name) + "_";
     files.emplace_back(prefix + "boundary.csv", boundary_csv(sub.mesh, sub.boundary));
     if (vtk) files.emplace_back(prefix + "boundary.vtk", boundary_vtk(sub.mesh, sub.boundary, title + " / " + sub.name));
     if (!sub.interior.points.empty()) {

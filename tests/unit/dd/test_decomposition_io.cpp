@@ -1,6 +1,8 @@
 // Multi-subdomain problem files and the writers of a decomposed run.
 #include <gtest/gtest.h>
 
+#include "bemcontact/io/file_names.hpp"
+
 #include <filesystem>
 
 #include "bemcontact/dd/plate_strips.hpp"
@@ -77,7 +79,7 @@ TEST(DdWriter, FilesHoldOneRowPerPairNodeAndIteration) {
   EXPECT_EQ(json["interfaces"][0]["pairs"], 13);
   EXPECT_EQ(json["subdomains"].size(), 2u);
   EXPECT_TRUE(json["timings"].contains("phases"));
-  EXPECT_EQ(file_safe_name("a b/c"), "a_b_c");
+  EXPECT_EQ(file_stem("a b/c-d_e"), "a_b_c-d_e");
 }
 
 }  // namespace

@@ -22,8 +22,6 @@ namespace bemcontact::io {
 
 using NamedFile = std::pair<std::string, std::string>;
 
-// A subdomain name made safe for a file name (letters, digits, '-', '_'; others -> '_').
-std::string file_safe_name(const std::string& name);
 
 std::string interface_csv(const dd::DecompositionResult& result);
 std::string interface_vtk(const dd::DecompositionResult& result, const std::string& title);
