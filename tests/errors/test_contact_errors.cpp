@@ -6,6 +6,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "bemcontact/io/input/problem_text.hpp"
 #include "bemcontact/contact/contact_solver.hpp"
 #include "bemcontact/core/error.hpp"
 #include "bemcontact/io/input/contact_file.hpp"
@@ -42,8 +43,8 @@ bool contains(const std::string& text, const std::string& part) { return text.fi
 }  // namespace
 
 TEST(ContactErrors, ExampleIsAContactFile) {
-  EXPECT_TRUE(io::is_contact_text(example_text()));
-  EXPECT_FALSE(io::is_contact_text("analysis = \"plane_strain\"\n"));
+  EXPECT_EQ(io::problem_kind(example_text()), io::ProblemKind::contact);
+  EXPECT_EQ(io::problem_kind("analysis = \"plane_strain\"\n"), io::ProblemKind::body);
   EXPECT_NO_THROW(io::parse_contact_problem(example_text(), "ball.toml"));
 }
 

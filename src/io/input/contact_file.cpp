@@ -544,25 +544,6 @@ contact::BoundaryRef read_side(const TableReader& reader, const contact::Contact
 
 }  // namespace
 
-bool is_contact_text(std::string_view text) {
-  try {
-    const toml::table root = toml::parse(text);
-    // Contacts, or bodies without them (the same model; [[subdomain]] files are the
-    // decomposition's spelling).
-    return root.contains("contact") || (root.contains("body") && !root.contains("subdomain"));
-  } catch (...) {
-    return false;
-  }
-}
-
-bool is_contact_file(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  if (!in) return false;
-  std::ostringstream text;
-  text << in.rdbuf();
-  return is_contact_text(text.str());
-}
-
 ContactFile read_contact_file(const std::filesystem::path& path, const ParameterOverrides& overrides) {
   return parse_contact_problem(read_problem_text(path), path.string(), overrides);
 }

@@ -125,23 +125,6 @@ dd::Subdomain parse_region(toml::table& table, const std::string& path, FileCont
   return subdomain;
 }
 
-bool is_decomposition_text(std::string_view text) {
-  try {
-    const toml::table table = toml::parse(text);
-    return table.contains("subdomain");
-  } catch (const toml::parse_error&) {
-    return false;
-  }
-}
-
-bool is_decomposition_file(const std::filesystem::path& path) {
-  try {
-    return is_decomposition_text(read_problem_text(path));
-  } catch (const InputError&) {
-    return false;
-  }
-}
-
 DecompositionFile read_decomposition_file(const std::filesystem::path& path, const ParameterOverrides& overrides) {
   return parse_decomposition(read_problem_text(path), path.string(), overrides);
 }

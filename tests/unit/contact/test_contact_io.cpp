@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "bemcontact/io/input/problem_text.hpp"
 #include "bemcontact/contact/contact_solver.hpp"
 #include "bemcontact/io/input/contact_file.hpp"
 #include "bemcontact/io/output/contact_writer.hpp"
@@ -31,8 +32,8 @@ TEST(ContactIo, ExamplesReadWithTheirSettings) {
   EXPECT_EQ(punch.problem.contacts.front().law.kind, contact::ContactKind::bilateral);
   EXPECT_EQ(punch.problem.analysis, AnalysisType::plane_stress);
   EXPECT_TRUE(punch.problem.forces.empty());
-  EXPECT_TRUE(io::is_contact_file(dir + "/contact_punch_halfplane.toml"));
-  EXPECT_FALSE(io::is_contact_file(dir + "/plate_tension.toml"));
+  EXPECT_EQ(io::problem_kind(io::read_problem_text(dir + "/contact_punch_halfplane.toml")), io::ProblemKind::contact);
+  EXPECT_EQ(io::problem_kind(io::read_problem_text(dir + "/plate_tension.toml")), io::ProblemKind::body);
 }
 
 TEST(ContactIo, WritersHoldEveryPairAndTheSummary) {

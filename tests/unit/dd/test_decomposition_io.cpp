@@ -1,6 +1,7 @@
 // Multi-subdomain problem files and the writers of a decomposed run.
 #include <gtest/gtest.h>
 
+#include "bemcontact/io/input/problem_text.hpp"
 #include "bemcontact/io/file_names.hpp"
 
 #include <filesystem>
@@ -16,11 +17,11 @@ namespace {
 const std::string examples = BEMCONTACT_SOURCE_DIR "/examples/";
 
 TEST(DdFile, RecognisesDecompositionFiles) {
-  EXPECT_TRUE(is_decomposition_file(examples + "dd_strips_2.toml"));
-  EXPECT_TRUE(is_decomposition_file(examples + "dd_two_layer_ring.toml"));
-  EXPECT_FALSE(is_decomposition_file(examples + "plate_tension.toml"));
-  EXPECT_FALSE(is_decomposition_file(examples + "no_such_file.toml"));
-  EXPECT_FALSE(is_decomposition_text("this is = = not toml"));
+  const auto kind = [](const std::string& file) { return problem_kind(read_problem_text(examples + file)); };
+  EXPECT_EQ(kind("dd_strips_2.toml"), ProblemKind::decomposition);
+  EXPECT_EQ(kind("dd_two_layer_ring.toml"), ProblemKind::decomposition);
+  EXPECT_EQ(kind("plate_tension.toml"), ProblemKind::body);
+  EXPECT_EQ(problem_kind("this is = = not toml"), ProblemKind::body);  // the one-body reader reports it
 }
 
 TEST(DdFile, StripsFileIsTheProblemBuiltInCode) {

@@ -372,7 +372,7 @@ TEST(IoProblemFile, EveryBundledOneBodyExampleParses) {
   for (const auto& entry : std::filesystem::directory_iterator(examples)) {
     if (entry.path().extension() != ".toml") continue;
     // Several subdomains, several bodies or contacts have formats of their own.
-    if (io::is_decomposition_file(entry.path()) || io::is_contact_file(entry.path())) continue;
+    if (io::problem_kind(read_problem_text(entry.path())) != io::ProblemKind::body) continue;
     // A .geo geometry needs the Gmsh library (io/gmsh_geometry.hpp).
     if (!io::gmsh_api_available() && read_problem_text(entry.path()).find(".geo\"") != std::string::npos) continue;
     ++count;

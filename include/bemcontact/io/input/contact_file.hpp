@@ -28,11 +28,6 @@ struct ContactFile {
   bool vtk = true;  // [output] vtk
 };
 
-// True when the file (TOML) holds contact tables, or [[body]] tables without [[subdomain]]
-// ones: `bemcontact run` then reads it with read_contact_file and solves it with
-// contact::solve_contact. False for unreadable files.
-bool is_contact_file(const std::filesystem::path& path);
-bool is_contact_text(std::string_view text);
 
 ContactFile read_contact_file(const std::filesystem::path& path, const ParameterOverrides& overrides = {});
 ContactFile parse_contact_problem(std::string_view text, const std::string& file_name,

@@ -27,10 +27,6 @@ struct DecompositionFile {
   std::vector<std::string> warnings;  // documented warnings of the reader (file:line: key ...)
 };
 
-// True when the file (text) is valid TOML with [[subdomain]] tables; false otherwise
-// (a file that does not parse is left to read_problem_file to report).
-bool is_decomposition_file(const std::filesystem::path& path);
-bool is_decomposition_text(std::string_view text);
 
 DecompositionFile read_decomposition_file(const std::filesystem::path& path, const ParameterOverrides& overrides = {});
 DecompositionFile parse_decomposition(std::string_view text, const std::string& file_name,
