@@ -192,6 +192,14 @@ struct ContactProblem : bem::ProblemHeader {
       if (contact.law.friction > 0.0) return true;
     return false;
   }
+  // The law every contact has, when they agree (none when the contacts' laws differ, or
+  // without contacts).
+  std::optional<ContactLaw> common_law() const {
+    if (contacts.empty()) return std::nullopt;
+    for (const auto& contact : contacts)
+      if (!(contact.law == contacts.front().law)) return std::nullopt;
+    return contacts.front().law;
+  }
   // Every contact's friction coefficient (reference cases and tests that vary it).
   void set_friction(double beta) {
     for (auto& contact : contacts) contact.law.friction = beta;

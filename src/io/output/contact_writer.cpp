@@ -197,20 +197,17 @@ std::string hertz_comparison(const contact::ContactProblem& problem, const conta
 // The contact law: kind and friction of every contact (null when the contacts differ:
 // `contacts` then gives each one's), and the tangential coupling.
 nlohmann::json law_json(const contact::ContactProblem& problem) {
-  const contact::ContactLaw first = problem.contacts.empty() ? contact::ContactLaw{} : problem.contacts.front().law;
-  nlohmann::json law = {{"kind", contact::to_string(first.kind)},
-                        {"friction", first.friction},
+  // Without contacts: the default law (no contact has another).
+  const auto common = problem.contacts.empty() ? std::optional(contact::ContactLaw{}) : problem.common_law();
+  nlohmann::json law = {{"kind", common ? nlohmann::json(contact::to_string(common->kind)) : nlohmann::json()},
+                        {"friction", common ? nlohmann::json(common->friction) : nlohmann::json()},
                         {"tangential_coupling", problem.tangential_coupling}};
   if (problem.contacts.empty()) return law;
   nlohmann::json contacts = nlohmann::json::array();
-  bool uniform = true;
-  for (const auto& contact : problem.contacts) {
+  for (const auto& contact : problem.contacts)
     contacts.push_back({{"name", contact.name},
                         {"kind", contact::to_string(contact.law.kind)},
                         {"friction", contact.law.friction}});
-    uniform = uniform && contact.law == first;
-  }
-  if (!uniform) law["kind"] = law["friction"] = nullptr;
   law["contacts"] = contacts;
   return law;
 }
