@@ -205,7 +205,54 @@ boundary = [ { name = "base", from = "A", to = "B", elements = 6, u1 = 0.0, u2 =
   for (const auto& entry : summary["reactions"]["lower"])
     if (entry["boundary"] == "base") base = entry["force"][1].get<double>();
   EXPECT_NEAR(base, 1.0, 5e-3);
+  // One body of regions and nothing else: the model takes the decomposition, whatever the spelling.
+  EXPECT_EQ(summary["kind"], "decomposition");
+  EXPECT_TRUE(fs::exists(dir / "out" / "interface.csv"));
   fs::remove_all(dir);
+}
+
+// A [[body]] of one region alone is solved directly, as the one-body spelling of the same
+// body is (the same numbers), and keeps the body's name in its file names.
+TEST(CommandLine, TheModelNotTheSpellingChoosesTheSolver) {
+  const auto dir = scratch("route");
+  std::string one_body = example_text("plate_tension.toml");
+  write(dir / "one.toml", one_body);
+  ASSERT_EQ(run("run " + (dir / "one.toml").string() + " -o " + (dir / "one").string() + " -q").exit_code, 0);
+  // The same body as a [[body]] table: the root's body keys moved under [[body]].
+  std::string body = one_body;
+  for (const std::string table : {"material", "vertices", "interior"})
+    for (std::size_t at = body.find("[" + table + "]"); at != std::string::npos; at = body.find("[" + table + "]", at + 1))
+      body.replace(at, table.size() + 2, "[body." + table + "]");
+  for (std::size_t at = body.find("[[boundary]]"); at != std::string::npos; at = body.find("[[boundary]]", at + 1))
+    body.replace(at, 12, "[[body.boundary]]");
+  for (std::size_t at = body.find("[[constraint]]"); at != std::string::npos; at = body.find("[[constraint]]", at + 1))
+    body.replace(at, 14, "[[body.constraint]]");
+  body.insert(body.find("[body.material]"), "[[body]]\nname = \"plate\"\n");
+  write(dir / "bodies.toml", body);
+  const auto out = run("run " + (dir / "bodies.toml").string() + " -o " + (dir / "bodies").string() + " -q");
+  ASSERT_EQ(out.exit_code, 0) << out.output << body;
+  std::ifstream in(dir / "bodies" / "summary.json");
+  EXPECT_EQ(nlohmann::json::parse(in)["kind"], "body");
+  std::ifstream a(dir / "one" / "boundary.csv"), b(dir / "bodies" / "plate_boundary.csv");
+  std::stringstream text_a, text_b;
+  text_a << a.rdbuf();
+  text_b << b.rdbuf();
+  EXPECT_FALSE(text_a.str().empty());
+  EXPECT_EQ(text_a.str(), text_b.str());
+  fs::remove_all(dir);
+}
+
+TEST(CommandLine, KeysPrintsTheSchema) {
+  const auto list = run("keys");
+  EXPECT_EQ(list.exit_code, 0);
+  EXPECT_NE(list.output.find("contact.solver"), std::string::npos) << list.output;
+  const auto material = run("keys material");
+  EXPECT_EQ(material.exit_code, 0);
+  EXPECT_NE(material.output.find("| `nu` | number in (-1, 0.5) | required | Poisson's ratio |"), std::string::npos)
+      << material.output;
+  const auto unknown = run("keys nothing");
+  EXPECT_EQ(unknown.exit_code, 2);
+  EXPECT_NE(unknown.output.find("no table 'nothing'"), std::string::npos) << unknown.output;
 }
 
 TEST(CommandLine, ValidateRejectsAnUnknownCaseListingTheValidOnes) {
