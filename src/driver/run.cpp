@@ -120,6 +120,16 @@ io::RunSummary summary_envelope(const char* kind, const char* command, std::stri
   return s;
 }
 
+// A file of the run; a CSV file's table is also kept when the caller asks (keep_tables).
+void add_file(RunOutput& output, const RunOptions& options, io::OutputFile file) {
+  if (auto* table = std::get_if<io::CsvTable>(&file.content)) {
+    output.files.add(file.name, io::csv_text(*table));
+    if (options.keep_tables) output.tables.emplace(std::move(file.name), std::move(*table));
+  } else {
+    output.files.add(std::move(file.name), std::move(std::get<std::string>(file.content)));
+  }
+}
+
 // summary.json, last, listing the files added before it. A run also keeps its problem text
 // (problem.toml, byte for byte: its SHA-256 is the summary's), from which `probe` meshes it again.
 void add_summary(io::RunSummary& summary, RunOutput& output) {
@@ -201,11 +211,11 @@ RunOutput run_decomposition(const io::DecompositionFile& file, std::string_view 
   summary.mesh = meshes_json(meshes);
   summary.results = {{"decomposition", io::decomposition_summary_json(file.problem, result)}};
   if (result.converged()) {
-    for (const auto& [name, content] : io::decomposition_files(result, file.problem.title, file.output.vtk))
-      output.files.add(name, content);
+    for (auto& output_file : io::decomposition_files(result, file.problem.title, file.output.vtk))
+      add_file(output, options, std::move(output_file));
   } else {
     // No answer from an unconverged iteration: only the diagnostics.
-    output.files.add("gmres.csv", io::gmres_history_csv(result.gmres));
+    add_file(output, options, {"gmres.csv", io::gmres_history_table(result.gmres)});
     output.solver_failure_details = {"interface GMRES", result.gmres.iterations, result.gmres.relative_residual};
     output.solver_failure = "the interface problem did not converge: " + result.gmres.message + "; " +
                             convergence_advice(file.problem.options, result);
@@ -253,8 +263,8 @@ RunOutput run_contact(const io::ContactFile& file, std::string_view text, const 
     add_small_strain_warning(output.warnings, result.meshes[r], result.boundary[r], result.region_labels[r]);
   }
   // Moved, not copied: recorded steps make these files large.
-  for (auto& [name, content] : io::contact_output_files(file.problem, result, file.vtk))
-    output.files.add(name, std::move(content));
+  for (auto& output_file : io::contact_output_files(file.problem, result, file.vtk))
+    add_file(output, options, std::move(output_file));
   auto summary = summary_envelope("contact", "run", text, file_name, file.problem.title, file.problem.analysis);
   summary.parameters = file.parameters;
   io::fill_contact_summary(summary, file.problem, result);
@@ -281,8 +291,9 @@ RunOutput run_body(const io::ProblemFile& file, std::string_view text, const std
 
   const auto write_started = Clock::now();
   io::OutputDirectory& out = output.files;
-  out.add("boundary.csv", io::boundary_csv(result.mesh, result.boundary));
-  if (!result.interior.points.empty()) out.add("interior.csv", io::interior_csv(result.interior));
+  add_file(output, options, {"boundary.csv", io::boundary_table(result.mesh, result.boundary)});
+  if (!result.interior.points.empty())
+    add_file(output, options, {"interior.csv", io::interior_table(result.interior)});
   if (file.output.vtk) {
     out.add("boundary.vtk", io::boundary_vtk(result.mesh, result.boundary, file.problem.title));
     if (!result.interior.points.empty())
@@ -384,7 +395,8 @@ namespace {
 
 // `mesh` of a model of bodies, regions and contacts: every region's mesh and every
 // contact's pairs, as the solver would use them.
-RunOutput mesh_model(const contact::ContactProblem& problem, RunOutput output, io::RunSummary summary) {
+RunOutput mesh_model(const contact::ContactProblem& problem, RunOutput output, io::RunSummary summary,
+                     const RunOptions& options) {
   const auto prepared = contact::prepare_contact(problem);
   std::vector<std::pair<std::string, const geometry::BoundaryMesh*>> meshes;
   output.warnings.insert(output.warnings.end(), prepared.warnings.begin(), prepared.warnings.end());
@@ -398,7 +410,7 @@ RunOutput mesh_model(const contact::ContactProblem& problem, RunOutput output, i
   for (std::size_t c = 0; c < prepared.contacts.size(); ++c)
     append(output.report, "contact '%s': %zu pairs, %d nodes of side 1 facing nothing\n",
            problem.contacts[c].name.c_str(), prepared.contacts[c].pairs.size(), prepared.contacts[c].unpaired_nodes1);
-  for (const auto& [name, content] : io::contact_mesh_files(problem, prepared)) output.files.add(name, content);
+  for (auto& output_file : io::contact_mesh_files(problem, prepared)) add_file(output, options, std::move(output_file));
   summary.mesh = meshes_json(meshes);
   json pairs = json::object();
   for (std::size_t c = 0; c < prepared.contacts.size(); ++c)
@@ -425,7 +437,7 @@ RunOutput mesh_problem(std::string_view text, const std::string& file_name, cons
     auto summary = summary_envelope(file.problem.contacts.empty() ? "bodies" : "contact", "mesh", text, file_name,
                                     file.problem.title, file.problem.analysis);
     summary.parameters = file.parameters;
-    return mesh_model(file.problem, std::move(output), std::move(summary));
+    return mesh_model(file.problem, std::move(output), std::move(summary), options);
   }
   if (const auto* decomposition_file = std::get_if<io::DecompositionFile>(&read)) {
     RunOutput output;
@@ -435,15 +447,15 @@ RunOutput mesh_problem(std::string_view text, const std::string& file_name, cons
     auto summary = summary_envelope("decomposition", "mesh", text, file_name, file.problem.title,
                                     file.problem.analysis);
     summary.parameters = file.parameters;
-    return mesh_model(model, std::move(output), std::move(summary));
+    return mesh_model(model, std::move(output), std::move(summary), options);
   }
   const auto& file = std::get<io::ProblemFile>(read);
   RunOutput output;
   output.warnings = file.warnings;
   add_geometry_warnings(output.warnings, file.problem.body, "");
   const auto mesh = bem::mesh_body(file.problem);
-  output.files.add("mesh_nodes.csv", io::mesh_nodes_csv(mesh));
-  output.files.add("mesh_elements.csv", io::mesh_elements_csv(mesh));
+  add_file(output, options, {"mesh_nodes.csv", io::mesh_nodes_table(mesh)});
+  add_file(output, options, {"mesh_elements.csv", io::mesh_elements_table(mesh)});
   output.files.add("mesh.vtk", io::mesh_vtk(mesh, file.problem.title));
   append(output.report, "%s: %ld nodes, %ld elements\n", file.problem.title.c_str(),
          static_cast<long>(mesh.node_count()), static_cast<long>(mesh.element_count()));
