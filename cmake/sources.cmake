@@ -90,6 +90,7 @@ set(BEMCONTACT_IO_SOURCES
   src/io/input/suggestions.cpp
   src/io/input/toml_reader.cpp
   src/io/output/contact_writer.cpp
+  src/io/output/csv_table.cpp
   src/io/output/decomposition_writer.cpp
   src/io/output/json_writer.cpp
   src/io/output/output_directory.cpp

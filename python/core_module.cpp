@@ -1,7 +1,9 @@
 // The Python module's native part, bemcontact._core: the same driver as the command line
-// (driver/run.hpp), files returned in memory, errors raised as Python exceptions with the
-// same messages. The Python package (python/bemcontact) builds the user-facing API on it.
+// (driver/run.hpp), files returned in memory with the tables of the CSV files as numpy
+// arrays, errors raised as Python exceptions with the same messages. The Python package
+// (python/bemcontact) builds the user-facing API on it.
 #include <omp.h>
+#include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
@@ -9,7 +11,9 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <utility>
 #include <variant>
+#include <vector>
 
 #include "bemcontact/core/error.hpp"
 #include "bemcontact/driver/probe.hpp"
@@ -25,11 +29,40 @@ using namespace bemcontact;
 
 namespace {
 
-py::dict as_dict(const driver::RunOutput& output) {
+// The values of a column of numbers as a read-only float64 array that owns them: the
+// vector is moved into the array's base (a capsule), nothing is copied or formatted.
+py::array_t<double> numpy_column(std::vector<double>&& numbers) {
+  if (numbers.empty()) return py::array_t<double>(0);
+  auto* owned = new std::vector<double>(std::move(numbers));
+  py::capsule owner(owned, [](void* values) { delete static_cast<std::vector<double>*>(values); });
+  py::array_t<double> array(static_cast<py::ssize_t>(owned->size()), owned->data(), owner);
+  py::detail::array_proxy(array.ptr())->flags &= ~py::detail::npy_api::NPY_ARRAY_WRITEABLE_;
+  return array;
+}
+
+// Each CSV file's table (io::CsvTable, moved out): file name -> [(column name, values)] in
+// the file's column order, numbers as numpy arrays, text as lists of str.
+py::dict as_tables(std::map<std::string, io::CsvTable>& tables) {
+  py::dict result;
+  for (auto& [name, table] : tables) {
+    table.rows();  // (all columns of one length)
+    py::list columns;
+    for (auto& column : table.columns()) {
+      py::object values = column.format == io::CsvTable::text ? py::object(py::cast(column.texts))
+                                                             : py::object(numpy_column(std::move(column.numbers)));
+      columns.append(py::make_tuple(column.name, values));
+    }
+    result[py::str(name)] = columns;
+  }
+  return result;
+}
+
+py::dict as_dict(driver::RunOutput& output) {
   py::dict files;  // insertion order = the order the driver wrote them
   for (const auto& file : output.files.files()) files[py::str(file.name)] = py::bytes(file.content);
   py::dict result;
   result["files"] = files;
+  result["tables"] = as_tables(output.tables);
   result["report"] = output.report;
   result["warnings"] = output.warnings;
   result["solver_failure"] = output.solver_failure;
@@ -62,6 +95,7 @@ py::dict run(const std::string& text, const std::string& file_name,
              const std::map<std::string, std::variant<double, std::string>>& overrides, bool mesh_only, int threads,
              double gmsh_timeout) {
   driver::RunOptions options;
+  options.keep_tables = true;
   options.overrides = keyword_overrides(overrides);
   if (gmsh_timeout > 0.0) options.limits.gmsh_timeout_seconds = gmsh_timeout;
   driver::RunOutput output;
@@ -86,6 +120,7 @@ py::dict probe(const std::map<std::string, py::bytes>& files, const std::vector<
   for (const auto& [x0, y0, x1, y1, n] : lines) request.lines.push_back({Vec2(x0, y0), Vec2(x1, y1), n});
   driver::ProbeOptions options;
   options.run_name = "the result";
+  options.keep_tables = true;
   driver::ProbeOutput output;
   {
     py::gil_scoped_release released;
@@ -102,6 +137,7 @@ py::dict probe(const std::map<std::string, py::bytes>& files, const std::vector<
   for (const auto& file : output.files.files()) probe_files[py::str(file.name)] = py::bytes(file.content);
   py::dict result;
   result["files"] = probe_files;
+  result["tables"] = as_tables(output.tables);
   result["report"] = output.report;
   result["warnings"] = output.warnings;
   return result;
@@ -161,10 +197,10 @@ PYBIND11_MODULE(_core, m) {
   m.attr("reads_geo_files") = io::gmsh_api_available();  // .geo through the Gmsh library
   m.def("run", &run, py::arg("text"), py::arg("file_name"), py::arg("overrides"), py::arg("mesh_only") = false,
         py::arg("threads") = 0, py::arg("gmsh_timeout") = 60.0,
-        "Solve (or only mesh) a problem text; returns files, report, warnings. gmsh_timeout: the seconds a .geo "
+        "Solve (or only mesh) a problem text; returns files, tables (the CSV files' columns), report, warnings. gmsh_timeout: the seconds a .geo "
         "file may take to mesh (as --gmsh-timeout).");
   m.def("probe", &probe, py::arg("files"), py::arg("points"), py::arg("lines"), py::arg("threads") = 0,
-        "Values at new points of a result (as `bemcontact probe`); returns files, report, warnings.");
+        "Values at new points of a result (as `bemcontact probe`); returns files, tables, report, warnings.");
   m.def("commit", &commit, py::arg("files"), py::arg("directory"),
         "Replace `directory` whole by these files (as `bemcontact run -o`).");
 }

@@ -29,23 +29,20 @@ __all__ = ["Problem", "Result", "Table", "run", "Error", "InputError", "Geometry
 
 
 class Table(dict):
-    """One CSV file: column name -> numpy array (float, or str for text columns such as
-    `boundary` or `status`), in the file's column order."""
+    """One CSV file: column name -> numpy array (float64, or str for text columns such as
+    `boundary` or `status`), in the file's column order.
 
-    def __init__(self, name, text):
+    `data` is the file's columns as the run made them, [(name, values)] (numbers as numpy
+    arrays, text as lists of str: a result's tables, nothing parsed), or the CSV text (a
+    run's folder read from disk)."""
+
+    def __init__(self, name, data):
         super().__init__()
         self.name = name
-        rows = list(csv.reader(io.StringIO(text)))
-        if not rows:
-            raise ValueError(f"{name} is empty")
-        self.columns = rows[0]
-        body = rows[1:]
-        for k, column in enumerate(self.columns):
-            values = [row[k] for row in body]
-            try:
-                self[column] = np.array([float(v) for v in values], dtype=float)
-            except ValueError:
-                self[column] = np.array(values, dtype=str)
+        columns = _parse_csv(name, data) if isinstance(data, str) else data
+        self.columns = [column for column, _ in columns]
+        for column, values in columns:
+            self[column] = values if isinstance(values, np.ndarray) else np.array(values, dtype=str)
 
     def __len__(self):
         return len(next(iter(self.values()))) if self.columns else 0
@@ -57,12 +54,31 @@ class Table(dict):
         return f"Table({self.name!r}, {len(self)} rows, columns={self.columns})"
 
 
+def _parse_csv(name, text):
+    """A CSV file's columns read from its text: a column of numbers as a float array, any
+    other as str."""
+    rows = list(csv.reader(io.StringIO(text)))
+    if not rows:
+        raise ValueError(f"{name} is empty")
+    columns = []
+    for k, column in enumerate(rows[0]):
+        values = [row[k] for row in rows[1:]]
+        try:
+            columns.append((column, np.array([float(v) for v in values], dtype=float)))
+        except ValueError:
+            columns.append((column, np.array(values, dtype=str)))
+    return columns
+
+
 class Result:
     """The files of one run, in memory: `summary` (summary.json), `report` (the terminal
-    summary), `warnings`, and every CSV as a Table."""
+    summary), `warnings`, and every CSV as a Table (from the run's own values)."""
 
     def __init__(self, raw):
         self.files = dict(raw["files"])
+        # Each CSV file's columns as the run computed them (numpy arrays, read-only, shared by
+        # every table() of the file); none for a result read back from a folder.
+        self._tables = dict(raw.get("tables", {}))
         self.report = raw["report"]
         self.warnings = list(raw["warnings"])
         self.solver_failure = raw["solver_failure"]
@@ -77,8 +93,11 @@ class Result:
         return self.files[name].decode()
 
     def table(self, name):
-        """A CSV file by name, with or without '.csv'."""
+        """A CSV file by name, with or without '.csv': the run's own arrays (the file's text is
+        read only for a result loaded from a folder)."""
         name = name if name.endswith(".csv") else name + ".csv"
+        if name in self._tables:
+            return Table(name, self._tables[name])
         return Table(name, self.text(name))
 
     def _per_body(self, suffix, body):
@@ -150,7 +169,7 @@ class Result:
                                  f"(a whole number, ends included) and two different ends")
             checked.append((float(x0), float(y0), float(x1), float(y1), int(n)))
         raw = _core.probe(self.files, points, checked, int(threads))
-        table = Table("probe.csv", raw["files"]["probe.csv"].decode())
+        table = Table("probe.csv", raw["tables"]["probe.csv"])
         table.files = dict(raw["files"])
         table.warnings = list(raw["warnings"])
         table.summary = json.loads(table.files["probe.json"])

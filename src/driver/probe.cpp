@@ -426,7 +426,9 @@ ProbeOutput probe_run(const FileReader& run_files, const ProbeRequest& request, 
   const auto rows = probe_rows(result, asked);
   std::vector<std::string> names;
   for (const auto& region : run.regions) names.push_back(region.name);
-  output.files.add("probe.csv", io::probe_csv(rows, names));
+  auto table = io::probe_table(rows, names);
+  output.files.add("probe.csv", io::csv_text(table));
+  if (options.keep_tables) output.tables.emplace("probe.csv", std::move(table));
   output.files.add("probe.vtk", io::probe_vtk(rows, names, run.title + " (probe)"));
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   const json lines = lines_json(request, asked, rows, result);

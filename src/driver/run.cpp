@@ -115,6 +115,16 @@ io::RunSummary summary_envelope(const char* kind, const char* command, std::stri
   return s;
 }
 
+// A file of the run; a CSV file's table is also kept when the caller asks (keep_tables).
+void add_file(RunOutput& output, const RunOptions& options, io::OutputFile file) {
+  if (auto* table = std::get_if<io::CsvTable>(&file.content)) {
+    output.files.add(file.name, io::csv_text(*table));
+    if (options.keep_tables) output.tables.emplace(std::move(file.name), std::move(*table));
+  } else {
+    output.files.add(std::move(file.name), std::move(std::get<std::string>(file.content)));
+  }
+}
+
 // summary.json, last, listing the files added before it. A run also keeps its problem text
 // (problem.toml, byte for byte: its SHA-256 is the summary's), from which `probe` meshes it again.
 void add_summary(io::RunSummary& summary, RunOutput& output) {
@@ -199,11 +209,11 @@ RunOutput run_decomposition(const io::ProblemInput& input, const dd::Decompositi
   summary.mesh = meshes_json(meshes);
   summary.results = {{"decomposition", io::decomposition_summary_json(problem, result)}};
   if (result.converged()) {
-    for (const auto& [name, content] : io::decomposition_files(result, problem.title, input.vtk))
-      output.files.add(name, content);
+    for (auto& output_file : io::decomposition_files(result, problem.title, input.vtk))
+      add_file(output, options, std::move(output_file));
   } else {
     // No answer from an unconverged iteration: only the diagnostics.
-    output.files.add("gmres.csv", io::gmres_history_csv(result.gmres));
+    add_file(output, options, {"gmres.csv", io::gmres_history_table(result.gmres)});
     output.solver_failure_details = {"interface GMRES", result.gmres.iterations, result.gmres.relative_residual};
     output.solver_failure = "the interface problem did not converge: " + result.gmres.message + "; " +
                             convergence_advice(problem.options, result);
@@ -252,8 +262,8 @@ RunOutput run_contact(const io::ProblemInput& input, std::string_view text, cons
     add_small_strain_warning(output.warnings, result.meshes[r], result.boundary[r], result.region_labels[r]);
   }
   // Moved, not copied: recorded steps make these files large.
-  for (auto& [name, content] : io::contact_output_files(problem, result, input.vtk))
-    output.files.add(name, std::move(content));
+  for (auto& output_file : io::contact_output_files(problem, result, input.vtk))
+    add_file(output, options, std::move(output_file));
   auto summary = summary_envelope("contact", "run", text, file_name, problem.title, problem.analysis);
   summary.parameters = input.parameters;
   io::fill_contact_summary(summary, problem, result);
@@ -281,8 +291,9 @@ RunOutput run_body(const io::ProblemInput& input, const bem::ProblemDefinition& 
   const auto write_started = Clock::now();
   io::OutputDirectory& out = output.files;
   const std::string prefix = file_prefix(input.model.bodies[0]);
-  out.add(prefix + "boundary.csv", io::boundary_csv(result.mesh, result.boundary));
-  if (!result.interior.points.empty()) out.add(prefix + "interior.csv", io::interior_csv(result.interior));
+  add_file(output, options, {prefix + "boundary.csv", io::boundary_table(result.mesh, result.boundary)});
+  if (!result.interior.points.empty())
+    add_file(output, options, {prefix + "interior.csv", io::interior_table(result.interior)});
   if (input.vtk) {
     out.add(prefix + "boundary.vtk", io::boundary_vtk(result.mesh, result.boundary, problem.title));
     if (!result.interior.points.empty())
@@ -384,7 +395,8 @@ namespace {
 
 // `mesh` of a model of bodies, regions and contacts: every region's mesh and every
 // contact's pairs, as the solver would use them.
-RunOutput mesh_model(const contact::ContactProblem& problem, RunOutput output, io::RunSummary summary) {
+RunOutput mesh_model(const contact::ContactProblem& problem, RunOutput output, io::RunSummary summary,
+                     const RunOptions& options) {
   const auto prepared = contact::prepare_contact(problem);
   std::vector<std::pair<std::string, const geometry::BoundaryMesh*>> meshes;
   output.warnings.insert(output.warnings.end(), prepared.warnings.begin(), prepared.warnings.end());
@@ -398,7 +410,7 @@ RunOutput mesh_model(const contact::ContactProblem& problem, RunOutput output, i
   for (std::size_t c = 0; c < prepared.contacts.size(); ++c)
     append(output.report, "contact '%s': %zu pairs, %d nodes of side 1 facing nothing\n",
            problem.contacts[c].name.c_str(), prepared.contacts[c].pairs.size(), prepared.contacts[c].unpaired_nodes1);
-  for (const auto& [name, content] : io::contact_mesh_files(problem, prepared)) output.files.add(name, content);
+  for (auto& output_file : io::contact_mesh_files(problem, prepared)) add_file(output, options, std::move(output_file));
   summary.mesh = meshes_json(meshes);
   json pairs = json::object();
   for (std::size_t c = 0; c < prepared.contacts.size(); ++c)
@@ -431,15 +443,15 @@ RunOutput mesh_problem(std::string_view text, const std::string& file_name, cons
                                                                    : "contact";
     auto summary = summary_envelope(kind, "mesh", text, file_name, model.title, model.analysis);
     summary.parameters = input.parameters;
-    return mesh_model(model, std::move(output), std::move(summary));
+    return mesh_model(model, std::move(output), std::move(summary), options);
   }
   const auto problem = contact::single_region_problem(input.model);
   output.warnings = input.warnings;
   add_geometry_warnings(output.warnings, problem.body, "");
   const auto mesh = bem::mesh_body(problem);
   const std::string prefix = file_prefix(input.model.bodies[0]);
-  output.files.add(prefix + "mesh_nodes.csv", io::mesh_nodes_csv(mesh));
-  output.files.add(prefix + "mesh_elements.csv", io::mesh_elements_csv(mesh));
+  add_file(output, options, {prefix + "mesh_nodes.csv", io::mesh_nodes_table(mesh)});
+  add_file(output, options, {prefix + "mesh_elements.csv", io::mesh_elements_table(mesh)});
   output.files.add(prefix + "mesh.vtk", io::mesh_vtk(mesh, problem.title));
   append(output.report, "%s: %ld nodes, %ld elements\n", problem.title.c_str(),
          static_cast<long>(mesh.node_count()), static_cast<long>(mesh.element_count()));

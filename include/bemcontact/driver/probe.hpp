@@ -12,12 +12,14 @@
 // Nothing here touches the disk: the caller hands the run's files over by name, as the
 // command line reads them from the folder and Python from memory.
 #include <functional>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "bemcontact/bem/progress.hpp"
 #include "bemcontact/core/limits.hpp"
+#include "bemcontact/io/output/csv_table.hpp"
 #include "bemcontact/io/output/output_directory.hpp"
 #include "bemcontact/io/input/probe_input.hpp"
 
@@ -39,10 +41,12 @@ struct ProbeOptions {
   FileReader read_input;
   bem::ProgressCallback progress;
   ResourceLimits limits;  // max_interior_points bounds the number of points
+  bool keep_tables = false;  // keep probe.csv's table in ProbeOutput::tables
 };
 
 struct ProbeOutput {
   io::OutputDirectory files;  // probe.csv, probe.vtk, probe.json
+  std::map<std::string, io::CsvTable> tables;  // with keep_tables: "probe.csv" as written
   std::string report;         // the terminal summary
   std::vector<std::string> warnings;
 };

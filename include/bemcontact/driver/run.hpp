@@ -3,6 +3,7 @@
 // touching the disk or the terminal: the command line, the fuzz target and the tests
 // all go through here. The caller commits `files` (OutputDirectory) and prints `report`.
 #include <functional>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <string_view>
@@ -11,6 +12,7 @@
 #include "bemcontact/bem/progress.hpp"
 #include "bemcontact/core/limits.hpp"
 #include "bemcontact/dd/distribution.hpp"
+#include "bemcontact/io/output/csv_table.hpp"
 #include "bemcontact/io/output/output_directory.hpp"
 #include "bemcontact/core/error.hpp"
 #include "bemcontact/io/input/parameter_overrides.hpp"
@@ -32,10 +34,16 @@ struct RunOptions {
   // decomposition files run on several processes; every process returns the same RunOutput
   // summary, and only the root's files are whole (the root writes them).
   dd::ParallelRun parallel;
+  // Keep every CSV file's table in RunOutput::tables (the Python module does; the command
+  // needs only the text).
+  bool keep_tables = false;
 };
 
 struct RunOutput {
   io::OutputDirectory files;          // summary.json included
+  // With RunOptions::keep_tables: each CSV file of `files` as the table it was written from
+  // (io::csv_text(tables[name]) is the file's content), keyed by its name.
+  std::map<std::string, io::CsvTable> tables;
   std::string report;                 // the terminal summary, one line per fact
   std::vector<std::string> warnings;  // also in summary.json
   // Set when the run wrote only diagnostics (an unconverged interface problem): the

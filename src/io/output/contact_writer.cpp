@@ -18,12 +18,6 @@
 namespace bemcontact::io {
 namespace {
 
-std::string number(double value) {
-  char buffer[64];
-  const auto end = std::to_chars(buffer, buffer + sizeof buffer, value).ptr;
-  return std::string(buffer, end);
-}
-
 // Every recorded load step's files go into this sub-folder of the output folder.
 constexpr const char* steps_folder = "steps/";
 
@@ -58,17 +52,23 @@ nlohmann::json summary_json(const contact::ContactSummary& s) {
 }  // namespace
 
 
-std::string contact_csv(const std::vector<contact::PairResult>& pairs) {
-  std::string out = "pair,x,y,coordinate,nx,ny,gap,p_n,p_t,slip_ratio,jump_n,jump_t,status\n";
+// The contact files' numbers: std::to_chars' shortest text (CsvTable::compact).
+CsvTable contact_table(const std::vector<contact::PairResult>& pairs) {
+  constexpr auto c = CsvTable::compact;
+  CsvTable table({{"pair", CsvTable::integer}, {"x", c}, {"y", c}, {"coordinate", c}, {"nx", c}, {"ny", c},
+                  {"gap", c}, {"p_n", c}, {"p_t", c}, {"slip_ratio", c}, {"jump_n", c}, {"jump_t", c},
+                  {"status", CsvTable::text}});
+  table.reserve(pairs.size());
   for (std::size_t i = 0; i < pairs.size(); ++i) {
     const auto& p = pairs[i];
-    out += std::to_string(i) + "," + number(p.position.x()) + "," + number(p.position.y()) + "," +
-           number(p.coordinate) + "," + number(p.normal.x()) + "," + number(p.normal.y()) + "," + number(p.gap) + "," +
-           number(p.p_n) + "," + number(p.p_t) + "," + number(p.slip_ratio) + "," + number(p.jump_n) + "," +
-           number(p.jump_t) + "," + contact::to_string(p.status) + "\n";
+    table.row() << static_cast<double>(i) << p.position.x() << p.position.y() << p.coordinate << p.normal.x()
+                << p.normal.y() << p.gap << p.p_n << p.p_t << p.slip_ratio << p.jump_n << p.jump_t
+                << contact::to_string(p.status);
   }
-  return out;
+  return table;
 }
+
+std::string contact_csv(const std::vector<contact::PairResult>& pairs) { return csv_text(contact_table(pairs)); }
 
 namespace {
 
@@ -107,24 +107,45 @@ std::string contact_vtp(const std::vector<contact::PairResult>& pairs) {
   return point_cloud_vtp(f.points, f.scalars, {{"normal", f.normals}});
 }
 
-std::string contact_steps_csv(const contact::ContactInterfaceResult& result) {
-  std::string out =
-      "step,time,a,c,stick_start,stick_end,stick_offset,contact_start,contact_end,peak_pressure,centre_pressure,normal_force,tangential_force,approach,pairs_in_contact,"
-      "dissipated_energy,"
-      "newton_iterations,kalker_iterations,threshold_iterations,gmres_cycles,residual\n";
+CsvTable contact_steps_table(const contact::ContactInterfaceResult& result) {
+  constexpr auto c = CsvTable::compact;
+  constexpr auto i = CsvTable::integer;
+  CsvTable table({{"step", i},
+                  {"time", c},
+                  {"a", c},
+                  {"c", c},
+                  {"stick_start", c},
+                  {"stick_end", c},
+                  {"stick_offset", c},
+                  {"contact_start", c},
+                  {"contact_end", c},
+                  {"peak_pressure", c},
+                  {"centre_pressure", c},
+                  {"normal_force", c},
+                  {"tangential_force", c},
+                  {"approach", c},
+                  {"pairs_in_contact", i},
+                  {"dissipated_energy", c},
+                  {"newton_iterations", i},
+                  {"kalker_iterations", i},
+                  {"threshold_iterations", i},
+                  {"gmres_cycles", i},
+                  {"residual", c}});
+  table.reserve(result.steps.size());
   for (std::size_t k = 0; k < result.steps.size(); ++k) {
     const auto& s = result.steps[k];
-    out += std::to_string(k + 1) + "," + number(s.time) + "," + number(s.contact_radius) + "," +
-           number(s.stick_radius) + "," + number(s.stick_start) + "," + number(s.stick_end) + "," +
-           number(s.stick_offset) + "," +
-           number(s.contact_start) + "," + number(s.contact_end) + "," + number(s.peak_pressure) + "," + number(s.centre_pressure) + "," +
-           number(s.normal_force) + "," + number(s.tangential_force) + "," + number(s.approach) + "," + std::to_string(s.pairs_in_contact) + "," +
-           number(s.dissipated_energy) + "," +
-           std::to_string(s.newton_iterations) + "," + std::to_string(s.kalker_iterations) + "," +
-           std::to_string(s.threshold_iterations) + "," + std::to_string(s.gmres_cycles) + "," + number(s.residual) +
-           "\n";
+    table.row() << static_cast<double>(k + 1) << s.time << s.contact_radius << s.stick_radius << s.stick_start
+                << s.stick_end << s.stick_offset << s.contact_start << s.contact_end << s.peak_pressure
+                << s.centre_pressure << s.normal_force << s.tangential_force << s.approach
+                << static_cast<double>(s.pairs_in_contact) << s.dissipated_energy
+                << static_cast<double>(s.newton_iterations) << static_cast<double>(s.kalker_iterations)
+                << static_cast<double>(s.threshold_iterations) << static_cast<double>(s.gmres_cycles) << s.residual;
   }
-  return out;
+  return table;
+}
+
+std::string contact_steps_csv(const contact::ContactInterfaceResult& result) {
+  return csv_text(contact_steps_table(result));
 }
 
 namespace {
@@ -317,63 +338,64 @@ std::vector<std::string> motion_columns(const contact::ContactProblem& problem, 
   return unique;
 }
 
-std::vector<std::pair<std::string, std::string>> contact_output_files(const contact::ContactProblem& problem,
-                                                                      const contact::ContactResult& result, bool vtk) {
-  std::vector<std::pair<std::string, std::string>> files;
+std::vector<OutputFile> contact_output_files(const contact::ContactProblem& problem,
+                                             const contact::ContactResult& result, bool vtk) {
+  std::vector<OutputFile> files;
+  const auto add = [&](std::string name, auto content) { files.push_back({std::move(name), std::move(content)}); };
   for (const auto& contact : result.contacts) {
     const std::string stem = file_stem(contact.name);
-    files.emplace_back(stem + ".csv", contact_csv(contact.pairs));
-    if (vtk) files.emplace_back(stem + ".vtk", contact_vtk(contact.pairs, problem.title + ": contact " + contact.name));
-    files.emplace_back(stem + "_steps.csv", contact_steps_csv(contact));
+    add(stem + ".csv", contact_table(contact.pairs));
+    if (vtk) add(stem + ".vtk", contact_vtk(contact.pairs, problem.title + ": contact " + contact.name));
+    add(stem + "_steps.csv", contact_steps_table(contact));
     for (std::size_t k = 0; k < contact.step_pairs.size(); ++k)
-      files.emplace_back(steps_folder + stem + "_step" + std::to_string(k + 1) + ".csv", contact_csv(contact.step_pairs[k]));
+      add(steps_folder + stem + "_step" + std::to_string(k + 1) + ".csv", contact_table(contact.step_pairs[k]));
     if (vtk && !contact.step_pairs.empty()) {
       // Every step's pairs as a ParaView time series.
       std::vector<std::pair<double, std::string>> series;
       for (std::size_t k = 0; k < contact.step_pairs.size(); ++k) {
         const std::string name = steps_folder + stem + "_step" + std::to_string(k + 1) + ".vtp";
-        files.emplace_back(name, contact_vtp(contact.step_pairs[k]));
+        add(name, contact_vtp(contact.step_pairs[k]));
         series.emplace_back(contact.steps[k].time, name);
       }
-      files.emplace_back(stem + ".pvd", time_series_pvd(series));
+      add(stem + ".pvd", time_series_pvd(series));
     }
   }
   if (!result.records.empty() && result.records.front().motions.size() > 0) {
-    std::string out = "step,time";
-    for (const auto& column : motion_columns(problem, result)) out += "," + column;
+    CsvTable table({{"step", CsvTable::integer}, {"time", CsvTable::compact}});
+    for (const auto& column : motion_columns(problem, result)) table.add_column(column, CsvTable::compact);
     const Index K = result.records.front().motions.size();
-    out += "\n";
+    table.reserve(result.records.size());
     for (std::size_t s = 0; s < result.records.size(); ++s) {
       const auto& r = result.records[s];
-      out += std::to_string(s + 1) + "," + number(r.time);
+      auto row = table.row();
+      row << static_cast<double>(s + 1) << r.time;
       for (Index k = 0; k < K; ++k) {
-        if (k < static_cast<Index>(problem.forces.size())) out += "," + number(r.forces[k]);
-        out += "," + number(r.motions[k]);
+        if (k < static_cast<Index>(problem.forces.size())) row << r.forces[k];
+        row << r.motions[k];
       }
-      out += "\n";
     }
-    files.emplace_back("motions.csv", out);
+    add("motions.csv", std::move(table));
   }
   for (std::size_t r = 0; r < result.meshes.size(); ++r) {
     const std::string stem = file_stem(result.body_names[r]);
-    files.emplace_back(stem + "_boundary.csv", boundary_csv(result.meshes[r], result.boundary[r]));
-    if (vtk) files.emplace_back(stem + "_boundary.vtk", boundary_vtk(result.meshes[r], result.boundary[r], problem.title));
+    add(stem + "_boundary.csv", boundary_table(result.meshes[r], result.boundary[r]));
+    if (vtk) add(stem + "_boundary.vtk", boundary_vtk(result.meshes[r], result.boundary[r], problem.title));
     if (!result.interior[r].points.empty()) {
-      files.emplace_back(stem + "_interior.csv", interior_csv(result.interior[r]));
-      if (vtk) files.emplace_back(stem + "_interior.vtk", interior_vtk(result.interior[r], problem.title));
+      add(stem + "_interior.csv", interior_table(result.interior[r]));
+      if (vtk) add(stem + "_interior.vtk", interior_vtk(result.interior[r], problem.title));
     }
     for (std::size_t k = 0; k < result.step_boundary.size(); ++k)
-      files.emplace_back(steps_folder + stem + "_boundary_step" + std::to_string(k + 1) + ".csv",
-                         boundary_csv(result.meshes[r], result.step_boundary[k][r]));
+      add(steps_folder + stem + "_boundary_step" + std::to_string(k + 1) + ".csv",
+          boundary_table(result.meshes[r], result.step_boundary[k][r]));
     if (vtk && !result.step_boundary.empty()) {
       // Every step's boundary fields as a ParaView time series.
       std::vector<std::pair<double, std::string>> series;
       for (std::size_t k = 0; k < result.step_boundary.size(); ++k) {
         const std::string name = steps_folder + stem + "_boundary_step" + std::to_string(k + 1) + ".vtp";
-        files.emplace_back(name, boundary_vtp(result.meshes[r], result.step_boundary[k][r]));
+        add(name, boundary_vtp(result.meshes[r], result.step_boundary[k][r]));
         series.emplace_back(result.records[k].time, name);
       }
-      files.emplace_back(stem + "_boundary.pvd", time_series_pvd(series));
+      add(stem + "_boundary.pvd", time_series_pvd(series));
     }
   }
   return files;
@@ -426,26 +448,29 @@ void fill_contact_summary(RunSummary& summary, const contact::ContactProblem& pr
   summary.results["contacts"] = contacts;
 }
 
-std::vector<std::pair<std::string, std::string>> contact_mesh_files(const contact::ContactProblem& problem,
-                                                                    const contact::PreparedContact& prepared) {
-  std::vector<std::pair<std::string, std::string>> files;
+std::vector<OutputFile> contact_mesh_files(const contact::ContactProblem& problem,
+                                           const contact::PreparedContact& prepared) {
+  std::vector<OutputFile> files;
+  const auto add = [&](std::string name, auto content) { files.push_back({std::move(name), std::move(content)}); };
   for (const auto& region : prepared.regions) {
     const auto& body = problem.bodies[region.body];
     const std::string stem = file_stem(body.regions.size() == 1 ? body.name : region.definition.name);
-    files.emplace_back(stem + "_mesh_nodes.csv", mesh_nodes_csv(region.mesh));
-    files.emplace_back(stem + "_mesh_elements.csv", mesh_elements_csv(region.mesh));
-    files.emplace_back(stem + "_mesh.vtk", mesh_vtk(region.mesh, problem.title));
+    add(stem + "_mesh_nodes.csv", mesh_nodes_table(region.mesh));
+    add(stem + "_mesh_elements.csv", mesh_elements_table(region.mesh));
+    add(stem + "_mesh.vtk", mesh_vtk(region.mesh, problem.title));
   }
   for (std::size_t c = 0; c < prepared.contacts.size(); ++c) {
-    std::string out = "pair,x1,y1,x2,y2,nx,ny,gap,weight\n";
+    constexpr auto n = CsvTable::compact;
+    CsvTable table({{"pair", CsvTable::integer}, {"x1", n}, {"y1", n}, {"x2", n}, {"y2", n}, {"nx", n}, {"ny", n},
+                    {"gap", n}, {"weight", n}});
     const auto& pairs = prepared.contacts[c].pairs;
+    table.reserve(pairs.size());
     for (std::size_t i = 0; i < pairs.size(); ++i) {
       const auto& p = pairs[i];
-      out += std::to_string(i) + "," + number(p.position1.x()) + "," + number(p.position1.y()) + "," +
-             number(p.position2.x()) + "," + number(p.position2.y()) + "," + number(p.normal.x()) + "," +
-             number(p.normal.y()) + "," + number(p.gap) + "," + number(p.weight) + "\n";
+      table.row() << static_cast<double>(i) << p.position1.x() << p.position1.y() << p.position2.x()
+                  << p.position2.y() << p.normal.x() << p.normal.y() << p.gap << p.weight;
     }
-    files.emplace_back(file_stem(problem.contacts[c].name) + "_pairs.csv", out);
+    add(file_stem(problem.contacts[c].name) + "_pairs.csv", std::move(table));
   }
   return files;
 }

@@ -18,10 +18,13 @@ const char* kind_name(bem::ConditionKind kind) {
 
 }  // namespace
 
-std::string interface_csv(const dd::DecompositionResult& result) {
-  std::ostringstream out;
-  out << "interface,pair,kind,x,y,subdomain_a,node_a,subdomain_b,node_b,u1_a,u2_a,u1_b,u2_b,t1_a,t2_a,t1_b,t2_b,"
-         "jump_u1,jump_u2,jump_t1,jump_t2\n";
+CsvTable interface_table(const dd::DecompositionResult& result) {
+  constexpr auto text = CsvTable::text;
+  constexpr auto integer = CsvTable::integer;
+  CsvTable table({{"interface", text}, {"pair", integer}, {"kind", text}, {"x"}, {"y"}, {"subdomain_a", text},
+                  {"node_a", integer}, {"subdomain_b", text}, {"node_b", integer}, {"u1_a"}, {"u2_a"}, {"u1_b"},
+                  {"u2_b"}, {"t1_a"}, {"t2_a"}, {"t1_b"}, {"t2_b"}, {"jump_u1"}, {"jump_u2"}, {"jump_t1"},
+                  {"jump_t2"}});
   for (const auto& interface : result.connectivity.interfaces) {
     const auto& a = result.subdomains[interface.subdomain_a];
     const auto& b = result.subdomains[interface.subdomain_b];
@@ -30,16 +33,17 @@ std::string interface_csv(const dd::DecompositionResult& result) {
       const Vec2 ua = a.boundary.displacement[pair.node_a], ub = b.boundary.displacement[pair.node_b];
       const Vec2 ta = a.boundary.traction[pair.node_a], tb = b.boundary.traction[pair.node_b];
       const Vec2 ju = ua - ub, jt = ta + tb;
-      out << csv_field(interface.name) << ',' << j << ',' << kind_name(pair.kind) << ','
-          << format_number(pair.position.x()) << ',' << format_number(pair.position.y()) << ',' << csv_field(a.name)
-          << ',' << pair.node_a << ',' << csv_field(b.name) << ',' << pair.node_b;
-      for (const Vec2* v : {&ua, &ub, &ta, &tb, &ju, &jt})
-        out << ',' << format_number(v->x()) << ',' << format_number(v->y());
-      out << '\n';
+      auto row = table.row();
+      row << interface.name << static_cast<double>(j) << kind_name(pair.kind) << pair.position.x()
+          << pair.position.y() << a.name << static_cast<double>(pair.node_a) << b.name
+          << static_cast<double>(pair.node_b);
+      for (const Vec2* v : {&ua, &ub, &ta, &tb, &ju, &jt}) row << v->x() << v->y();
     }
   }
-  return out.str();
+  return table;
 }
+
+std::string interface_csv(const dd::DecompositionResult& result) { return csv_text(interface_table(result)); }
 
 std::string interface_vtk(const dd::DecompositionResult& result, const std::string& title) {
   std::vector<const dd::NodePair*> pairs;
@@ -74,29 +78,32 @@ std::string interface_vtk(const dd::DecompositionResult& result, const std::stri
   return out.str();
 }
 
-std::string gmres_history_csv(const operators::GmresResult& gmres) {
-  std::ostringstream out;
-  out << "iteration,relative_residual\n";
+CsvTable gmres_history_table(const operators::GmresResult& gmres) {
+  CsvTable table({{"iteration", CsvTable::integer}, {"relative_residual"}});
+  table.reserve(gmres.residual_history.size());
   for (std::size_t k = 0; k < gmres.residual_history.size(); ++k)
-    out << k << ',' << format_number(gmres.residual_history[k]) << '\n';
-  return out.str();
+    table.row() << static_cast<double>(k) << gmres.residual_history[k];
+  return table;
 }
 
-std::vector<NamedFile> decomposition_files(const dd::DecompositionResult& result, const std::string& title,
-                                           bool vtk) {
-  std::vector<NamedFile> files;
+std::string gmres_history_csv(const operators::GmresResult& gmres) { return csv_text(gmres_history_table(gmres)); }
+
+std::vector<OutputFile> decomposition_files(const dd::DecompositionResult& result, const std::string& title,
+                                            bool vtk) {
+  std::vector<OutputFile> files;
+  const auto add = [&](std::string name, auto content) { files.push_back({std::move(name), std::move(content)}); };
   for (const auto& sub : result.subdomains) {
     const std::string prefix = file_stem(sub.name) + "_";
-    files.emplace_back(prefix + "boundary.csv", boundary_csv(sub.mesh, sub.boundary));
-    if (vtk) files.emplace_back(prefix + "boundary.vtk", boundary_vtk(sub.mesh, sub.boundary, title + " / " + sub.name));
+    add(prefix + "boundary.csv", boundary_table(sub.mesh, sub.boundary));
+    if (vtk) add(prefix + "boundary.vtk", boundary_vtk(sub.mesh, sub.boundary, title + " / " + sub.name));
     if (!sub.interior.points.empty()) {
-      files.emplace_back(prefix + "interior.csv", interior_csv(sub.interior));
-      if (vtk) files.emplace_back(prefix + "interior.vtk", interior_vtk(sub.interior, title + " / " + sub.name));
+      add(prefix + "interior.csv", interior_table(sub.interior));
+      if (vtk) add(prefix + "interior.vtk", interior_vtk(sub.interior, title + " / " + sub.name));
     }
   }
-  files.emplace_back("interface.csv", interface_csv(result));
-  if (vtk) files.emplace_back("interface.vtk", interface_vtk(result, title));
-  files.emplace_back("gmres.csv", gmres_history_csv(result.gmres));
+  add("interface.csv", interface_table(result));
+  if (vtk) add("interface.vtk", interface_vtk(result, title));
+  add("gmres.csv", gmres_history_table(result.gmres));
   return files;
 }
 

@@ -1,7 +1,6 @@
 #include "bemcontact/io/output/probe_writer.hpp"
 
 #include "bemcontact/io/output/results_writer.hpp"
-#include "bemcontact/io/text_format.hpp"
 
 namespace bemcontact::io {
 
@@ -24,20 +23,25 @@ std::vector<std::vector<Index>> line_cells(const std::vector<ProbeRow>& rows) {
 
 }  // namespace
 
-std::string probe_csv(const std::vector<ProbeRow>& rows, const std::vector<std::string>& body_names) {
-  std::string out = "point,line,distance,x,y,body,on_boundary,u1,u2,s11,s22,s12,s33,von_mises,s1,s2,s3\n";
+CsvTable probe_table(const std::vector<ProbeRow>& rows, const std::vector<std::string>& body_names) {
+  constexpr auto integer = CsvTable::integer;
+  CsvTable table({{"point", integer}, {"line", integer}, {"distance"}, {"x"}, {"y"}, {"body", CsvTable::text},
+                  {"on_boundary", integer}, {"u1"}, {"u2"}, {"s11"}, {"s22"}, {"s12"}, {"s33"}, {"von_mises"}, {"s1"},
+                  {"s2"}, {"s3"}});
+  table.reserve(rows.size());
   for (const auto& row : rows) {
     const auto& v = row.value;
     const auto& s = v.stress;
     const auto principal = s.principal();
-    out += std::to_string(row.point) + "," + std::to_string(row.line) + "," + format_number(row.distance) + "," +
-           format_number(row.position.x()) + "," + format_number(row.position.y()) + "," + csv_field(body_names.at(row.body)) +
-           "," + (v.on_boundary ? "1" : "0") + "," + format_number(v.displacement.x()) + "," + format_number(v.displacement.y()) +
-           "," + format_number(s.s11) + "," + format_number(s.s22) + "," + format_number(s.s12) + "," + format_number(s.s33) + "," +
-           format_number(s.von_mises()) + "," + format_number(principal[0]) + "," + format_number(principal[1]) + "," +
-           format_number(principal[2]) + "\n";
+    table.row() << static_cast<double>(row.point) << row.line << row.distance << row.position.x() << row.position.y()
+                << body_names.at(row.body) << (v.on_boundary ? 1 : 0) << v.displacement.x() << v.displacement.y()
+                << s.s11 << s.s22 << s.s12 << s.s33 << s.von_mises() << principal[0] << principal[1] << principal[2];
   }
-  return out;
+  return table;
+}
+
+std::string probe_csv(const std::vector<ProbeRow>& rows, const std::vector<std::string>& body_names) {
+  return csv_text(probe_table(rows, body_names));
 }
 
 std::string probe_vtk(const std::vector<ProbeRow>& rows, const std::vector<std::string>& body_names,

@@ -62,8 +62,8 @@ void check_interior(const bem::InteriorSolution& solution) {
   require_size(solution.stress.size(), solution.points.size(), "the interior stress");
 }
 
-void stress_columns(Text& out, const bem::StressTensor& s) {
-  out << s.s11 << ',' << s.s22 << ',' << s.s12 << ',' << s.s33 << ',' << s.von_mises();
+void stress_columns(CsvTable::Row& row, const bem::StressTensor& s) {
+  row << s.s11 << s.s22 << s.s12 << s.s33 << s.von_mises();
 }
 
 // VTK legacy header: the title line must be one line of at most 255 characters.
@@ -326,65 +326,79 @@ std::string polyline_vtk(std::string_view title, const std::vector<Vec2>& points
   return std::move(out).str();
 }
 
-std::string boundary_csv(const geometry::BoundaryMesh& mesh, const bem::BoundarySolution& solution) {
+CsvTable boundary_table(const geometry::BoundaryMesh& mesh, const bem::BoundarySolution& solution) {
   check_boundary(mesh, solution);
-  Text out;
-  out << "node,x,y,nx,ny,u1,u2,t1,t2,s11,s22,s12,s33,von_mises,boundary\n";
+  CsvTable table({{"node", CsvTable::integer}, {"x"}, {"y"}, {"nx"}, {"ny"}, {"u1"}, {"u2"}, {"t1"}, {"t2"},
+                  {"s11"}, {"s22"}, {"s12"}, {"s33"}, {"von_mises"}, {"boundary", CsvTable::text}});
+  table.reserve(mesh.nodes.size());
   for (std::size_t i = 0; i < mesh.nodes.size(); ++i) {
     const auto& node = mesh.nodes[i];
     const Vec2& u = solution.displacement[i];
     const Vec2& t = solution.traction[i];
-    out << static_cast<Index>(i) << ',' << node.position.x() << ',' << node.position.y() << ','
-        << node.normal.x() << ',' << node.normal.y() << ',' << u.x() << ',' << u.y() << ',' << t.x()
-        << ',' << t.y() << ',';
-    stress_columns(out, solution.stress[i]);
+    auto row = table.row();
+    row << static_cast<double>(i) << node.position.x() << node.position.y() << node.normal.x() << node.normal.y()
+        << u.x() << u.y() << t.x() << t.y();
+    stress_columns(row, solution.stress[i]);
     const bool named = node.piece >= 0 && static_cast<std::size_t>(node.piece) < mesh.piece_names.size();
-    out << ',' << csv_field(named ? mesh.piece_names[node.piece] : std::string()) << '\n';
+    row << (named ? std::string_view(mesh.piece_names[node.piece]) : std::string_view());
   }
-  return std::move(out).str();
+  return table;
 }
 
-std::string interior_csv(const bem::InteriorSolution& solution) {
+CsvTable interior_table(const bem::InteriorSolution& solution) {
   check_interior(solution);
-  Text out;
-  out << "point,x,y,u1,u2,s11,s22,s12,s33,von_mises,grid_column,grid_row\n";
+  CsvTable table({{"point", CsvTable::integer}, {"x"}, {"y"}, {"u1"}, {"u2"}, {"s11"}, {"s22"}, {"s12"}, {"s33"},
+                  {"von_mises"}, {"grid_column", CsvTable::integer}, {"grid_row", CsvTable::integer}});
+  table.reserve(solution.points.size());
   for (std::size_t i = 0; i < solution.points.size(); ++i) {
     const Vec2& p = solution.points[i];
     const Vec2& u = solution.displacement[i];
     const std::array<int, 2> grid = i < solution.grid_index.size() ? solution.grid_index[i] : std::array<int, 2>{-1, -1};
-    out << static_cast<Index>(i) << ',' << p.x() << ',' << p.y() << ',' << u.x() << ',' << u.y() << ',';
-    stress_columns(out, solution.stress[i]);
-    out << ',' << grid[0] << ',' << grid[1] << '\n';
+    auto row = table.row();
+    row << static_cast<double>(i) << p.x() << p.y() << u.x() << u.y();
+    stress_columns(row, solution.stress[i]);
+    row << grid[0] << grid[1];
   }
-  return std::move(out).str();
+  return table;
 }
 
-std::string mesh_nodes_csv(const geometry::BoundaryMesh& mesh) {
-  Text out;
-  out << "node,x,y,nx,ny,piece,shifted\n";
+CsvTable mesh_nodes_table(const geometry::BoundaryMesh& mesh) {
+  CsvTable table({{"node", CsvTable::integer}, {"x"}, {"y"}, {"nx"}, {"ny"}, {"piece", CsvTable::integer},
+                  {"shifted", CsvTable::integer}});
+  table.reserve(mesh.nodes.size());
   for (std::size_t i = 0; i < mesh.nodes.size(); ++i) {
     const auto& node = mesh.nodes[i];
-    out << static_cast<Index>(i) << ',' << node.position.x() << ',' << node.position.y() << ','
-        << node.normal.x() << ',' << node.normal.y() << ',' << node.piece << ','
-        << (node.shifted ? 1 : 0) << '\n';
+    table.row() << static_cast<double>(i) << node.position.x() << node.position.y() << node.normal.x()
+                << node.normal.y() << node.piece << (node.shifted ? 1 : 0);
   }
-  return std::move(out).str();
+  return table;
 }
 
-std::string mesh_elements_csv(const geometry::BoundaryMesh& mesh) {
-  Text out;
-  out << "element,node0,node1,x_start,y_start,x_end,y_end,nx,ny,piece,node_middle\n";
+CsvTable mesh_elements_table(const geometry::BoundaryMesh& mesh) {
+  CsvTable table({{"element", CsvTable::integer}, {"node0", CsvTable::integer}, {"node1", CsvTable::integer},
+                  {"x_start"}, {"y_start"}, {"x_end"}, {"y_end"}, {"nx"}, {"ny"}, {"piece", CsvTable::integer},
+                  {"node_middle", CsvTable::integer}});
+  table.reserve(mesh.elements.size());
   for (std::size_t e = 0; e < mesh.elements.size(); ++e) {
     const auto& element = mesh.elements[e];
     const Index node1 = element.node_count > 1 ? element.nodes[1] : Index{-1};
     const Index middle = element.node_count > 2 ? element.nodes[2] : Index{-1};
-    out << static_cast<Index>(e) << ',' << element.nodes[0] << ',' << node1 << ','
-        << element.start.x() << ',' << element.start.y() << ',' << element.end.x() << ','
-        << element.end.y() << ',' << element.normal.x() << ',' << element.normal.y() << ','
-        << element.piece << ',' << middle << '\n';
+    table.row() << static_cast<double>(e) << element.nodes[0] << node1 << element.start.x() << element.start.y()
+                << element.end.x() << element.end.y() << element.normal.x() << element.normal.y() << element.piece
+                << middle;
   }
-  return std::move(out).str();
+  return table;
 }
+
+std::string boundary_csv(const geometry::BoundaryMesh& mesh, const bem::BoundarySolution& solution) {
+  return csv_text(boundary_table(mesh, solution));
+}
+
+std::string interior_csv(const bem::InteriorSolution& solution) { return csv_text(interior_table(solution)); }
+
+std::string mesh_nodes_csv(const geometry::BoundaryMesh& mesh) { return csv_text(mesh_nodes_table(mesh)); }
+
+std::string mesh_elements_csv(const geometry::BoundaryMesh& mesh) { return csv_text(mesh_elements_table(mesh)); }
 
 std::string boundary_vtk(const geometry::BoundaryMesh& mesh, const bem::BoundarySolution& solution,
                          std::string_view title) {

@@ -42,7 +42,8 @@ TEST(ContactIo, WritersHoldEveryPairAndTheSummary) {
   file.problem.increments = 2;
   const auto result = contact::solve_contact(file.problem);
   const auto files = io::contact_output_files(file.problem, result, false);
-  std::map<std::string, std::string> by_name(files.begin(), files.end());
+  std::map<std::string, std::string> by_name;
+  for (const auto& f : files) by_name[f.name] = f.text();
   ASSERT_TRUE(by_name.count("contact.csv"));
   ASSERT_TRUE(by_name.count("steps/contact_step2.csv"));  // per-step files in the sub-folder steps/
   ASSERT_TRUE(by_name.count("steps/punch_boundary_step2.csv"));

@@ -188,7 +188,7 @@ TEST(LoadHistory, RecordedStepsAreAParaViewTimeSeries) {
   const auto result = solve_contact(problem);
   ASSERT_EQ(result.step_boundary.size(), 4u);
   std::map<std::string, std::string> files;
-  for (auto& [name, content] : io::contact_output_files(problem, result)) files[name] = content;
+  for (const auto& f : io::contact_output_files(problem, result)) files[f.name] = f.text();
   ASSERT_TRUE(files.count("cylinder_boundary.pvd"));
   const std::string& pvd = files["cylinder_boundary.pvd"];
   std::size_t datasets = 0;

@@ -60,7 +60,7 @@ TEST(DdWriter, FilesHoldOneRowPerPairNodeAndIteration) {
   const auto result = dd::solve_decomposition(problem);
   const auto files = decomposition_files(result, "strips", true);
   std::vector<std::string> names;
-  for (const auto& f : files) names.push_back(f.first);
+  for (const auto& f : files) names.push_back(f.name);
   const std::vector<std::string> expected{"strip1_boundary.csv", "strip1_boundary.vtk", "strip2_boundary.csv",
                                           "strip2_boundary.vtk", "interface.csv",       "interface.vtk",
                                           "gmres.csv"};

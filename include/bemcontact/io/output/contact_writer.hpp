@@ -33,13 +33,17 @@
 
 #include <nlohmann/json.hpp>
 
-#include "bemcontact/io/output/run_summary.hpp"
 #include "bemcontact/contact/contact_solver.hpp"
 #include "bemcontact/contact/pairing.hpp"
+#include "bemcontact/io/output/csv_table.hpp"
+#include "bemcontact/io/output/run_summary.hpp"
 
 namespace bemcontact::io {
 
-
+// The CSV files as tables (io/output/csv_table.hpp; numbers written as CsvTable::compact),
+// and as their text.
+CsvTable contact_table(const std::vector<contact::PairResult>& pairs);
+CsvTable contact_steps_table(const contact::ContactInterfaceResult& result);
 std::string contact_csv(const std::vector<contact::PairResult>& pairs);
 // The same pairs as VTK vertices (<contact>.vtk): point data p_n, p_t, gap, slip_ratio,
 // jump_n, jump_t, status (0 open, 1 stick, 2 slip: field data status_names) and normal.
@@ -67,10 +71,9 @@ std::string contact_report_text(const contact::ContactProblem& problem, const co
 // Characters other than letters and digits become '_'; a name met again gets _2, _3, ...
 std::vector<std::string> motion_columns(const contact::ContactProblem& problem, const contact::ContactResult& result);
 
-// Every file of a contact run as (file name, content), summary.json left to the caller.
-std::vector<std::pair<std::string, std::string>> contact_output_files(const contact::ContactProblem& problem,
-                                                                      const contact::ContactResult& result,
-                                                                      bool vtk = true);
+// Every file of a contact run (the CSV files as tables), summary.json left to the caller.
+std::vector<OutputFile> contact_output_files(const contact::ContactProblem& problem,
+                                             const contact::ContactResult& result, bool vtk = true);
 
 // The blocks of summary.json a contact run (or bodies of regions) fills: kind, problem,
 // options (law, solver, history, mesh), mesh, results (contact, contacts), reactions,
@@ -82,7 +85,7 @@ void fill_contact_summary(RunSummary& summary, const contact::ContactProblem& pr
 // <name>_mesh_nodes.csv, <name>_mesh_elements.csv, <name>_mesh.vtk, and per contact
 // <name>_pairs.csv: pair,x1,y1,x2,y2,nx,ny,gap,weight (side 1's node, the point it faces,
 // the pair normal, the initial gap d and the node's integration weight).
-std::vector<std::pair<std::string, std::string>> contact_mesh_files(const contact::ContactProblem& problem,
-                                                                    const contact::PreparedContact& prepared);
+std::vector<OutputFile> contact_mesh_files(const contact::ContactProblem& problem,
+                                           const contact::PreparedContact& prepared);
 
 }  // namespace bemcontact::io

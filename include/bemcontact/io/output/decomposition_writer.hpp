@@ -11,25 +11,26 @@
 //   gmres.csv      iteration,relative_residual (the residual history of GMRES(m))
 // and a JSON fragment for summary.json under the key "decomposition".
 #include <string>
-#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "bemcontact/dd/solver.hpp"
+#include "bemcontact/io/output/csv_table.hpp"
 
 namespace bemcontact::io {
 
-using NamedFile = std::pair<std::string, std::string>;
-
-
+// interface.csv and gmres.csv as tables (io/output/csv_table.hpp), and as their text.
+CsvTable interface_table(const dd::DecompositionResult& result);
+CsvTable gmres_history_table(const operators::GmresResult& gmres);
 std::string interface_csv(const dd::DecompositionResult& result);
 std::string interface_vtk(const dd::DecompositionResult& result, const std::string& title);
 std::string gmres_history_csv(const operators::GmresResult& gmres);
 
-// Every file of a decomposed run, in a fixed order; VTK files only when `vtk`.
-std::vector<NamedFile> decomposition_files(const dd::DecompositionResult& result, const std::string& title,
-                                           bool vtk = true);
+// Every file of a decomposed run, in a fixed order (the CSV files as tables); VTK files
+// only when `vtk`.
+std::vector<OutputFile> decomposition_files(const dd::DecompositionResult& result, const std::string& title,
+                                            bool vtk = true);
 
 // {"method", "subdomains": [{name, nodes, elements, material, reciprocal_condition}],
 //  "interfaces": [{name, subdomains, pairs, displacement_pairs, jump_u, jump_p}],

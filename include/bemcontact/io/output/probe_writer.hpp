@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "bemcontact/bem/probe.hpp"
+#include "bemcontact/io/output/csv_table.hpp"
 
 namespace bemcontact::io {
 
@@ -25,6 +26,8 @@ struct ProbeRow {
   bem::ProbeValue value;
 };
 
+// probe.csv as a table (io/output/csv_table.hpp), and as its text.
+CsvTable probe_table(const std::vector<ProbeRow>& rows, const std::vector<std::string>& body_names);
 std::string probe_csv(const std::vector<ProbeRow>& rows, const std::vector<std::string>& body_names);
 std::string probe_vtk(const std::vector<ProbeRow>& rows, const std::vector<std::string>& body_names,
                       std::string_view title);

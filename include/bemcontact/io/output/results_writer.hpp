@@ -4,11 +4,12 @@
 // none. Numbers are written with the shortest text that reads back as the same double.
 //
 // CSV files (header line, comma separated, one row per node, element or point):
-//   boundary.csv  node,x,y,nx,ny,u1,u2,t1,t2,s11,s22,s12,s33,von_mises
-//   interior.csv  point,x,y,u1,u2,s11,s22,s12,s33,von_mises,grid_column,grid_row (-1: listed)
-//   mesh.csv      node,x,y,nx,ny,piece,shifted
-//   elements.csv  element,node0,node1,x_start,y_start,x_end,y_end,nx,ny,piece
-// (node1 = -1 for constant elements; indices start at 0; components 1, 2 are x, y or r, z.)
+//   boundary.csv       node,x,y,nx,ny,u1,u2,t1,t2,s11,s22,s12,s33,von_mises,boundary (its name)
+//   interior.csv       point,x,y,u1,u2,s11,s22,s12,s33,von_mises,grid_column,grid_row (-1: listed)
+//   mesh_nodes.csv     node,x,y,nx,ny,piece,shifted
+//   mesh_elements.csv  element,node0,node1,x_start,y_start,x_end,y_end,nx,ny,piece,node_middle
+// (node1 = -1 for constant elements, node_middle = -1 but for quadratic ones; indices start
+// at 0; components 1, 2 are x, y or r, z.)
 //
 // VTK files (legacy ASCII, version 3.0, POLYDATA; z = 0):
 //   boundary.vtk  the boundary nodes as points, joined by lines in element order along
@@ -32,9 +33,15 @@
 
 #include "bemcontact/bem/solution.hpp"
 #include "bemcontact/geometry/mesh.hpp"
+#include "bemcontact/io/output/csv_table.hpp"
 
 namespace bemcontact::io {
 
+// Each CSV file as a table (io/output/csv_table.hpp), and as its text (csv_text of the table).
+CsvTable boundary_table(const geometry::BoundaryMesh& mesh, const bem::BoundarySolution& solution);
+CsvTable interior_table(const bem::InteriorSolution& solution);
+CsvTable mesh_nodes_table(const geometry::BoundaryMesh& mesh);
+CsvTable mesh_elements_table(const geometry::BoundaryMesh& mesh);
 std::string boundary_csv(const geometry::BoundaryMesh& mesh, const bem::BoundarySolution& solution);
 std::string interior_csv(const bem::InteriorSolution& solution);
 std::string mesh_nodes_csv(const geometry::BoundaryMesh& mesh);
