@@ -255,6 +255,162 @@ std::vector<PairStatus> statuses(const std::vector<ContactPair>& pairs, const St
   return out;
 }
 
+// What every step of a load history reads: the condensed problem, its pairs, their laws
+// and groups.
+struct HistoryData {
+  const CondensedProblem& condensed;
+  const std::vector<ContactPair>& pairs;
+  const ContactProblem& problem;
+  const std::vector<Index>& groups;   // the contacts' pair offsets, as given
+  std::vector<Index> all_groups;      // those, or one group of every pair
+  PairLaws laws;
+};
+
+HistoryData history_data(const CondensedProblem& condensed, const std::vector<ContactPair>& pairs,
+                         const ContactProblem& problem, const std::vector<Index>& groups) {
+  std::vector<Index> all_groups = groups.size() > 1 ? groups : std::vector<Index>{0, condensed.pairs};
+  PairLaws laws = pair_laws(problem, all_groups);
+  return {condensed, pairs, problem, groups, std::move(all_groups), std::move(laws)};
+}
+
+// The state before the first step: no force, no jump, every pair open.
+StepInput history_start(const HistoryData& data) {
+  const Index n = data.condensed.pairs;
+  StepInput start = step_input(data.condensed, 0.0);
+  start.kind = data.laws.kind;
+  start.friction = data.laws.friction;
+  start.previous_tangential_jump = Vector::Zero(n);
+  start.x_start = Vector::Zero(2 * n);
+  start.delta_start = Vector::Zero(data.condensed.motions);
+  return start;
+}
+
+// The step to t_next, from the solution at the end of the previous step.
+StepOutput solve_step(const HistoryData& data, const StepInput& previous, double t_next) {
+  StepInput input = step_input(data.condensed, t_next);
+  input.kind = data.laws.kind;
+  input.friction = data.laws.friction;
+  input.previous_tangential_jump = previous.previous_tangential_jump;
+  input.x_start = previous.x_start;
+  input.delta_start = previous.delta_start;
+  input.state_start = previous.state_start;
+  const SolverOptions& solver = data.problem.solver;
+  return solver.algorithm == Algorithm::newton ? solve_step_newton(input, solver) : solve_step_thesis(input, solver);
+}
+
+// A force that nothing carries (a tangential force without friction) leaves its body free
+// in that direction: the linear system still answers, with a motion of no physical size.
+void reject_runaway_motions(const HistoryData& data, StepOutput& trial) {
+  const auto& condensed = data.condensed;
+  const auto& problem = data.problem;
+  for (Index k = 0; k < condensed.motions && trial.converged && condensed.length_scale > 0.0; ++k)
+    if (std::abs(trial.delta[k]) > 1e3 * condensed.length_scale) {
+      trial.converged = false;
+      trial.failure = "the motion of " +
+                      (k < static_cast<Index>(problem.forces.size()) ? "load '" + problem.forces[k].name + "'"
+                                                                      : std::string("a body held by its contacts")) +
+                      " is " + format_residual(trial.delta[k]) + ", over 1000 times the size of the bodies: no contact "
+                      "carries the force in that direction";
+    }
+}
+
+[[noreturn]] void throw_no_solution(const HistoryData& data, const StepOutput& trial, double t, double t_next,
+                                    int taken) {
+  const auto& problem = data.problem;
+  std::ostringstream message;
+  message.precision(6);
+  message << "contact (" << to_string(problem.solver.algorithm) << " algorithm): no solution at pseudo-time "
+          << t_next << " (step " << taken + 1 << ", from " << t << "): " << trial.failure
+          << "; complementarity residual " << format_residual(trial.residual) << " (relative)";
+  if (!problem.forces.empty()) {
+    message << "; the force loads there:";
+    const Vector forces = data.condensed.force_at(t_next);
+    for (std::size_t k = 0; k < problem.forces.size(); ++k)
+      message << (k ? ", " : " ") << problem.forces[k].name << " = " << forces[static_cast<Index>(k)];
+    message << " (a force that no contact state can carry, such as a tangential force above the friction limit "
+               "or without friction, has no solution)";
+  }
+  throw SolverError(message.str(), {"contact step", trial.newton_iterations > 0 ? trial.newton_iterations
+                                                                                : trial.kalker_iterations,
+                                     trial.residual, taken + 1, t_next});
+}
+
+// True when some group changes the state of more pairs than the problem allows in one step.
+bool changes_too_fast(const HistoryData& data, const std::vector<PairStatus>& state,
+                      const std::vector<PairStatus>& trial_state) {
+  const auto& all_groups = data.all_groups;
+  bool too_fast = false;
+  for (std::size_t g = 0; g + 1 < all_groups.size(); ++g)
+    too_fast = too_fast ||
+               state_changes(state, trial_state, all_groups[g], all_groups[g + 1]) > data.problem.max_state_changes;
+  return too_fast;
+}
+
+// Energy dissipated by friction in the step: -sum weight tau (slip increment).
+void add_dissipation(const HistoryData& data, const StepOutput& step, const Vector& previous_tangential_jump,
+                     Vector& dissipated) {
+  const auto& all_groups = data.all_groups;
+  for (std::size_t g = 0; g + 1 < all_groups.size(); ++g)
+    for (Index i = all_groups[g]; i < all_groups[g + 1]; ++i)
+      dissipated[static_cast<Index>(g)] -=
+          data.pairs[i].weight * step.x[2 * i + 1] * (step.w[2 * i + 1] - previous_tangential_jump[i]);
+}
+
+// The accepted step at pseudo-time t in the history: all pairs, each contact's, the forces
+// and motions, and the unknowns when every step is recorded.
+void record_history_step(const HistoryData& data, const StepOutput& step, double t, const Vector& dissipated,
+                         const MotionReport& report, LoadHistory& history) {
+  const auto& condensed = data.condensed;
+  const auto& groups = data.groups;
+  const Index n = condensed.pairs;
+  const double approach = condensed.motions > 0 && condensed.force[0] != 0.0 ? step.delta[0] : 0.0;
+  const Vector interference = interference_at(data.pairs, data.problem, data.all_groups, t);
+  record_step(history, data.pairs, step, data.problem, data.laws, interference, t, approach, 0, n,
+              condensed.half_model(0, n));
+  history.steps.back().dissipated_energy = dissipated.sum();
+  for (std::size_t c = 0; c < history.contacts.size(); ++c) {
+    record_step(history.contacts[c], data.pairs, step, data.problem, data.laws, interference, t, approach, groups[c],
+                groups[c + 1], condensed.half_model(groups[c], groups[c + 1]));
+    history.contacts[c].steps.back().dissipated_energy = dissipated[static_cast<Index>(c)];
+  }
+  StepRecord record;
+  record.time = t;
+  record.forces = condensed.force_at(t);
+  record.motions = report ? report(step.x, step.delta, t) : step.delta;
+  history.records.push_back(record);
+  if (data.problem.record_steps) {
+    history.step_x.push_back(step.x);
+    history.step_delta.push_back(step.delta);
+  }
+}
+
+// The accepted step as the start of the next: its tangential jump, solution and active sets.
+void carry_over(const StepOutput& step, StepInput& previous) {
+  for (Index i = 0; i < previous.previous_tangential_jump.size(); ++i)
+    previous.previous_tangential_jump[i] = step.w[2 * i + 1];
+  previous.x_start = step.x;
+  previous.delta_start = step.delta;
+  previous.state_start = step.state;
+}
+
+// More steps than max_steps (adaptive halving without end) stop the history.
+void check_step_budget(const ContactProblem& problem, int taken, double t) {
+  if (taken > problem.max_steps)
+    throw SolverError("contact: the history needs more than max_steps = " + std::to_string(problem.max_steps) +
+                          " steps (raise max_steps in [solver])",
+                      {"load history", -1, -1.0, taken, t});
+}
+
+// The history's totals and its final solution (that of the last step).
+void finish_history(const StepOutput& step, int taken, const ContactSummary& totals, LoadHistory& history) {
+  if (history.steps.empty()) throw SolverError("contact: the load history has no step (end_time must be > 0)");
+  history.steps_taken = taken;
+  finish(history, totals);
+  for (auto& contact : history.contacts) finish(contact, totals);
+  history.x = step.x;
+  history.delta = step.delta;
+}
+
 }  // namespace
 
 LoadHistory solve_load_history(const CondensedProblem& condensed, const std::vector<ContactPair>& pairs,
@@ -265,148 +421,66 @@ LoadHistory solve_load_history(const CondensedProblem& condensed, const std::vec
   const Index n = condensed.pairs;
   LoadHistory history;
   if (groups.size() > 1) history.contacts.resize(groups.size() - 1);
-  const std::vector<Index> all_groups = groups.size() > 1 ? groups : std::vector<Index>{0, n};
+  const HistoryData data = history_data(condensed, pairs, problem, groups);
   const double end = problem.end_time;
   const auto corners = history_corners(condensed, end);
   const double base_step = end / problem.increments;
   const double min_step = end / problem.max_steps;
   // Adaptive stepping matters for friction: frictionless contact does not depend on the path.
   const bool adaptive = problem.adaptive && problem.has_friction();
-  const PairLaws laws = pair_laws(problem, all_groups);
 
-  StepInput previous = step_input(condensed, 0.0);
-  previous.kind = laws.kind;
-  previous.friction = laws.friction;
-  previous.previous_tangential_jump = Vector::Zero(n);
-  previous.x_start = Vector::Zero(2 * n);
-  previous.delta_start = Vector::Zero(condensed.motions);
+  StepInput previous = history_start(data);
   std::vector<PairStatus> state(static_cast<std::size_t>(n), PairStatus::open);
   StepOutput step;
   step.x = Vector::Zero(2 * n);
   step.delta = Vector::Zero(condensed.motions);
   ContactSummary totals;
-  Vector dissipated = Vector::Zero(static_cast<Index>(all_groups.size()) - 1);
+  Vector dissipated = Vector::Zero(static_cast<Index>(data.all_groups.size()) - 1);
   double t = 0.0, dt = base_step;
   std::size_t corner = 0;
   int taken = 0;
   while (t < end * (1.0 - 1e-12)) {
     while (corner < corners.size() && corners[corner] <= t * (1.0 + 1e-12)) ++corner;
     const double t_next = std::min(t + dt, corners[corner]);
-    StepInput input = step_input(condensed, t_next);
-    input.kind = laws.kind;
-    input.friction = laws.friction;
-    input.previous_tangential_jump = previous.previous_tangential_jump;
-    input.x_start = previous.x_start;
-    input.delta_start = previous.delta_start;
-    input.state_start = previous.state_start;
-    StepOutput trial = problem.solver.algorithm == Algorithm::newton ? solve_step_newton(input, problem.solver)
-                                                                           : solve_step_thesis(input, problem.solver);
+    StepOutput trial = solve_step(data, previous, t_next);
     add_iterations(totals, trial);
     const double h = t_next - t;
-    // A force that nothing carries (a tangential force without friction) leaves its body free
-    // in that direction: the linear system still answers, with a motion of no physical size.
-    for (Index k = 0; k < condensed.motions && trial.converged && condensed.length_scale > 0.0; ++k)
-      if (std::abs(trial.delta[k]) > 1e3 * condensed.length_scale) {
-        trial.converged = false;
-        trial.failure = "the motion of " +
-                        (k < static_cast<Index>(problem.forces.size()) ? "load '" + problem.forces[k].name + "'"
-                                                                        : std::string("a body held by its contacts")) +
-                        " is " + format_residual(trial.delta[k]) + ", over 1000 times the size of the bodies: no contact "
-                        "carries the force in that direction";
-      }
+    reject_runaway_motions(data, trial);
     if (!trial.converged && adaptive && h > 2.0 * min_step) {
       dt = 0.5 * h;  // a smaller step may converge
       continue;
     }
-    if (!trial.converged) {
-      std::ostringstream message;
-      message.precision(6);
-      message << "contact (" << to_string(problem.solver.algorithm) << " algorithm): no solution at pseudo-time "
-              << t_next << " (step " << taken + 1 << ", from " << t << "): " << trial.failure
-              << "; complementarity residual " << format_residual(trial.residual) << " (relative)";
-      if (!problem.forces.empty()) {
-        message << "; the force loads there:";
-        const Vector forces = condensed.force_at(t_next);
-        for (std::size_t k = 0; k < problem.forces.size(); ++k)
-          message << (k ? ", " : " ") << problem.forces[k].name << " = " << forces[static_cast<Index>(k)];
-        message << " (a force that no contact state can carry, such as a tangential force above the friction limit "
-                   "or without friction, has no solution)";
-      }
-      throw SolverError(message.str(), {"contact step", trial.newton_iterations > 0 ? trial.newton_iterations
-                                                                                    : trial.kalker_iterations,
-                                         trial.residual, taken + 1, t_next});
-    }
-    const auto trial_state = statuses(pairs, trial, laws);
-    if (adaptive && h > 2.0 * min_step) {
-      bool too_fast = false;
-      for (std::size_t g = 0; g + 1 < all_groups.size(); ++g)
-        too_fast = too_fast || state_changes(state, trial_state, all_groups[g], all_groups[g + 1]) > problem.max_state_changes;
-      if (too_fast) {
-        dt = 0.5 * h;
-        ++history.rejected_steps;
-        continue;
-      }
+    if (!trial.converged) throw_no_solution(data, trial, t, t_next, taken);
+    const auto trial_state = statuses(pairs, trial, data.laws);
+    if (adaptive && h > 2.0 * min_step && changes_too_fast(data, state, trial_state)) {
+      dt = 0.5 * h;
+      ++history.rejected_steps;
+      continue;
     }
     if (check_step) check_step(taken + 1, t_next, trial_state);
     step = trial;
-    // Energy dissipated by friction in the step: -sum weight tau (slip increment).
-    for (std::size_t g = 0; g + 1 < all_groups.size(); ++g)
-      for (Index i = all_groups[g]; i < all_groups[g + 1]; ++i)
-        dissipated[static_cast<Index>(g)] -=
-            pairs[i].weight * step.x[2 * i + 1] * (step.w[2 * i + 1] - previous.previous_tangential_jump[i]);
+    add_dissipation(data, step, previous.previous_tangential_jump, dissipated);
     ++taken;
     t = t_next;
     state = trial_state;
-    const double approach = condensed.motions > 0 && condensed.force[0] != 0.0 ? step.delta[0] : 0.0;
-    const Vector interference = interference_at(pairs, problem, all_groups, t);
-    record_step(history, pairs, step, problem, laws, interference, t, approach, 0, n, condensed.half_model(0, n));
-    history.steps.back().dissipated_energy = dissipated.sum();
-    for (std::size_t c = 0; c < history.contacts.size(); ++c) {
-      record_step(history.contacts[c], pairs, step, problem, laws, interference, t, approach, groups[c],
-                  groups[c + 1], condensed.half_model(groups[c], groups[c + 1]));
-      history.contacts[c].steps.back().dissipated_energy = dissipated[static_cast<Index>(c)];
-    }
-    StepRecord record;
-    record.time = t;
-    record.forces = condensed.force_at(t);
-    record.motions = report ? report(step.x, step.delta, t) : step.delta;
-    history.records.push_back(record);
-    if (problem.record_steps) {
-      history.step_x.push_back(step.x);
-      history.step_delta.push_back(step.delta);
-    }
-    for (Index i = 0; i < n; ++i) previous.previous_tangential_jump[i] = step.w[2 * i + 1];
-    previous.x_start = step.x;
-    previous.delta_start = step.delta;
-    previous.state_start = step.state;
+    record_history_step(data, step, t, dissipated, report, history);
+    carry_over(step, previous);
     // Grow again after an accepted step.
     if (adaptive && dt < base_step) dt = std::min(base_step, 2.0 * dt);
-    if (taken > problem.max_steps)
-      throw SolverError("contact: the history needs more than max_steps = " + std::to_string(problem.max_steps) +
-                            " steps (raise max_steps in [solver])",
-                        {"load history", -1, -1.0, taken, t});
+    check_step_budget(problem, taken, t);
     if (progress) progress("contact load steps", t / end);
   }
-  if (history.steps.empty()) throw SolverError("contact: the load history has no step (end_time must be > 0)");
-  history.steps_taken = taken;
-  finish(history, totals);
-  for (auto& contact : history.contacts) finish(contact, totals);
-  history.x = step.x;
-  history.delta = step.delta;
+  finish_history(step, taken, totals, history);
   return history;
 }
 
-ContactResult solve_contact(const ContactProblem& problem, const bem::ProgressCallback& progress) {
-  check_history_options(problem);  // before the bodies are assembled
-  ContactResult result;
-  auto start = Clock::now();
-  const ContactModel model(problem, progress);
-  result.timings.add("assembly, factorisation and condensation", seconds_since(start));
-  // Interior points sorted before the contact solve: a listed point outside its region is an
-  // input error at once (grid points outside are dropped and listed).
-  const auto& regions = model.prepared().regions;
+namespace {
+
+// Interior points sorted before the contact solve: a listed point outside its region is an
+// input error at once (grid points outside are dropped and listed).
+std::vector<bem::InteriorSelection> interior_selections(const ContactProblem& problem, const ContactModel& model) {
   std::vector<bem::InteriorSelection> selections;
-  for (const auto& region : regions) {
+  for (const auto& region : model.prepared().regions) {
     selections.push_back(
         bem::select_interior_points(region.mesh, problem.bodies[region.body].regions[region.region].interior_points));
     if (selections.back().listed_outside.empty()) continue;
@@ -414,58 +488,66 @@ ContactResult solve_contact(const ContactProblem& problem, const bem::ProgressCa
     throw InputError(p.where.file.empty() ? SourceLocation{problem.source_file, 0, "interior.points"} : p.where,
                      "point " + point_text(p.position) + " is not inside " + region.label);
   }
-  result.unknowns = 2 * model.condensed().pairs + model.condensed().motions;
+  return selections;
+}
 
-  start = Clock::now();
+// The free bodies' rigid motions, fitted to their boundary displacement, for the pins'
+// values (free_motions.hpp); none without free bodies. It holds on to problem and model.
+MotionReport free_motion_report(const ContactProblem& problem, const ContactModel& model) {
+  if (model.free_motions().bodies.empty()) return {};
+  return [&problem, &model](const Vector& x, const Vector& delta, double t) {
+    const Index forces = static_cast<Index>(problem.forces.size());
+    Vector motions(delta.size());
+    motions.head(forces) = delta.head(forces);
+    Index next = forces;
+    for (const auto& body : model.free_motions().bodies) {
+      std::vector<bem::BoundarySolution> solutions;
+      std::vector<const geometry::BoundaryMesh*> meshes;
+      std::vector<const std::vector<Vec2>*> displacements;
+      for (const int r : body.regions) solutions.push_back(model.region_solution(r, x, delta, t));
+      for (std::size_t k = 0; k < body.regions.size(); ++k) {
+        meshes.push_back(&model.prepared().regions[body.regions[k]].mesh);
+        displacements.push_back(&solutions[k].displacement);
+      }
+      const Vector v = rigid_motion(body, meshes, displacements, problem.analysis);
+      motions.segment(next, v.size()) = v;
+      next += v.size();
+    }
+    return motions;
+  };
+}
+
+// The load history on the model, its contacts' zones checked at every step; a failure says
+// which force loads pull the bodies apart.
+LoadHistory contact_history(const ContactProblem& problem, const ContactModel& model,
+                            const bem::ProgressCallback& progress) {
   std::vector<Index> groups;
   for (std::size_t c = 0; c <= problem.contacts.size(); ++c) groups.push_back(model.pair_offset(c));
-  // The free bodies' rigid motions, fitted to their boundary displacement, for the pins'
-  // values (free_motions.hpp).
-  const auto& free = model.free_motions();
-  MotionReport report;
-  if (!free.bodies.empty())
-    report = [&](const Vector& x, const Vector& delta, double t) {
-      const Index forces = static_cast<Index>(problem.forces.size());
-      Vector motions(delta.size());
-      motions.head(forces) = delta.head(forces);
-      Index next = forces;
-      for (const auto& body : free.bodies) {
-        std::vector<bem::BoundarySolution> solutions;
-        std::vector<const geometry::BoundaryMesh*> meshes;
-        std::vector<const std::vector<Vec2>*> displacements;
-        for (const int r : body.regions) solutions.push_back(model.region_solution(r, x, delta, t));
-        for (std::size_t k = 0; k < body.regions.size(); ++k) {
-          meshes.push_back(&model.prepared().regions[body.regions[k]].mesh);
-          displacements.push_back(&solutions[k].displacement);
-        }
-        const Vector v = rigid_motion(body, meshes, displacements, problem.analysis);
-        motions.segment(next, v.size()) = v;
-        next += v.size();
-      }
-      return motions;
-    };
-  for (const auto& body : free.bodies)
-    for (const Index mode : body.reported) result.free_motions.push_back({body.body, mode_direction(mode, problem.analysis)});
+  const MotionReport report = free_motion_report(problem, model);
   const auto check_zones = [&](int step, double time, const std::vector<PairStatus>& state) {
     check_zones_not_clipped(model, state, step, time);
   };
-  auto history = [&] {
-    try {
-      return solve_load_history(model.condensed(), model.pairs(), problem, progress, groups, check_zones, report);
-    } catch (const SolverError& error) {
-      throw SolverError(error.what() + pulling_loads_hint(model), error.failure());
-    }
-  }();
-  result.timings.add("contact iterations", seconds_since(start));
+  try {
+    return solve_load_history(model.condensed(), model.pairs(), problem, progress, groups, check_zones, report);
+  } catch (const SolverError& error) {
+    throw SolverError(error.what() + pulling_loads_hint(model), error.failure());
+  }
+}
+
+// The history's contacts and steps in the result; the first contact's also as the result's own.
+void take_history(const ContactProblem& problem, LoadHistory& history, ContactResult& result) {
   result.contacts = std::move(history.contacts);
   result.records = std::move(history.records);
   result.steps_taken = history.steps_taken;
   result.rejected_steps = history.rejected_steps;
   for (std::size_t c = 0; c < result.contacts.size(); ++c) result.contacts[c].name = problem.contacts[c].name;
   if (!result.contacts.empty()) static_cast<ContactInterfaceResult&>(result) = result.contacts.front();
+}
 
-  start = Clock::now();
-  result.warnings = model.prepared().warnings;
+// Every region's mesh and final boundary solution, with stresses and resultants.
+void add_region_boundaries(const ContactProblem& problem, const ContactModel& model, const LoadHistory& history,
+                           ContactResult& result) {
+  const auto& regions = model.prepared().regions;
   for (std::size_t r = 0; r < regions.size(); ++r) {
     const auto& region = regions[r];
     const auto& body = problem.bodies[region.body];
@@ -481,6 +563,12 @@ ContactResult solve_contact(const ContactProblem& problem, const bem::ProgressCa
         bem::boundary_resultants(region.mesh, boundary, body.regions[region.region].body, problem.analysis);
     result.boundary.push_back(std::move(boundary));
   }
+}
+
+// When every step is recorded: the regions' boundary solutions at each step, with stresses.
+void add_step_boundaries(const ContactProblem& problem, const ContactModel& model, const LoadHistory& history,
+                         ContactResult& result) {
+  const auto& regions = model.prepared().regions;
   for (std::size_t k = 0; k < history.step_x.size(); ++k) {
     std::vector<bem::BoundarySolution> regions_at_step;
     for (std::size_t r = 0; r < regions.size(); ++r) {
@@ -492,8 +580,13 @@ ContactResult solve_contact(const ContactProblem& problem, const bem::ProgressCa
     }
     result.step_boundary.push_back(std::move(regions_at_step));
   }
-  result.timings.add("boundary stresses", seconds_since(start));
-  start = Clock::now();
+}
+
+// The interior points of every region that lists some; false when none does.
+bool add_interior_values(const ContactProblem& problem, const ContactModel& model,
+                         std::vector<bem::InteriorSelection>& selections, const bem::ProgressCallback& progress,
+                         ContactResult& result) {
+  const auto& regions = model.prepared().regions;
   bool any_interior = false;
   result.interior.resize(regions.size());
   for (std::size_t r = 0; r < regions.size(); ++r) {
@@ -505,7 +598,35 @@ ContactResult solve_contact(const ContactProblem& problem, const bem::ProgressCa
     result.interior[r] =
         bem::interior_values(result.meshes[r], integrator, result.boundary[r], std::move(selections[r]), progress);
   }
-  if (any_interior) result.timings.add("interior points", seconds_since(start));
+  return any_interior;
+}
+
+}  // namespace
+
+ContactResult solve_contact(const ContactProblem& problem, const bem::ProgressCallback& progress) {
+  check_history_options(problem);  // before the bodies are assembled
+  ContactResult result;
+  auto start = Clock::now();
+  const ContactModel model(problem, progress);
+  result.timings.add("assembly, factorisation and condensation", seconds_since(start));
+  std::vector<bem::InteriorSelection> selections = interior_selections(problem, model);
+  result.unknowns = 2 * model.condensed().pairs + model.condensed().motions;
+
+  start = Clock::now();
+  for (const auto& body : model.free_motions().bodies)
+    for (const Index mode : body.reported) result.free_motions.push_back({body.body, mode_direction(mode, problem.analysis)});
+  LoadHistory history = contact_history(problem, model, progress);
+  result.timings.add("contact iterations", seconds_since(start));
+  take_history(problem, history, result);
+
+  start = Clock::now();
+  result.warnings = model.prepared().warnings;
+  add_region_boundaries(problem, model, history, result);
+  add_step_boundaries(problem, model, history, result);
+  result.timings.add("boundary stresses", seconds_since(start));
+  start = Clock::now();
+  if (add_interior_values(problem, model, selections, progress, result))
+    result.timings.add("interior points", seconds_since(start));
   return result;
 }
 

@@ -50,6 +50,166 @@ std::vector<Index> independent_rows(const Matrix& rows, Index count) {
   return taken;
 }
 
+// The rows of a list, as a matrix of `columns` columns.
+Matrix stacked_rows(const std::vector<Eigen::RowVectorXd>& rows, Index columns) {
+  Matrix out(static_cast<Index>(rows.size()), columns);
+  for (std::size_t k = 0; k < rows.size(); ++k) out.row(static_cast<Index>(k)) = rows[k];
+  return out;
+}
+
+// The body's centre (mean of its nodes) and size, the rotation's scale.
+void body_centre_and_scale(const PreparedContact& prepared, const std::vector<int>& members, Vec2& centre,
+                           double& scale) {
+  centre = Vec2::Zero();
+  scale = 0.0;
+  Index count = 0;
+  for (const int r : members) {
+    for (const auto& node : prepared.regions[r].mesh.nodes) centre += node.position, ++count;
+    scale = std::max(scale, prepared.regions[r].mesh.scale);
+  }
+  centre /= static_cast<double>(count);
+}
+
+// The modes a region holds, as rows: every prescribed displacement component (platens
+// included), point constraint and symmetry line.
+void add_held_rows(const PreparedRegion& region, const std::vector<bem::NodeCondition>& conditions, const Vec2& centre,
+                   double scale, AnalysisType type, std::vector<Eigen::RowVectorXd>& rows) {
+  const Index mode_count = type == AnalysisType::axisymmetric ? 1 : 3;
+  for (Index i = 0; i < region.mesh.node_count(); ++i)
+    for (int c = 0; c < 2; ++c)
+      if (conditions[i].kind[c] == bem::ConditionKind::displacement) {
+        const Vec2 direction = conditions[i].frame.col(c);
+        rows.push_back(direction.transpose() * modes_at(region.mesh.nodes[i].position, centre, scale, type));
+      }
+  for (const auto& constraint : region.definition.constraints)
+    for (int c = 0; c < 2; ++c)
+      if (constraint.displacement[c]) rows.push_back(modes_at(constraint.position, centre, scale, type).row(c));
+  // Symmetry lines hold every motion the body's images do not repeat (geometry/symmetry.hpp):
+  // a translation t with S t != t, and the rotation.
+  for (const auto& image : region.mesh.images) {
+    const Mat2 antisymmetric = Mat2::Identity() - image.matrix;
+    for (int c = 0; c < 2; ++c) {
+      Eigen::RowVectorXd row = Eigen::RowVectorXd::Zero(mode_count);
+      if (type == AnalysisType::axisymmetric) row[0] = antisymmetric(c, 1);
+      else row.head(2) = antisymmetric.row(c);
+      rows.push_back(row);
+    }
+    if (type != AnalysisType::axisymmetric) rows.push_back(Eigen::RowVector3d(0.0, 0.0, 1.0));
+  }
+}
+
+// The contacts must hold every free motion: some pair normal along it.
+void check_contacts_hold(const ContactProblem& problem, const std::vector<ContactPair>& pairs,
+                         const std::vector<Index>& pair_offsets, const FreeBody& body) {
+  const AnalysisType type = problem.analysis;
+  const std::size_t b = static_cast<std::size_t>(body.body);
+  std::vector<Eigen::RowVectorXd> normals;
+  for (std::size_t c = 0; c < problem.contacts.size(); ++c) {
+    const auto& contact = problem.contacts[c];
+    if (contact.side1.body != body.body && contact.side2.body != body.body) continue;
+    // A self-contact moves with its body: its jumps see none of the body's rigid motions.
+    if (contact.side1.body == contact.side2.body) continue;
+    for (Index g = pair_offsets[c]; g < pair_offsets[c + 1]; ++g)
+      normals.push_back(pairs[g].normal.transpose() * modes_at(pairs[g].position1, body.centre, body.scale, type) *
+                        body.free);
+  }
+  const Matrix unheld = null_space(stacked_rows(normals, body.free.cols()), body.free.cols());
+  if (unheld.cols() == 0) return;
+  Vector motion = body.free * unheld.col(0);
+  Index dominant = 0;
+  motion.cwiseAbs().maxCoeff(&dominant);
+  throw SolverError("body '" + problem.bodies[b].name + "' is free to move: " + mode_name(dominant, type) +
+                    " is held neither by its conditions nor by its contacts; prescribe a displacement that "
+                    "stops it (a symmetry line, a clamped boundary, a point constraint) or press the body with a "
+                    "force load",
+                    {"free body"});
+}
+
+// A displacement component that may pin a free motion: its row in the free modes.
+struct PinCandidate {
+  int region;
+  Index node;
+  int component;
+  Eigen::RowVectorXd row;
+};
+
+// The nodes of region `member` of body b that cannot hold a pin: contact, bond and platen
+// nodes.
+std::vector<bool> unpinnable_nodes(const ContactProblem& problem, const PreparedContact& prepared, std::size_t b,
+                                   int member) {
+  const auto& region = prepared.regions[member];
+  std::vector<bool> excluded(region.mesh.node_count(), false);
+  for (const auto& contact : prepared.contacts) {
+    if (contact.region1 == member)
+      for (const auto& pair : contact.pairs) excluded[pair.node1] = true;
+    if (contact.region2 == member)
+      for (const Index node : contact.zone_nodes2) excluded[node] = true;
+  }
+  const auto& sub = problem.bodies[b].regions[region.region];
+  for (std::size_t p = 0; p < sub.piece_interface.size(); ++p)
+    if (!sub.piece_interface[p].empty())
+      for (const Index node : region.mesh.piece_nodes[p]) excluded[node] = true;
+  return excluded;
+}
+
+// Every traction component of the body's free boundary nodes (not on the axis, in the
+// global frame, not shifted), region after region.
+std::vector<PinCandidate> pin_candidates(const ContactProblem& problem, const PreparedContact& prepared,
+                                         const FreeBody& body,
+                                         const std::vector<std::vector<bem::NodeCondition>>& conditions) {
+  const auto& members = body.regions;
+  std::vector<PinCandidate> candidates;
+  for (std::size_t k = 0; k < members.size(); ++k) {
+    const auto& region = prepared.regions[members[k]];
+    const std::vector<bool> excluded =
+        unpinnable_nodes(problem, prepared, static_cast<std::size_t>(body.body), members[k]);
+    for (Index i = 0; i < region.mesh.node_count(); ++i) {
+      const auto& condition = conditions[k][i];
+      if (excluded[i] || condition.on_axis || !condition.frame.isIdentity() || region.mesh.nodes[i].shifted) continue;
+      for (int c = 0; c < 2; ++c)
+        if (condition.kind[c] == bem::ConditionKind::traction)
+          candidates.push_back(
+              {members[k], i, c,
+               modes_at(region.mesh.nodes[i].position, body.centre, body.scale, problem.analysis).row(c) * body.free});
+    }
+  }
+  return candidates;
+}
+
+// Pin the free motions: one displacement component per motion, chosen greedily for
+// independence among the candidates.
+void add_pins(const ContactProblem& problem, const PreparedContact& prepared, const FreeBody& body,
+              const std::vector<PinCandidate>& candidates, std::vector<FreeMotionConstraint>& pins) {
+  const auto& name = problem.bodies[static_cast<std::size_t>(body.body)].name;
+  const Index f = body.free.cols();
+  Matrix chosen(0, f);
+  for (Index m = 0; m < f; ++m) {
+    // The candidate with the largest part outside the rows chosen so far.
+    const Matrix basis = chosen.rows() > 0 ? Matrix(chosen.transpose().householderQr().householderQ() *
+                                                    Matrix::Identity(f, chosen.rows()))
+                                           : Matrix(f, 0);
+    double best = 0.0;
+    int best_k = -1;
+    for (std::size_t k = 0; k < candidates.size(); ++k) {
+      Vector v = candidates[k].row.transpose();
+      if (basis.cols() > 0) v -= basis * (basis.transpose() * v);
+      if (v.norm() > best * (1.0 + 1e-12)) best = v.norm(), best_k = static_cast<int>(k);
+    }
+    if (best_k < 0 || best < 1e-6)
+      throw SolverError("body '" + name + "' is free to move (" + mode_name(m, problem.analysis) +
+                        ") and has no free boundary node to pin the motion at");
+    const auto& pick = candidates[best_k];
+    chosen.conservativeResize(chosen.rows() + 1, Eigen::NoChange);
+    chosen.row(chosen.rows() - 1) = pick.row;
+    FreeMotionConstraint pin;
+    pin.region = pick.region;
+    pin.constraint.position = prepared.regions[pick.region].mesh.nodes[pick.node].position;
+    pin.constraint.displacement[pick.component] = 0.0;
+    pin.constraint.label = "free motion of body '" + name + "'";
+    pins.push_back(pin);
+  }
+}
+
 }  // namespace
 
 const char* mode_name(Index mode, AnalysisType type) {
@@ -70,129 +230,23 @@ FreeMotions free_motions(const ContactProblem& problem, const PreparedContact& p
   for (std::size_t b = 0; b < problem.bodies.size(); ++b) {
     const auto& members = prepared.body_regions[b];
     if (members.empty()) continue;
-    // The body's size and centre (the rotation's scale).
-    Vec2 centre = Vec2::Zero();
+    Vec2 centre;
     double scale = 0.0;
-    Index count = 0;
-    for (const int r : members) {
-      for (const auto& node : prepared.regions[r].mesh.nodes) centre += node.position, ++count;
-      scale = std::max(scale, prepared.regions[r].mesh.scale);
-    }
-    centre /= static_cast<double>(count);
-    // Rows: every prescribed displacement component (platens included) and point constraint.
+    body_centre_and_scale(prepared, members, centre, scale);
+    // The modes the body's conditions hold, and those they leave free.
     std::vector<Eigen::RowVectorXd> rows;
     std::vector<std::vector<bem::NodeCondition>> conditions;
     for (const int r : members) {
       const auto& region = prepared.regions[r];
       conditions.push_back(bem::resolve_node_conditions(region.mesh, region.definition, type));
-      for (Index i = 0; i < region.mesh.node_count(); ++i)
-        for (int c = 0; c < 2; ++c)
-          if (conditions.back()[i].kind[c] == bem::ConditionKind::displacement) {
-            const Vec2 direction = conditions.back()[i].frame.col(c);
-            rows.push_back(direction.transpose() * modes_at(region.mesh.nodes[i].position, centre, scale, type));
-          }
-      for (const auto& constraint : region.definition.constraints)
-        for (int c = 0; c < 2; ++c)
-          if (constraint.displacement[c]) rows.push_back(modes_at(constraint.position, centre, scale, type).row(c));
-      // Symmetry lines hold every motion the body's images do not repeat (geometry/symmetry.hpp):
-      // a translation t with S t != t, and the rotation.
-      for (const auto& image : region.mesh.images) {
-        const Mat2 antisymmetric = Mat2::Identity() - image.matrix;
-        for (int c = 0; c < 2; ++c) {
-          Eigen::RowVectorXd row = Eigen::RowVectorXd::Zero(mode_count);
-          if (type == AnalysisType::axisymmetric) row[0] = antisymmetric(c, 1);
-          else row.head(2) = antisymmetric.row(c);
-          rows.push_back(row);
-        }
-        if (type != AnalysisType::axisymmetric) rows.push_back(Eigen::RowVector3d(0.0, 0.0, 1.0));
-      }
+      add_held_rows(region, conditions.back(), centre, scale, type, rows);
     }
-    Matrix held(static_cast<Index>(rows.size()), mode_count);
-    for (std::size_t k = 0; k < rows.size(); ++k) held.row(static_cast<Index>(k)) = rows[k];
-    const Matrix free = null_space(held, mode_count);  // modes x f
+    const Matrix free = null_space(stacked_rows(rows, mode_count), mode_count);  // modes x f
     if (free.cols() == 0) continue;
     out.bodies.push_back({static_cast<int>(b), members, centre, scale, free, independent_rows(free, free.cols())});
-
-    // The contacts must hold every free motion: some pair normal along it.
-    std::vector<Eigen::RowVectorXd> normals;
-    for (std::size_t c = 0; c < problem.contacts.size(); ++c) {
-      const auto& contact = problem.contacts[c];
-      if (contact.side1.body != static_cast<int>(b) && contact.side2.body != static_cast<int>(b)) continue;
-      // A self-contact moves with its body: its jumps see none of the body's rigid motions.
-      if (contact.side1.body == contact.side2.body) continue;
-      for (Index g = pair_offsets[c]; g < pair_offsets[c + 1]; ++g)
-        normals.push_back(pairs[g].normal.transpose() * modes_at(pairs[g].position1, centre, scale, type) * free);
-    }
-    Matrix contact_rows(static_cast<Index>(normals.size()), free.cols());
-    for (std::size_t k = 0; k < normals.size(); ++k) contact_rows.row(static_cast<Index>(k)) = normals[k];
-    const Matrix unheld = null_space(contact_rows, free.cols());
-    if (unheld.cols() > 0) {
-      Vector motion = free * unheld.col(0);
-      Index dominant = 0;
-      motion.cwiseAbs().maxCoeff(&dominant);
-      throw SolverError("body '" + problem.bodies[b].name + "' is free to move: " + mode_name(dominant, type) +
-                        " is held neither by its conditions nor by its contacts; prescribe a displacement that "
-                        "stops it (a symmetry line, a clamped boundary, a point constraint) or press the body with a "
-                        "force load",
-                        {"free body"});
-    }
-
-    // Pin the free motions: one displacement component per motion, at nodes that carry
-    // tractions (not contact, bond or platen nodes), chosen greedily for independence.
-    struct Candidate {
-      int region;
-      Index node;
-      int component;
-      Eigen::RowVectorXd row;
-    };
-    std::vector<Candidate> candidates;
-    for (std::size_t k = 0; k < members.size(); ++k) {
-      const auto& region = prepared.regions[members[k]];
-      std::vector<bool> excluded(region.mesh.node_count(), false);
-      for (const auto& contact : prepared.contacts) {
-        if (contact.region1 == members[k])
-          for (const auto& pair : contact.pairs) excluded[pair.node1] = true;
-        if (contact.region2 == members[k])
-          for (const Index node : contact.zone_nodes2) excluded[node] = true;
-      }
-      const auto& sub = problem.bodies[b].regions[region.region];
-      for (std::size_t p = 0; p < sub.piece_interface.size(); ++p)
-        if (!sub.piece_interface[p].empty())
-          for (const Index node : region.mesh.piece_nodes[p]) excluded[node] = true;
-      for (Index i = 0; i < region.mesh.node_count(); ++i) {
-        const auto& condition = conditions[k][i];
-        if (excluded[i] || condition.on_axis || !condition.frame.isIdentity() || region.mesh.nodes[i].shifted) continue;
-        for (int c = 0; c < 2; ++c)
-          if (condition.kind[c] == bem::ConditionKind::traction)
-            candidates.push_back({members[k], i, c, modes_at(region.mesh.nodes[i].position, centre, scale, type).row(c) * free});
-      }
-    }
-    Matrix chosen(0, free.cols());
-    for (Index m = 0; m < free.cols(); ++m) {
-      // The candidate with the largest part outside the rows chosen so far.
-      const Matrix basis = chosen.rows() > 0 ? Matrix(chosen.transpose().householderQr().householderQ() *
-                                                      Matrix::Identity(free.cols(), chosen.rows()))
-                                             : Matrix(free.cols(), 0);
-      double best = 0.0;
-      int best_k = -1;
-      for (std::size_t k = 0; k < candidates.size(); ++k) {
-        Vector v = candidates[k].row.transpose();
-        if (basis.cols() > 0) v -= basis * (basis.transpose() * v);
-        if (v.norm() > best * (1.0 + 1e-12)) best = v.norm(), best_k = static_cast<int>(k);
-      }
-      if (best_k < 0 || best < 1e-6)
-        throw SolverError("body '" + problem.bodies[b].name + "' is free to move (" + mode_name(m, type) +
-                          ") and has no free boundary node to pin the motion at");
-      const auto& pick = candidates[best_k];
-      chosen.conservativeResize(chosen.rows() + 1, Eigen::NoChange);
-      chosen.row(chosen.rows() - 1) = pick.row;
-      FreeMotionConstraint pin;
-      pin.region = pick.region;
-      pin.constraint.position = prepared.regions[pick.region].mesh.nodes[pick.node].position;
-      pin.constraint.displacement[pick.component] = 0.0;
-      pin.constraint.label = "free motion of body '" + problem.bodies[b].name + "'";
-      out.pins.push_back(pin);
-    }
+    const FreeBody& body = out.bodies.back();
+    check_contacts_hold(problem, pairs, pair_offsets, body);
+    add_pins(problem, prepared, body, pin_candidates(problem, prepared, body, conditions), out.pins);
   }
   return out;
 }

@@ -66,6 +66,181 @@ double complementarity_residual(const StepInput& in, const Vector& x, const Vect
   return worst;
 }
 
+namespace {
+
+// Per dof, the active sets: lambda_n 0 open / 1 contact; tau 0 (frictionless, on the axis,
+// open), 1 stick, 2 / 3 slip with tau = +g / -g.
+using ActiveSets = std::vector<int>;
+
+// With no pair in contact, a force needs a contact to go through, and a free body a contact
+// on each side: the closest pair of every contact, among the pairs that carry force (the
+// node on the axis of a quadratic element has zero weight: its shape function times r
+// integrates to 0).
+void close_nearest_pairs(const CondensedProblem& p, const Vector& w, ActiveSets& state) {
+  const double carrying = 1e-3 * p.f.cwiseAbs().maxCoeff();
+  const auto groups = pair_groups(p);
+  // All pairs at the closest distance (to round-off) go in: a flat face touches along
+  // its whole width, which a rotation of the body needs to be determined.
+  const double tie = 1e-9 * p.length_scale;
+  for (std::size_t g = 0; g + 1 < groups.size(); ++g) {
+    Index closest = -1;
+    for (Index i = groups[g]; i < groups[g + 1]; ++i)
+      if (p.f.col(2 * i).cwiseAbs().maxCoeff() > carrying &&
+          (closest < 0 || p.gap[i] - w[2 * i] < p.gap[closest] - w[2 * closest]))
+        closest = i;
+    if (closest < 0) continue;
+    for (Index i = groups[g]; i < groups[g + 1]; ++i)
+      if (p.f.col(2 * i).cwiseAbs().maxCoeff() > carrying &&
+          p.gap[i] - w[2 * i] <= p.gap[closest] - w[2 * closest] + tie)
+        state[2 * i] = 1;
+  }
+}
+
+// Active sets from the current iterate (x, its jump w).
+ActiveSets active_sets(const StepInput& in, const Vector& x, const Vector& w, double c, bool first_iteration) {
+  const auto& p = *in.problem;
+  const Index n = p.pairs;
+  ActiveSets state(2 * n, 0);
+  bool any_active = false;
+  for (Index i = 0; i < n; ++i) {
+    const double lambda = x[2 * i];
+    const bool active = in.kind[i] == ContactKind::bilateral || lambda - c * (p.gap[i] - w[2 * i]) > 0.0;
+    state[2 * i] = active ? 1 : 0;
+    any_active = any_active || active;
+  }
+  if (!any_active && p.motions > 0) close_nearest_pairs(p, w, state);
+  for (Index i = 0; i < n; ++i) {
+    const double lambda = x[2 * i], tau = x[2 * i + 1];
+    if (p.on_axis[i] || in.friction[i] == 0.0 || state[2 * i] == 0) {
+      state[2 * i + 1] = 0;  // tau = 0
+      continue;
+    }
+    const double g = threshold(in, i, lambda);
+    const double z = tau - c * (w[2 * i + 1] - in.previous_tangential_jump[i]);
+    // A pair just closing (lambda = 0: g = 0, z = 0) starts sticking.
+    if (std::abs(z) <= g) state[2 * i + 1] = 1;  // stick
+    else state[2 * i + 1] = z >= 0.0 ? 2 : 3;   // slip, tau = +g or -g
+  }
+  if (first_iteration && in.state_start.size() == state.size()) {
+    // Warm start: pairs in contact at the end of the previous step keep their sets.
+    for (Index i = 0; i < n; ++i)
+      if (in.state_start[2 * i] == 1) {
+        state[2 * i] = 1;
+        state[2 * i + 1] = in.state_start[2 * i + 1];
+      }
+  }
+  return state;
+}
+
+// The Newton system in the unknowns that are not fixed by their own row: lambda_n of the
+// pairs in contact, tau of the sticking pairs, delta. The others are eliminated:
+// lambda_n = 0 (open), tau = 0 (frictionless, on the axis), tau = +-beta lambda_n (slip),
+// whose column joins lambda_n's. Rows: w_n = d (contact), no slip increment (stick), the
+// force.
+struct NewtonSystem {
+  std::vector<Index> free_dofs;
+  Vector slip_factor;  // tau_i = slip_factor_i lambda_i when slipping
+  Matrix J;
+  Vector rhs;
+};
+
+// The unknowns the system keeps, and the slip factors of the eliminated slipping tau.
+void choose_free_unknowns(const StepInput& in, const Vector& x, const ActiveSets& state, NewtonSystem& system) {
+  const Index n = in.problem->pairs;
+  system.slip_factor = Vector::Zero(n);
+  for (Index i = 0; i < n; ++i) {
+    if (state[2 * i] == 1) system.free_dofs.push_back(2 * i);
+    if (state[2 * i + 1] == 1) system.free_dofs.push_back(2 * i + 1);
+    if (state[2 * i + 1] >= 2) {
+      const double s = state[2 * i + 1] == 2 ? 1.0 : -1.0;
+      const double sigma = in.kind[i] == ContactKind::bilateral && x[2 * i] < 0.0 ? -1.0 : 1.0;
+      system.slip_factor[i] = in.friction[i] * s * sigma;
+    }
+  }
+}
+
+NewtonSystem newton_system(const StepInput& in, const Vector& x, const ActiveSets& state) {
+  const auto& p = *in.problem;
+  NewtonSystem system;
+  choose_free_unknowns(in, x, state, system);
+  const auto& free_dofs = system.free_dofs;
+  const Index reduced = static_cast<Index>(free_dofs.size());
+  const Index K = p.motions;
+  const Index system_size = reduced + K;
+  // Entry of a row of (M | f) in the column of free unknown `dof`, with the slip column
+  // tau = slip_factor lambda folded into lambda's.
+  auto folded = [&](auto&& entry, Index dof) {
+    const double slip = dof % 2 == 0 ? system.slip_factor[dof / 2] : 0.0;
+    return slip != 0.0 ? entry(dof) + slip * entry(dof + 1) : entry(dof);
+  };
+  Matrix& J = system.J;
+  Vector& rhs = system.rhs;
+  J.resize(system_size, system_size);
+  rhs.resize(system_size);
+  for (Index k = 0; k < reduced; ++k) {
+    for (Index a = 0; a < reduced; ++a)
+      J(a, k) = folded([&](Index c) { return p.M(free_dofs[a], c); }, free_dofs[k]);
+    for (Index m = 0; m < K; ++m) J(reduced + m, k) = folded([&](Index c) { return p.f(m, c); }, free_dofs[k]);
+  }
+  for (Index a = 0; a < reduced; ++a) {
+    const Index row = free_dofs[a], i = row / 2;
+    for (Index m = 0; m < K; ++m) J(a, reduced + m) = p.b(row, m);
+    rhs[a] = (row % 2 == 0 ? p.gap[i] : in.previous_tangential_jump[i]) - in.jump0[row];
+  }
+  for (Index m = 0; m < K; ++m) {
+    for (Index l = 0; l < K; ++l) J(reduced + m, reduced + l) = p.f_delta(m, l);
+    rhs[reduced + m] = in.target[m];
+  }
+  return system;
+}
+
+// Solves the Newton system into z; false when it is singular (or the solution does not
+// satisfy it). LAPACK through DenseLU: the dense solve is the cost of an iteration, at
+// BLAS-3 speed.
+bool solve_newton_system(const NewtonSystem& system, Vector& z) {
+  const Matrix& J = system.J;
+  const Vector& rhs = system.rhs;
+  if (J.rows() == 0) return true;
+  bool singular = false;
+  try {
+    z = operators::DenseLU(J, "the Newton system").solve(rhs);
+  } catch (const SolverError&) {
+    singular = true;
+  }
+  singular = singular || !z.allFinite() ||
+             (J * z - rhs).norm() > 1e-6 * (rhs.norm() + 1e-300) + 1e-12 * J.norm() * z.norm();
+  return !singular;
+}
+
+// The iterate of the Newton solution z, the eliminated tau restored.
+void newton_iterate(const NewtonSystem& system, const Vector& z, Index n, Index K, Vector& x_new,
+                    Vector& delta_new) {
+  const Index reduced = static_cast<Index>(system.free_dofs.size());
+  x_new = Vector::Zero(2 * n);
+  for (Index k = 0; k < reduced; ++k) x_new[system.free_dofs[k]] = z[k];
+  for (Index i = 0; i < n; ++i)
+    if (system.slip_factor[i] != 0.0) x_new[2 * i + 1] = system.slip_factor[i] * x_new[2 * i];
+  delta_new = K > 0 ? Vector(z.tail(K)) : Vector::Zero(0);
+}
+
+// Backtracks from (x_new, delta_new) along the Newton direction from (x, delta) until the
+// residual falls below `residual` (30 halvings at most); returns the new residual.
+double backtrack(const StepInput& in, const Vector& x, const Vector& delta, double residual, Vector& x_new,
+                 Vector& delta_new, double new_residual) {
+  const Vector dx = x_new - x;
+  const Vector dd = delta_new - delta;
+  double alpha = 1.0;
+  for (int k = 0; k < 30 && new_residual >= residual; ++k) {
+    alpha *= 0.5;
+    x_new = x + alpha * dx;
+    delta_new = delta + alpha * dd;
+    new_residual = complementarity_residual(in, x_new, delta_new);
+  }
+  return new_residual;
+}
+
+}  // namespace
+
 StepOutput solve_step_newton(const StepInput& in, const SolverOptions& options) {
   const auto& p = *in.problem;
   const Index n = p.pairs;
@@ -74,140 +249,25 @@ StepOutput solve_step_newton(const StepInput& in, const SolverOptions& options) 
   Vector x = in.x_start.size() == 2 * n ? in.x_start : Vector::Zero(2 * n);
   Vector delta = in.delta_start.size() == p.motions ? in.delta_start : Vector::Zero(p.motions);
   double residual = complementarity_residual(in, x, delta);
-  std::set<std::vector<int>> seen;
+  std::set<ActiveSets> seen;
   bool damped = false;
   for (int iteration = 1; iteration <= options.max_iterations; ++iteration) {
     out.newton_iterations = iteration;
     const Vector w = relative_displacement(in, x, delta);
-    // Active sets from the current iterate.
-    std::vector<int> state(2 * n, 0);
-    bool any_active = false;
-    for (Index i = 0; i < n; ++i) {
-      const double lambda = x[2 * i];
-      const bool active = in.kind[i] == ContactKind::bilateral || lambda - c * (p.gap[i] - w[2 * i]) > 0.0;
-      state[2 * i] = active ? 1 : 0;
-      any_active = any_active || active;
-    }
-    if (!any_active && p.motions > 0) {
-      // A force needs a contact to go through, and a free body a contact on each side: the
-      // closest pair of every contact, among the pairs that carry force (the node on the
-      // axis of a quadratic element has zero weight: its shape function times r integrates
-      // to 0).
-      const double carrying = 1e-3 * p.f.cwiseAbs().maxCoeff();
-      const auto groups = pair_groups(p);
-      // All pairs at the closest distance (to round-off) go in: a flat face touches along
-      // its whole width, which a rotation of the body needs to be determined.
-      const double tie = 1e-9 * p.length_scale;
-      for (std::size_t g = 0; g + 1 < groups.size(); ++g) {
-        Index closest = -1;
-        for (Index i = groups[g]; i < groups[g + 1]; ++i)
-          if (p.f.col(2 * i).cwiseAbs().maxCoeff() > carrying &&
-              (closest < 0 || p.gap[i] - w[2 * i] < p.gap[closest] - w[2 * closest]))
-            closest = i;
-        if (closest < 0) continue;
-        for (Index i = groups[g]; i < groups[g + 1]; ++i)
-          if (p.f.col(2 * i).cwiseAbs().maxCoeff() > carrying &&
-              p.gap[i] - w[2 * i] <= p.gap[closest] - w[2 * closest] + tie)
-            state[2 * i] = 1;
-      }
-    }
-    for (Index i = 0; i < n; ++i) {
-      const double lambda = x[2 * i], tau = x[2 * i + 1];
-      if (p.on_axis[i] || in.friction[i] == 0.0 || state[2 * i] == 0) {
-        state[2 * i + 1] = 0;  // tau = 0
-        continue;
-      }
-      const double g = threshold(in, i, lambda);
-      const double z = tau - c * (w[2 * i + 1] - in.previous_tangential_jump[i]);
-      // A pair just closing (lambda = 0: g = 0, z = 0) starts sticking.
-      if (std::abs(z) <= g) state[2 * i + 1] = 1;  // stick
-      else state[2 * i + 1] = z >= 0.0 ? 2 : 3;   // slip, tau = +g or -g
-    }
-    if (iteration == 1 && in.state_start.size() == state.size()) {
-      // Warm start: pairs in contact at the end of the previous step keep their sets.
-      for (Index i = 0; i < n; ++i)
-        if (in.state_start[2 * i] == 1) {
-          state[2 * i] = 1;
-          state[2 * i + 1] = in.state_start[2 * i + 1];
-        }
-    }
+    const ActiveSets state = active_sets(in, x, w, c, iteration == 1);
     if (!damped && !seen.insert(state).second && iteration > 2) damped = true;  // the sets cycle
-
-    // The Newton system in the unknowns that are not fixed by their own row: lambda_n of
-    // the pairs in contact, tau of the sticking pairs, delta. The others are eliminated:
-    // lambda_n = 0 (open), tau = 0 (frictionless, on the axis), tau = +-beta lambda_n
-    // (slip), whose column joins lambda_n's. Rows: w_n = d (contact), no slip increment
-    // (stick), the force.
-    std::vector<Index> free_dofs;
-    Vector slip_factor = Vector::Zero(n);      // tau_i = slip_factor_i lambda_i when slipping
-    for (Index i = 0; i < n; ++i) {
-      if (state[2 * i] == 1) free_dofs.push_back(2 * i);
-      if (state[2 * i + 1] == 1) free_dofs.push_back(2 * i + 1);
-      if (state[2 * i + 1] >= 2) {
-        const double s = state[2 * i + 1] == 2 ? 1.0 : -1.0;
-        const double sigma = in.kind[i] == ContactKind::bilateral && x[2 * i] < 0.0 ? -1.0 : 1.0;
-        slip_factor[i] = in.friction[i] * s * sigma;
-      }
-    }
-    const Index reduced = static_cast<Index>(free_dofs.size());
-    const Index K = p.motions;
-    const Index system_size = reduced + K;
-    // Entry of a row of (M | f) in the column of free unknown `dof`, with the slip column
-    // tau = slip_factor lambda folded into lambda's.
-    auto folded = [&](auto&& entry, Index dof) {
-      const double slip = dof % 2 == 0 ? slip_factor[dof / 2] : 0.0;
-      return slip != 0.0 ? entry(dof) + slip * entry(dof + 1) : entry(dof);
-    };
-    Matrix J(system_size, system_size);
-    Vector rhs(system_size);
-    for (Index k = 0; k < reduced; ++k) {
-      for (Index a = 0; a < reduced; ++a)
-        J(a, k) = folded([&](Index c) { return p.M(free_dofs[a], c); }, free_dofs[k]);
-      for (Index m = 0; m < K; ++m) J(reduced + m, k) = folded([&](Index c) { return p.f(m, c); }, free_dofs[k]);
-    }
-    for (Index a = 0; a < reduced; ++a) {
-      const Index row = free_dofs[a], i = row / 2;
-      for (Index m = 0; m < K; ++m) J(a, reduced + m) = p.b(row, m);
-      rhs[a] = (row % 2 == 0 ? p.gap[i] : in.previous_tangential_jump[i]) - in.jump0[row];
-    }
-    for (Index m = 0; m < K; ++m) {
-      for (Index l = 0; l < K; ++l) J(reduced + m, reduced + l) = p.f_delta(m, l);
-      rhs[reduced + m] = in.target[m];
-    }
-    // LAPACK through DenseLU: the dense solve is the cost of an iteration, at BLAS-3 speed.
+    const NewtonSystem system = newton_system(in, x, state);
     Vector z;
-    bool singular = false;
-    if (system_size > 0) {
-      try {
-        z = operators::DenseLU(J, "the Newton system").solve(rhs);
-      } catch (const SolverError&) {
-        singular = true;
-      }
-      singular = singular || !z.allFinite() ||
-                 (J * z - rhs).norm() > 1e-6 * (rhs.norm() + 1e-300) + 1e-12 * J.norm() * z.norm();
-    }
-    if (singular) {
+    if (!solve_newton_system(system, z)) {
       out.failure = "the Newton system of iteration " + std::to_string(iteration) +
                     " is singular (no pair in contact can carry the load?)";
       break;
     }
-    Vector x_new = Vector::Zero(2 * n);
-    for (Index k = 0; k < reduced; ++k) x_new[free_dofs[k]] = z[k];
-    for (Index i = 0; i < n; ++i)
-      if (slip_factor[i] != 0.0) x_new[2 * i + 1] = slip_factor[i] * x_new[2 * i];
-    Vector delta_new = K > 0 ? Vector(z.tail(K)) : Vector::Zero(0);
+    Vector x_new, delta_new;
+    newton_iterate(system, z, n, p.motions, x_new, delta_new);
     double new_residual = complementarity_residual(in, x_new, delta_new);
-    if (damped && new_residual >= residual) {  // backtrack along the Newton direction
-      const Vector dx = x_new - x;
-      const Vector dd = delta_new - delta;
-      double alpha = 1.0;
-      for (int k = 0; k < 30 && new_residual >= residual; ++k) {
-        alpha *= 0.5;
-        x_new = x + alpha * dx;
-        delta_new = delta + alpha * dd;
-        new_residual = complementarity_residual(in, x_new, delta_new);
-      }
-    }
+    if (damped && new_residual >= residual)
+      new_residual = backtrack(in, x, delta, residual, x_new, delta_new, new_residual);
     x = x_new;
     delta = delta_new;
     residual = new_residual;

@@ -289,110 +289,142 @@ void build_transfer(const PreparedRegion& side1, const PreparedRegion& side2, co
                        "body 1 the coarser contact zone (swap the bodies) or refine body 2's");
 }
 
+// Side 2 of a contact as the pairing sees it: an elastic region's zone, with its nodes
+// numbered as in zone_nodes2, or a rigid body.
+struct SecondSide {
+  const PreparedRegion* region = nullptr;  // none for a rigid body
+  std::string zone;                        // its name, for messages
+  std::vector<Index> zone_index;           // mesh node -> index in zone_nodes2
+};
+
+SecondSide second_side(const ContactProblem& problem, const ContactInterface& contact,
+                       const PreparedContact& prepared, PreparedInterface& out) {
+  SecondSide side2;
+  if (problem.bodies[contact.side2.body].rigid.has_value()) {
+    out.rigid_body = contact.side2.body;
+    side2.zone = "rigid body '" + problem.bodies[out.rigid_body].name + "'";
+    return side2;
+  }
+  out.region2 = prepared.body_regions[contact.side2.body][contact.side2.region];
+  out.piece2 = contact.side2.piece;
+  side2.region = &prepared.regions[out.region2];
+  side2.zone = zone_text(*side2.region, out.piece2);
+  out.zone_nodes2 = side2.region->mesh.piece_nodes[out.piece2];
+  side2.zone_index.assign(side2.region->mesh.node_count(), -1);
+  for (std::size_t k = 0; k < out.zone_nodes2.size(); ++k) side2.zone_index[out.zone_nodes2[k]] = static_cast<Index>(k);
+  out.zone_weights2 = node_weights(side2.region->mesh, {out.piece2}, out.zone_nodes2, problem.analysis);
+  return side2;
+}
+
+// Where body 1's node is paired from. A node on an arc's chord (a split-corner node of a
+// linear element) stands for the arc point at the same parameter: the gap is taken from
+// there, so that two concentric surfaces have the same gap everywhere (the chord's sag
+// would open a shrink fit). (The arc point whose outward normal is the node's.)
+Vec2 gap_point(const geometry::BoundaryPiece& piece1, const geometry::BoundaryNode& node1) {
+  if (piece1.shape != geometry::PieceShape::arc) return node1.position;
+  return piece1.center + (piece1.counterclockwise ? 1.0 : -1.0) * geometry::arc_radius(piece1) * node1.normal;
+}
+
+// The point of side 2 that x1 (outward normal n1) faces; on an elastic side 2 the pair's
+// interpolation there too. None when x1 faces nothing.
+std::optional<geometry::PiecePoint> face_side2(const ContactProblem& problem, const ContactInterface& contact,
+                                               const PreparedInterface& out, const SecondSide& side2, const Vec2& x1,
+                                               const Vec2& n1, ContactPair& pair) {
+  if (!side2.region)
+    return project_on_contour(problem.bodies[out.rigid_body].rigid->contour, x1, n1, contact.pair_normal);
+  const auto& mesh2 = side2.region->mesh;
+  const auto projection =
+      project_on_zone(side2.region->definition.pieces[out.piece2], mesh2, out.piece2, x1, n1, contact.pair_normal);
+  if (!projection) return std::nullopt;
+  const auto& el = mesh2.elements[projection->element];
+  pair.count2 = el.node_count;
+  for (int a = 0; a < el.node_count; ++a) {
+    pair.zone2[a] = side2.zone_index[el.nodes[a]];
+    pair.shape2[a] = el.shape(a, projection->xi);
+  }
+  return projection->facing;
+}
+
+// The pair normal (V.2) and tangent at a node (outward normal n1) facing `facing`.
+void set_pair_frame(PairNormal choice, const Vec2& n1, const geometry::PiecePoint& facing, ContactPair& pair) {
+  pair.normal = choice == PairNormal::common ? Vec2((n1 - facing.outward_normal).normalized())  // (V.2)
+                : choice == PairNormal::body1 ? n1
+                                              : Vec2(-facing.outward_normal);
+  pair.tangent = Vec2(-pair.normal.y(), pair.normal.x());
+}
+
+// The pair's gap: the distance along the pair normal (V.3), at least 0 (the drawn bodies
+// must not overlap), plus the contact's prescribed initial gap.
+void set_pair_gap(const ContactInterface& contact, const geometry::BoundaryNode& node1,
+                  const geometry::PiecePoint& facing, double scale, const std::string& zone1,
+                  const std::string& zone2, ContactPair& pair) {
+  const Vec2& x1 = pair.position1;
+  pair.gap = (facing.position - x1).dot(pair.normal);  // (V.3)
+  if (pair.gap < -1e-7 * scale)
+    throw GeometryError("contact '" + contact.name + "': the bodies overlap at " + point_text(node1.position) + " on " +
+                        zone1 + ": " + zone2 + " lies " + std::to_string(-pair.gap) + " inside at " +
+                        point_text(facing.position) +
+                        "; draw the bodies without overlap (for an interference fit, at their common nominal "
+                        "surface with interference = the overlap)");
+  pair.gap = std::max(pair.gap, 0.0);
+  pair.interference = contact.interference;
+  if (contact.initial_gap) {
+    pair.gap += contact.initial_gap(x1);
+    if (!std::isfinite(pair.gap))
+      throw GeometryError("contact '" + contact.name + "': the prescribed gap is not finite at " + point_text(x1) +
+                          " on " + zone1);
+  }
+}
+
+// Linear elasticity assumes small strains: an interference of a few per cent of the
+// bodies' size is outside what the model describes.
+void warn_large_interference(const ContactInterface& contact, double size, std::vector<std::string>& warnings) {
+  if (!(contact.interference > 0.02 * size)) return;
+  std::ostringstream note;
+  note.precision(3);
+  note << "contact '" << contact.name << "': the interference " << contact.interference << " is "
+       << 100.0 * contact.interference / size << " % of the size of the bodies (" << size
+       << "); the model assumes small strains, and an overlap this large is outside it";
+  warnings.push_back(note.str());
+}
+
 PreparedInterface pair_interface(const ContactProblem& problem, const ContactInterface& contact,
                                  const PreparedContact& prepared, std::vector<std::string>& warnings) {
   PreparedInterface out;
   out.region1 = prepared.body_regions[contact.side1.body][contact.side1.region];
   out.piece1 = contact.side1.piece;
   const auto& side1 = prepared.regions[out.region1];
-  const bool rigid = problem.bodies[contact.side2.body].rigid.has_value();
-  const PreparedRegion* side2 = nullptr;
-  std::string zone2;
-  std::vector<Index> zone_index2;
-  if (rigid) {
-    out.rigid_body = contact.side2.body;
-    zone2 = "rigid body '" + problem.bodies[out.rigid_body].name + "'";
-  } else {
-    out.region2 = prepared.body_regions[contact.side2.body][contact.side2.region];
-    out.piece2 = contact.side2.piece;
-    side2 = &prepared.regions[out.region2];
-    zone2 = zone_text(*side2, out.piece2);
-    out.zone_nodes2 = side2->mesh.piece_nodes[out.piece2];
-    zone_index2.assign(side2->mesh.node_count(), -1);  // mesh node -> index in zone_nodes2
-    for (std::size_t k = 0; k < out.zone_nodes2.size(); ++k) zone_index2[out.zone_nodes2[k]] = static_cast<Index>(k);
-    out.zone_weights2 = node_weights(side2->mesh, {out.piece2}, out.zone_nodes2, problem.analysis);
-  }
+  const SecondSide side2 = second_side(problem, contact, prepared, out);
   const std::string zone1 = zone_text(side1, out.piece1);
   const auto& mesh1 = side1.mesh;
   const auto& piece1 = side1.definition.pieces[out.piece1];
   const std::vector<Index>& nodes1 = mesh1.piece_nodes[out.piece1];
   const auto weights = node_weights(mesh1, {out.piece1}, nodes1, problem.analysis);
-  const double scale = std::max(mesh1.scale, side2 ? side2->mesh.scale : 0.0);
+  const double scale = std::max(mesh1.scale, side2.region ? side2.region->mesh.scale : 0.0);
   for (std::size_t i = 0; i < nodes1.size(); ++i) {
     const auto& node1 = mesh1.nodes[nodes1[i]];
-    // A node on an arc's chord (a split-corner node of a linear element) stands for the arc
-    // point at the same parameter: the gap is taken from there, so that two concentric
-    // surfaces have the same gap everywhere (the chord's sag would open a shrink fit).
-    // (The arc point whose outward normal is the node's.)
-    const Vec2 x1 = piece1.shape == geometry::PieceShape::arc
-                        ? Vec2(piece1.center + (piece1.counterclockwise ? 1.0 : -1.0) * geometry::arc_radius(piece1) * node1.normal)
-                        : node1.position;
+    const Vec2 x1 = gap_point(piece1, node1);
     ContactPair pair;
-    geometry::PiecePoint facing;
-    if (rigid) {
-      const auto point = project_on_contour(problem.bodies[out.rigid_body].rigid->contour, x1, node1.normal,
-                                            contact.pair_normal);
-      if (!point) {
-        ++out.unpaired_nodes1;
-        continue;
-      }
-      facing = *point;
-    } else {
-      const auto projection =
-          project_on_zone(side2->definition.pieces[out.piece2], side2->mesh, out.piece2, x1, node1.normal, contact.pair_normal);
-      if (!projection) {
-        ++out.unpaired_nodes1;
-        continue;
-      }
-      facing = projection->facing;
-      const auto& el = side2->mesh.elements[projection->element];
-      pair.count2 = el.node_count;
-      for (int a = 0; a < el.node_count; ++a) {
-        pair.zone2[a] = zone_index2[el.nodes[a]];
-        pair.shape2[a] = el.shape(a, projection->xi);
-      }
+    const auto facing = face_side2(problem, contact, out, side2, x1, node1.normal, pair);
+    if (!facing) {
+      ++out.unpaired_nodes1;
+      continue;
     }
     pair.node1 = nodes1[i];
     pair.position1 = x1;
-    pair.position2 = facing.position;
-    pair.normal = contact.pair_normal == PairNormal::common ? Vec2((node1.normal - facing.outward_normal).normalized())  // (V.2)
-                  : contact.pair_normal == PairNormal::body1 ? node1.normal
-                                                             : Vec2(-facing.outward_normal);
-    pair.tangent = Vec2(-pair.normal.y(), pair.normal.x());
-    pair.gap = (facing.position - x1).dot(pair.normal);  // (V.3)
+    pair.position2 = facing->position;
+    set_pair_frame(contact.pair_normal, node1.normal, *facing, pair);
+    set_pair_gap(contact, node1, *facing, scale, zone1, side2.zone, pair);
     pair.weight = weights[i];
     pair.on_axis = problem.analysis == AnalysisType::axisymmetric && bem::node_on_axis(mesh1, pair.node1);
-    if (pair.gap < -1e-7 * scale)
-      throw GeometryError("contact '" + contact.name + "': the bodies overlap at " + point_text(node1.position) + " on " +
-                          zone1 + ": " + zone2 + " lies " + std::to_string(-pair.gap) + " inside at " +
-                          point_text(facing.position) +
-                          "; draw the bodies without overlap (for an interference fit, at their common nominal "
-                          "surface with interference = the overlap)");
-    pair.gap = std::max(pair.gap, 0.0);
-    pair.interference = contact.interference;
-    if (contact.initial_gap) {
-      pair.gap += contact.initial_gap(x1);
-      if (!std::isfinite(pair.gap))
-        throw GeometryError("contact '" + contact.name + "': the prescribed gap is not finite at " + point_text(x1) +
-                            " on " + zone1);
-    }
     out.pairs.push_back(pair);
   }
-  // Linear elasticity assumes small strains: an interference of a few per cent of the
-  // bodies' size is outside what the model describes.
-  const double size = side2 ? std::min(mesh1.scale, side2->mesh.scale) : mesh1.scale;
-  if (contact.interference > 0.02 * size) {
-    std::ostringstream note;
-    note.precision(3);
-    note << "contact '" << contact.name << "': the interference " << contact.interference << " is "
-         << 100.0 * contact.interference / size << " % of the size of the bodies (" << size
-         << "); the model assumes small strains, and an overlap this large is outside it";
-    warnings.push_back(note.str());
-  }
+  warn_large_interference(contact, side2.region ? std::min(mesh1.scale, side2.region->mesh.scale) : mesh1.scale,
+                          warnings);
   if (out.pairs.empty())
-    throw GeometryError("contact '" + contact.name + "': no node of " + zone1 + " faces " + zone2 +
+    throw GeometryError("contact '" + contact.name + "': no node of " + zone1 + " faces " + side2.zone +
                         " along the pair normal: the contact boundaries do not face each other");
-  if (side2) build_transfer(side1, *side2, contact, problem.analysis, zone_index2, out, warnings);
+  if (side2.region) build_transfer(side1, *side2.region, contact, problem.analysis, side2.zone_index, out, warnings);
   return out;
 }
 

@@ -46,13 +46,24 @@ BalancingPreconditioner::BalancingPreconditioner(const InterfaceOperator& K, con
     : K_(K), unknowns_(connectivity.unknowns) {
   // Each process builds the local parts of the subdomains it owns; the sums over processes
   // (diagonals, coarse basis, products with K) make the rest identical everywhere.
-  const Distribution& distribution = K.distribution();
   const std::size_t count = K.subdomain_count();
   locals_.resize(count);
   floating_modes_.assign(count, 0);
-  std::vector<Matrix> operators(count), modes(count);
+  std::vector<Matrix> local_operators(count), modes(count);
+  const Vector diagonal_sum = gather_locals(connectivity, analysis, local_operators, modes);
+  weight_partition_of_unity(diagonal_sum);
+  build_coarse_space(modes);
+  factor_neumann_problems(local_operators, modes);
+  share_floating_modes();
+}
+
+// R_s and Z_s of every subdomain, and K_s with |diag K_s| as the weights of those owned;
+// returns the weights' sum at each dof (over all processes).
+Vector BalancingPreconditioner::gather_locals(const Connectivity& connectivity, AnalysisType analysis,
+                                              std::vector<Matrix>& local_operators, std::vector<Matrix>& modes) {
+  const Distribution& distribution = K_.distribution();
   Vector diagonal_sum = Vector::Zero(unknowns_);
-  for (std::size_t s = 0; s < count; ++s) {
+  for (std::size_t s = 0; s < locals_.size(); ++s) {
     auto& local = locals_[s];
     const auto& slots = connectivity.slots[s];
     std::vector<Vec2> positions;
@@ -67,14 +78,19 @@ BalancingPreconditioner::BalancingPreconditioner(const InterfaceOperator& K, con
     if (slots.empty()) continue;
     modes[s] = interface_rigid_modes(positions, analysis);
     if (!distribution.owns(s)) continue;
-    operators[s] = K.local_operator(s);
-    local.weights = operators[s].diagonal().cwiseAbs();  // divided by the sums below
+    local_operators[s] = K_.local_operator(s);
+    local.weights = local_operators[s].diagonal().cwiseAbs();  // divided by the sums below
     for (std::size_t a = 0; a < local.dofs.size(); ++a)
       diagonal_sum[local.dofs[a]] += local.weights[static_cast<Index>(a)];
   }
   distribution.sum(diagonal_sum);
-  // D_s: stiffness-weighted partition of unity (every dof is shared by exactly two subdomains).
-  for (std::size_t s = 0; s < count; ++s) {
+  return diagonal_sum;
+}
+
+// D_s: stiffness-weighted partition of unity (every dof is shared by exactly two subdomains).
+void BalancingPreconditioner::weight_partition_of_unity(const Vector& diagonal_sum) {
+  const Distribution& distribution = K_.distribution();
+  for (std::size_t s = 0; s < locals_.size(); ++s) {
     auto& local = locals_[s];
     const Index k = static_cast<Index>(local.dofs.size());
     if (k == 0 || !distribution.owns(s)) continue;
@@ -83,12 +99,17 @@ BalancingPreconditioner::BalancingPreconditioner(const InterfaceOperator& K, con
       local.weights[a] = total > 0.0 ? local.weights[a] / total : 0.5;
     }
   }
-  // Coarse space: D_s Z_s of every subdomain, an orthonormal basis of their span.
+}
+
+// Coarse space: D_s Z_s of every subdomain, an orthonormal basis of their span, its image
+// under K and the coarse problem's factors.
+void BalancingPreconditioner::build_coarse_space(const std::vector<Matrix>& modes) {
+  const Distribution& distribution = K_.distribution();
   Index columns = 0;
   for (const auto& z : modes) columns += z.cols();
   Matrix W = Matrix::Zero(unknowns_, columns);
   Index column = 0;
-  for (std::size_t s = 0; s < count; ++s) {
+  for (std::size_t s = 0; s < locals_.size(); ++s) {
     const auto& local = locals_[s];
     for (Index c = 0; c < modes[s].cols(); ++c, ++column)
       if (distribution.owns(s))
@@ -97,27 +118,32 @@ BalancingPreconditioner::BalancingPreconditioner(const InterfaceOperator& K, con
   }
   distribution.sum(W);
   distribution.broadcast_from_root(W);  // the same rank and basis on every process
-  if (columns > 0) {
-    coarse_basis_ = operators::column_space(W, 1e-10);
-    const Index rank = coarse_basis_.cols();
-    coarse_image_.resize(unknowns_, rank);
-    Vector image;
-    for (Index c = 0; c < rank; ++c) {
-      K.apply(coarse_basis_.col(c), image);
-      coarse_image_.col(c) = image;
-    }
-    if (rank > 0)
-      coarse_ = operators::DenseLU(coarse_basis_.transpose() * coarse_image_,
-                                   "the balancing preconditioner's coarse problem (the subdomains' rigid motions, " +
-                                       std::to_string(rank) + " modes; a motion of the whole body held by nothing)",
-                                   1e-14);
+  if (columns == 0) return;
+  coarse_basis_ = operators::column_space(W, 1e-10);
+  const Index rank = coarse_basis_.cols();
+  coarse_image_.resize(unknowns_, rank);
+  Vector image;
+  for (Index c = 0; c < rank; ++c) {
+    K_.apply(coarse_basis_.col(c), image);
+    coarse_image_.col(c) = image;
   }
-  // Local Neumann problems, singular on a floating subdomain's rigid modes.
-  for (std::size_t s = 0; s < count; ++s) {
+  if (rank > 0)
+    coarse_ = operators::DenseLU(coarse_basis_.transpose() * coarse_image_,
+                                 "the balancing preconditioner's coarse problem (the subdomains' rigid motions, " +
+                                     std::to_string(rank) + " modes; a motion of the whole body held by nothing)",
+                                 1e-14);
+}
+
+// Local Neumann problems, singular on a floating subdomain's rigid modes: the null modes
+// fixed by Lagrange multipliers.
+void BalancingPreconditioner::factor_neumann_problems(const std::vector<Matrix>& local_operators,
+                                                      const std::vector<Matrix>& modes) {
+  const Distribution& distribution = K_.distribution();
+  for (std::size_t s = 0; s < locals_.size(); ++s) {
     auto& local = locals_[s];
     const Index k = static_cast<Index>(local.dofs.size());
     if (k == 0 || !distribution.owns(s)) continue;
-    const Matrix& Ks = operators[s];
+    const Matrix& Ks = local_operators[s];
     const double rms = Ks.norm() / std::sqrt(static_cast<double>(k));
     const auto svd = operators::right_singular_vectors(Ks * modes[s]);
     std::vector<Index> null_columns;
@@ -138,9 +164,14 @@ BalancingPreconditioner::BalancingPreconditioner(const InterfaceOperator& K, con
                                            std::to_string(s + 1) + " (singular beyond its rigid motions)",
                                        1e-14);
   }
+}
+
+// Every process's count of floating modes for the subdomains it owns, to all.
+void BalancingPreconditioner::share_floating_modes() {
+  const std::size_t count = floating_modes_.size();
   Vector floating(static_cast<Index>(count));
   for (std::size_t s = 0; s < count; ++s) floating[static_cast<Index>(s)] = floating_modes_[s];
-  distribution.sum(floating);
+  K_.distribution().sum(floating);
   for (std::size_t s = 0; s < count; ++s) floating_modes_[s] = static_cast<int>(floating[static_cast<Index>(s)]);
 }
 

@@ -98,48 +98,30 @@ void share_boundary_solutions(const Distribution& distribution, std::vector<Subd
   }
 }
 
-}  // namespace
-
-DecompositionResult solve_decomposition(const DecompositionProblem& problem, const bem::ProgressCallback& progress,
-                                        const ParallelRun& parallel) {
+void check_options(const DecompositionProblem& problem) {
   if (problem.subdomains.empty()) throw Error("solve_decomposition: no subdomains");
   if (problem.options.preconditioner == InterfacePreconditioner::balancing &&
       problem.options.method != InterfaceMethod::conforming)
     throw Error("solve_decomposition: the balancing preconditioner is for the conforming method");
-  DecompositionResult result;
-  result.method = problem.options.method;
-  result.preconditioner = problem.options.preconditioner;
-  PhaseClock clock(result.timings);
-  const std::vector<geometry::BoundaryMesh> meshes = mesh_subdomains(problem);
-  result.connectivity = build_connectivity(problem, meshes);
-  result.interface_unknowns = result.connectivity.unknowns;
-  clock.lap("mesh and interfaces");
+}
 
+// The subdomains' owners: the run's, or balanced over its processes by the cost of each
+// subdomain's LU, (2 nodes)^3.
+Distribution distribute(const ParallelRun& parallel, const std::vector<geometry::BoundaryMesh>& meshes) {
   Distribution distribution = parallel.distribution;
   if (distribution.size > 1 && distribution.owner.empty()) {
     std::vector<double> costs;
     for (const auto& mesh : meshes) costs.push_back(std::pow(2.0 * static_cast<double>(mesh.node_count()), 3));
     distribution.owner = assign_subdomains(costs, distribution.size);
   }
-  result.processes = distribution.size;
-  result.owner = distribution.owner.empty() ? std::vector<int>(meshes.size(), 0) : distribution.owner;
-  const InterfaceOperator K(problem, meshes, result.connectivity, progress, distribution);
-  result.displacement_scale = K.displacement_scale();
-  double memory = static_cast<double>(K.memory_bytes());
-  distribution.sum(&memory, 1);
-  result.factor_memory_bytes = static_cast<std::size_t>(memory);
-  clock.lap("assembly and factorisation");
+  return distribution;
+}
 
-  const Vector F = K.right_hand_side();  // Alg IV.2
-  clock.lap("right-hand side");
-  std::unique_ptr<BalancingPreconditioner> preconditioner;
-  if (problem.options.preconditioner == InterfacePreconditioner::balancing && K.rows() > 0) {
-    preconditioner = std::make_unique<BalancingPreconditioner>(K, result.connectivity, problem.analysis);
-    result.coarse_dimension = preconditioner->coarse_dimension();
-    result.floating_modes = preconditioner->floating_modes();
-    clock.lap("preconditioner");
-  }
-
+// The interface problem K u = F by GMRES (Alg IV.4), or by the run's own Krylov solver.
+operators::GmresResult solve_interface(const DecompositionProblem& problem, const InterfaceOperator& K,
+                                       const Vector& F, const BalancingPreconditioner* preconditioner,
+                                       const ParallelRun& parallel, const bem::ProgressCallback& progress) {
+  operators::GmresResult out;
   operators::GmresOptions options;
   options.restart = effective_restart(problem.options, K.rows());
   options.tolerance = problem.options.tolerance;
@@ -150,17 +132,22 @@ DecompositionResult solve_decomposition(const DecompositionProblem& problem, con
       progress("gmres", std::min(1.0, static_cast<double>(iteration) / std::max(1, options.max_iterations)));
     };
   if (K.rows() > 0) {
-    result.gmres = parallel.krylov ? parallel.krylov(K, F, options, monitor, preconditioner.get())
-                                   : operators::gmres(K, F, options, Vector(), monitor, preconditioner.get());  // Alg IV.4
+    out = parallel.krylov ? parallel.krylov(K, F, options, monitor, preconditioner)
+                          : operators::gmres(K, F, options, Vector(), monitor, preconditioner);  // Alg IV.4
   } else {
-    result.gmres.x = Vector();
-    result.gmres.status = operators::GmresStatus::converged;
-    result.gmres.message = "no interface";
-    result.gmres.residual_history = {0.0};
+    out.x = Vector();
+    out.status = operators::GmresStatus::converged;
+    out.message = "no interface";
+    out.residual_history = {0.0};
   }
   if (progress) progress("gmres", 1.0);
-  clock.lap("gmres");
+  return out;
+}
 
+// Every subdomain's boundary solution from the interface unknowns (each process those it
+// owns, then shared), with its stresses and resultants, and the jumps across the interfaces.
+void recover_subdomains(const DecompositionProblem& problem, const std::vector<geometry::BoundaryMesh>& meshes,
+                        const InterfaceOperator& K, const Distribution& distribution, DecompositionResult& result) {
   for (std::size_t s = 0; s < problem.subdomains.size(); ++s) {
     SubdomainResult sub;
     sub.name = problem.subdomains[s].body.name;
@@ -180,12 +167,11 @@ DecompositionResult solve_decomposition(const DecompositionProblem& problem, con
         bem::boundary_resultants(sub.mesh, sub.boundary, problem.subdomains[s].body, problem.analysis);
   }
   result.jumps = interface_jumps(result.connectivity, result.subdomains);
-  double solves = static_cast<double>(K.solves());
-  distribution.sum(&solves, 1);
-  result.subdomain_solves = static_cast<long>(solves) + static_cast<long>(problem.subdomains.size());
-  clock.lap("recovery and boundary stress");
-  if (!distribution.root()) return result;  // the root evaluates the interior points and writes
+}
 
+// The interior points of every subdomain that lists some; false when none does.
+bool add_interior_points(const DecompositionProblem& problem, const bem::ProgressCallback& progress,
+                         DecompositionResult& result) {
   bool any_interior = false;
   for (std::size_t s = 0; s < problem.subdomains.size(); ++s) {
     const auto& points = problem.subdomains[s].interior_points;
@@ -202,7 +188,52 @@ DecompositionResult solve_decomposition(const DecompositionProblem& problem, con
     }
     sub.interior = bem::interior_values(sub.mesh, integrator, sub.boundary, std::move(selection), progress);
   }
-  if (any_interior) clock.lap("interior points");
+  return any_interior;
+}
+
+}  // namespace
+
+DecompositionResult solve_decomposition(const DecompositionProblem& problem, const bem::ProgressCallback& progress,
+                                        const ParallelRun& parallel) {
+  check_options(problem);
+  DecompositionResult result;
+  result.method = problem.options.method;
+  result.preconditioner = problem.options.preconditioner;
+  PhaseClock clock(result.timings);
+  const std::vector<geometry::BoundaryMesh> meshes = mesh_subdomains(problem);
+  result.connectivity = build_connectivity(problem, meshes);
+  result.interface_unknowns = result.connectivity.unknowns;
+  clock.lap("mesh and interfaces");
+
+  const Distribution distribution = distribute(parallel, meshes);
+  result.processes = distribution.size;
+  result.owner = distribution.owner.empty() ? std::vector<int>(meshes.size(), 0) : distribution.owner;
+  const InterfaceOperator K(problem, meshes, result.connectivity, progress, distribution);
+  result.displacement_scale = K.displacement_scale();
+  double memory = static_cast<double>(K.memory_bytes());
+  distribution.sum(&memory, 1);
+  result.factor_memory_bytes = static_cast<std::size_t>(memory);
+  clock.lap("assembly and factorisation");
+
+  const Vector F = K.right_hand_side();  // Alg IV.2
+  clock.lap("right-hand side");
+  std::unique_ptr<BalancingPreconditioner> preconditioner;
+  if (problem.options.preconditioner == InterfacePreconditioner::balancing && K.rows() > 0) {
+    preconditioner = std::make_unique<BalancingPreconditioner>(K, result.connectivity, problem.analysis);
+    result.coarse_dimension = preconditioner->coarse_dimension();
+    result.floating_modes = preconditioner->floating_modes();
+    clock.lap("preconditioner");
+  }
+  result.gmres = solve_interface(problem, K, F, preconditioner.get(), parallel, progress);
+  clock.lap("gmres");
+
+  recover_subdomains(problem, meshes, K, distribution, result);
+  double solves = static_cast<double>(K.solves());
+  distribution.sum(&solves, 1);
+  result.subdomain_solves = static_cast<long>(solves) + static_cast<long>(problem.subdomains.size());
+  clock.lap("recovery and boundary stress");
+  if (!distribution.root()) return result;  // the root evaluates the interior points and writes
+  if (add_interior_points(problem, progress, result)) clock.lap("interior points");
   return result;
 }
 

@@ -344,11 +344,11 @@ double geometry_scale(const std::vector<BoundaryPiece>& pieces) {
   return diagonal > 0.0 ? diagonal : 1.0;
 }
 
-std::vector<Contour> build_contours(const std::vector<BoundaryPiece>& pieces) {
-  if (pieces.empty()) throw GeometryError("the body has no boundary");
-  const double scale = geometry_scale(pieces);
-  const double tol = 1e-9 * scale;
+namespace {
 
+// Each piece on its own: at least one element, an arc's end on its circle, no zero length
+// (of the piece or of an element).
+void check_pieces(const std::vector<BoundaryPiece>& pieces, double scale, double tol) {
   for (const auto& piece : pieces) {
     if (piece.elements < 1) throw piece_error({&piece}, boundary_text(piece) + " needs at least one element");
     if (piece.shape == PieceShape::arc) {
@@ -367,8 +367,10 @@ std::vector<Contour> build_contours(const std::vector<BoundaryPiece>& pieces) {
         throw piece_error({&piece}, boundary_text(piece) + ": element " + std::to_string(i) +
                                         " has zero length (grading too strong?)");
   }
+}
 
-  // Chain pieces end-to-start.
+// Chain pieces end-to-start: the piece that starts where each one ends, one and only one.
+std::vector<int> chain_pieces(const std::vector<BoundaryPiece>& pieces, double tol) {
   const int n = static_cast<int>(pieces.size());
   std::vector<int> next(n, -1), previous_count(n, 0);
   for (int i = 0; i < n; ++i) {
@@ -392,11 +394,26 @@ std::vector<Contour> build_contours(const std::vector<BoundaryPiece>& pieces) {
     if (previous_count[j] != 1)
       throw piece_error({&pieces[j]}, "open contour: no boundary ends at " + point_text(pieces[j].start) +
                                           ", the start of " + boundary_text(pieces[j]));
+  return next;
+}
 
-  // Crossings first: a crossing boundary also spoils the areas and orientations below.
-  const auto chords = boundary_chords(pieces);
-  check_no_crossings(pieces, chords, next, tol);
+// Signed area of a fine polygon through the contour's pieces (shoelace).
+double signed_area(const std::vector<BoundaryPiece>& pieces, const Contour& contour) {
+  double area = 0.0;
+  for (int i : contour.pieces) {
+    const int m = pieces[i].shape == PieceShape::arc ? 64 : 1;
+    for (int k = 0; k < m; ++k) {
+      const Vec2 a = point_on_piece(pieces[i], static_cast<double>(k) / m).position;
+      const Vec2 b = point_on_piece(pieces[i], static_cast<double>(k + 1) / m).position;
+      area += 0.5 * (a.x() * b.y() - a.y() * b.x());
+    }
+  }
+  return area;
+}
 
+// The closed chains of pieces, each from its lowest-numbered piece, with their areas.
+std::vector<Contour> trace_contours(const std::vector<BoundaryPiece>& pieces, const std::vector<int>& next) {
+  const int n = static_cast<int>(pieces.size());
   std::vector<Contour> contours;
   std::vector<bool> used(n, false);
   for (int first = 0; first < n; ++first) {
@@ -406,21 +423,15 @@ std::vector<Contour> build_contours(const std::vector<BoundaryPiece>& pieces) {
       used[i] = true;
       contour.pieces.push_back(i);
     }
-    // Signed area of a fine polygon through the pieces (shoelace).
-    double area = 0.0;
-    for (int i : contour.pieces) {
-      const int m = pieces[i].shape == PieceShape::arc ? 64 : 1;
-      for (int k = 0; k < m; ++k) {
-        const Vec2 a = point_on_piece(pieces[i], static_cast<double>(k) / m).position;
-        const Vec2 b = point_on_piece(pieces[i], static_cast<double>(k + 1) / m).position;
-        area += 0.5 * (a.x() * b.y() - a.y() * b.x());
-      }
-    }
-    contour.signed_area = area;
+    contour.signed_area = signed_area(pieces, contour);
     contours.push_back(contour);
   }
+  return contours;
+}
 
-  // The outer contour has the largest area and runs counterclockwise; holes clockwise.
+// The outer contour has the largest area and runs counterclockwise; holes clockwise. Marks
+// the holes and returns the outer contour.
+std::size_t mark_holes(const std::vector<BoundaryPiece>& pieces, std::vector<Contour>& contours, double tol) {
   std::size_t outer = 0;
   for (std::size_t c = 1; c < contours.size(); ++c)
     if (std::abs(contours[c].signed_area) > std::abs(contours[outer].signed_area)) outer = c;
@@ -440,8 +451,23 @@ std::vector<Contour> build_contours(const std::vector<BoundaryPiece>& pieces) {
                               " runs counterclockwise; holes must run clockwise, with the domain on the left of each "
                               "boundary");
   }
-  if (outer != 0) std::swap(contours[0], contours[outer]);
+  return outer;
+}
 
+}  // namespace
+
+std::vector<Contour> build_contours(const std::vector<BoundaryPiece>& pieces) {
+  if (pieces.empty()) throw GeometryError("the body has no boundary");
+  const double scale = geometry_scale(pieces);
+  const double tol = 1e-9 * scale;
+  check_pieces(pieces, scale, tol);
+  const std::vector<int> next = chain_pieces(pieces, tol);
+  // Crossings first: a crossing boundary also spoils the areas and orientations below.
+  const auto chords = boundary_chords(pieces);
+  check_no_crossings(pieces, chords, next, tol);
+  std::vector<Contour> contours = trace_contours(pieces, next);
+  const std::size_t outer = mark_holes(pieces, contours, tol);
+  if (outer != 0) std::swap(contours[0], contours[outer]);
   check_holes_inside(pieces, contours, chords);
   return contours;
 }

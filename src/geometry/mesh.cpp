@@ -61,25 +61,10 @@ struct VertexPlan {
   Index shared_node = -1;
 };
 
-}  // namespace
-
-double discontinuous_node_fraction(Interpolation interpolation) {
-  return interpolation == Interpolation::quadratic ? 0.5 * (1.0 - std::sqrt(0.6)) : 0.5 * (1.0 - 1.0 / std::sqrt(3.0));
-}
-
-void use_discontinuous_elements(MeshOptions& options) {
-  options.discontinuous = true;
-  options.corner_shift = discontinuous_node_fraction(options.interpolation);
-}
-
-BoundaryMesh mesh_boundary(const std::vector<BoundaryPiece>& input_pieces, const MeshOptions& options) {
-  if (!(options.corner_shift > 0.0 && options.corner_shift < 0.5))
-    throw GeometryError("corner_shift must lie in (0, 0.5), got " +
-                        std::to_string(options.corner_shift));
-  BoundaryMesh mesh;
-  mesh.contours = build_contours(input_pieces);
-  // Pieces chain within a tolerance; snap each start onto the previous end so that shared
-  // vertices are bit-identical (the near-singular integrals see any gap).
+// Pieces chain within a tolerance; snap each start onto the previous end so that shared
+// vertices are bit-identical (the near-singular integrals see any gap).
+std::vector<BoundaryPiece> chained_pieces(const std::vector<BoundaryPiece>& input_pieces,
+                                          const std::vector<Contour>& contours, const MeshOptions& options) {
   std::vector<BoundaryPiece> pieces = input_pieces;
   if (options.skip_axis_pieces) {
     // Points on the axis must have r exactly 0: the ring kernels treat r = 0 specially.
@@ -88,10 +73,15 @@ BoundaryMesh mesh_boundary(const std::vector<BoundaryPiece>& input_pieces, const
       for (Vec2* point : {&piece.start, &piece.end})
         if (std::abs(point->x()) <= axis_tolerance) point->x() = 0.0;
   }
-  for (const auto& contour : mesh.contours)
+  for (const auto& contour : contours)
     for (std::size_t k = 0; k < contour.pieces.size(); ++k)
       pieces[contour.pieces[(k + 1) % contour.pieces.size()]].start = pieces[contour.pieces[k]].end;
-  mesh.scale = geometry_scale(pieces);
+  return pieces;
+}
+
+// The mesh's tables per piece, the pieces left without elements (symmetry lines, the axis)
+// and the symmetry images.
+void describe_pieces(BoundaryMesh& mesh, const std::vector<BoundaryPiece>& pieces, const MeshOptions& options) {
   const double tol = 1e-9 * mesh.scale;
   const int piece_count = static_cast<int>(pieces.size());
   mesh.piece_elements.assign(piece_count, {});
@@ -103,58 +93,82 @@ BoundaryMesh mesh_boundary(const std::vector<BoundaryPiece>& input_pieces, const
   mesh.images = symmetry_images(pieces, options.skip_axis_pieces);
   for (const auto& piece : pieces)
     if (piece.symmetry) mesh.symmetry_segments.push_back(straight_element(piece.start, piece.end));
-  // Linear and quadratic elements have nodes at their ends (split at corners).
-  const bool end_nodes = options.interpolation != Interpolation::constant;
-  const bool quadratic = options.interpolation == Interpolation::quadratic;
+}
 
-  // Element end points of each piece, with the corner transition toward vertices where a
-  // much finer piece meets it (a coarse element next to a fine one spoils the nodes of the
-  // fine side near the vertex: measured in docs/corners.md).
-  std::vector<std::vector<double>> breakpoints(piece_count);
-  for (int p = 0; p < piece_count; ++p) breakpoints[p] = element_breakpoints(pieces[p]);
-  if (options.corner_transition > 1.0) {
-    const double growth = options.corner_transition;
-    const double trigger = std::max(2.0, growth);  // end elements differing by up to 2x are left alone
-    constexpr double none = std::numeric_limits<double>::infinity();
-    std::vector<double> cap_start(piece_count, none), cap_end(piece_count, none);
-    auto end_length = [&](int p, bool at_start) {
-      const auto& s = breakpoints[p];
-      return piece_length(pieces[p]) * (at_start ? s[1] - s[0] : s.back() - s[s.size() - 2]);
-    };
-    // A graded piece may in turn be much finer than its other neighbour: repeat until no
-    // cap changes (caps only shrink, toward the finest element, so this ends).
-    for (int pass = 0; pass < 4 * piece_count + 4; ++pass) {
-      bool changed = false;
-      for (const auto& contour : mesh.contours) {
-        const std::size_t m = contour.pieces.size();
-        for (std::size_t k = 0; k < m; ++k) {
-          const int in = contour.pieces[(k + m - 1) % m], out = contour.pieces[k];
-          if (mesh.piece_skipped[in] || mesh.piece_skipped[out] || in == out) continue;
-          const double h_in = end_length(in, false), h_out = end_length(out, true);
-          if (h_in > trigger * h_out && !pieces[in].fixed_mesh && h_out < cap_end[in]) {
-            cap_end[in] = h_out;
-            changed = true;
-          }
-          if (h_out > trigger * h_in && !pieces[out].fixed_mesh && h_in < cap_start[out]) {
-            cap_start[out] = h_in;
-            changed = true;
-          }
-        }
+// The end elements' lengths the corner transition grades each piece toward (none: not
+// graded at that end).
+struct EndCaps {
+  std::vector<double> start, end;
+};
+constexpr double kNoCap = std::numeric_limits<double>::infinity();
+
+// One pass over the vertices: caps the coarser end of every pair of end elements differing
+// by more than `trigger`. True when a cap changed.
+bool cap_coarse_ends(const BoundaryMesh& mesh, const std::vector<BoundaryPiece>& pieces,
+                     const std::vector<std::vector<double>>& breakpoints, double trigger, EndCaps& caps) {
+  auto end_length = [&](int p, bool at_start) {
+    const auto& s = breakpoints[p];
+    return piece_length(pieces[p]) * (at_start ? s[1] - s[0] : s.back() - s[s.size() - 2]);
+  };
+  bool changed = false;
+  for (const auto& contour : mesh.contours) {
+    const std::size_t m = contour.pieces.size();
+    for (std::size_t k = 0; k < m; ++k) {
+      const int in = contour.pieces[(k + m - 1) % m], out = contour.pieces[k];
+      if (mesh.piece_skipped[in] || mesh.piece_skipped[out] || in == out) continue;
+      const double h_in = end_length(in, false), h_out = end_length(out, true);
+      if (h_in > trigger * h_out && !pieces[in].fixed_mesh && h_out < caps.end[in]) {
+        caps.end[in] = h_out;
+        changed = true;
       }
-      if (!changed) break;
-      for (int p = 0; p < piece_count; ++p)
-        if (cap_start[p] != none || cap_end[p] != none)
-          breakpoints[p] = transition_breakpoints(pieces[p], cap_start[p], cap_end[p], growth);
-    }
-    for (int p = 0; p < piece_count; ++p) {
-      if (cap_start[p] == none && cap_end[p] == none) continue;
-      mesh.transitions.push_back({p, pieces[p].name, pieces[p].elements,
-                                  static_cast<int>(breakpoints[p].size()) - 1});
+      if (h_out > trigger * h_in && !pieces[out].fixed_mesh && h_in < caps.start[out]) {
+        caps.start[out] = h_in;
+        changed = true;
+      }
     }
   }
+  return changed;
+}
 
-  // Plan each vertex: the start of every piece, joined to the end of the previous one.
-  std::vector<VertexPlan> start_vertex(piece_count);
+// The corner transition: grades the pieces toward vertices where a much finer piece meets
+// them, and lists the graded pieces in mesh.transitions.
+void grade_toward_finer_neighbours(BoundaryMesh& mesh, const std::vector<BoundaryPiece>& pieces, double growth,
+                                   std::vector<std::vector<double>>& breakpoints) {
+  const int piece_count = static_cast<int>(pieces.size());
+  const double trigger = std::max(2.0, growth);  // end elements differing by up to 2x are left alone
+  EndCaps caps{std::vector<double>(piece_count, kNoCap), std::vector<double>(piece_count, kNoCap)};
+  // A graded piece may in turn be much finer than its other neighbour: repeat until no
+  // cap changes (caps only shrink, toward the finest element, so this ends).
+  for (int pass = 0; pass < 4 * piece_count + 4; ++pass) {
+    if (!cap_coarse_ends(mesh, pieces, breakpoints, trigger, caps)) break;
+    for (int p = 0; p < piece_count; ++p)
+      if (caps.start[p] != kNoCap || caps.end[p] != kNoCap)
+        breakpoints[p] = transition_breakpoints(pieces[p], caps.start[p], caps.end[p], growth);
+  }
+  for (int p = 0; p < piece_count; ++p) {
+    if (caps.start[p] == kNoCap && caps.end[p] == kNoCap) continue;
+    mesh.transitions.push_back({p, pieces[p].name, pieces[p].elements, static_cast<int>(breakpoints[p].size()) - 1});
+  }
+}
+
+// Element end points of each piece, with the corner transition toward vertices where a
+// much finer piece meets it (a coarse element next to a fine one spoils the nodes of the
+// fine side near the vertex: measured in docs/corners.md).
+std::vector<std::vector<double>> piece_breakpoints(BoundaryMesh& mesh, const std::vector<BoundaryPiece>& pieces,
+                                                   const MeshOptions& options) {
+  std::vector<std::vector<double>> breakpoints(pieces.size());
+  for (std::size_t p = 0; p < pieces.size(); ++p) breakpoints[p] = element_breakpoints(pieces[p]);
+  if (options.corner_transition > 1.0)
+    grade_toward_finer_neighbours(mesh, pieces, options.corner_transition, breakpoints);
+  return breakpoints;
+}
+
+// Plan each vertex: the start of every piece, joined to the end of the previous one.
+std::vector<VertexPlan> plan_vertices(const BoundaryMesh& mesh, const std::vector<BoundaryPiece>& pieces,
+                                      const MeshOptions& options) {
+  // Linear and quadratic elements have nodes at their ends (split at corners).
+  const bool end_nodes = options.interpolation != Interpolation::constant;
+  std::vector<VertexPlan> start_vertex(pieces.size());
   for (const auto& contour : mesh.contours) {
     const std::size_t m = contour.pieces.size();
     for (std::size_t k = 0; k < m; ++k) {
@@ -176,108 +190,154 @@ BoundaryMesh mesh_boundary(const std::vector<BoundaryPiece>& input_pieces, const
       }
     }
   }
+  return start_vertex;
+}
 
-  auto add_node = [&](const Vec2& position, const Vec2& normal, int piece, bool shifted) {
-    mesh.nodes.push_back({position, normal, piece, shifted});
-    return static_cast<Index>(mesh.nodes.size() - 1);
-  };
+// The piece after p in its contour: its start vertex is the vertex at the end of p.
+int next_piece(const Contour& contour, int p) {
+  int next = -1;
+  for (std::size_t k = 0; k < contour.pieces.size(); ++k)
+    if (contour.pieces[k] == p) next = contour.pieces[(k + 1) % contour.pieces.size()];
+  return next;
+}
 
-  for (const auto& contour : mesh.contours) {
-    for (int p : contour.pieces) {
-      if (mesh.piece_skipped[p]) continue;
-      const BoundaryPiece& piece = pieces[p];
-      const auto& s = breakpoints[p];
-      const int n = static_cast<int>(s.size()) - 1;
-      std::vector<PiecePoint> points(n + 1);
-      for (int k = 0; k <= n; ++k) points[k] = point_on_piece(piece, s[k]);
-      points[0].position = piece.start;
-      points[n].position = piece.end;
+// The piece's points at its element end points, its ends exactly its vertices.
+std::vector<PiecePoint> element_end_points(const BoundaryPiece& piece, const std::vector<double>& s) {
+  const int n = static_cast<int>(s.size()) - 1;
+  std::vector<PiecePoint> points(n + 1);
+  for (int k = 0; k <= n; ++k) points[k] = point_on_piece(piece, s[k]);
+  points[0].position = piece.start;
+  points[n].position = piece.end;
+  return points;
+}
 
-      VertexPlan& first = start_vertex[p];
-      // The vertex at the end of this piece is the start vertex of the next piece.
-      int next_piece = -1;
-      for (std::size_t k = 0; k < contour.pieces.size(); ++k)
-        if (contour.pieces[k] == p) next_piece = contour.pieces[(k + 1) % contour.pieces.size()];
-      VertexPlan& last = start_vertex[next_piece];
+// A piece being meshed: its element end points and the plans of its two vertices.
+struct PieceToMesh {
+  const BoundaryPiece& piece;
+  int index;
+  const std::vector<double>& s;     // element end points, as fractions of the piece
+  std::vector<PiecePoint> points;   // the piece's points there
+  VertexPlan& first;                // the vertex at its start
+  VertexPlan& last;                 // the vertex at its end
+};
 
-      // A shifted node on an arc's chord stands for the arc point at the same parameter:
-      // it takes that point's normal, so tractions and stresses are resolved on the true
-      // surface (on a line both normals agree).
-      auto shifted_normal = [&](int k, double fraction) {
-        return point_on_piece(piece, s[k] + fraction * (s[k + 1] - s[k])).outward_normal;
-      };
-      Index previous_end = -1;
-      for (int k = 0; k < n; ++k) {
-        BoundaryElement element = straight_element(points[k].position, points[k + 1].position);
-        const Vec2 d = element.end - element.start;
-        element.piece = p;
-        if (quadratic && piece.shape == PieceShape::arc) {
-          // The exact arc: the element's parameter runs linearly in angle, as the piece's.
-          const Vec2 a = piece.start - piece.center;
-          const double sweep = arc_sweep(piece);
-          element.arc = true;
-          element.center = piece.center;
-          element.radius = arc_radius(piece);
-          element.angle_start = std::atan2(a.y(), a.x()) + s[k] * sweep;
-          element.angle_span = (s[k + 1] - s[k]) * sweep;
-        }
-        const Index e = static_cast<Index>(mesh.elements.size());
-        // A shifted node of a quadratic element lies on the true geometry; of a linear one,
-        // on the chord (with the true normal, above).
-        auto shifted_position = [&](double fraction) {
-          return quadratic ? element.point(fraction) : Vec2(element.start + fraction * d);
-        };
-        if (!end_nodes) {
-          element.node_count = 1;
-          element.node_fraction = {0.5, 0.5, 0.5};
-          element.nodes[0] = add_node(0.5 * (element.start + element.end), element.normal, p, false);
-          mesh.piece_nodes[p].push_back(element.nodes[0]);
-        } else {
-          element.node_count = quadratic ? 3 : 2;
-          // Start node.
-          if (options.discontinuous || (k == 0 && first.split)) {
-            element.node_fraction[0] = options.corner_shift;
-            element.nodes[0] = add_node(shifted_position(options.corner_shift),
-                                        shifted_normal(k, options.corner_shift), p, true);
-            mesh.piece_nodes[p].push_back(element.nodes[0]);
-          } else if (k > 0) {
-            element.nodes[0] = previous_end;
-          } else if (first.in_meshed && first.shared_node >= 0) {
-            element.nodes[0] = first.shared_node;
-            mesh.piece_nodes[p].push_back(element.nodes[0]);
-          } else {
-            element.nodes[0] = add_node(element.start, points[0].outward_normal, p, false);
-            if (first.in_meshed) first.shared_node = element.nodes[0];
-            mesh.piece_nodes[p].push_back(element.nodes[0]);
-          }
-          if (quadratic) {  // middle node, on the true geometry
-            element.nodes[2] = add_node(element.point(0.5), element.normal_at(0.5), p, false);
-            mesh.piece_nodes[p].push_back(element.nodes[2]);
-          }
-          // End node.
-          if (options.discontinuous || (k + 1 == n && last.split)) {
-            element.node_fraction[1] = 1.0 - options.corner_shift;
-            element.nodes[1] = add_node(shifted_position(1.0 - options.corner_shift),
-                                        shifted_normal(k, 1.0 - options.corner_shift), p, true);
-          } else if (k + 1 < n) {
-            element.nodes[1] = add_node(element.end, points[k + 1].outward_normal, p, false);
-          } else if (last.out_meshed && last.shared_node >= 0) {
-            element.nodes[1] = last.shared_node;
-          } else {
-            element.nodes[1] = add_node(element.end, points[n].outward_normal, p, false);
-            if (last.out_meshed) last.shared_node = element.nodes[1];
-          }
-          previous_end = element.nodes[1];
-          mesh.piece_nodes[p].push_back(element.nodes[1]);
-        }
-        mesh.elements.push_back(element);
-        mesh.piece_elements[p].push_back(e);
-      }
-    }
+Index add_node(BoundaryMesh& mesh, const Vec2& position, const Vec2& normal, int piece, bool shifted) {
+  mesh.nodes.push_back({position, normal, piece, shifted});
+  return static_cast<Index>(mesh.nodes.size() - 1);
+}
+
+// Element k of the piece: the chord, or on an arc with quadratic elements the exact arc.
+BoundaryElement piece_element(const PieceToMesh& run, int k, bool quadratic) {
+  BoundaryElement element = straight_element(run.points[k].position, run.points[k + 1].position);
+  element.piece = run.index;
+  const BoundaryPiece& piece = run.piece;
+  if (quadratic && piece.shape == PieceShape::arc) {
+    // The exact arc: the element's parameter runs linearly in angle, as the piece's.
+    const Vec2 a = piece.start - piece.center;
+    const double sweep = arc_sweep(piece);
+    element.arc = true;
+    element.center = piece.center;
+    element.radius = arc_radius(piece);
+    element.angle_start = std::atan2(a.y(), a.x()) + run.s[k] * sweep;
+    element.angle_span = (run.s[k + 1] - run.s[k]) * sweep;
   }
+  return element;
+}
 
-  // Vertices, for point constraints and output.
-  for (int p = 0; p < piece_count; ++p) {
+// A shifted node on an arc's chord stands for the arc point at the same parameter: it takes
+// that point's normal, so tractions and stresses are resolved on the true surface (on a
+// line both normals agree).
+Vec2 shifted_normal(const PieceToMesh& run, int k, double fraction) {
+  return point_on_piece(run.piece, run.s[k] + fraction * (run.s[k + 1] - run.s[k])).outward_normal;
+}
+
+// A shifted node of a quadratic element lies on the true geometry; of a linear one, on the
+// chord (with the true normal, above).
+Vec2 shifted_position(const BoundaryElement& element, double fraction, bool quadratic) {
+  const Vec2 d = element.end - element.start;
+  return quadratic ? element.point(fraction) : Vec2(element.start + fraction * d);
+}
+
+// The start node of element k: shifted into the element at a split vertex (every element's
+// when discontinuous), else the previous element's end node, or the node at the vertex,
+// shared with the previous piece.
+Index start_node(BoundaryMesh& mesh, const MeshOptions& options, PieceToMesh& run, BoundaryElement& element, int k,
+                 Index previous_end) {
+  const bool quadratic = options.interpolation == Interpolation::quadratic;
+  Index node = -1;
+  if (options.discontinuous || (k == 0 && run.first.split)) {
+    element.node_fraction[0] = options.corner_shift;
+    node = add_node(mesh, shifted_position(element, options.corner_shift, quadratic),
+                    shifted_normal(run, k, options.corner_shift), run.index, true);
+  } else if (k > 0) {
+    return previous_end;
+  } else if (run.first.in_meshed && run.first.shared_node >= 0) {
+    node = run.first.shared_node;
+  } else {
+    node = add_node(mesh, element.start, run.points[0].outward_normal, run.index, false);
+    if (run.first.in_meshed) run.first.shared_node = node;
+  }
+  mesh.piece_nodes[run.index].push_back(node);
+  return node;
+}
+
+// The end node of element k, as its start node: shifted at a split vertex, else at the
+// element's end (shared with the next piece at the last vertex).
+Index end_node(BoundaryMesh& mesh, const MeshOptions& options, PieceToMesh& run, BoundaryElement& element, int k) {
+  const bool quadratic = options.interpolation == Interpolation::quadratic;
+  const int n = static_cast<int>(run.s.size()) - 1;
+  Index node = -1;
+  if (options.discontinuous || (k + 1 == n && run.last.split)) {
+    element.node_fraction[1] = 1.0 - options.corner_shift;
+    node = add_node(mesh, shifted_position(element, 1.0 - options.corner_shift, quadratic),
+                    shifted_normal(run, k, 1.0 - options.corner_shift), run.index, true);
+  } else if (k + 1 < n) {
+    node = add_node(mesh, element.end, run.points[k + 1].outward_normal, run.index, false);
+  } else if (run.last.out_meshed && run.last.shared_node >= 0) {
+    node = run.last.shared_node;
+  } else {
+    node = add_node(mesh, element.end, run.points[n].outward_normal, run.index, false);
+    if (run.last.out_meshed) run.last.shared_node = node;
+  }
+  mesh.piece_nodes[run.index].push_back(node);
+  return node;
+}
+
+// The elements of one piece and their nodes, in order.
+void mesh_piece(BoundaryMesh& mesh, const MeshOptions& options, PieceToMesh& run) {
+  // Linear and quadratic elements have nodes at their ends (split at corners).
+  const bool end_nodes = options.interpolation != Interpolation::constant;
+  const bool quadratic = options.interpolation == Interpolation::quadratic;
+  const int p = run.index;
+  const int n = static_cast<int>(run.s.size()) - 1;
+  Index previous_end = -1;
+  for (int k = 0; k < n; ++k) {
+    BoundaryElement element = piece_element(run, k, quadratic);
+    const Index e = static_cast<Index>(mesh.elements.size());
+    if (!end_nodes) {
+      element.node_count = 1;
+      element.node_fraction = {0.5, 0.5, 0.5};
+      element.nodes[0] = add_node(mesh, 0.5 * (element.start + element.end), element.normal, p, false);
+      mesh.piece_nodes[p].push_back(element.nodes[0]);
+    } else {
+      element.node_count = quadratic ? 3 : 2;
+      element.nodes[0] = start_node(mesh, options, run, element, k, previous_end);
+      if (quadratic) {  // middle node, on the true geometry
+        element.nodes[2] = add_node(mesh, element.point(0.5), element.normal_at(0.5), p, false);
+        mesh.piece_nodes[p].push_back(element.nodes[2]);
+      }
+      element.nodes[1] = end_node(mesh, options, run, element, k);
+      previous_end = element.nodes[1];
+    }
+    mesh.elements.push_back(element);
+    mesh.piece_elements[p].push_back(e);
+  }
+}
+
+// Vertices, for point constraints and output.
+void add_vertices(BoundaryMesh& mesh, const std::vector<BoundaryPiece>& pieces,
+                  const std::vector<VertexPlan>& start_vertex) {
+  for (std::size_t p = 0; p < pieces.size(); ++p) {
     const VertexPlan& plan = start_vertex[p];
     MeshVertex vertex;
     vertex.position = pieces[p].start;
@@ -292,6 +352,38 @@ BoundaryMesh mesh_boundary(const std::vector<BoundaryPiece>& input_pieces, const
       vertex.element_out = mesh.piece_elements[p].front();
     mesh.vertices.push_back(vertex);
   }
+}
+
+}  // namespace
+
+double discontinuous_node_fraction(Interpolation interpolation) {
+  return interpolation == Interpolation::quadratic ? 0.5 * (1.0 - std::sqrt(0.6)) : 0.5 * (1.0 - 1.0 / std::sqrt(3.0));
+}
+
+void use_discontinuous_elements(MeshOptions& options) {
+  options.discontinuous = true;
+  options.corner_shift = discontinuous_node_fraction(options.interpolation);
+}
+
+BoundaryMesh mesh_boundary(const std::vector<BoundaryPiece>& input_pieces, const MeshOptions& options) {
+  if (!(options.corner_shift > 0.0 && options.corner_shift < 0.5))
+    throw GeometryError("corner_shift must lie in (0, 0.5), got " +
+                        std::to_string(options.corner_shift));
+  BoundaryMesh mesh;
+  mesh.contours = build_contours(input_pieces);
+  const std::vector<BoundaryPiece> pieces = chained_pieces(input_pieces, mesh.contours, options);
+  mesh.scale = geometry_scale(pieces);
+  describe_pieces(mesh, pieces, options);
+  const auto breakpoints = piece_breakpoints(mesh, pieces, options);
+  std::vector<VertexPlan> start_vertex = plan_vertices(mesh, pieces, options);
+  for (const auto& contour : mesh.contours)
+    for (const int p : contour.pieces) {
+      if (mesh.piece_skipped[p]) continue;
+      PieceToMesh piece{pieces[p], p, breakpoints[p], element_end_points(pieces[p], breakpoints[p]),
+                        start_vertex[p], start_vertex[next_piece(contour, p)]};
+      mesh_piece(mesh, options, piece);
+    }
+  add_vertices(mesh, pieces, start_vertex);
   return mesh;
 }
 

@@ -46,6 +46,14 @@ class BalancingPreconditioner : public operators::LinearOperator {
     Index null_modes = 0;                 // Lagrange multipliers after the k dofs
     operators::DenseLU neumann;           // [K_s Z; Z^T 0] or K_s
   };
+  // The construction's phases, in order.
+  Vector gather_locals(const Connectivity& connectivity, AnalysisType analysis, std::vector<Matrix>& local_operators,
+                       std::vector<Matrix>& modes);
+  void weight_partition_of_unity(const Vector& diagonal_sum);
+  void build_coarse_space(const std::vector<Matrix>& modes);
+  void factor_neumann_problems(const std::vector<Matrix>& local_operators, const std::vector<Matrix>& modes);
+  void share_floating_modes();
+
   const InterfaceOperator& K_;
   Index unknowns_ = 0;
   std::vector<Local> locals_;
