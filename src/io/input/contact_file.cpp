@@ -554,6 +554,130 @@ ContactFile parse_contact_problem(std::string_view text, const std::string& file
   return parse_contact_table(root_table, file_name, overrides, limits);
 }
 
+// Bodies without contacts: each solved on its own (its bonds included); only the
+// operator's keys of [solver] apply.
+void read_without_contacts(const TableReader& root, FileContext& context, contact::ContactProblem& problem) {
+  // Bodies without contacts: each solved on its own (its bonds included).
+  if (const toml::table* table = root.optional_table("solver", "[solver]")) {
+    // Only the operator applies: the other keys set the contact solver.
+    const TableReader solver(*table, "solver", context, root.line());
+    for (const auto& key : schema::table("contact.solver").names())
+      if (key != "operator" && key != "accuracy" && solver.has(key))
+        solver.fail(key, "'" + key + "' sets the contact solver; without [[contact]] tables it has no effect");
+    solver.check_keys(schema::table("contact.solver"));
+    problem.operator_choice = read_operator_keys(solver);
+  }
+  read_force_loads(root, context, problem);
+}
+
+// The discontinuous elements' refusal. Measured on the Hertz ball: p0 +0.54 % against
+// +0.02 % with continuous elements (the pairs sit at body 1's nodes, so discontinuous ones
+// double them without a gain).
+[[noreturn]] void refuse_discontinuous(const TableReader& root, FileContext& context) {
+  const TableReader mesh(*root.optional_table("mesh", "[mesh]"), "mesh", context, root.line());
+  mesh.fail("continuity", "discontinuous elements are not available in problems with contact pairs; remove "
+                          "the key (continuous elements are the accurate choice for contact, docs/corners.md)");
+}
+
+// The thesis' single [contact] table: one contact between the two bodies, with its
+// pairing, law, solver keys and [contact.load].
+void read_single_contact(const TableReader& contact, const TableReader& root, FileContext& context,
+                         contact::ContactProblem& problem, OutputNames& output_names) {
+  contact.check_keys(schema::table("contact.single"));
+  for (const char* key : {"solver", "load"})
+    if (root.has(key))
+      root.fail(key, "[" + std::string(key) + "] goes with [[contact]] tables; with a single [contact] table put " +
+                         (std::string(key) == "load" ? "[contact.load]" : "the solver keys in [contact]"));
+  if (problem.bodies.size() != 2)
+    contact.fail("boundary1", "a [contact] table joins exactly two bodies; with " +
+                                  std::to_string(problem.bodies.size()) +
+                                  " bodies write one [[contact]] table per contact, with body1 and body2");
+  contact::ContactInterface interface;
+  output_names.claim(contact, contact_file_names(interface.name), "the contact");
+  interface.side1 = read_side(contact, problem, 0, 1);
+  interface.side2 = read_side(contact, problem, 1, 2);
+  read_pairing(contact, interface);
+  interface.law = read_law(contact, problem.tangential_coupling);
+  problem.contacts.push_back(interface);
+  read_solver(contact, problem);
+  if (const toml::table* load = contact.optional_table("load", "[contact.load]"))
+    read_force_load(TableReader(*load, "contact.load", context, contact.line()), problem);
+}
+
+// [[contact]] tables, each with its sides, pairing and law; then [solver] and [[load]].
+void read_contact_tables(const toml::node& contact_node, const TableReader& root, FileContext& context,
+                         contact::ContactProblem& problem, OutputNames& output_names) {
+  const toml::array* contacts = contact_node.as_array();
+  if (!contacts || !contacts->is_array_of_tables() || contacts->empty())
+    root.fail("contact", "must be a [contact] table or one or more [[contact]] tables");
+  int index = 0;
+  for (const toml::node& node : *contacts) {
+    ++index;
+    const std::string path = "contact[" + std::to_string(index) + "]";
+    const TableReader contact(*node.as_table(), path, context, line_of(node) > 0 ? line_of(node) : root.line());
+    contact.check_keys(schema::table("contact"));
+    contact::ContactInterface interface;
+    interface.name = contact.optional_name("name").value_or(contacts->size() == 1 ? "contact" : "contact" + std::to_string(index));
+    for (const auto& other : problem.contacts)
+      if (other.name == interface.name) contact.fail("name", "two contacts are named '" + interface.name + "'");
+    output_names.claim(contact, contact_file_names(interface.name), "contact '" + interface.name + "'");
+    for (const char* key : {"body1", "body2"})
+      if (!contact.has(key)) contact.fail(key, "missing: the name of the body on this side of the contact");
+    const int body1 = body_named(problem, *contact.optional_string("body1"), contact, "body1");
+    const int body2 = body_named(problem, *contact.optional_string("body2"), contact, "body2");
+    interface.side1 = read_side(contact, problem, body1, 1);
+    interface.side2 = read_side(contact, problem, body2, 2);
+    // Self-contact (a slot's or a crack's faces, a split ring): two boundaries of one body.
+    if (body1 == body2 && interface.side1.region == interface.side2.region &&
+        interface.side1.piece == interface.side2.piece)
+      contact.fail("boundary2", "a boundary cannot be in contact with itself; for self-contact name two boundaries "
+                                "of the body (split the boundary where the faces meet)");
+    read_pairing(contact, interface);
+    for (const auto& other : problem.contacts)
+      for (const auto* side : {&other.side1, &other.side2})
+        for (const auto* mine : {&interface.side1, &interface.side2})
+          if (mine->piece >= 0 && side->body == mine->body && side->region == mine->region && side->piece == mine->piece)
+            contact.fail("boundary1", "a boundary is in two contacts ('" + other.name + "' and '" + interface.name +
+                                          "'); split it into two boundaries");
+    // Each contact its own law (kind, friction). The tangential coupling shapes the
+    // condensed operator: one for every contact.
+    bool coupling = true;
+    interface.law = read_law(contact, coupling);
+    if (index == 1) problem.tangential_coupling = coupling;
+    problem.contacts.push_back(interface);
+    if (index > 1 && coupling != problem.tangential_coupling)
+      contact.fail("coupling", "every contact must have the same tangential coupling as the first (it is a property "
+                               "of the condensed operator); kind and friction may differ per contact");
+  }
+  static const toml::table empty;
+  const toml::table* solver = root.optional_table("solver", "[solver]");
+  const TableReader solver_keys_reader(solver ? *solver : empty, "solver", context, root.line());
+  solver_keys_reader.check_keys(schema::table("contact.solver"));
+  read_solver(solver_keys_reader, problem);
+  read_force_loads(root, context, problem);
+}
+
+// A rigid body needs a motion (prescribed, or a force's), a contact, and no rotation in
+// axisymmetry.
+void check_rigid_bodies(const contact::ContactProblem& problem) {
+  for (std::size_t b = 0; b < problem.bodies.size(); ++b) {
+    const auto& body = problem.bodies[b];
+    if (!body.rigid) continue;
+    const bool loaded = std::any_of(problem.forces.begin(), problem.forces.end(),
+                                    [b](const contact::ForceLoad& f) { return f.body == static_cast<int>(b); });
+    if (body.rigid->rotation && problem.analysis == AnalysisType::axisymmetric)
+      throw InputError(body.where, "rigid body '" + body.name + "': a rotation has no meaning in axisymmetry (a rigid "
+                                   "body there only translates along the axis)");
+    if (!loaded && !body.rigid->displacement && !body.rigid->rotation)
+      throw InputError(body.where, "rigid body '" + body.name + "' has no load and no displacement: give its displacement in "
+                        "[body.rigid] (displacement = [u1, u2]) or press it with a force ([load] body = \"" + body.name +
+                        "\")");
+    bool in_contact = false;
+    for (const auto& contact : problem.contacts) in_contact = in_contact || contact.side2.body == static_cast<int>(b);
+    if (!in_contact) throw InputError(body.where, "rigid body '" + body.name + "' is in no contact: it would have no effect");
+  }
+}
+
 ContactFile parse_contact_table(toml::table& root_table, const std::string& file_name,
                                 const ParameterOverrides& overrides, const ResourceLimits& limits) {
   ContactFile result;
@@ -581,121 +705,25 @@ ContactFile parse_contact_table(toml::table& root_table, const std::string& file
   check_gmsh_overrides(root, context, result.parameters);
 
   const toml::node* contact_node = root.find("contact");
+  // Where pairing errors point: the table that declared the contacts.
   std::string pairing_key = "body";
   const TableReader* anchor = &root;
   std::optional<TableReader> single;
   if (!contact_node) {
-    // Bodies without contacts: each solved on its own (its bonds included).
-    if (const toml::table* table = root.optional_table("solver", "[solver]")) {
-      // Only the operator applies: the other keys set the contact solver.
-      const TableReader solver(*table, "solver", context, root.line());
-      for (const auto& key : schema::table("contact.solver").names())
-        if (key != "operator" && key != "accuracy" && solver.has(key))
-          solver.fail(key, "'" + key + "' sets the contact solver; without [[contact]] tables it has no effect");
-      solver.check_keys(schema::table("contact.solver"));
-      problem.operator_choice = read_operator_keys(solver);
-    }
-    read_force_loads(root, context, problem);
+    read_without_contacts(root, context, problem);
   } else if (problem.mesh.discontinuous) {
-    // Measured on the Hertz ball: p0 +0.54 % against +0.02 % with continuous elements (the
-    // pairs sit at body 1's nodes, so discontinuous ones double them without a gain).
-    const TableReader mesh(*root.optional_table("mesh", "[mesh]"), "mesh", context, root.line());
-    mesh.fail("continuity", "discontinuous elements are not available in problems with contact pairs; remove "
-                            "the key (continuous elements are the accurate choice for contact, docs/corners.md)");
+    refuse_discontinuous(root, context);
   } else if (const toml::table* table = contact_node->as_table()) {
-    // One contact between the two bodies: pairing, law, solver and load in one table.
     single.emplace(*table, "contact", context, root.line());
-    const TableReader& contact = *single;
-    contact.check_keys(schema::table("contact.single"));
-    for (const char* key : {"solver", "load"})
-      if (root.has(key))
-        root.fail(key, "[" + std::string(key) + "] goes with [[contact]] tables; with a single [contact] table put " +
-                           (std::string(key) == "load" ? "[contact.load]" : "the solver keys in [contact]"));
-    if (problem.bodies.size() != 2)
-      contact.fail("boundary1", "a [contact] table joins exactly two bodies; with " +
-                                    std::to_string(problem.bodies.size()) +
-                                    " bodies write one [[contact]] table per contact, with body1 and body2");
-    contact::ContactInterface interface;
-    output_names.claim(contact, contact_file_names(interface.name), "the contact");
-    interface.side1 = read_side(contact, problem, 0, 1);
-    interface.side2 = read_side(contact, problem, 1, 2);
-    read_pairing(contact, interface);
-    interface.law = read_law(contact, problem.tangential_coupling);
-    problem.contacts.push_back(interface);
-    read_solver(contact, problem);
-    if (const toml::table* load = contact.optional_table("load", "[contact.load]"))
-      read_force_load(TableReader(*load, "contact.load", context, contact.line()), problem);
-    anchor = &contact;
+    read_single_contact(*single, root, context, problem, output_names);
+    anchor = &*single;
     pairing_key = "boundary1";
   } else {
+    read_contact_tables(*contact_node, root, context, problem, output_names);
     pairing_key = "contact";
-    const toml::array* contacts = contact_node->as_array();
-    if (!contacts || !contacts->is_array_of_tables() || contacts->empty())
-      root.fail("contact", "must be a [contact] table or one or more [[contact]] tables");
-    int index = 0;
-    std::optional<TableReader> first_law;
-    for (const toml::node& node : *contacts) {
-      ++index;
-      const std::string path = "contact[" + std::to_string(index) + "]";
-      const TableReader contact(*node.as_table(), path, context, line_of(node) > 0 ? line_of(node) : root.line());
-      contact.check_keys(schema::table("contact"));
-      contact::ContactInterface interface;
-      interface.name = contact.optional_name("name").value_or(contacts->size() == 1 ? "contact" : "contact" + std::to_string(index));
-      for (const auto& other : problem.contacts)
-        if (other.name == interface.name) contact.fail("name", "two contacts are named '" + interface.name + "'");
-      output_names.claim(contact, contact_file_names(interface.name), "contact '" + interface.name + "'");
-      for (const char* key : {"body1", "body2"})
-        if (!contact.has(key)) contact.fail(key, "missing: the name of the body on this side of the contact");
-      const int body1 = body_named(problem, *contact.optional_string("body1"), contact, "body1");
-      const int body2 = body_named(problem, *contact.optional_string("body2"), contact, "body2");
-      interface.side1 = read_side(contact, problem, body1, 1);
-      interface.side2 = read_side(contact, problem, body2, 2);
-      // Self-contact (a slot's or a crack's faces, a split ring): two boundaries of one body.
-      if (body1 == body2 && interface.side1.region == interface.side2.region &&
-          interface.side1.piece == interface.side2.piece)
-        contact.fail("boundary2", "a boundary cannot be in contact with itself; for self-contact name two boundaries "
-                                  "of the body (split the boundary where the faces meet)");
-      read_pairing(contact, interface);
-      for (const auto& other : problem.contacts)
-        for (const auto* side : {&other.side1, &other.side2})
-          for (const auto* mine : {&interface.side1, &interface.side2})
-            if (mine->piece >= 0 && side->body == mine->body && side->region == mine->region && side->piece == mine->piece)
-              contact.fail("boundary1", "a boundary is in two contacts ('" + other.name + "' and '" + interface.name +
-                                            "'); split it into two boundaries");
-      // Each contact its own law (kind, friction). The tangential coupling shapes the
-      // condensed operator: one for every contact.
-      bool coupling = true;
-      interface.law = read_law(contact, coupling);
-      if (index == 1) problem.tangential_coupling = coupling;
-      problem.contacts.push_back(interface);
-      if (index > 1 && coupling != problem.tangential_coupling)
-        contact.fail("coupling", "every contact must have the same tangential coupling as the first (it is a property "
-                                 "of the condensed operator); kind and friction may differ per contact");
-    }
-    static const toml::table empty;
-    const toml::table* solver = root.optional_table("solver", "[solver]");
-    const TableReader solver_keys_reader(solver ? *solver : empty, "solver", context, root.line());
-    solver_keys_reader.check_keys(schema::table("contact.solver"));
-    read_solver(solver_keys_reader, problem);
-    read_force_loads(root, context, problem);
   }
   read_history(root, context, problem);
-  for (std::size_t b = 0; b < problem.bodies.size(); ++b) {
-    const auto& body = problem.bodies[b];
-    if (!body.rigid) continue;
-    const bool loaded = std::any_of(problem.forces.begin(), problem.forces.end(),
-                                    [b](const contact::ForceLoad& f) { return f.body == static_cast<int>(b); });
-    if (body.rigid->rotation && problem.analysis == AnalysisType::axisymmetric)
-      throw InputError(body.where, "rigid body '" + body.name + "': a rotation has no meaning in axisymmetry (a rigid "
-                                   "body there only translates along the axis)");
-    if (!loaded && !body.rigid->displacement && !body.rigid->rotation)
-      throw InputError(body.where, "rigid body '" + body.name + "' has no load and no displacement: give its displacement in "
-                        "[body.rigid] (displacement = [u1, u2]) or press it with a force ([load] body = \"" + body.name +
-                        "\")");
-    bool in_contact = false;
-    for (const auto& contact : problem.contacts) in_contact = in_contact || contact.side2.body == static_cast<int>(b);
-    if (!in_contact) throw InputError(body.where, "rigid body '" + body.name + "' is in no contact: it would have no effect");
-  }
+  check_rigid_bodies(problem);
   // Pair the zones now, so that geometric errors point at the contact tables (those about
   // a body's own boundaries point at them).
   try {
