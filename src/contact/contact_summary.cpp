@@ -70,13 +70,19 @@ double stick_edge(const std::vector<double>& inner, const std::vector<double>& m
   return direction > 0.0 ? std::min(edge, limit) : std::max(edge, limit);
 }
 
-ContactSummary summarise_pairs(const std::vector<ContactPair>& geometry, const std::vector<PairResult>& pairs,
-                               bool half_model, const ContactSummary* previous) {
-  ContactSummary s;
-  std::vector<std::size_t> order(pairs.size());  // by coordinate
+namespace {
+
+// The pairs' indices ordered by their coordinate along the zone.
+std::vector<std::size_t> order_by_coordinate(const std::vector<PairResult>& pairs) {
+  std::vector<std::size_t> order(pairs.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
   std::stable_sort(order.begin(), order.end(),
                    [&](std::size_t a, std::size_t b) { return pairs[a].coordinate < pairs[b].coordinate; });
+  return order;
+}
+
+void add_pressures_and_forces(const std::vector<ContactPair>& geometry, const std::vector<PairResult>& pairs,
+                              ContactSummary& s) {
   // The centre pressure: at the pair nearest to x1 = 0.
   double nearest = std::numeric_limits<double>::infinity();
   for (const auto& pair : pairs)
@@ -88,6 +94,10 @@ ContactSummary summarise_pairs(const std::vector<ContactPair>& geometry, const s
     s.normal_force += -pairs[i].p_n * geometry[i].weight;
     s.tangential_force += pairs[i].p_t * geometry[i].weight;
   }
+}
+
+void add_contact_extent(const std::vector<PairResult>& pairs, const std::vector<std::size_t>& order,
+                        ContactSummary& s) {
   // Contact radius a, along x1 from 0 (axisymmetric and symmetric models): the outermost
   // pair in |x1| in contact, extrapolated as contact_edge toward the first open pair.
   std::vector<std::size_t> by_distance = order;
@@ -115,12 +125,16 @@ ContactSummary summarise_pairs(const std::vector<ContactPair>& geometry, const s
     if (pair.status != PairStatus::open) first = std::min(first, pair.coordinate), last = std::max(last, pair.coordinate);
   if (first <= last) s.contact_start = first, s.contact_end = last;
 
+}
+
+void add_stick_zone(const std::vector<PairResult>& pairs, const std::vector<std::size_t>& order, bool half_model,
+                    const ContactSummary* previous, ContactSummary& s) {
   // The stick zone: between its outermost stick pairs, each end located by stick_edge toward
   // the next slipping pair; an end with no slipping pair beyond it is the contact's edge there.
   std::vector<std::size_t> stick;  // positions in `order`
   for (std::size_t k = 0; k < order.size(); ++k)
     if (pairs[order[k]].status == PairStatus::stick) stick.push_back(k);
-  if (stick.empty()) return s;
+  if (stick.empty()) return;
   bool any_slip = false;
   for (const auto& pair : pairs) any_slip = any_slip || pair.status == PairStatus::slip;
   // Each end's law: receding when its outermost stick pair moved inward since the previous
@@ -168,6 +182,17 @@ ContactSummary summarise_pairs(const std::vector<ContactPair>& geometry, const s
     s.stick_radius = 0.5 * (s.stick_end - s.stick_start);
     s.stick_offset = 0.5 * (s.stick_end + s.stick_start);
   }
+}
+
+}  // namespace
+
+ContactSummary summarise_pairs(const std::vector<ContactPair>& geometry, const std::vector<PairResult>& pairs,
+                               bool half_model, const ContactSummary* previous) {
+  ContactSummary s;
+  const std::vector<std::size_t> order = order_by_coordinate(pairs);
+  add_pressures_and_forces(geometry, pairs, s);
+  add_contact_extent(pairs, order, s);
+  add_stick_zone(pairs, order, half_model, previous, s);
   return s;
 }
 

@@ -34,6 +34,19 @@ inline void add_piece(bem::ProblemDefinition& problem, const std::string& name, 
   problem.body.conditions.push_back(bc);
 }
 
+// Point constraints that hold only the rigid motion of a body loaded in equilibrium: u = 0
+// at `origin`, u2 = 0 at `corner` (on the same horizontal line).
+inline void hold_rigid_motion(bem::ProblemDefinition& problem, Vec2 origin, Vec2 corner) {
+  bem::PointConstraint at_origin, at_corner;
+  at_origin.position = origin;
+  at_origin.displacement = {0.0, 0.0};
+  at_origin.label = "origin";
+  at_corner.position = corner;
+  at_corner.displacement[1] = 0.0;
+  at_corner.label = "corner";
+  problem.body.constraints = {at_origin, at_corner};
+}
+
 // Homogeneous linear elastic field: u = E0 x with constant strain, its stress and tractions.
 struct LinearField {
   Mat2 gradient;  // du_i/dx_j

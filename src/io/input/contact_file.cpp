@@ -681,10 +681,7 @@ void check_rigid_bodies(const contact::ContactProblem& problem) {
 ContactFile parse_contact_table(toml::table& root_table, const std::string& file_name,
                                 const ParameterOverrides& overrides, const ResourceLimits& limits) {
   ContactFile result;
-  FileContext context;
-  context.overrides = overrides;
-  context.limits = limits;
-  context.file = file_name;
+  FileContext context = FileContext::starting(file_name, overrides, limits);
   const TableReader root(root_table, "", context, 1);
   root.check_keys(schema::table("contact.file"));
   auto& problem = result.problem;

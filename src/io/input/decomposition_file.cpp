@@ -138,10 +138,7 @@ DecompositionFile parse_decomposition(std::string_view text, const std::string& 
 DecompositionFile parse_decomposition_table(toml::table& root_table, const std::string& file_name,
                                             const ParameterOverrides& overrides, const ResourceLimits& limits) {
   DecompositionFile result;
-  FileContext context;
-  context.overrides = overrides;
-  context.limits = limits;
-  context.file = file_name;
+  FileContext context = FileContext::starting(file_name, overrides, limits);
   const TableReader root(root_table, "", context, 1);
   // Body keys at the top level are a one-body habit: say where they go.
   for (const std::string key : {"material", "boundary", "constraint", "interior"})

@@ -488,9 +488,11 @@ bool inside(const std::vector<Vec2>& polygon, const Vec2& point) {
 
 }  // namespace
 
-GmshBoundary boundary_from_curves(const GmshCurves& curves, bool axisymmetric, const std::string& file) {
+namespace {
+
+// The physical curves as pieces, in the file's order; the largest distance from the origin.
+double pieces_from_curves(const GmshCurves& curves, const std::string& file, GmshBoundary& out) {
   std::map<long, Vec2> node_at(curves.nodes.begin(), curves.nodes.end());
-  GmshBoundary out;
   std::set<std::string> names;
   double size = 0.0;
   for (const auto& curve : curves.curves) {
@@ -507,27 +509,35 @@ GmshBoundary boundary_from_curves(const GmshCurves& curves, bool axisymmetric, c
     out.pieces.push_back(piece_from_points(curve.name, points, file));
     for (const auto& p : points) size = std::max(size, p.norm());
   }
-  // Chain the pieces into loops by their end points; orient each loop.
+  return size;
+}
+
+// A closed chain of pieces (piece, travelled forward) and its outline.
+struct Loop {
+  std::vector<std::pair<std::size_t, bool>> pieces;
+  std::vector<Vec2> polygon;
+};
+
+// Chains the pieces into loops by their end points: forward from a piece's end, then
+// backward from its start if it does not close. An open chain is an error, except one
+// ending on the axis in axisymmetry.
+std::vector<Loop> chain_loops(const std::vector<BoundaryPiece>& pieces, double size, bool axisymmetric,
+                              const std::string& file) {
   const double tolerance = 1e-9 * std::max(size, 1e-300);
   const auto same = [tolerance](const Vec2& a, const Vec2& b) { return (a - b).norm() <= tolerance; };
-  const std::size_t n = out.pieces.size();
+  const std::size_t n = pieces.size();
   std::vector<bool> used(n, false);
-  struct Loop {
-    std::vector<std::pair<std::size_t, bool>> pieces;  // piece, travelled forward
-    std::vector<Vec2> polygon;
-  };
   std::vector<Loop> loops;
   for (std::size_t first = 0; first < n; ++first) {
     if (used[first]) continue;
     Loop loop;
-    // Walk forward from the first piece's end, then backward from its start if it does not close.
     std::deque<std::pair<std::size_t, bool>> chain{{first, true}};
     used[first] = true;
     const auto end_of = [&](const std::pair<std::size_t, bool>& p) {
-      return p.second ? out.pieces[p.first].end : out.pieces[p.first].start;
+      return p.second ? pieces[p.first].end : pieces[p.first].start;
     };
     const auto start_of = [&](const std::pair<std::size_t, bool>& p) {
-      return p.second ? out.pieces[p.first].start : out.pieces[p.first].end;
+      return p.second ? pieces[p.first].start : pieces[p.first].end;
     };
     const auto extend = [&](bool at_end) {
       for (;;) {
@@ -558,8 +568,8 @@ GmshBoundary boundary_from_curves(const GmshCurves& curves, bool axisymmetric, c
       if (!on_axis) {
         std::ostringstream where;
         where << "(" << b.x() << ", " << b.y() << ")";
-        throw InputError(SourceLocation{file, 0, out.pieces[chain.back().first].name},
-                         "the physical curves do not close: curve '" + out.pieces[chain.back().first].name +
+        throw InputError(SourceLocation{file, 0, pieces[chain.back().first].name},
+                         "the physical curves do not close: curve '" + pieces[chain.back().first].name +
                              "' ends at " + where.str() +
                              " where no other physical curve starts (every boundary curve needs a physical name" +
                              std::string(axisymmetric ? "; in axisymmetry an open chain must end on the axis r = 0)"
@@ -568,14 +578,18 @@ GmshBoundary boundary_from_curves(const GmshCurves& curves, bool axisymmetric, c
     }
     loop.pieces.assign(chain.begin(), chain.end());
     for (const auto& [piece, forward] : loop.pieces) {
-      BoundaryPiece travelled = out.pieces[piece];
+      BoundaryPiece travelled = pieces[piece];
       if (!forward) reverse(travelled);
       for (const auto& p : outline(travelled)) loop.polygon.push_back(p);
     }
     loops.push_back(std::move(loop));
   }
-  // Outer loops (inside no other) counter-clockwise, holes clockwise.
-  std::vector<bool> flipped(n, false);
+  return loops;
+}
+
+// Outer loops (inside no other) counter-clockwise, holes clockwise: the pieces to reverse.
+std::vector<bool> pieces_to_reverse(const std::vector<Loop>& loops, std::size_t pieces) {
+  std::vector<bool> flipped(pieces, false);
   for (std::size_t l = 0; l < loops.size(); ++l) {
     int depth = 0;
     for (std::size_t m = 0; m < loops.size(); ++m)
@@ -584,7 +598,17 @@ GmshBoundary boundary_from_curves(const GmshCurves& curves, bool axisymmetric, c
     const bool is_ccw = signed_area(loops[l].polygon) > 0.0;
     for (const auto& [piece, forward] : loops[l].pieces) flipped[piece] = (forward != (want_ccw == is_ccw));
   }
-  for (std::size_t k = 0; k < n; ++k)
+  return flipped;
+}
+
+}  // namespace
+
+GmshBoundary boundary_from_curves(const GmshCurves& curves, bool axisymmetric, const std::string& file) {
+  GmshBoundary out;
+  const double size = pieces_from_curves(curves, file, out);
+  const auto loops = chain_loops(out.pieces, size, axisymmetric, file);
+  const auto flipped = pieces_to_reverse(loops, out.pieces.size());
+  for (std::size_t k = 0; k < out.pieces.size(); ++k)
     if (flipped[k]) {
       reverse(out.pieces[k]);
       out.reversed.push_back(out.pieces[k].name);

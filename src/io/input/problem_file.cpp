@@ -81,10 +81,7 @@ ProblemFile parse_problem_table(toml::table& root_table, const std::string& file
                                 const ParameterOverrides& overrides, const ResourceLimits& limits) {
 
   ProblemFile result;
-  FileContext context;
-  context.file = file_name;
-  context.overrides = overrides;
-  context.limits = limits;
+  FileContext context = FileContext::starting(file_name, overrides, limits);
   const TableReader root(root_table, "", context, 1);
   root.check_keys(schema::table("file"));
 

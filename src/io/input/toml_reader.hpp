@@ -35,6 +35,15 @@ struct FileContext {
   // copied into the file's result, printed on stderr and kept in summary.json.
   mutable std::vector<std::string> warnings;
 
+  // A file's reading starts from its name, the command's overrides and the limits.
+  static FileContext starting(std::string file, ParameterOverrides overrides, ResourceLimits limits) {
+    FileContext context;
+    context.file = std::move(file);
+    context.overrides = std::move(overrides);
+    context.limits = limits;
+    return context;
+  }
+
   bool axisymmetric() const { return analysis == AnalysisType::axisymmetric; }
   // Numbers, pi and parameters (geometry, material, parameter definitions).
   ExpressionScope constant_scope() const;

@@ -36,14 +36,7 @@ bem::ProblemDefinition strip(int per_unit, bool free_body = false) {
   test_support::add_piece(problem, "top", {4, 1}, {0, 1}, 4 * per_unit, {T, T}, zero, zero);
   if (free_body) {
     test_support::add_piece(problem, "start", {0, 1}, {0, 0}, per_unit, {T, T}, zero, start_load);
-    bem::PointConstraint origin, corner;
-    origin.position = {0, 0};
-    origin.displacement = {0.0, 0.0};
-    origin.label = "origin";
-    corner.position = {4, 0};
-    corner.displacement[1] = 0.0;
-    corner.label = "corner";
-    problem.body.constraints = {origin, corner};
+    test_support::hold_rigid_motion(problem, {0, 0}, {4, 0});
   } else {
     test_support::add_piece(problem, "start", {0, 1}, {0, 0}, per_unit, {U, U}, zero, zero);
   }

@@ -38,14 +38,7 @@ bem::ProblemDefinition strip(int per_unit, bem::OperatorKind kind, bool free_bod
     return problem;
   }
   test_support::add_piece(problem, "start", {0, 1}, {0, 0}, per_unit, {T, T}, zero, push);
-  bem::PointConstraint origin, corner;
-  origin.position = {0, 0};
-  origin.displacement = {0.0, 0.0};
-  origin.label = "origin";
-  corner.position = {4, 0};
-  corner.displacement[1] = 0.0;
-  corner.label = "corner";
-  problem.body.constraints = {origin, corner};
+  test_support::hold_rigid_motion(problem, {0, 0}, {4, 0});
   return problem;
 }
 
