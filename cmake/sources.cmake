@@ -71,6 +71,7 @@ set(BEMCONTACT_CONTACT_SOURCES
   src/contact/model_routes.cpp
   src/contact/pairing.cpp
   src/contact/rigid_profile.cpp
+  src/contact/rough_profile.cpp
   src/contact/thesis_solver.cpp
   src/contact/zone_ends.cpp)
 set(BEMCONTACT_IO_SOURCES
@@ -87,6 +88,7 @@ set(BEMCONTACT_IO_SOURCES
   src/io/input/problem_reader.cpp
   src/io/input/problem_schema.cpp
   src/io/input/problem_text.cpp
+  src/io/input/profile_file.cpp
   src/io/input/suggestions.cpp
   src/io/input/toml_reader.cpp
   src/io/output/contact_writer.cpp
