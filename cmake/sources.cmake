@@ -35,7 +35,8 @@ set(BEMCONTACT_REFERENCE_SOURCES
   src/reference/spence.cpp
   src/reference/stress_state.cpp
   src/reference/two_layer_ring.cpp
-  src/reference/uniaxial_tension.cpp)
+  src/reference/uniaxial_tension.cpp
+  src/reference/wavy_contact.cpp)
 set(BEMCONTACT_INTEGRATION_SOURCES
   src/integration/axisymmetric_element.cpp
   src/integration/plane_element.cpp
@@ -113,7 +114,8 @@ set(BEMCONTACT_VALIDATION_SOURCES
   src/validation/fretting_cases.cpp
   src/validation/multibody_cases.cpp
   src/validation/plane_cases.cpp
-  src/validation/records.cpp)
+  src/validation/records.cpp
+  src/validation/wavy_cases.cpp)
 set(BEMCONTACT_PARALLEL_SOURCES
   src/parallel/session.cpp)
 
