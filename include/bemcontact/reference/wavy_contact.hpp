@@ -10,8 +10,9 @@
 //   p(x) = (2 p_bar / sin^2(pi a / lambda)) cos(pi x / lambda) sqrt(sin^2(pi a / lambda) -
 //          sin^2(pi x / lambda)).
 // (Equation numbers are not cited: they could not be checked here.) Checks: p(x) integrates
-// to p_bar lambda over the crest; for a << lambda the crest has curvature 1/R = 4 pi^2 Delta / lambda^2 and the load
-// per wave p_bar lambda = pi^3 E' Delta a^2 / lambda^2 is 2D Hertz's pi a^2 E' / (4 R).
+// to p_bar lambda over the crest; for a << lambda the crest has curvature 1/R =
+// 4 pi^2 Delta / lambda^2 and the load per wave p_bar lambda = pi^3 E' Delta a^2 / lambda^2
+// is 2D Hertz's pi a^2 E' / (4 R).
 // E' = E/(1 - nu^2) in plane strain (contact_modulus(body, type)).
 namespace bemcontact::reference {
 
