@@ -35,7 +35,8 @@ set(BEMCONTACT_REFERENCE_SOURCES
   src/reference/spence.cpp
   src/reference/stress_state.cpp
   src/reference/two_layer_ring.cpp
-  src/reference/uniaxial_tension.cpp)
+  src/reference/uniaxial_tension.cpp
+  src/reference/wavy_contact.cpp)
 set(BEMCONTACT_INTEGRATION_SOURCES
   src/integration/axisymmetric_element.cpp
   src/integration/plane_element.cpp
@@ -71,6 +72,7 @@ set(BEMCONTACT_CONTACT_SOURCES
   src/contact/model_routes.cpp
   src/contact/pairing.cpp
   src/contact/rigid_profile.cpp
+  src/contact/rough_profile.cpp
   src/contact/thesis_solver.cpp
   src/contact/zone_ends.cpp)
 set(BEMCONTACT_IO_SOURCES
@@ -87,6 +89,7 @@ set(BEMCONTACT_IO_SOURCES
   src/io/input/problem_reader.cpp
   src/io/input/problem_schema.cpp
   src/io/input/problem_text.cpp
+  src/io/input/profile_file.cpp
   src/io/input/suggestions.cpp
   src/io/input/toml_reader.cpp
   src/io/output/contact_writer.cpp
@@ -111,7 +114,8 @@ set(BEMCONTACT_VALIDATION_SOURCES
   src/validation/fretting_cases.cpp
   src/validation/multibody_cases.cpp
   src/validation/plane_cases.cpp
-  src/validation/records.cpp)
+  src/validation/records.cpp
+  src/validation/wavy_cases.cpp)
 set(BEMCONTACT_PARALLEL_SOURCES
   src/parallel/session.cpp)
 

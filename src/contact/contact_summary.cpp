@@ -53,6 +53,17 @@ double contact_edge(double outer, double p, double inner, double q, double limit
 
 }  // namespace
 
+int count_spots(const std::vector<PairResult>& pairs, const std::vector<std::size_t>& order) {
+  int spots = 0;
+  bool previous_closed = false;
+  for (const std::size_t k : order) {
+    const bool closed = pairs[k].status != PairStatus::open;
+    if (closed && !previous_closed) ++spots;
+    previous_closed = closed;
+  }
+  return spots;
+}
+
 double stick_edge(const std::vector<double>& inner, const std::vector<double>& margins, double limit,
                   StickEdgeLaw law) {
   const double outer = inner.front();
@@ -94,6 +105,21 @@ void add_pressures_and_forces(const std::vector<ContactPair>& geometry, const st
     s.normal_force += -pairs[i].p_n * geometry[i].weight;
     s.tangential_force += pairs[i].p_t * geometry[i].weight;
   }
+}
+
+// The share of the zone in contact, the mean current gap, and the contact spots (runs of
+// closed pairs along the coordinate).
+void add_zone_coverage(const std::vector<ContactPair>& geometry, const std::vector<PairResult>& pairs,
+                       const std::vector<std::size_t>& order, ContactSummary& s) {
+  double zone = 0.0, closed = 0.0, gap = 0.0;
+  for (std::size_t i = 0; i < pairs.size(); ++i) {
+    const double w = geometry[i].weight;
+    zone += w;
+    if (pairs[i].status != PairStatus::open) closed += w;
+    else gap += w * std::max(pairs[i].gap - pairs[i].jump_n, 0.0);
+  }
+  if (zone > 0.0) s.contact_fraction = closed / zone, s.mean_gap = gap / zone;
+  s.contact_spots = count_spots(pairs, order);
 }
 
 void add_contact_extent(const std::vector<PairResult>& pairs, const std::vector<std::size_t>& order,
@@ -191,6 +217,7 @@ ContactSummary summarise_pairs(const std::vector<ContactPair>& geometry, const s
   ContactSummary s;
   const std::vector<std::size_t> order = order_by_coordinate(pairs);
   add_pressures_and_forces(geometry, pairs, s);
+  add_zone_coverage(geometry, pairs, order, s);
   add_contact_extent(pairs, order, s);
   add_stick_zone(pairs, order, half_model, previous, s);
   return s;

@@ -20,6 +20,17 @@ geometry::BoundaryPiece arc(const std::string& name, const Vec2& a, const Vec2& 
   return piece;
 }
 
+void polyline(const std::vector<Vec2>& points, std::vector<geometry::BoundaryPiece>& pieces) {
+  if (points.size() < 2) throw GeometryError("rigid contour: needs at least two points");
+  pieces.reserve(points.size() - 1);
+  for (std::size_t k = 0; k + 1 < points.size(); ++k) {
+    if ((points[k + 1] - points[k]).norm() == 0.0)
+      throw GeometryError("rigid contour: points " + std::to_string(k + 1) + " and " + std::to_string(k + 2) +
+                          " coincide");
+    pieces.push_back(line("segment " + std::to_string(k + 1), points[k], points[k + 1]));
+  }
+}
+
 }  // namespace
 
 std::vector<geometry::BoundaryPiece> rigid_contour(const ProfileShape& s) {
@@ -47,13 +58,14 @@ std::vector<geometry::BoundaryPiece> rigid_contour(const ProfileShape& s) {
     pieces.push_back(line("left flank", c + Vec2(-x, s.height), c));
     pieces.push_back(line("right flank", c, c + Vec2(x, s.height)));
   } else if (s.profile == "contour") {
-    if (s.points.size() < 2) throw GeometryError("rigid contour: needs at least two points");
-    for (std::size_t k = 0; k + 1 < s.points.size(); ++k) {
-      if ((s.points[k + 1] - s.points[k]).norm() == 0.0)
-        throw GeometryError("rigid contour: points " + std::to_string(k + 1) + " and " + std::to_string(k + 2) +
-                            " coincide");
-      pieces.push_back(line("segment " + std::to_string(k + 1), s.points[k], s.points[k + 1]));
-    }
+    polyline(s.points, pieces);
+  } else if (s.profile == "rough") {
+    const std::vector<double> h = rough_heights(s.rough);
+    std::vector<Vec2> points(h.size());
+    const double spacing = s.rough.length / static_cast<double>(h.size() - 1);
+    for (std::size_t k = 0; k < h.size(); ++k)
+      points[k] = c + Vec2(-0.5 * s.rough.length + spacing * static_cast<double>(k), -h[k]);
+    polyline(points, pieces);
   } else {
     throw GeometryError("rigid body: unknown profile '" + s.profile + "'");
   }

@@ -535,3 +535,22 @@ TEST(CommandLine, ProbeErrorsAreBadInputAndWriteNothing) {
   EXPECT_NE(changed.output.find("plate.toml' changed since the run"), std::string::npos) << changed.output;
   fs::remove_all(dir);
 }
+
+// A rigid contour from a CSV file whose x turns back: exit code 2, the message names the CSV
+// file, its line and the problem file's key.
+TEST(CommandLine, BadProfileFileIsAnInputError) {
+  const auto dir = scratch("profile");
+  std::string text = example_text("contact_rough_profile.toml");
+  const auto from = text.find("profile = \"rough\""), to = text.find("[[contact]]");
+  ASSERT_NE(from, std::string::npos);
+  text.replace(from, to - from, "profile = \"contour\"\npoints_file = \"measured.csv\"\n\n");
+  write(dir / "rough.toml", text);
+  write(dir / "measured.csv", "x,y\n-2.0,0.01\n0.0,0.0\n-1.0,0.01\n2.0,0.01\n");
+  const auto out = run("run " + (dir / "rough.toml").string() + " -o " + (dir / "out").string());
+  EXPECT_EQ(out.exit_code, 2) << out.output;
+  EXPECT_NE(out.output.find((dir / "measured.csv").string() + ":4: key 'body[2].rigid.points_file'"), std::string::npos)
+      << out.output;
+  write(dir / "measured.csv", "x,y\n-2.0,0.01\n0.0,0.0\n2.0,0.01\n");
+  EXPECT_EQ(run("run " + (dir / "rough.toml").string() + " -o " + (dir / "out").string() + " -q").exit_code, 0);
+  fs::remove_all(dir);
+}

@@ -3,7 +3,9 @@
 
 #include "../unit/contact/contact_fixtures.hpp"
 
+#include <filesystem>
 #include <fstream>
+#include <unistd.h>
 #include <sstream>
 
 #include "bemcontact/io/input/problem_text.hpp"
@@ -350,6 +352,80 @@ TEST(ContactErrors, NamesWhoseFilesWouldCoincide) {
   EXPECT_TRUE(contains(contact, "of contact 'ball boundary' would also be that of body 'ball'")) << contact;
   const auto motions = named("motions");
   EXPECT_TRUE(contains(motions, "would also be that of the run's own motions.csv")) << motions;
+}
+
+}  // namespace bemcontact
+
+namespace bemcontact {
+namespace {
+
+std::string rough_text() { return test_support::example_text("contact_rough_profile.toml"); }
+
+std::string rough_error(const std::string& text) {
+  try {
+    io::parse_contact_problem(text, "rough.toml");
+  } catch (const InputError& error) {
+    return error.what();
+  }
+  return "no error";
+}
+
+}  // namespace
+
+// Keys of another profile and values that describe no rough profile, named by their key.
+TEST(ContactErrors, RoughProfileKeys) {
+  EXPECT_NO_THROW(io::parse_contact_problem(rough_text(), "rough.toml"));
+  auto message = rough_error(replaced(rough_text(), "seed = 7", "seed = 7\nradius = 1.0"));
+  EXPECT_TRUE(contains(message, "rough.toml:") && contains(message, "body[2].rigid.radius")) << message;
+  EXPECT_TRUE(contains(message, "no effect")) << message;
+  message = rough_error(replaced(rough_text(), "seed = 7", "seed = 7\npoints_file = \"p.csv\""));
+  EXPECT_TRUE(contains(message, "body[2].rigid.points_file") && contains(message, "contour profile only")) << message;
+  message = rough_error(replaced(rough_text(), "hurst = 0.8", "hurst = 1.0"));
+  EXPECT_TRUE(contains(message, "body[2].rigid.hurst") && contains(message, "0 < hurst < 1")) << message;
+  message = rough_error(replaced(rough_text(), "short_wavelength = 0.1", "short_wavelength = 0.004"));
+  EXPECT_TRUE(contains(message, "body[2].rigid.short_wavelength") && contains(message, "Nyquist")) << message;
+  message = rough_error(replaced(rough_text(), "long_wavelength = 2.0", "long_wavelength = 5.0"));
+  EXPECT_TRUE(contains(message, "body[2].rigid.long_wavelength") && contains(message, "exceeds")) << message;
+  message = rough_error(replaced(rough_text(), "rms_height = \"rms\"", "rms_height = 0.0"));
+  EXPECT_TRUE(contains(message, "body[2].rigid.rms_height")) << message;
+  message = rough_error(replaced(rough_text(), "samples = 1601", ""));
+  EXPECT_TRUE(contains(message, "body[2].rigid") && contains(message, "samples")) << message;
+  // Keys of the rough profile on another one.
+  message = rough_error(replaced(example("contact_rigid_punch.toml"), "half_width = \"a\"", "half_width = \"a\"\nhurst = 0.5"));
+  EXPECT_TRUE(contains(message, "body[2].rigid.hurst") && contains(message, "rough profile only")) << message;
+}
+
+// A contour from a CSV file: relative to the problem file; its errors name the CSV file and
+// line; points and points_file together are refused.
+TEST(ContactErrors, ContourPointsFile) {
+  const auto dir = std::filesystem::temp_directory_path() / ("bemcontact_contour_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const std::string face = "profile = \"flat\"\ncenter = [0.0, 0.0]    # middle of the face, touching the block\nhalf_width = \"a\"";
+  auto text = replaced(example("contact_rigid_punch.toml"), face, "profile = \"contour\"\npoints_file = \"face.csv\"");
+  std::ofstream(dir / "punch.toml") << text;
+  std::ofstream(dir / "face.csv") << "x,y\n-1.0,0.0\n1.0,0.0\n";
+  const auto file = io::read_contact_file(dir / "punch.toml");
+  EXPECT_EQ(file.problem.bodies[1].rigid->contour.size(), 1u);
+  std::ofstream(dir / "face.csv") << "x,y\n-1.0,0.0\n1.0,0.0\n0.5,0.0\n";
+  std::string message;
+  try {
+    io::read_contact_file(dir / "punch.toml");
+  } catch (const InputError& error) {
+    message = error.what();
+    EXPECT_EQ(error.where().file, (dir / "face.csv").string());
+    EXPECT_EQ(error.where().line, 4);
+    EXPECT_EQ(error.where().key, "body[2].rigid.points_file");
+  }
+  EXPECT_TRUE(contains(message, "increase strictly")) << message;
+  std::ofstream(dir / "punch.toml") << replaced(text, "points_file", "points = [[-1.0, 0.0], [1.0, 0.0]]\npoints_file");
+  message.clear();
+  try {
+    io::read_contact_file(dir / "punch.toml");
+  } catch (const InputError& error) {
+    message = error.what();
+  }
+  EXPECT_TRUE(contains(message, "not both")) << message;
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace bemcontact

@@ -61,6 +61,13 @@ struct ContactSummary {
   double tangential_force = 0.0;  // integral of p_t: body 1's shear along the pair tangent
   double approach = 0.0;        // delta of the force-loaded platen (0 without a force load)
   int pairs_in_contact = 0;
+  // Over the pairs of the zone (the candidate zone: every pair, open or closed), weighted by
+  // their weights (lengths; areas 2 pi r dr in axisymmetry): the share in contact, and the
+  // mean of the current gap (gap - jump_n, 0 where closed). Spots: maximal runs of pairs in
+  // contact, consecutive along the coordinate (rough contact: the number of contact patches).
+  double contact_fraction = 0.0;
+  int contact_spots = 0;
+  double mean_gap = 0.0;
   int newton_iterations = 0, kalker_iterations = 0, threshold_iterations = 0, gmres_cycles = 0;
   double residual = 0.0;        // relative complementarity residual
   double dissipated_energy = 0.0;  // by friction since the start: -sum weight p_t (slip increment)

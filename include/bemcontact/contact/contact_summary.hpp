@@ -17,6 +17,10 @@ namespace bemcontact::contact {
 ContactSummary summarise_pairs(const std::vector<ContactPair>& geometry, const std::vector<PairResult>& pairs,
                                bool half_model, const ContactSummary* previous);
 
+// The contact spots: maximal runs of pairs in contact (stick or slip), consecutive in
+// `order` (the pairs' indices sorted by coordinate).
+int count_spots(const std::vector<PairResult>& pairs, const std::vector<std::size_t>& order);
+
 // Where a stick zone ends beyond its outermost stick pair, at coordinate `outer` =
 // inner[0], before the slipping pair at `limit`, from the slip margins m = 1 - |p_t| /
 // (beta |p_n|) of the stick pairs at `inner` (from the outermost inward). Near a stick edge

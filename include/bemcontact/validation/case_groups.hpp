@@ -9,4 +9,5 @@ std::vector<Case> decomposition_cases();  // src/validation/decomposition_cases.
 std::vector<Case> contact_cases();        // src/validation/contact_cases.cpp
 std::vector<Case> multibody_cases();      // src/validation/multibody_cases.cpp
 std::vector<Case> fretting_cases();       // src/validation/fretting_cases.cpp
+std::vector<Case> rough_cases();          // src/validation/wavy_cases.cpp
 }  // namespace bemcontact::validation

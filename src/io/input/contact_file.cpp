@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <filesystem>
 #include <optional>
 #include <fstream>
 #include <limits>
@@ -12,6 +14,7 @@
 
 #include "bemcontact/contact/pairing.hpp"
 #include "bemcontact/contact/rigid_profile.hpp"
+#include "bemcontact/contact/rough_profile.hpp"
 #include "io/input/body_parser.hpp"
 #include "bemcontact/io/input/decomposition_file.hpp"
 #include "io/input/region_parser.hpp"
@@ -22,6 +25,7 @@
 #include "bemcontact/io/text_format.hpp"
 #include "bemcontact/io/file_names.hpp"
 #include "bemcontact/io/input/problem_text.hpp"
+#include "bemcontact/io/input/profile_file.hpp"
 
 namespace bemcontact::io {
 namespace {
@@ -109,11 +113,58 @@ contact::Amplitude read_amplitude(const TableReader& reader, std::string_view ke
   return amplitude;
 }
 
+// A contour's points: the list `points`, or the CSV file `points_file` (relative to the
+// problem file's folder; its errors name the CSV file and line).
+std::vector<Vec2> read_contour_points(const TableReader& rigid, const FileContext& context) {
+  if (rigid.has("points") && rigid.has("points_file"))
+    rigid.fail("points_file", "give the contour's points either as a list (points) or as a file (points_file), not both");
+  if (rigid.has("points_file")) {
+    const auto name = rigid.optional_string("points_file");
+    if (!name || name->empty()) rigid.fail("points_file", "the profile's CSV file (x, y per line) as a string");
+    std::filesystem::path file(*name);
+    if (file.is_relative() && !context.file.empty() && context.file.front() != '<')
+      file = std::filesystem::path(context.file).parent_path() / file;
+    return read_profile_points(file, rigid.key_path("points_file"));
+  }
+  const toml::node& node = rigid.require("points", "a list of points, or points_file = \"profile.csv\"");
+  const toml::array* list = node.as_array();
+  if (!list) rigid.fail("points", "must be a list of points [" + context.point_form() + ", ...]");
+  std::vector<Vec2> points;
+  for (const toml::node& point : *list) points.push_back(read_point(point, rigid.where("points"), context));
+  return points;
+}
+
+// A rough profile's spectrum and samples; the relations between the keys named by the key
+// that breaks them.
+contact::RoughProfileSpec read_rough_spec(const TableReader& rigid, const FileContext& context) {
+  contact::RoughProfileSpec spec;
+  spec.length = rigid.number("length");
+  spec.samples = read_integer(rigid.require("samples", "an integer"), rigid.where("samples"), context);
+  spec.hurst = rigid.number("hurst");
+  spec.rms_height = rigid.number("rms_height");
+  spec.long_wavelength = rigid.optional_number("long_wavelength").value_or(spec.length);
+  spec.short_wavelength = rigid.number("short_wavelength");
+  spec.seed = static_cast<std::uint64_t>(rigid.integer_or("seed", 0));
+  if (spec.long_wavelength > spec.length)
+    rigid.fail("long_wavelength", "the long cut-off " + format_number(spec.long_wavelength) +
+                                      " exceeds the profile's length " + format_number(spec.length) +
+                                      ": the profile holds no longer mode");
+  if (spec.short_wavelength > spec.long_wavelength)
+    rigid.fail("short_wavelength", "the short cut-off " + format_number(spec.short_wavelength) +
+                                       " exceeds the long one " + format_number(spec.long_wavelength));
+  if (const std::string problem = contact::rough_profile_problem(spec); !problem.empty())
+    rigid.fail(problem.find("Nyquist") != std::string::npos || problem.find("no mode") != std::string::npos
+                   ? "short_wavelength"
+                   : "profile",
+               "rough profile: " + problem);
+  return spec;
+}
+
 contact::RigidBody read_rigid(const TableReader& rigid, const FileContext& context, double extent) {
   rigid.check_keys(schema::table("rigid"));
   contact::ProfileShape shape;
   shape.profile = rigid.choice("profile");
-  if (shape.profile.empty()) rigid.fail("profile", "missing: sphere, cylinder, flat, cone or contour");
+  if (shape.profile.empty()) rigid.fail("profile", "missing: sphere, cylinder, flat, cone, contour or rough");
   const bool round = shape.profile == "sphere" || shape.profile == "cylinder";
   auto only_for = [&](const char* key, bool allowed, const std::string& which) {
     if (rigid.has(key) && !allowed)
@@ -125,10 +176,15 @@ contact::RigidBody read_rigid(const TableReader& rigid, const FileContext& conte
   only_for("edge_radius", shape.profile == "flat", "flat");
   only_for("half_angle", shape.profile == "cone", "cone");
   only_for("apex", shape.profile == "cone", "cone");
-  only_for("center", shape.profile != "cone" && shape.profile != "contour", "sphere, cylinder and flat");
+  only_for("center", shape.profile != "cone" && shape.profile != "contour" && shape.profile != "rough",
+           "sphere, cylinder and flat");
   only_for("height", shape.profile == "flat" || shape.profile == "cone", "flat and cone");
   only_for("points", shape.profile == "contour", "contour");
-  const char* position_key = shape.profile == "cone" ? "apex" : "center";
+  only_for("points_file", shape.profile == "contour", "contour");
+  for (const char* key : {"mean_line", "length", "samples", "hurst", "rms_height", "long_wavelength",
+                          "short_wavelength", "seed"})
+    only_for(key, shape.profile == "rough", "rough");
+  const char* position_key = shape.profile == "cone" ? "apex" : shape.profile == "rough" ? "mean_line" : "center";
   if (shape.profile != "contour")
     shape.center = read_point(rigid.require(position_key, "a point " + context.point_form()), rigid.where(position_key),
                               context);
@@ -143,12 +199,8 @@ contact::RigidBody read_rigid(const TableReader& rigid, const FileContext& conte
     shape.half_angle = degrees * kPi / 180.0;
   }
   shape.height = rigid.optional_number("height").value_or(2.0 * extent + 2.0 * shape.half_width + shape.edge_radius);
-  if (shape.profile == "contour") {
-    const toml::node& node = rigid.require("points", "a list of points");
-    const toml::array* list = node.as_array();
-    if (!list) rigid.fail("points", "must be a list of points [" + context.point_form() + ", ...]");
-    for (const toml::node& point : *list) shape.points.push_back(read_point(point, rigid.where("points"), context));
-  }
+  if (shape.profile == "contour") shape.points = read_contour_points(rigid, context);
+  if (shape.profile == "rough") shape.rough = read_rough_spec(rigid, context);
   contact::RigidBody body;
   body.profile = shape.profile;
   if (shape.profile != "contour") body.reference = shape.center;

@@ -89,7 +89,8 @@ bool is_header(const std::vector<std::string>& fields) {
 
 }  // namespace
 
-std::vector<ListedPoint> parse_points_file(std::string_view text, const std::string& file_name) {
+std::vector<ListedPoint> parse_points_file(std::string_view text, const std::string& file_name,
+                                           std::size_t max_points) {
   std::vector<ListedPoint> points;
   std::optional<std::array<std::size_t, 2>> columns;
   std::size_t width = 2;
@@ -109,6 +110,8 @@ std::vector<ListedPoint> parse_points_file(std::string_view text, const std::str
       continue;
     }
     if (!columns) columns = std::array<std::size_t, 2>{0, 1};
+    if (points.size() >= max_points)
+      throw InputError(where, "more than " + std::to_string(max_points) + " points, the most this file may hold");
     if (fields.size() != width)
       throw InputError(where, "'" + std::string(line) + "' has " + std::to_string(fields.size()) + " values; " +
                                   std::to_string(width) + " expected (x,y per line" +

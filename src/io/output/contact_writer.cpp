@@ -37,6 +37,9 @@ nlohmann::json summary_json(const contact::ContactSummary& s) {
           {"tangential_force", s.tangential_force},
           {"approach", s.approach},
           {"pairs_in_contact", s.pairs_in_contact},
+          {"contact_fraction", s.contact_fraction},
+          {"contact_spots", s.contact_spots},
+          {"mean_gap", s.mean_gap},
           {"stick_zone", {s.stick_start, s.stick_end}},
           {"stick_offset", s.stick_offset},
           {"contact_zone", {s.contact_start, s.contact_end}},
@@ -125,6 +128,9 @@ CsvTable contact_steps_table(const contact::ContactInterfaceResult& result) {
                   {"tangential_force", c},
                   {"approach", c},
                   {"pairs_in_contact", i},
+                  {"contact_fraction", c},
+                  {"contact_spots", i},
+                  {"mean_gap", c},
                   {"dissipated_energy", c},
                   {"newton_iterations", i},
                   {"kalker_iterations", i},
@@ -137,7 +143,8 @@ CsvTable contact_steps_table(const contact::ContactInterfaceResult& result) {
     table.row() << static_cast<double>(k + 1) << s.time << s.contact_radius << s.stick_radius << s.stick_start
                 << s.stick_end << s.stick_offset << s.contact_start << s.contact_end << s.peak_pressure
                 << s.centre_pressure << s.normal_force << s.tangential_force << s.approach
-                << static_cast<double>(s.pairs_in_contact) << s.dissipated_energy
+                << static_cast<double>(s.pairs_in_contact) << s.contact_fraction
+                << static_cast<double>(s.contact_spots) << s.mean_gap << s.dissipated_energy
                 << static_cast<double>(s.newton_iterations) << static_cast<double>(s.kalker_iterations)
                 << static_cast<double>(s.threshold_iterations) << static_cast<double>(s.gmres_cycles) << s.residual;
   }
@@ -295,6 +302,9 @@ std::string contact_report_text(const contact::ContactProblem& problem, const co
     std::snprintf(line, sizeof line,
                   "  peak pressure %.6g, centre pressure %.6g, normal force %.6g, tangential force %.6g, approach %.6g\n",
                   s.peak_pressure, s.centre_pressure, s.normal_force, s.tangential_force, s.approach);
+    out += line;
+    std::snprintf(line, sizeof line, "  contact fraction %.4g of the zone in %d spot%s, mean gap %.6g\n",
+                  s.contact_fraction, s.contact_spots, s.contact_spots == 1 ? "" : "s", s.mean_gap);
     out += line;
   }
   if (problem.contacts.empty()) return out;

@@ -68,3 +68,52 @@ TEST(StickEdge, LowEndsClampingAndFallback) {
 }
 
 }  // namespace bemcontact::contact
+
+namespace bemcontact::contact {
+namespace {
+
+// Contact fraction, spots and mean gap on a hand-made set of pairs (listed out of order: the
+// spots follow the coordinate, not the list).
+TEST(ContactSummary, FractionSpotsAndMeanGap) {
+  // coordinate, weight, closed, gap, jump_n
+  struct Row {
+    double x, weight;
+    bool closed;
+    double gap, jump;
+  };
+  const std::vector<Row> rows = {{3.0, 1.0, false, 0.5, 0.1}, {0.0, 0.5, false, 1.0, 0.0}, {1.0, 1.0, true, 0.2, 0.2},
+                                 {2.0, 1.0, true, 0.3, 0.3},  {4.0, 1.0, true, 0.0, 0.0},  {5.0, 1.0, false, 0.2, 0.0},
+                                 {7.0, 0.5, true, 0.1, 0.1},  {6.0, 1.0, true, 0.4, 0.4}};
+  std::vector<ContactPair> geometry(rows.size());
+  std::vector<PairResult> pairs(rows.size());
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    geometry[i].weight = rows[i].weight;
+    pairs[i].coordinate = rows[i].x;
+    pairs[i].gap = rows[i].gap;
+    pairs[i].jump_n = rows[i].jump;
+    pairs[i].status = rows[i].closed ? PairStatus::slip : PairStatus::open;
+    pairs[i].p_n = rows[i].closed ? -1.0 : 0.0;
+  }
+  const ContactSummary s = summarise_pairs(geometry, pairs, false, nullptr);
+  // In contact by coordinate: 0 open, 1 2 closed, 3 open, 4 closed, 5 open, 6 7 closed.
+  EXPECT_EQ(s.contact_spots, 3);
+  EXPECT_EQ(s.pairs_in_contact, 5);
+  // Weights: zone 7, closed 1 + 1 + 1 + 1 + 0.5 = 4.5.
+  EXPECT_DOUBLE_EQ(s.contact_fraction, 4.5 / 7.0);
+  // Open pairs' current gaps: 0.5 (0.5 - 0.1 = 0.4, weight 1), x = 0 (1.0, weight 0.5), x = 5 (0.2).
+  EXPECT_DOUBLE_EQ(s.mean_gap, (0.4 + 0.5 + 0.2) / 7.0);
+  // No pair in contact: no spot, fraction 0, the mean of the gaps.
+  for (auto& pair : pairs) pair.status = PairStatus::open, pair.p_n = 0.0;
+  const ContactSummary open = summarise_pairs(geometry, pairs, false, nullptr);
+  EXPECT_EQ(open.contact_spots, 0);
+  EXPECT_EQ(open.contact_fraction, 0.0);
+  // One spot over the whole zone.
+  for (auto& pair : pairs) pair.status = PairStatus::stick, pair.p_n = -1.0;
+  const ContactSummary closed = summarise_pairs(geometry, pairs, false, nullptr);
+  EXPECT_EQ(closed.contact_spots, 1);
+  EXPECT_DOUBLE_EQ(closed.contact_fraction, 1.0);
+  EXPECT_EQ(closed.mean_gap, 0.0);
+}
+
+}  // namespace
+}  // namespace bemcontact::contact

@@ -17,6 +17,7 @@
 
 #include "bemcontact/reference/flat_punch.hpp"
 #include "bemcontact/reference/hertz.hpp"
+#include "bemcontact/reference/wavy_contact.hpp"
 
 namespace ref = bemcontact::reference;
 using bemcontact::AnalysisType;
@@ -286,4 +287,22 @@ TEST(ReferenceFlatPunch, AMomentTiltsTheFace) {
   const double centre = indentation(0.0);
   EXPECT_GT(punch.tilt(), 0.0);
   for (double x : {0.5, -1.3, 1.9}) EXPECT_NEAR(indentation(x) - centre, punch.tilt() * x, 1e-11) << x;
+}
+
+// Westergaard's wavy surface: the crest's pressure integrates to p_bar lambda, a(p_bar)
+// inverts p_bar(a), and a small contact is 2D Hertz with 1/R = 4 pi^2 Delta / lambda^2.
+TEST(WavyContact, PressureIntegratesAndSmallContactIsHertz) {
+  const ref::WavyContact wave{2.0, 0.01, 1.5};
+  EXPECT_DOUBLE_EQ(wave.full_contact_pressure(), std::numbers::pi * 1.5 * 0.01 / 2.0);
+  for (const double a : {0.1, 0.5, 0.9}) {
+    EXPECT_NEAR(wave.half_width(wave.mean_pressure(a)), a, 1e-12);
+    double integral = 0.0;  // midpoint rule, the square-root ends converge as n^-1.5
+    const int n = 200000;
+    for (int k = 0; k < n; ++k) integral += wave.pressure(-a + (k + 0.5) * 2.0 * a / n, a) * 2.0 * a / n;
+    EXPECT_NEAR(integral / (wave.mean_pressure(a) * 2.0), 1.0, 1e-6) << a;
+  }
+  const double a = 1e-4, R = 2.0 * 2.0 / (4.0 * std::numbers::pi * std::numbers::pi * 0.01);
+  const ref::HertzLineContact hertz{wave.mean_pressure(a) * 2.0, R, 1.5};
+  EXPECT_NEAR(hertz.half_width() / a, 1.0, 1e-6);
+  EXPECT_NEAR(wave.pressure(0.0, a) / hertz.max_pressure(), 1.0, 1e-6);
 }

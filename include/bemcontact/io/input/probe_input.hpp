@@ -2,6 +2,7 @@
 // What `bemcontact probe` reads: the points it is asked for (a points file, --line
 // specifications) and a run's boundary solution (boundary.csv, written at full precision).
 // Errors are InputErrors naming the file and line, or the option.
+#include <cstddef>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -20,8 +21,10 @@ struct ListedPoint {
 // starting with '#' are skipped. A first line that holds no number is a header: its columns
 // named x and y (or r and z, or ParaView's Points:0 and Points:1) are read, so a file with
 // more columns works (interior.csv, a ParaView export);
-// a header of two columns names them whatever they are called.
-std::vector<ListedPoint> parse_points_file(std::string_view text, const std::string& file_name);
+// a header of two columns names them whatever they are called. A point beyond `max_points`
+// is an error at its line (before it is stored: a huge file stops there).
+std::vector<ListedPoint> parse_points_file(std::string_view text, const std::string& file_name,
+                                           std::size_t max_points = static_cast<std::size_t>(-1));
 
 // A straight line of `count` points, both ends included (count >= 2).
 struct ProbeLine {
