@@ -180,13 +180,15 @@ RunOutput run_decomposition(const io::ProblemInput& input, const dd::Decompositi
                             const std::string& file_name, const RunOptions& options, Clock::time_point started) {
   RunOutput output;
   check_read(problem, input, options, output);
+  // Its parts as the file calls them: subdomains ([[subdomain]]) or regions ([[body.region]]).
+  const std::string& part = problem.part_word;
   for (const auto& subdomain : problem.subdomains)
-    add_geometry_warnings(output.warnings, subdomain.body, "subdomain '" + subdomain.body.name + "'");
+    add_geometry_warnings(output.warnings, subdomain.body, part + " '" + subdomain.body.name + "'");
   const auto result = dd::solve_decomposition(problem, options.progress, options.parallel);
   for (const auto& subdomain : result.subdomains) {
-    add_mesh_warnings(output.warnings, subdomain.mesh, "subdomain '" + subdomain.name + "'");
+    add_mesh_warnings(output.warnings, subdomain.mesh, part + " '" + subdomain.name + "'");
     if (result.converged())
-      add_small_strain_warning(output.warnings, subdomain.mesh, subdomain.boundary, "subdomain '" + subdomain.name + "'");
+      add_small_strain_warning(output.warnings, subdomain.mesh, subdomain.boundary, part + " '" + subdomain.name + "'");
   }
   auto summary = summary_envelope("decomposition", "run", text, file_name, problem.title, problem.analysis);
   summary.parameters = input.parameters;
@@ -222,8 +224,8 @@ RunOutput run_decomposition(const io::ProblemInput& input, const dd::Decompositi
   add_summary(summary, output);
 
   std::string& report = output.report;
-  append(report, "%s\n  %zu subdomains, method %s, %ld interface unknowns\n", problem.title.c_str(),
-         result.subdomains.size(), dd::to_string(result.method), static_cast<long>(result.interface_unknowns));
+  append(report, "%s\n  %zu %ss, method %s, %ld interface unknowns\n", problem.title.c_str(),
+         result.subdomains.size(), part.c_str(), dd::to_string(result.method), static_cast<long>(result.interface_unknowns));
   if (result.processes > 1) append(report, "  %d processes (MPI), PETSc GMRES\n", result.processes);
   append(report, "  GMRES(%d), preconditioner %s: %d iterations, relative residual %.3g\n",
          dd::effective_restart(problem.options, result.interface_unknowns),
@@ -235,10 +237,10 @@ RunOutput run_decomposition(const io::ProblemInput& input, const dd::Decompositi
   append(report, "  max interface jumps: [u] = %.3g, [p] = %.3g\n", jump_u, jump_p);
   for (std::size_t s = 0; s < result.subdomains.size(); ++s) {
     const auto& subdomain = result.subdomains[s];
-    append_transitions(report, subdomain.mesh, "subdomain '" + subdomain.name + "': ");
+    append_transitions(report, subdomain.mesh, part + " '" + subdomain.name + "': ");
     if (result.converged())
       report += io::reactions_text(subdomain.boundary.resultants, problem.analysis,
-                                   "subdomain '" + subdomain.name + "': ");
+                                   part + " '" + subdomain.name + "': ");
   }
   append(report, "  time %.3f s\n", seconds_since(started));
   return output;
