@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <memory>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -264,13 +265,15 @@ struct HistoryData {
   const std::vector<Index>& groups;   // the contacts' pair offsets, as given
   std::vector<Index> all_groups;      // those, or one group of every pair
   PairLaws laws;
+  // The last Newton system's factors, reused while the active sets repeat (step_solvers.hpp).
+  std::unique_ptr<NewtonSystemCache> newton_cache = std::make_unique<NewtonSystemCache>();
 };
 
 HistoryData history_data(const CondensedProblem& condensed, const std::vector<ContactPair>& pairs,
                          const ContactProblem& problem, const std::vector<Index>& groups) {
   std::vector<Index> all_groups = groups.size() > 1 ? groups : std::vector<Index>{0, condensed.pairs};
   PairLaws laws = pair_laws(problem, all_groups);
-  return {condensed, pairs, problem, groups, std::move(all_groups), std::move(laws)};
+  return {condensed, pairs, problem, groups, std::move(all_groups), std::move(laws), std::make_unique<NewtonSystemCache>()};
 }
 
 // The state before the first step: no force, no jump, every pair open.
@@ -294,6 +297,7 @@ StepOutput solve_step(const HistoryData& data, const StepInput& previous, double
   input.x_start = previous.x_start;
   input.delta_start = previous.delta_start;
   input.state_start = previous.state_start;
+  input.newton_cache = data.newton_cache.get();
   const SolverOptions& solver = data.problem.solver;
   return solver.algorithm == Algorithm::newton ? solve_step_newton(input, solver) : solve_step_thesis(input, solver);
 }

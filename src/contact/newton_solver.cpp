@@ -159,10 +159,22 @@ void choose_free_unknowns(const StepInput& in, const Vector& x, const ActiveSets
   }
 }
 
-NewtonSystem newton_system(const StepInput& in, const Vector& x, const ActiveSets& state) {
+// The right-hand side of the Newton system of `system`'s free unknowns.
+void newton_rhs(const StepInput& in, NewtonSystem& system) {
   const auto& p = *in.problem;
-  NewtonSystem system;
-  choose_free_unknowns(in, x, state, system);
+  const Index reduced = static_cast<Index>(system.free_dofs.size());
+  const Index K = p.motions;
+  system.rhs.resize(reduced + K);
+  for (Index a = 0; a < reduced; ++a) {
+    const Index row = system.free_dofs[a], i = row / 2;
+    system.rhs[a] = (row % 2 == 0 ? p.gap[i] : in.previous_tangential_jump[i]) - in.jump0[row];
+  }
+  for (Index m = 0; m < K; ++m) system.rhs[reduced + m] = in.target[m];
+}
+
+// The Jacobian of `system`'s free unknowns (M and f folded with the slip factors, b, f_delta).
+void newton_matrix(const StepInput& in, NewtonSystem& system) {
+  const auto& p = *in.problem;
   const auto& free_dofs = system.free_dofs;
   const Index reduced = static_cast<Index>(free_dofs.size());
   const Index K = p.motions;
@@ -174,42 +186,56 @@ NewtonSystem newton_system(const StepInput& in, const Vector& x, const ActiveSet
     return slip != 0.0 ? entry(dof) + slip * entry(dof + 1) : entry(dof);
   };
   Matrix& J = system.J;
-  Vector& rhs = system.rhs;
   J.resize(system_size, system_size);
-  rhs.resize(system_size);
   for (Index k = 0; k < reduced; ++k) {
     for (Index a = 0; a < reduced; ++a)
       J(a, k) = folded([&](Index c) { return p.M(free_dofs[a], c); }, free_dofs[k]);
     for (Index m = 0; m < K; ++m) J(reduced + m, k) = folded([&](Index c) { return p.f(m, c); }, free_dofs[k]);
   }
-  for (Index a = 0; a < reduced; ++a) {
-    const Index row = free_dofs[a], i = row / 2;
-    for (Index m = 0; m < K; ++m) J(a, reduced + m) = p.b(row, m);
-    rhs[a] = (row % 2 == 0 ? p.gap[i] : in.previous_tangential_jump[i]) - in.jump0[row];
-  }
-  for (Index m = 0; m < K; ++m) {
+  for (Index a = 0; a < reduced; ++a)
+    for (Index m = 0; m < K; ++m) J(a, reduced + m) = p.b(free_dofs[a], m);
+  for (Index m = 0; m < K; ++m)
     for (Index l = 0; l < K; ++l) J(reduced + m, reduced + l) = p.f_delta(m, l);
-    rhs[reduced + m] = in.target[m];
-  }
+}
+
+NewtonSystem newton_system(const StepInput& in, const Vector& x, const ActiveSets& state) {
+  NewtonSystem system;
+  choose_free_unknowns(in, x, state, system);
+  newton_rhs(in, system);
   return system;
 }
 
 // Solves the Newton system into z; false when it is singular (or the solution does not
-// satisfy it). LAPACK through DenseLU: the dense solve is the cost of an iteration, at
-// BLAS-3 speed.
-bool solve_newton_system(const NewtonSystem& system, Vector& z) {
-  const Matrix& J = system.J;
-  const Vector& rhs = system.rhs;
-  if (J.rows() == 0) return true;
-  bool singular = false;
-  try {
-    z = operators::DenseLU(J, "the Newton system").solve(rhs);
-  } catch (const SolverError&) {
-    singular = true;
+// satisfy it). LAPACK through DenseLU: the dense factorisation is the cost of an
+// iteration, at BLAS-3 speed, saved when the cache holds the same system (same free
+// unknowns and slip factors: the same matrix, so the same factors).
+bool solve_newton_system(const StepInput& in, NewtonSystem& system, Vector& z) {
+  NewtonSystemCache local;
+  NewtonSystemCache& cache = in.newton_cache ? *in.newton_cache : local;
+  const bool same = cache.valid && cache.free_dofs == system.free_dofs &&
+                    cache.slip_factor.size() == system.slip_factor.size() && cache.slip_factor == system.slip_factor;
+  if (!same) {
+    newton_matrix(in, system);
+    cache.valid = false;
+    cache.free_dofs = system.free_dofs;
+    cache.slip_factor = system.slip_factor;
+    cache.J = std::move(system.J);
+    if (cache.J.rows() == 0) return cache.valid = true;
+    try {
+      cache.lu = operators::DenseLU(cache.J, "the Newton system");
+    } catch (const SolverError&) {
+      return false;
+    }
+    cache.valid = true;
+    ++cache.factored;
+  } else {
+    if (cache.J.rows() == 0) return true;
+    ++cache.reused;
   }
-  singular = singular || !z.allFinite() ||
-             (J * z - rhs).norm() > 1e-6 * (rhs.norm() + 1e-300) + 1e-12 * J.norm() * z.norm();
-  return !singular;
+  const Matrix& J = cache.J;
+  const Vector& rhs = system.rhs;
+  z = cache.lu.solve(rhs);
+  return z.allFinite() && (J * z - rhs).norm() <= 1e-6 * (rhs.norm() + 1e-300) + 1e-12 * J.norm() * z.norm();
 }
 
 // The iterate of the Newton solution z, the eliminated tau restored.
@@ -256,9 +282,9 @@ StepOutput solve_step_newton(const StepInput& in, const SolverOptions& options) 
     const Vector w = relative_displacement(in, x, delta);
     const ActiveSets state = active_sets(in, x, w, c, iteration == 1);
     if (!damped && !seen.insert(state).second && iteration > 2) damped = true;  // the sets cycle
-    const NewtonSystem system = newton_system(in, x, state);
+    NewtonSystem system = newton_system(in, x, state);
     Vector z;
-    if (!solve_newton_system(system, z)) {
+    if (!solve_newton_system(in, system, z)) {
       out.failure = "the Newton system of iteration " + std::to_string(iteration) +
                     " is singular (no pair in contact can carry the load?)";
       break;

@@ -16,12 +16,28 @@
 #include <string>
 
 #include "bemcontact/contact/condensed.hpp"
+#include "bemcontact/operators/dense_lu.hpp"
 
 namespace bemcontact::contact {
 
 struct StepInput;
 // The input of the step ending at pseudo-time t (loads evaluated there).
 StepInput step_input(const CondensedProblem& problem, double t);
+
+// The last Newton system and its factorisation, kept across iterations and load steps of
+// one history. The Jacobian depends only on which unknowns are free and on the slip
+// factors (the condensed operator is fixed), so an iteration whose active sets and slip
+// directions repeat the last system's solves with its factors, with the same numbers as a
+// new factorisation, instead of forming and factoring the matrix again: most iterations of
+// a fretting history, whose state changes at a few pairs per step.
+struct NewtonSystemCache {
+  std::vector<Index> free_dofs;
+  Vector slip_factor;
+  Matrix J;
+  operators::DenseLU lu;
+  bool valid = false;
+  long factored = 0, reused = 0;  // systems factored, and solved with the kept factors
+};
 
 struct StepInput {
   const CondensedProblem* problem = nullptr;
@@ -40,6 +56,7 @@ struct StepInput {
   // then moves the bodies as the previous contact state allows (a bulk strain carries a
   // sticking body along) before the sets are updated. Empty: from x_start.
   std::vector<int> state_start;
+  NewtonSystemCache* newton_cache = nullptr;  // optional: reuse of the last Newton system
 };
 
 struct StepOutput {
