@@ -148,7 +148,7 @@ std::vector<Record> run_wavy_contact(const Context& context) {
 
 std::vector<Case> rough_cases() {
   return {
-      {"wavy-contact", "-", "rigid wavy profile on a large block: Westergaard's mean pressure against contact width",
+      {"wavy-contact", "Westergaard 1939", "rigid wavy profile on a large block: Westergaard's mean pressure against contact width",
        run_wavy_contact},
   };
 }
