@@ -242,10 +242,10 @@ std::string zone_text(const PreparedRegion& region, int piece) {
 // (along the pair normal, as for the pairs) passes from one of side 2's elements to the next
 // or leaves the zone; the cuts are found by bisection to round-off, and each overlap gets its
 // own Gauss rule, so that the integrands are polynomials (flat zones) on every piece
-// [Puso & Laursen 2004, sec. 3: segmentation]. The weights are side 1's dual shape functions
+// [PusoLaursen2004, segment-to-segment integration]. The weights are side 1's dual shape functions
 // psi_j = A N on each element, A = D_e M_e^-1 (D_e = diag int_e N, M_e = int_e N N^T, 2 pi r
 // in axisymmetry), biorthogonal to its shape functions: int_e psi_j N_k = delta_jk int_e N_j
-// [Wohlmuth 2000, eq. 2.1-2.3]. Returns M21 (side 1's standard shape functions).
+// [Wohlmuth2000, dual Lagrange multipliers]. Returns M21 (side 1's standard shape functions).
 Matrix build_mortar(const PreparedRegion& side1, const PreparedRegion& side2, const ContactInterface& contact,
                     AnalysisType type, const std::vector<Index>& zone_index2, PreparedInterface& out) {
   const auto& mesh1 = side1.mesh;
