@@ -237,7 +237,7 @@ std::string zone_text(const PreparedRegion& region, int piece) {
   return "boundary '" + region.definition.pieces[piece].name + "' of " + region.label;
 }
 
-// The mortar integrals of an elastic side 2 (pairing.hpp: mortar, the weighted gaps) and the
+// The mortar integrals of an elastic side 2 (pairing.hpp: mortar) and the
 // coupling M21 of the transfer. Each element of side 1's zone is cut where the projection
 // (along the pair normal, as for the pairs) passes from one of side 2's elements to the next
 // or leaves the zone; the cuts are found by bisection to round-off, and each overlap gets its
@@ -255,7 +255,7 @@ Matrix build_mortar(const PreparedRegion& side1, const PreparedRegion& side2, co
   const Index m = static_cast<Index>(out.zone_nodes2.size());
   std::vector<Index> pair_of_node(mesh1.node_count(), -1);
   for (Index i = 0; i < n; ++i) pair_of_node[out.pairs[i].node1] = i;
-  Matrix coupling = Matrix::Zero(m, n), dual = Matrix::Zero(m, n), facing = Matrix::Zero(2, n);
+  Matrix coupling = Matrix::Zero(m, n), dual = Matrix::Zero(m, n);
   Vector full = Vector::Zero(n);    // D_j = int N1_j over side 1's zone
   Vector faced = Vector::Zero(n);   // int psi_j over the part facing side 2
   constexpr int kMortarPoints = 6;  // exact for the products of quadratic shape functions times r
@@ -318,7 +318,6 @@ Matrix build_mortar(const PreparedRegion& side1, const PreparedRegion& side2, co
           for (int c = 0; c < nodes; ++c) psi += A(b, c) * el1.shape(c, f);
           const double wn = w * el1.shape(b, f), wd = w * psi;
           faced[i] += wd;
-          facing.col(i) += wd * p->facing.position;
           for (int a = 0; a < el2.node_count; ++a) {
             const Index k = zone_index2[el2.nodes[a]];
             const double shape = el2.shape(a, p->xi);
@@ -330,7 +329,7 @@ Matrix build_mortar(const PreparedRegion& side1, const PreparedRegion& side2, co
   }
   out.mortar = Matrix::Zero(m, n);
   for (Index i = 0; i < n; ++i) {
-    auto& pair = out.pairs[i];
+    const auto& pair = out.pairs[i];
     if (!(std::abs(faced[i] - full[i]) <= 1e-9 * full[i]) || !(full[i] > 0.0)) {
       // The node's elements leave side 2's zone (the dual weights need them whole): the
       // node keeps the collocation of node-to-segment.
@@ -338,12 +337,9 @@ Matrix build_mortar(const PreparedRegion& side1, const PreparedRegion& side2, co
       continue;
     }
     out.mortar.col(i) = dual.col(i) / faced[i];
-    // The weighted gap: side 2's dual-weighted surface point against side 1's node (its
-    // chord interpolation weighs to the node exactly), in place of the nodal geometric gap
-    // (a prescribed initial gap stays the node's).
-    const Vec2 x2 = facing.col(i) / faced[i];
-    const double nodal = std::max((pair.position2 - pair.position1).dot(pair.normal), 0.0);
-    pair.gap += std::max((x2 - pair.position1).dot(pair.normal), 0.0) - nodal;
+    // The gap stays the node's (to the true surface of side 2): a gap weighted from the
+    // elements' chords would carry their sag (a shrink fit's concentric zones, drawn at
+    // zero gap, got pressures 4 times Lame's).
   }
   return coupling;
 }
