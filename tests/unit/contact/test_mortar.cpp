@@ -87,7 +87,6 @@ TEST(ContactMortar, WeightsReproduceLinearFieldsThroughNonMatchingMeshes) {
     const auto prepared = prepare_contact(problem);
     const auto& c = prepared.contacts.front();
     const auto& nodes2 = prepared.regions[1].mesh.nodes;
-    ASSERT_EQ(c.pairs.size(), static_cast<std::size_t>(n1 + 1));
     for (std::size_t i = 0; i < c.pairs.size(); ++i) {
       double sum = 0.0, x = 0.0;
       for (Index a = 0; a < c.mortar.rows(); ++a) {
