@@ -384,7 +384,15 @@ void ContactModel::assemble_jumps_and_loads(Build& build) {
       const Mat2 Qg = pairs_[first + i].frame();
       Matrix u = response[contact.region1].middleRows(o1 + 2 * i, 2);
       Matrix u0 = response0[contact.region1].middleRows(o1 + 2 * i, 2);  // 2 x groups
-      if (contact.region2 >= 0) {
+      if (contact.mortar.size() > 0) {
+        // The weighted jump (pairing.hpp, mortar).
+        for (Index a = 0; a < contact.mortar.rows(); ++a) {
+          const double c = contact.mortar(a, i);
+          if (c == 0.0) continue;
+          u -= c * response[contact.region2].middleRows(o2 + 2 * a, 2);
+          u0 -= c * response0[contact.region2].middleRows(o2 + 2 * a, 2);
+        }
+      } else if (contact.region2 >= 0) {
         for (int a = 0; a < pair.count2; ++a) {
           u -= pair.shape2[a] * response[contact.region2].middleRows(o2 + 2 * pair.zone2[a], 2);
           u0 -= pair.shape2[a] * response0[contact.region2].middleRows(o2 + 2 * pair.zone2[a], 2);

@@ -237,10 +237,118 @@ std::string zone_text(const PreparedRegion& region, int piece) {
   return "boundary '" + region.definition.pieces[piece].name + "' of " + region.label;
 }
 
-// Body 2's nodal forces from the pairs' tractions: the L2 projection (transfer, pairing.hpp).
+// The mortar integrals of an elastic side 2 (pairing.hpp: mortar) and the
+// coupling M21 of the transfer. Each element of side 1's zone is cut where the projection
+// (along the pair normal, as for the pairs) passes from one of side 2's elements to the next
+// or leaves the zone; the cuts are found by bisection to round-off, and each overlap gets its
+// own Gauss rule, so that the integrands are polynomials (flat zones) on every piece
+// [PusoLaursen2004, segment-to-segment integration]. The weights are side 1's dual shape functions
+// psi_j = A N on each element, A = D_e M_e^-1 (D_e = diag int_e N, M_e = int_e N N^T, 2 pi r
+// in axisymmetry), biorthogonal to its shape functions: int_e psi_j N_k = delta_jk int_e N_j
+// [Wohlmuth2000, dual Lagrange multipliers]. Returns M21 (side 1's standard shape functions).
+Matrix build_mortar(const PreparedRegion& side1, const PreparedRegion& side2, const ContactInterface& contact,
+                    AnalysisType type, const std::vector<Index>& zone_index2, PreparedInterface& out) {
+  const auto& mesh1 = side1.mesh;
+  const auto& mesh2 = side2.mesh;
+  const auto& piece2 = side2.definition.pieces[out.piece2];
+  const Index n = static_cast<Index>(out.pairs.size());
+  const Index m = static_cast<Index>(out.zone_nodes2.size());
+  std::vector<Index> pair_of_node(mesh1.node_count(), -1);
+  for (Index i = 0; i < n; ++i) pair_of_node[out.pairs[i].node1] = i;
+  Matrix coupling = Matrix::Zero(m, n), dual = Matrix::Zero(m, n);
+  Vector full = Vector::Zero(n);    // D_j = int N1_j over side 1's zone
+  Vector faced = Vector::Zero(n);   // int psi_j over the part facing side 2
+  constexpr int kMortarPoints = 6;  // exact for the products of quadratic shape functions times r
+  constexpr int kFirstCuts = 8;     // initial subdivision of a side-1 element before the bisection
+  const quadrature::Rule& rule = quadrature::gauss_legendre(kMortarPoints);
+  for (const Index e1 : mesh1.piece_elements[out.piece1]) {
+    const auto& el1 = mesh1.elements[e1];
+    const int nodes = el1.node_count;
+    // The element's dual shape functions.
+    Matrix Me = Matrix::Zero(nodes, nodes);
+    Vector De = Vector::Zero(nodes);
+    for_each_gauss_point(el1, kMortarPoints, type, [&](double f, double w) {
+      for (int b = 0; b < nodes; ++b) {
+        De[b] += w * el1.shape(b, f);
+        for (int c = 0; c < nodes; ++c) Me(b, c) += w * el1.shape(b, f) * el1.shape(c, f);
+      }
+    });
+    const Matrix A = De.asDiagonal() * Me.inverse();
+    for (int b = 0; b < nodes; ++b)
+      if (const Index i = pair_of_node[el1.nodes[b]]; i >= 0) full[i] += De[b];
+    const auto project = [&](double f) {
+      return project_on_zone(piece2, mesh2, out.piece2, el1.point(f), el1.normal_at(f), contact.pair_normal);
+    };
+    const auto element_at = [&](double f) -> Index {
+      const auto p = project(f);
+      return p ? p->element : -1;
+    };
+    // Overlaps [fa, fb] of el1 whose points all face one element of side 2.
+    std::vector<std::pair<double, double>> overlaps;
+    const auto split = [&](auto&& self, double fa, double fb, Index ea, Index eb) -> void {
+      if (ea == eb) {
+        if (ea >= 0) overlaps.emplace_back(fa, fb);
+        return;
+      }
+      if (fb - fa < 1e-14) return;  // the cut, to round-off
+      const double fm = 0.5 * (fa + fb);
+      const Index em = element_at(fm);
+      self(self, fa, fm, ea, em);
+      self(self, fm, fb, em, eb);
+    };
+    Index previous = element_at(0.0);
+    for (int c = 0; c < kFirstCuts; ++c) {
+      const double fa = static_cast<double>(c) / kFirstCuts, fb = static_cast<double>(c + 1) / kFirstCuts;
+      const Index next = element_at(fb);
+      split(split, fa, fb, previous, next);
+      previous = next;
+    }
+    for (const auto& [fa, fb] : overlaps)
+      for (int g = 0; g < rule.size(); ++g) {
+        const double f = fa + (fb - fa) * 0.5 * (1.0 + rule.nodes[g]);
+        double w = 0.5 * rule.weights[g] * (fb - fa) * el1.jacobian();
+        if (type == AnalysisType::axisymmetric) w *= 2.0 * std::numbers::pi * el1.point(f).x();
+        const auto p = project(f);
+        if (!p) continue;
+        const auto& el2 = mesh2.elements[p->element];
+        for (int b = 0; b < nodes; ++b) {
+          const Index i = pair_of_node[el1.nodes[b]];
+          if (i < 0) continue;
+          double psi = 0.0;
+          for (int c = 0; c < nodes; ++c) psi += A(b, c) * el1.shape(c, f);
+          const double wn = w * el1.shape(b, f), wd = w * psi;
+          faced[i] += wd;
+          for (int a = 0; a < el2.node_count; ++a) {
+            const Index k = zone_index2[el2.nodes[a]];
+            const double shape = el2.shape(a, p->xi);
+            coupling(k, i) += wn * shape;
+            dual(k, i) += wd * shape;
+          }
+        }
+      }
+  }
+  out.mortar = Matrix::Zero(m, n);
+  for (Index i = 0; i < n; ++i) {
+    const auto& pair = out.pairs[i];
+    if (!(std::abs(faced[i] - full[i]) <= 1e-9 * full[i]) || !(full[i] > 0.0)) {
+      // The node's elements leave side 2's zone (the dual weights need them whole): the
+      // node keeps the collocation of node-to-segment.
+      for (int a = 0; a < pair.count2; ++a) out.mortar(pair.zone2[a], i) += pair.shape2[a];
+      continue;
+    }
+    out.mortar.col(i) = dual.col(i) / faced[i];
+    // The gap stays the node's (to the true surface of side 2): a gap weighted from the
+    // elements' chords would carry their sag (a shrink fit's concentric zones, drawn at
+    // zero gap, got pressures 4 times Lame's).
+  }
+  return coupling;
+}
+
+// Body 2's nodal forces from the pairs' tractions: the L2 projection (transfer, pairing.hpp),
+// of the mortar coupling when given.
 void build_transfer(const PreparedRegion& side1, const PreparedRegion& side2, const ContactInterface& contact,
                     AnalysisType type, const std::vector<Index>& zone_index2, PreparedInterface& out,
-                    std::vector<std::string>& warnings) {
+                    std::vector<std::string>& warnings, const Matrix* mortar_coupling) {
   const auto& mesh1 = side1.mesh;
   const auto& mesh2 = side2.mesh;
   const auto& piece2 = side2.definition.pieces[out.piece2];
@@ -249,7 +357,8 @@ void build_transfer(const PreparedRegion& side1, const PreparedRegion& side2, co
   const Index m = static_cast<Index>(out.zone_nodes2.size());
   Matrix coupling = Matrix::Zero(m, static_cast<Index>(out.pairs.size()));
   constexpr int kTransferPoints = 6;
-  for (const Index e1 : mesh1.piece_elements[out.piece1]) {
+  if (mortar_coupling) coupling = *mortar_coupling;
+  else for (const Index e1 : mesh1.piece_elements[out.piece1]) {
     const auto& el1 = mesh1.elements[e1];
     for_each_gauss_point(el1, kTransferPoints, type, [&](double f1, double w) {
       const auto projection =
@@ -281,7 +390,10 @@ void build_transfer(const PreparedRegion& side1, const PreparedRegion& side2, co
 
   Index carrying = 0;  // body 2's zone nodes that receive some force
   for (Index k = 0; k < coupling.rows(); ++k) carrying += coupling.row(k).cwiseAbs().sum() > 0.0;
-  if (static_cast<double>(out.pairs.size()) > 1.1 * static_cast<double>(carrying))
+  // Mortar with quadratic elements does not oscillate there (docs/contact.md, Mortar pairing).
+  const bool quadratic = !mesh1.piece_elements[out.piece1].empty() &&
+                         mesh1.elements[mesh1.piece_elements[out.piece1].front()].node_count == 3;
+  if (!(mortar_coupling && quadratic) && static_cast<double>(out.pairs.size()) > 1.1 * static_cast<double>(carrying))
     warnings.push_back("contact '" + contact.name + "': " + zone_text(side1, out.piece1) + " has " +
                        std::to_string(out.pairs.size()) + " nodes facing only " + std::to_string(carrying) +
                        " nodes of " + zone_text(side2, out.piece2) +
@@ -424,7 +536,14 @@ PreparedInterface pair_interface(const ContactProblem& problem, const ContactInt
   if (out.pairs.empty())
     throw GeometryError("contact '" + contact.name + "': no node of " + zone1 + " faces " + side2.zone +
                         " along the pair normal: the contact boundaries do not face each other");
-  if (side2.region) build_transfer(side1, *side2.region, contact, problem.analysis, side2.zone_index, out, warnings);
+  if (side2.region) {
+    if (contact.pairing == Pairing::mortar) {
+      const Matrix coupling = build_mortar(side1, *side2.region, contact, problem.analysis, side2.zone_index, out);
+      build_transfer(side1, *side2.region, contact, problem.analysis, side2.zone_index, out, warnings, &coupling);
+    } else {
+      build_transfer(side1, *side2.region, contact, problem.analysis, side2.zone_index, out, warnings, nullptr);
+    }
+  }
   return out;
 }
 

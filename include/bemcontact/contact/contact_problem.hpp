@@ -57,6 +57,11 @@ struct ForceLoad {
 };
 
 // Direction of the pair normal n (and tangent t) on the contact zone.
+// How a contact's constraint and force transfer are discretised (pairing.hpp, docs/contact.md
+// "Pairing"): node-to-segment collocates the gap at side 1's nodes; mortar weights it with
+// side 1's shape functions over the overlaps of the two meshes (segment-to-segment).
+enum class Pairing { node_to_segment, mortar };
+
 enum class PairNormal {
   common,  // (V.2): n = (1n - 2n) / |1n - 2n|, the bisector of the two outward normals
   body1,   // n = 1n, the outward normal of body 1's zone
@@ -131,6 +136,7 @@ struct ContactInterface {
   std::string name = "contact";
   BoundaryRef side1, side2;
   PairNormal pair_normal = PairNormal::common;
+  Pairing pairing = Pairing::node_to_segment;
   // Interference fit: the zones, drawn at their common nominal surface, overlap by this much
   // along the pair normal (e.g. the radial interference of a shrink fit): every pair's gap
   // is d - interference from the first load step on.

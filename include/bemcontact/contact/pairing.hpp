@@ -84,6 +84,15 @@ struct PreparedInterface {
   // constant traction whatever the meshes (collocating the forces at body 1's nodes would
   // alias it). Empty for a rigid side 2.
   Matrix transfer;                                   // zone_nodes2 x pairs
+  // Mortar pairing (ContactInterface::pairing, elastic side 2; empty otherwise): pair j's
+  // jump is the weighted one, w_j = Q_j (u1_j - sum_a mortar(a, j) u2_a), mortar(a, j) =
+  // int psi_j N2_a / int psi_j, with psi_j side 1's dual shape function of node j: D =
+  // diag(int N1_j) and the constraint D u1 - M^T u2 of the mortar method with dual
+  // multipliers [Wohlmuth2000], [Popp2010, weighted gap]; the gap stays the node's. Integrated
+  // segment by segment over the overlaps of the two meshes. On matching meshes mortar is
+  // the identity (node-to-segment); a field linear along side 1's elements is weighed to
+  // its nodal values. A node whose elements leave side 2's zone keeps the collocation.
+  Matrix mortar;                                     // zone_nodes2 x pairs
   std::vector<SmoothZoneEnd> smooth_ends;            // zone ends a contact must not reach
 };
 

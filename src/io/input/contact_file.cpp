@@ -421,6 +421,7 @@ void read_pairing(const TableReader& reader, contact::ContactInterface& contact)
   contact.pair_normal = normal == "body1"   ? contact::PairNormal::body1
                         : normal == "body2" ? contact::PairNormal::body2
                                             : contact::PairNormal::common;
+  contact.pairing = reader.choice("pairing") == "mortar" ? contact::Pairing::mortar : contact::Pairing::node_to_segment;
 }
 
 void read_solver(const TableReader& reader, contact::ContactProblem& problem) {

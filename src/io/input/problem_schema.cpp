@@ -160,6 +160,9 @@ std::vector<Key> law_keys() {
 std::vector<Key> pairing_keys() {
   return {
       choice("normal", {"common", "body1", "body2"}, "common", "the pair normal (V.2)"),
+      choice("pairing", {"node_to_segment", "mortar"}, "node_to_segment",
+             "the gap at side 1's nodes (node_to_segment), or weighted by side 1's dual shape functions over the "
+             "overlaps of both meshes (mortar, elastic side 2: docs/contact.md, Mortar pairing)"),
       number("interference", "0", "initial overlap of the zones along the pair normal (shrink fit)", at_least(0)),
       of(Type::amplitude, "interference_amplitude", "the whole overlap from the first step",
          "the interference's history"),
