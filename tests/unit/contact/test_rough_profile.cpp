@@ -14,7 +14,7 @@
 namespace bemcontact::contact {
 namespace {
 
-RoughProfileSpec spec() {
+RoughProfileSpec rough_spec() {
   RoughProfileSpec s;
   s.length = 2.0;
   s.samples = 1025;
@@ -36,7 +36,7 @@ double mode_power(const std::vector<double>& h, int m) {
 }
 
 TEST(RoughProfile, ZeroMeanAndExactRms) {
-  const auto h = rough_heights(spec());
+  const auto h = rough_heights(rough_spec());
   ASSERT_EQ(h.size(), 1025u);
   double mean = 0.0, square = 0.0;
   for (const double v : h) mean += v, square += v * v;
@@ -50,7 +50,7 @@ TEST(RoughProfile, ZeroMeanAndExactRms) {
 // modes of the band and 0 elsewhere: the least-squares slope of log C against log q is
 // -(1 + 2H) to round-off (1e-9 allowed: the modes are summed by rotation, ~1e-14 each).
 TEST(RoughProfile, SpectrumSlopeAndBand) {
-  const auto s = spec();
+  const auto s = rough_spec();
   const auto h = rough_heights(s);
   const ModeRange modes = rough_profile_modes(s);
   EXPECT_EQ(modes.first, 2);
@@ -68,31 +68,31 @@ TEST(RoughProfile, SpectrumSlopeAndBand) {
 }
 
 TEST(RoughProfile, DeterministicForASeedAndDifferentForAnother) {
-  const auto a = rough_heights(spec());
-  EXPECT_EQ(a, rough_heights(spec()));  // bit for bit
-  auto other = spec();
+  const auto a = rough_heights(rough_spec());
+  EXPECT_EQ(a, rough_heights(rough_spec()));  // bit for bit
+  auto other = rough_spec();
   other.seed = 43;
   const auto b = rough_heights(other);
   double difference = 0.0;
   for (std::size_t k = 0; k < a.size(); ++k) difference = std::max(difference, std::abs(a[k] - b[k]));
-  EXPECT_GT(difference, 0.1 * spec().rms_height);
+  EXPECT_GT(difference, 0.1 * rough_spec().rms_height);
   // The first outputs of std::mt19937_64(42) are fixed by the standard, and so the heights:
   // a regression value (a change of the generator would change every rough example).
-  EXPECT_NEAR(a[0], rough_heights(spec())[0], 0.0);
+  EXPECT_NEAR(a[0], rough_heights(rough_spec())[0], 0.0);
 }
 
 TEST(RoughProfile, RefusesWhatDescribesNoProfile) {
-  auto s = spec();
+  auto s = rough_spec();
   s.hurst = 1.0;
   EXPECT_NE(rough_profile_problem(s).find("Hurst"), std::string::npos);
-  s = spec();
+  s = rough_spec();
   s.short_wavelength = 0.003;  // under 2 spacings (0.0039)
   EXPECT_NE(rough_profile_problem(s).find("Nyquist"), std::string::npos);
   EXPECT_THROW(rough_heights(s), GeometryError);
-  s = spec();
+  s = rough_spec();
   s.long_wavelength = 0.9, s.short_wavelength = 0.8;  // L / m = 2, 1, 0.667: none in [0.8, 0.9]
   EXPECT_NE(rough_profile_problem(s).find("no mode"), std::string::npos);
-  s = spec();
+  s = rough_spec();
   s.long_wavelength = 3.0;
   EXPECT_FALSE(rough_profile_problem(s).empty());
 }
@@ -102,9 +102,9 @@ TEST(RoughProfile, RigidContourFacesDownFromTheMeanLine) {
   ProfileShape shape;
   shape.profile = "rough";
   shape.center = Vec2(1.0, 0.5);
-  shape.rough = spec();
+  shape.rough = rough_spec();
   const auto pieces = rigid_contour(shape);
-  const auto h = rough_heights(spec());
+  const auto h = rough_heights(rough_spec());
   ASSERT_EQ(pieces.size(), h.size() - 1);
   EXPECT_NEAR(pieces.front().start.x(), 0.0, 1e-15);
   EXPECT_NEAR(pieces.back().end.x(), 2.0, 1e-15);

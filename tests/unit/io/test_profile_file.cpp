@@ -16,7 +16,7 @@ namespace {
 const std::string key = "body[2].rigid.points_file";
 
 template <class Action>
-SourceLocation input_error(Action&& action, std::string* message = nullptr) {
+SourceLocation profile_input_error(Action&& action, std::string* message = nullptr) {
   try {
     action();
   } catch (const InputError& error) {
@@ -36,34 +36,34 @@ TEST(ProfileFile, ReadsPointsWithOrWithoutHeader) {
 
 TEST(ProfileFile, EveryBadInputNamesTheFileTheLineAndTheKey) {
   std::string message;
-  auto where = input_error([] { parse_profile_points("x,y\n0,0\n1,nan\n", "p.csv", key); }, &message);
+  auto where = profile_input_error([] { parse_profile_points("x,y\n0,0\n1,nan\n", "p.csv", key); }, &message);
   EXPECT_EQ(where.file, "p.csv");
   EXPECT_EQ(where.line, 3);
   EXPECT_EQ(where.key, key);
   EXPECT_NE(message.find("not a finite number"), std::string::npos) << message;
-  where = input_error([] { parse_profile_points("0,0\n1,inf\n", "p.csv", key); });
+  where = profile_input_error([] { parse_profile_points("0,0\n1,inf\n", "p.csv", key); });
   EXPECT_EQ(where.line, 2);
   // Not increasing: backward, and a repeated x.
-  where = input_error([] { parse_profile_points("0,0\n1,0\n0.5,0\n", "p.csv", key); }, &message);
+  where = profile_input_error([] { parse_profile_points("0,0\n1,0\n0.5,0\n", "p.csv", key); }, &message);
   EXPECT_EQ(where.line, 3);
   EXPECT_EQ(where.key, key);
   EXPECT_NE(message.find("increase strictly"), std::string::npos) << message;
-  where = input_error([] { parse_profile_points("x,y\n0,0\n\n1,0\n1,0.2\n", "p.csv", key); });
+  where = profile_input_error([] { parse_profile_points("x,y\n0,0\n\n1,0\n1,0.2\n", "p.csv", key); });
   EXPECT_EQ(where.line, 5);
   // Fewer than 2 points, none at all.
-  where = input_error([] { parse_profile_points("x,y\n0,0\n", "p.csv", key); }, &message);
+  where = profile_input_error([] { parse_profile_points("x,y\n0,0\n", "p.csv", key); }, &message);
   EXPECT_EQ(where.line, 2);
   EXPECT_NE(message.find("at least 2 points"), std::string::npos) << message;
-  where = input_error([] { parse_profile_points("x,y\n", "p.csv", key); });
+  where = profile_input_error([] { parse_profile_points("x,y\n", "p.csv", key); });
   EXPECT_EQ(where.file, "p.csv");
   EXPECT_EQ(where.key, key);
   // A line of three values, a typo.
-  where = input_error([] { parse_profile_points("0,0\n1,2,3\n", "p.csv", key); });
+  where = profile_input_error([] { parse_profile_points("0,0\n1,2,3\n", "p.csv", key); });
   EXPECT_EQ(where.line, 2);
   // Over the size limit: the error at the first point beyond it.
   std::string text;
   for (std::size_t k = 0; k <= max_profile_points; ++k) text += std::to_string(k) + ",0\n";
-  where = input_error([&] { parse_profile_points(text, "big.csv", key); }, &message);
+  where = profile_input_error([&] { parse_profile_points(text, "big.csv", key); }, &message);
   EXPECT_EQ(where.line, static_cast<int>(max_profile_points) + 1);
   EXPECT_NE(message.find("more than 100000 points"), std::string::npos) << message;
   text.resize(text.rfind(std::to_string(max_profile_points) + ",0\n"));  // exactly the limit: read
@@ -74,11 +74,11 @@ TEST(ProfileFile, MissingOrUnreadableFiles) {
   const auto dir = std::filesystem::temp_directory_path() / ("bemcontact_profile_" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   std::string message;
-  auto where = input_error([&] { read_profile_points(dir / "none.csv", key); }, &message);
+  auto where = profile_input_error([&] { read_profile_points(dir / "none.csv", key); }, &message);
   EXPECT_EQ(where.file, (dir / "none.csv").string());
   EXPECT_EQ(where.key, key);
   EXPECT_NE(message.find("no such file"), std::string::npos);
-  where = input_error([&] { read_profile_points(dir, key); }, &message);
+  where = profile_input_error([&] { read_profile_points(dir, key); }, &message);
   EXPECT_NE(message.find("directory"), std::string::npos);
   std::ofstream(dir / "ok.csv") << "x,y\n0,0\n1,0.5\n";
   EXPECT_EQ(read_profile_points(dir / "ok.csv", key).size(), 2u);
