@@ -7,6 +7,17 @@
 
 namespace bemcontact::contact::testing {
 
+// A force load on piece `piece` of body `body`'s first region (a rigid platen), along
+// `component` (0: x, 1: y), at amplitude 1.
+inline ForceLoad platen_force(int body, int piece, int component, double force) {
+  ForceLoad load;
+  load.body = body;
+  load.piece = piece;
+  load.component = component;
+  load.force = force;
+  return load;
+}
+
 inline geometry::BoundaryPiece line(const std::string& name, Vec2 a, Vec2 b, int elements, double grading = 1.0,
                                     geometry::RefineToward toward = geometry::RefineToward::start) {
   geometry::BoundaryPiece piece = geometry::line_piece(name, a, b, elements);
@@ -57,12 +68,7 @@ inline ContactProblem flat_punch(double a, double W, int contact_elements, doubl
   add(support, line("top left", {-a, 0.0}, {-W, 0.0}, 16, W / a, geometry::RefineToward::start), free_condition());
   add(support, line("left", {-W, 0.0}, {-W, -H}, 10), free_condition());
   problem.contacts.front().law.kind = bilateral ? ContactKind::bilateral : ContactKind::unilateral;
-  ForceLoad load;
-  load.body = 0;
-  load.piece = 2;
-  load.component = 1;
-  load.force = -force;
-  problem.forces = {load};
+  problem.forces = {platen_force(0, 2, 1, -force)};
   return problem;
 }
 
@@ -103,12 +109,7 @@ inline ContactProblem cylinder_on_block(double R, double theta, int contact_elem
   add(support, line("top left", {-b, 0.0}, {-W, 0.0}, 16, W / b, geometry::RefineToward::start), free_condition());
   add(support, line("left", {-W, 0.0}, {-W, -W}, 10), free_condition());
   problem.contacts.front().law.kind = ContactKind::unilateral;
-  ForceLoad load;
-  load.body = 0;
-  load.piece = 2;
-  load.component = 1;
-  load.force = -force;
-  problem.forces = {load};
+  problem.forces = {platen_force(0, 2, 1, -force)};
   return problem;
 }
 

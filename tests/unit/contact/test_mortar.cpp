@@ -39,12 +39,7 @@ ContactProblem stacked_blocks(int elements1, int elements2, double grading2, dou
   add(lower, line("left", {-1.0, 0.0}, {-1.0, -1.0}, 6), free_condition());
   problem.contacts.front().law.kind = ContactKind::unilateral;
   problem.contacts.front().pair_normal = PairNormal::body2;
-  ForceLoad load;
-  load.body = 0;
-  load.piece = 2;
-  load.component = 1;
-  load.force = -P;
-  problem.forces = {load};
+  problem.forces = {platen_force(0, 2, 1, -P)};
   return problem;
 }
 
