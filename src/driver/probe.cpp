@@ -126,7 +126,7 @@ StoredRun mesh_again(std::string_view text, const std::string& file_name, const 
       const auto problem = contact::single_region_problem(model);
       const auto& body = problem.body;
       const auto& named = model.bodies[0];
-      const std::string csv = (named.named ? io::file_stem(named.name) + "_" : std::string()) + "boundary.csv";
+      const std::string csv = io::body_file_prefix(named.name, named.named) + "boundary.csv";
       run.regions.push_back({body.name, csv, bem::mesh_body(problem), body.material, body.pieces, {}});
       break;
     }

@@ -159,7 +159,7 @@ void check_read(const Problem& problem, const io::ProblemInput& input, const Run
 }
 
 // A body the file named writes <name>_boundary.csv, ...; a one-body file boundary.csv.
-std::string file_prefix(const contact::Body& body) { return body.named ? io::file_stem(body.name) + "_" : ""; }
+std::string file_prefix(const contact::Body& body) { return io::body_file_prefix(body.name, body.named); }
 
 // What to change when the interface GMRES does not converge.
 std::string convergence_advice(const dd::DecompositionOptions& options, const dd::DecompositionResult& result) {

@@ -10,6 +10,8 @@ std::string file_stem(const std::string& name) {
   return out;
 }
 
+std::string body_file_prefix(const std::string& name, bool named) { return named ? file_stem(name) + "_" : ""; }
+
 std::vector<std::string> contact_file_names(const std::string& contact) {
   const std::string stem = file_stem(contact);
   return {stem + ".csv", stem + ".vtk", stem + "_steps.csv", stem + ".pvd", stem + "_pairs.csv"};

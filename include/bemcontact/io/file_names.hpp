@@ -17,4 +17,8 @@ std::vector<std::string> model_file_names();
 // name with characters other than letters, digits, '-' and '_' turned into '_'.
 std::string file_stem(const std::string& name);
 
+// What a body's files start with: "<stem>_" for a body the file named ([[body]]: its
+// <name>_boundary.csv whichever solver runs it), "" for a one-body file's (boundary.csv).
+std::string body_file_prefix(const std::string& name, bool named);
+
 }  // namespace bemcontact::io

@@ -183,14 +183,9 @@ void TableReader::check_value(const schema::Key& key, const toml::node& node) co
         if (const std::string problem = name_problem(*node.value<std::string>()); !problem.empty())
           fail(key.name, problem);
       return;
-    case Type::choice: {
-      const auto value = node.value_exact<std::string>();
-      if (!value) fail(key.name, "must be one of " + quoted_list(key.choices) + " (in quotes)" + found);
-      if (std::find(key.choices.begin(), key.choices.end(), *value) == key.choices.end())
-        fail(key.name, "invalid value '" + *value + "'." + did_you_mean(*value, key.choices) +
-                           " Valid values: " + quoted_list(key.choices));
+    case Type::choice:
+      (void)choice(key.name, key.choices, std::nullopt);  // present: checked as the readers read it
       return;
-    }
     case Type::point:
       if (!node.is_string() && !node.is_array())
         fail(key.name, "must be a vertex name in quotes or a point " + context_.point_form() + found);
