@@ -74,7 +74,8 @@ set(BEMCONTACT_CONTACT_SOURCES
   src/contact/rigid_profile.cpp
   src/contact/rough_profile.cpp
   src/contact/thesis_solver.cpp
-  src/contact/zone_ends.cpp)
+  src/contact/zone_ends.cpp
+  src/contact/zone_refinement.cpp)
 set(BEMCONTACT_IO_SOURCES
   src/io/file_names.cpp
   src/io/input/body_parser.cpp

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <functional>
 #include <memory>
 #include <cmath>
 #include <limits>
@@ -13,6 +14,7 @@
 #include "bemcontact/contact/contact_summary.hpp"
 #include "bemcontact/contact/step_solvers.hpp"
 #include "bemcontact/contact/zone_ends.hpp"
+#include "bemcontact/contact/zone_refinement.hpp"
 #include "bemcontact/core/error.hpp"
 
 namespace bemcontact::contact {
@@ -607,7 +609,15 @@ bool add_interior_values(const ContactProblem& problem, const ContactModel& mode
 
 }  // namespace
 
-ContactResult solve_contact(const ContactProblem& problem, const bem::ProgressCallback& progress) {
+namespace {
+
+// What a pass decides once its load history is solved: true to finish it (boundary
+// stresses, interior points), false to stop there (an adaptive pass to be refined).
+using PassCheck = std::function<bool(const ContactResult&)>;
+
+// One pass: the problem on its meshes as they stand.
+ContactResult solve_on_meshes(const ContactProblem& problem, const bem::ProgressCallback& progress,
+                              const PassCheck& finish_pass = {}) {
   check_history_options(problem);  // before the bodies are assembled
   ContactResult result;
   auto start = Clock::now();
@@ -622,6 +632,7 @@ ContactResult solve_contact(const ContactProblem& problem, const bem::ProgressCa
   LoadHistory history = contact_history(problem, model, progress);
   result.timings.add("contact iterations", seconds_since(start));
   take_history(problem, history, result);
+  if (finish_pass && !finish_pass(result)) return result;
 
   start = Clock::now();
   result.warnings = model.prepared().warnings;
@@ -632,6 +643,85 @@ ContactResult solve_contact(const ContactProblem& problem, const bem::ProgressCa
   if (add_interior_values(problem, model, selections, progress, result))
     result.timings.add("interior points", seconds_since(start));
   return result;
+}
+
+std::string zone_name(const ContactProblem& problem, int c) {
+  const auto& contact = problem.contacts[static_cast<std::size_t>(c)];
+  return "contact '" + contact.name + "' (boundary '" +
+         problem.region(contact.side1).body.pieces[static_cast<std::size_t>(contact.side1.piece)].name + "' of body '" +
+         problem.bodies[static_cast<std::size_t>(contact.side1.body)].name + "')";
+}
+
+std::string pass_text(const ZonePass& pass) {
+  std::ostringstream out;
+  out << "pass " << pass.pass << ": " << pass.pairs << " pairs, zone width " << pass.width << ", edge spacing "
+      << pass.edge_spacing;
+  return out.str();
+}
+
+// The refined meshes of an unresolved zone, within the contact's element limit.
+void check_zone_limits(const ContactProblem& problem, int c, const ZoneAssessment& next, const AdaptedZone& zone) {
+  const auto& adaptivity = problem.contacts[static_cast<std::size_t>(c)].adaptivity;
+  if (static_cast<int>(zone.passes.size()) >= adaptivity.max_passes)
+    throw SolverError(zone_name(problem, c) + ": the zone in contact is not resolved to contact_resolution = " +
+                      format_residual(adaptivity.resolution) + " in " + std::to_string(adaptivity.max_passes) +
+                      " adaptive passes (last " + pass_text(zone.passes.back()) +
+                      "); raise max_adaptive_passes, or relax contact_resolution");
+  const int elements = static_cast<int>(std::max(next.breakpoints1.size(), next.breakpoints2.size())) - 1;
+  if (elements > adaptivity.max_elements)
+    throw SolverError(zone_name(problem, c) + ": resolving the zone in contact to contact_resolution = " +
+                      format_residual(adaptivity.resolution) + " takes " + std::to_string(elements) +
+                      " elements on a boundary, over max_zone_elements = " + std::to_string(adaptivity.max_elements) +
+                      " (" + pass_text(zone.passes.back()) + "); raise max_zone_elements, or relax contact_resolution");
+}
+
+}  // namespace
+
+ContactResult solve_contact(const ContactProblem& problem, const bem::ProgressCallback& progress) {
+  const auto adaptive = [&](std::size_t c) { return problem.contacts[c].adaptivity.on(); };
+  bool any = false;
+  for (std::size_t c = 0; c < problem.contacts.size(); ++c) any = any || adaptive(c);
+  if (!any) return solve_on_meshes(problem, progress);
+  ContactProblem current = problem;
+  std::vector<AdaptedZone> zones(problem.contacts.size());
+  double earlier = 0.0;
+  for (int pass = 1;; ++pass) {
+    const auto start = Clock::now();
+    std::vector<ZoneAssessment> next(problem.contacts.size());
+    bool resolved = true;
+    const auto assess = [&](const ContactResult& pass_result) {
+      for (std::size_t c = 0; c < problem.contacts.size(); ++c) {
+        if (!adaptive(c)) continue;
+        next[c] = assess_zone(problem, current, static_cast<int>(c), pass_result.contacts[c]);
+        next[c].pass.pass = pass;
+        zones[c].passes.push_back(next[c].pass);
+        resolved = resolved && next[c].pass.resolved;
+      }
+      return resolved;
+    };
+    ContactResult result = solve_on_meshes(current, progress, assess);
+    if (resolved) {
+      for (std::size_t c = 0; c < problem.contacts.size(); ++c) {
+        if (!adaptive(c)) continue;
+        const auto& contact = current.contacts[c];
+        zones[c].breakpoints1 = geometry::element_breakpoints(
+            current.region(contact.side1).body.pieces[static_cast<std::size_t>(contact.side1.piece)]);
+        if (next[c].pass.elements2 > 0)
+          zones[c].breakpoints2 = geometry::element_breakpoints(
+              current.region(contact.side2).body.pieces[static_cast<std::size_t>(contact.side2.piece)]);
+        result.contacts[c].zone = zones[c];
+      }
+      if (!result.contacts.empty()) result.zone = result.contacts.front().zone;
+      if (pass > 1) result.timings.add("earlier adaptive passes", earlier);
+      return result;
+    }
+    for (std::size_t c = 0; c < problem.contacts.size(); ++c) {
+      if (!adaptive(c) || next[c].pass.resolved) continue;
+      check_zone_limits(current, static_cast<int>(c), next[c], zones[c]);
+      set_zone_meshes(current, static_cast<int>(c), next[c].breakpoints1, next[c].breakpoints2);
+    }
+    earlier += seconds_since(start);
+  }
 }
 
 }  // namespace bemcontact::contact

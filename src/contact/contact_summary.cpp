@@ -150,6 +150,11 @@ void add_contact_extent(const std::vector<PairResult>& pairs, const std::vector<
   for (const auto& pair : pairs)
     if (pair.status != PairStatus::open) first = std::min(first, pair.coordinate), last = std::max(last, pair.coordinate);
   if (first <= last) s.contact_start = first, s.contact_end = last;
+  for (std::size_t i = 0; i < pairs.size(); ++i)
+    if (pairs[i].status != PairStatus::open) {
+      if (s.first_pair_in_contact < 0) s.first_pair_in_contact = static_cast<int>(i);
+      s.last_pair_in_contact = static_cast<int>(i);
+    }
 
 }
 

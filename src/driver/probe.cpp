@@ -9,6 +9,7 @@
 #include "bemcontact/bem/analysis.hpp"
 #include "bemcontact/bem/probe.hpp"
 #include "bemcontact/contact/pairing.hpp"
+#include "bemcontact/contact/zone_refinement.hpp"
 #include "bemcontact/core/error.hpp"
 #include "bemcontact/dd/interface.hpp"
 #include "bemcontact/driver/resource_check.hpp"
@@ -115,11 +116,26 @@ ResourceLimits unbounded_limits() {
   return limits;
 }
 
+// The meshes the run's adaptive contact zones ended with (summary.json: results.contacts[c].zone).
+void apply_adapted_zones(const json& summary, contact::ContactProblem& model) {
+  const auto results = summary.find("results");
+  if (results == summary.end() || !results->contains("contacts")) return;
+  const json& contacts = (*results)["contacts"];
+  for (std::size_t c = 0; c < contacts.size() && c < model.contacts.size(); ++c) {
+    const auto zone = contacts[c].find("zone");
+    if (zone == contacts[c].end()) continue;
+    contact::set_zone_meshes(model, static_cast<int>(c), zone->value("breakpoints1", std::vector<double>{}),
+                             zone->value("breakpoints2", std::vector<double>{}));
+  }
+}
+
 // The run's regions meshed again by the solver that ran them (the model's route), with
 // the files their boundary solutions were written to.
-StoredRun mesh_again(std::string_view text, const std::string& file_name, const io::ParameterOverrides& overrides) {
-  const auto input = io::read_problem(text, file_name, overrides, unbounded_limits());
-  const auto& model = input.model;
+StoredRun mesh_again(std::string_view text, const std::string& file_name, const io::ParameterOverrides& overrides,
+                     const json& summary) {
+  auto input = io::read_problem(text, file_name, overrides, unbounded_limits());
+  auto& model = input.model;
+  apply_adapted_zones(summary, model);
   StoredRun run{model.title, model.analysis, {}};
   switch (contact::route_of(model)) {
     case contact::SolverRoute::direct: {
@@ -177,7 +193,7 @@ StoredRun load_run(const FileReader& run_files, const json& summary, const Probe
   // The recorded path: messages name the file, and relative geometry files resolve from it.
   const std::string file_name = path.empty() ? text_at(summary["input"], "file") : path;
   const auto overrides = recorded_parameters(summary);
-  StoredRun run = mesh_again(text, file_name, overrides);
+  StoredRun run = mesh_again(text, file_name, overrides, summary);
   for (auto& region : run.regions) {
     const auto csv = run_files(region.csv);
     if (!csv)

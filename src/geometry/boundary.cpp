@@ -254,6 +254,7 @@ PiecePoint point_on_piece(const BoundaryPiece& piece, double s) {
 }
 
 std::vector<double> element_breakpoints(const BoundaryPiece& piece) {
+  if (!piece.breakpoints.empty()) return piece.breakpoints;
   const int n = piece.elements;
   std::vector<double> lengths(n, 1.0);
   if (piece.grading != 1.0 && n > 1) {
@@ -267,6 +268,55 @@ std::vector<double> element_breakpoints(const BoundaryPiece& piece) {
   for (int i = 0; i < n; ++i) s[i + 1] = s[i] + lengths[i] / total;
   s[n] = 1.0;
   return s;
+}
+
+double arc_length_at(const BoundaryPiece& piece, const Vec2& point) {
+  const double length = piece_length(piece);
+  if (piece.shape == PieceShape::line) {
+    const Vec2 d = piece.end - piece.start;
+    return std::clamp((point - piece.start).dot(d) / d.squaredNorm(), 0.0, 1.0) * length;
+  }
+  // The angle from the start in the sense of travel, in [0, 2 pi); beyond the sweep, the
+  // nearer end.
+  const double sweep = arc_sweep(piece);
+  const Vec2 a = piece.start - piece.center, b = point - piece.center;
+  double angle = std::atan2(a.x() * b.y() - a.y() * b.x(), a.dot(b));
+  if (sweep < 0.0) angle = -angle;
+  if (angle < 0.0) angle += 2.0 * std::numbers::pi;
+  const double span = std::abs(sweep);
+  if (angle <= span) return angle / span * length;
+  return angle - span < 2.0 * std::numbers::pi - angle ? length : 0.0;
+}
+
+std::vector<double> zone_breakpoints(double length, double from, double to, double size, double growth,
+                                     double coarsest) {
+  from = std::clamp(from, 0.0, length);
+  to = std::clamp(to, from, length);
+  if (from < size) from = 0.0;
+  if (length - to < size) to = length;
+  // Element lengths growing away from the stretch, scaled to fill `span` exactly.
+  const auto graded = [&](double span) {
+    std::vector<double> lengths;
+    double h = size, total = 0.0;
+    while (total < span) {
+      h = std::min(h * growth, std::max(coarsest, size));
+      lengths.push_back(h);
+      total += h;
+    }
+    for (double& l : lengths) l *= span / total;
+    return lengths;
+  };
+  std::vector<double> ends{0.0};
+  std::vector<double> before = graded(from);
+  double x = 0.0;
+  for (auto it = before.rbegin(); it != before.rend(); ++it) ends.push_back(x += *it);
+  const int fine = std::max(1, static_cast<int>(std::ceil((to - from) / size - 1e-9)));
+  for (int k = 1; k <= fine; ++k) ends.push_back(from + (to - from) * k / fine);
+  x = to;
+  for (const double l : graded(length - to)) ends.push_back(x += l);
+  for (double& e : ends) e /= length;
+  ends.back() = 1.0;
+  return ends;
 }
 
 std::vector<double> transition_breakpoints(const BoundaryPiece& piece, double cap_start, double cap_end,

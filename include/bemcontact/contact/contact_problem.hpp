@@ -130,6 +130,19 @@ struct ContactLaw {
   bool operator==(const ContactLaw&) const = default;
 };
 
+// A contact zone found by the solver (contact/zone_refinement.hpp, docs/contact.md
+// "Candidate surfaces"): the two boundaries are candidates, meshed as given for the first
+// pass; after each pass the stretch in contact over the whole history is meshed with
+// elements of resolution x its width, growing away from it, until the elements at the
+// zone's edges are that fine.
+struct ZoneAdaptivity {
+  double resolution = 0.0;  // 0: the zone as declared and meshed; else in (0, 1)
+  int max_passes = 8;
+  int max_elements = 5000;  // on each side's boundary
+  SourceLocation where;     // the resolution's key, for messages
+  bool on() const { return resolution > 0.0; }
+};
+
 // One contact interface: body 1's zone nodes are paired with the points they face on
 // side 2 (pairing.hpp).
 struct ContactInterface {
@@ -147,6 +160,7 @@ struct ContactInterface {
   // values are overlaps, as with the interference.
   bem::ScalarField initial_gap;
   ContactLaw law;
+  ZoneAdaptivity adaptivity;
 };
 
 // Bodies, contacts (each with its law) and one load history. The tangential coupling and

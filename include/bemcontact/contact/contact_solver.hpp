@@ -55,6 +55,8 @@ struct ContactSummary {
   // The pairs in contact's extent along the coordinate: their first and last (0, 0 when
   // none): the zone of a contact not centred on x1 = 0 (a side face, a tilted punch).
   double contact_start = 0.0, contact_end = 0.0;
+  // The same as indices of the first and last pairs in contact in the zone's order (-1: none).
+  int first_pair_in_contact = -1, last_pair_in_contact = -1;
   double peak_pressure = 0.0;   // max of -p_n
   double centre_pressure = 0.0; // -p_n at the pair with the smallest |x1|
   double normal_force = 0.0;    // integral of -p_n (2 pi r in axisymmetry)
@@ -75,6 +77,22 @@ struct ContactSummary {
   double stick_ratio() const { return contact_radius > 0.0 ? stick_radius / contact_radius : 0.0; }  // c/a
 };
 
+// One pass of an adaptive contact zone (ZoneAdaptivity; contact/zone_refinement.hpp).
+struct ZonePass {
+  int pass = 0;
+  int pairs = 0;                     // the contact's pairs
+  int elements1 = 0, elements2 = 0;  // on side 1's and side 2's boundaries (0: rigid side 2)
+  double width = 0.0;      // the widest zone in contact over the history, along side 1 (0: no contact)
+  double edge_spacing = 0.0;  // the largest pair spacing at the zone's edges (0: no edge)
+  bool resolved = false;   // edge_spacing <= resolution x width
+};
+// The passes, and the final meshes of the two boundaries (element end points as fractions
+// of their lengths; breakpoints2 empty for a rigid side 2). No passes: a declared zone.
+struct AdaptedZone {
+  std::vector<ZonePass> passes;
+  std::vector<double> breakpoints1, breakpoints2;
+};
+
 // The results of one contact interface (or of a group of pairs).
 struct ContactInterfaceResult {
   std::string name;
@@ -82,6 +100,7 @@ struct ContactInterfaceResult {
   ContactSummary summary;               // final state, iterations summed over the steps
   std::vector<ContactSummary> steps;    // per load step
   std::vector<std::vector<PairResult>> step_pairs;  // per load step when record_steps
+  AdaptedZone zone;                     // an adaptive zone's passes
 };
 
 // The motions at the end of one step: the prescribed forces and the motions (approaches
@@ -147,9 +166,12 @@ LoadHistory solve_load_history(const CondensedProblem& condensed, const std::vec
                                const std::vector<Index>& groups = {}, const StepCheck& check_step = {},
                                const MotionReport& report = {});
 
-// Throws SolverError (with the load step and the residual) when a step does not converge or
-// a unilateral contact is clipped by its zone (zone_ends.hpp), GeometryError for a zone that
-// cannot be paired, InputError for inconsistent options.
+// Contacts with an adaptive zone (ZoneAdaptivity) are solved pass after pass on meshes
+// refined where they touch (zone_refinement.hpp), the result being the last pass's.
+// Throws SolverError (with the load step and the residual) when a step does not converge,
+// a unilateral contact is clipped by its zone (zone_ends.hpp) or an adaptive zone is not
+// resolved within its passes or elements, GeometryError for a zone that cannot be paired,
+// InputError for inconsistent options.
 ContactResult solve_contact(const ContactProblem& problem, const bem::ProgressCallback& progress = {});
 
 }  // namespace bemcontact::contact

@@ -33,6 +33,9 @@ struct BoundaryPiece {
   bool fixed_mesh = false;
   // A symmetry line of the body (geometry/symmetry.hpp): no elements, the mirror image instead.
   bool symmetry = false;
+  // Element end points as fractions 0 = s_0 < ... < s_n = 1 of the length, when set (an
+  // adapted contact zone, contact/zone_refinement.hpp): they replace elements and grading.
+  std::vector<double> breakpoints;
   SourceLocation where;
 };
 
@@ -51,8 +54,17 @@ double arc_sweep(const BoundaryPiece& piece);
 double arc_radius(const BoundaryPiece& piece);
 // Point at fraction s in [0, 1] of the piece's length.
 PiecePoint point_on_piece(const BoundaryPiece& piece, double s);
-// Fractions 0 = s_0 < s_1 < ... < s_n = 1 of the element end points, graded as asked.
+// Fractions 0 = s_0 < s_1 < ... < s_n = 1 of the element end points, graded as asked (the
+// piece's own breakpoints when it has them).
 std::vector<double> element_breakpoints(const BoundaryPiece& piece);
+// Arc length from the piece's start to the point of the piece nearest to `point`.
+double arc_length_at(const BoundaryPiece& piece, const Vec2& point);
+// Breakpoints (fractions) of a piece of length `length` with elements of at most `size` on
+// the stretch [from, to] (arc lengths) and, on either side of it, elements growing by the
+// factor `growth` each up to `coarsest`; each side's sequence is scaled down to fit, and a
+// side shorter than one fine element joins the stretch.
+std::vector<double> zone_breakpoints(double length, double from, double to, double size, double growth,
+                                     double coarsest);
 // The same with the end elements no longer than `cap_start` / `cap_end` (lengths; infinity
 // for none): the element length grows from the cap by the factor `growth` per element until
 // it meets the piece's own grading (size function min(h_piece(x), cap + (growth - 1) x),

@@ -424,6 +424,22 @@ void read_pairing(const TableReader& reader, contact::ContactInterface& contact)
   contact.pairing = reader.choice("pairing") == "mortar" ? contact::Pairing::mortar : contact::Pairing::node_to_segment;
 }
 
+// An adaptive zone (contact_resolution) and its limits; the limits alone have no effect.
+void read_zone_adaptivity(const TableReader& reader, contact::ContactInterface& contact) {
+  auto& adaptivity = contact.adaptivity;
+  adaptivity.resolution = reader.optional_number("contact_resolution").value_or(0.0);
+  adaptivity.where = reader.where("contact_resolution");
+  for (const char* key : {"max_adaptive_passes", "max_zone_elements"})
+    if (reader.has(key) && !adaptivity.on())
+      reader.fail(key, std::string(key) + " limits an adaptive zone, and contact_resolution is not given: it would "
+                                          "have no effect (remove it, or give contact_resolution)");
+  adaptivity.max_passes = reader.integer_or("max_adaptive_passes", adaptivity.max_passes);
+  adaptivity.max_elements = reader.integer_or("max_zone_elements", adaptivity.max_elements);
+  if (adaptivity.on() && contact.law.kind == contact::ContactKind::bilateral)
+    reader.fail("contact_resolution", "a bilateral contact holds every pair closed: there is no zone to find (remove "
+                                      "contact_resolution, or make the contact unilateral)");
+}
+
 void read_solver(const TableReader& reader, contact::ContactProblem& problem) {
   problem.operator_choice = read_operator_keys(reader);
   problem.increments = reader.integer_or("increments", problem.has_friction() ? 16 : 1);
@@ -651,6 +667,7 @@ void read_single_contact(const TableReader& contact, const TableReader& root, Fi
   interface.side2 = read_side(contact, problem, 1, 2);
   read_pairing(contact, interface);
   interface.law = read_law(contact, problem.tangential_coupling);
+  read_zone_adaptivity(contact, interface);
   problem.contacts.push_back(interface);
   read_solver(contact, problem);
   if (const toml::table* load = contact.optional_table("load", "[contact.load]"))
@@ -696,6 +713,7 @@ void read_contact_tables(const toml::node& contact_node, const TableReader& root
     // condensed operator: one for every contact.
     bool coupling = true;
     interface.law = read_law(contact, coupling);
+    read_zone_adaptivity(contact, interface);
     if (index == 1) problem.tangential_coupling = coupling;
     problem.contacts.push_back(interface);
     if (index > 1 && coupling != problem.tangential_coupling)

@@ -172,6 +172,19 @@ std::vector<Key> pairing_keys() {
   };
 }
 
+std::vector<Key> zone_keys() {
+  return {
+      number("contact_resolution", "none (the zone as declared and meshed)",
+             "the boundaries are candidates: the solver finds where they touch and refines there until the pair "
+             "spacing at the zone's edges is at most this fraction of its width (docs/contact.md, Candidate surfaces)",
+             between(0, 1, true, true)),
+      integer("max_adaptive_passes", "8", "contact_resolution: the most solves on refined meshes",
+              between(1, 50, false, false)),
+      integer("max_zone_elements", "5000", "contact_resolution: the most elements on each side's boundary",
+              between(2, 200000, false, false)),
+  };
+}
+
 std::vector<Key> contact_solver_keys() {
   return joined({
       {
@@ -344,12 +357,12 @@ std::vector<Table> build_tables() {
                         of(Type::string, "body2", "required",
                            "side 2: an elastic body (body1 itself: self-contact) or a rigid body"),
                         of(Type::string, "boundary2", "required (elastic side 2)", "side 2's boundary")},
-                       law_keys(), pairing_keys()})});
+                       law_keys(), pairing_keys(), zone_keys()})});
   t.push_back({"contact.single", "[contact]", "the [contact] table",
                joined({{of(Type::string, "boundary1", "required", "the first [[body]]'s contact boundary"),
                         of(Type::string, "boundary2", "required", "the second [[body]]'s contact boundary"),
                         of(Type::table, "load", "none", "its force load ([contact.load])")},
-                       law_keys(), pairing_keys(), contact_solver_keys()})});
+                       law_keys(), pairing_keys(), zone_keys(), contact_solver_keys()})});
   t.push_back({"contact.solver", "[solver] (contact files)", "the [solver] table", contact_solver_keys()});
   t.push_back({"load", "[[load]]", "a load table",
                {of(Type::name, "name", "`\"<body>_<boundary>_<component>\"`", "for messages and motions.csv"),

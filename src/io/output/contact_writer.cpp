@@ -157,10 +157,25 @@ std::string contact_steps_csv(const contact::ContactInterfaceResult& result) {
 
 namespace {
 
+// An adaptive zone's passes and final meshes (the probe meshes the run again from them).
+nlohmann::json zone_json(const contact::AdaptedZone& zone) {
+  nlohmann::json passes = nlohmann::json::array();
+  for (const auto& p : zone.passes)
+    passes.push_back({{"pass", p.pass},
+                      {"pairs", p.pairs},
+                      {"elements1", p.elements1},
+                      {"elements2", p.elements2},
+                      {"width", p.width},
+                      {"edge_spacing", p.edge_spacing},
+                      {"resolved", p.resolved}});
+  return {{"passes", passes}, {"breakpoints1", zone.breakpoints1}, {"breakpoints2", zone.breakpoints2}};
+}
+
 nlohmann::json interface_json(const contact::ContactInterfaceResult& result) {
   nlohmann::json j = summary_json(result.summary);
   j["name"] = result.name;
   j["pairs"] = result.pairs.size();
+  if (!result.zone.passes.empty()) j["zone"] = zone_json(result.zone);
   nlohmann::json steps = nlohmann::json::array();
   for (const auto& s : result.steps) steps.push_back(summary_json(s));
   j["steps"] = steps;
@@ -277,6 +292,25 @@ nlohmann::json contact_summary_json(const contact::ContactProblem& problem, cons
   return j;
 }
 
+namespace {
+
+// "zone found in 3 passes (pairs 17, 40, 92): width 0.07, edge spacing 0.0012 = 0.017 of it"
+std::string zone_text(const contact::ContactInterface& contact, const contact::AdaptedZone& zone) {
+  std::string pairs;
+  for (const auto& pass : zone.passes) pairs += (pairs.empty() ? "" : ", ") + std::to_string(pass.pairs);
+  const auto& last = zone.passes.back();
+  char line[320];
+  std::snprintf(line, sizeof line,
+                "  zone found in %zu pass%s (pairs %s; contact_resolution %.4g): width %.6g, edge spacing %.4g = "
+                "%.4g of the width; %d elements on side 1, %d on side 2\n",
+                zone.passes.size(), zone.passes.size() == 1 ? "" : "es", pairs.c_str(), contact.adaptivity.resolution,
+                last.width, last.edge_spacing, last.width > 0.0 ? last.edge_spacing / last.width : 0.0, last.elements1,
+                last.elements2);
+  return line;
+}
+
+}  // namespace
+
 std::string contact_report_text(const contact::ContactProblem& problem, const contact::ContactResult& result) {
   char line[256];
   std::string out = problem.title + " (" + to_string(problem.analysis) +
@@ -306,6 +340,7 @@ std::string contact_report_text(const contact::ContactProblem& problem, const co
     std::snprintf(line, sizeof line, "  contact fraction %.4g of the zone in %d spot%s, mean gap %.6g\n",
                   s.contact_fraction, s.contact_spots, s.contact_spots == 1 ? "" : "s", s.mean_gap);
     out += line;
+    if (!contact.zone.passes.empty()) out += zone_text(problem.contacts[c], contact.zone);
   }
   if (problem.contacts.empty()) return out;
   const auto& s = result.summary;
