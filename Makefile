@@ -2,7 +2,8 @@
 BUILD_DIR ?= build
 SANITIZE_DIR ?= build-asan
 JOBS ?= 2
-DEMO ?= examples/contact_hertz_sphere.toml
+DEMO ?= examples/contact_hertz_sphere_adaptive.toml
+DEMO_SET ?=
 FUZZ_SECONDS ?= 300
 
 .PHONY: deps deps-core deps-mpi configure build demo test test-sanitize test-mpi fuzz bench clean
@@ -35,7 +36,7 @@ demo: deps-core
 	@echo "bemcontact: building the library and the command (a few minutes the first time; log in $(BUILD_DIR).build.log)"
 	@cmake --build $(BUILD_DIR) -j $(JOBS) --target bemcontact -- --no-print-directory > $(BUILD_DIR).build.log 2>&1 \
 	  || (tail -n 60 $(BUILD_DIR).build.log; exit 1)
-	@$(BUILD_DIR)/bemcontact run $(DEMO) -o $(BUILD_DIR)/demo
+	@$(BUILD_DIR)/bemcontact run $(DEMO) $(DEMO_SET) -o $(BUILD_DIR)/demo
 
 test: build
 	@cd $(BUILD_DIR) && OMP_NUM_THREADS=$(JOBS) ctest --output-on-failure -j $(JOBS)

@@ -357,6 +357,23 @@ TEST(Probe, ARunWithOverriddenParametersIsMeshedWithThem) {
   EXPECT_EQ(rows.size(), 4u);
 }
 
+// An adaptive contact zone: the probe meshes the run again with the zone's final meshes
+// (summary.json: results.contacts[0].zone); without them the node check would refuse the
+// run. The support's surface stress on the axis is -p0 (Hertz, 2 %).
+TEST(Probe, AnAdaptiveZoneIsMeshedAsTheRunEndedIt) {
+  const std::string text = example_text("contact_hertz_sphere_adaptive.toml");
+  const auto folder = run(text, "contact_hertz_sphere_adaptive.toml");
+  const auto file = io::parse_contact_problem(text, "contact_hertz_sphere_adaptive.toml");
+  const auto hertz = reference::hertz_point_contact(file.parameters.at("P"), file.parameters.at("R"),
+                                                    file.problem.bodies[0].regions[0].body.material,
+                                                    std::numeric_limits<double>::infinity(),
+                                                    file.problem.bodies[1].regions[0].body.material);
+  const auto rows = probe(folder, lines({{Vec2(0.0, 0.0), Vec2(0.0, -0.1), 4}}));
+  ASSERT_EQ(rows.size(), 5u);  // the centre in both bodies
+  EXPECT_EQ(rows[1].body, "support");
+  EXPECT_NEAR(rows[1].s.s22, -hertz.max_pressure(), 0.02 * hertz.max_pressure());
+}
+
 // A line that crosses the hole: its points in the hole are left out and named in a
 // warning and in probe.json; the VTK polyline is broken there.
 TEST(Probe, PointsOfALineInsideNoBodyAreLeftOutAndReported) {
