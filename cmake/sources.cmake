@@ -18,6 +18,7 @@ set(BEMCONTACT_KERNELS_SOURCES
   src/kernels/kelvin2d.cpp
   src/kernels/ring_integrals.cpp)
 set(BEMCONTACT_OPERATORS_SOURCES
+  src/operators/bordered_lu.cpp
   src/operators/dense_lu.cpp
   src/operators/dense_subspaces.cpp
   src/operators/gmres.cpp

@@ -477,6 +477,7 @@ LoadHistory solve_load_history(const CondensedProblem& condensed, const std::vec
     if (progress) progress("contact load steps", t / end);
   }
   finish_history(step, taken, totals, history);
+  history.newton_systems = {data.newton_cache->factored, data.newton_cache->updated, data.newton_cache->reused};
   return history;
 }
 
@@ -546,6 +547,7 @@ void take_history(const ContactProblem& problem, LoadHistory& history, ContactRe
   result.records = std::move(history.records);
   result.steps_taken = history.steps_taken;
   result.rejected_steps = history.rejected_steps;
+  result.newton_systems = history.newton_systems;
   for (std::size_t c = 0; c < result.contacts.size(); ++c) result.contacts[c].name = problem.contacts[c].name;
   if (!result.contacts.empty()) static_cast<ContactInterfaceResult&>(result) = result.contacts.front();
 }

@@ -40,9 +40,12 @@ Vector relative_displacement(const StepInput& in, const Vector& x, const Vector&
 }
 
 double complementarity_residual(const StepInput& in, const Vector& x, const Vector& delta) {
+  return complementarity_residual(in, x, delta, relative_displacement(in, x, delta));
+}
+
+double complementarity_residual(const StepInput& in, const Vector& x, const Vector& delta, const Vector& w) {
   const auto& p = *in.problem;
   const double c = penalty_scale(p);
-  const Vector w = relative_displacement(in, x, delta);
   double scale = 0.0, worst = 0.0;
   for (Index i = 0; i < p.pairs; ++i) scale = std::max(scale, std::abs(x[2 * i]));
   if (scale == 0.0) scale = 1.0;
@@ -172,30 +175,33 @@ void newton_rhs(const StepInput& in, NewtonSystem& system) {
   for (Index m = 0; m < K; ++m) system.rhs[reduced + m] = in.target[m];
 }
 
+// The Jacobian's entry in the row of unknown `row` and the column of unknown `column`:
+// unknown ids are free dofs (< 2N) and motions (2N + m). A row of (M | f), with the slip
+// column tau = slip_factor lambda folded into lambda's; the motions' columns b and f_delta.
+double jacobian_entry(const CondensedProblem& p, const Vector& slip_factor, Index row, Index column) {
+  const Index dofs = 2 * p.pairs;
+  if (column >= dofs) return row < dofs ? p.b(row, column - dofs) : p.f_delta(row - dofs, column - dofs);
+  const auto entry = [&](Index c) { return row < dofs ? p.M(row, c) : p.f(row - dofs, c); };
+  const double slip = column % 2 == 0 ? slip_factor[column / 2] : 0.0;
+  return slip != 0.0 ? entry(column) + slip * entry(column + 1) : entry(column);
+}
+
+// The system's unknown ids: its free dofs, then the motions.
+std::vector<Index> unknown_ids(const CondensedProblem& p, const std::vector<Index>& free_dofs) {
+  std::vector<Index> ids = free_dofs;
+  for (Index m = 0; m < p.motions; ++m) ids.push_back(2 * p.pairs + m);
+  return ids;
+}
+
 // The Jacobian of `system`'s free unknowns (M and f folded with the slip factors, b, f_delta).
 void newton_matrix(const StepInput& in, NewtonSystem& system) {
   const auto& p = *in.problem;
-  const auto& free_dofs = system.free_dofs;
-  const Index reduced = static_cast<Index>(free_dofs.size());
-  const Index K = p.motions;
-  const Index system_size = reduced + K;
-  // Entry of a row of (M | f) in the column of free unknown `dof`, with the slip column
-  // tau = slip_factor lambda folded into lambda's.
-  auto folded = [&](auto&& entry, Index dof) {
-    const double slip = dof % 2 == 0 ? system.slip_factor[dof / 2] : 0.0;
-    return slip != 0.0 ? entry(dof) + slip * entry(dof + 1) : entry(dof);
-  };
+  const std::vector<Index> ids = unknown_ids(p, system.free_dofs);
+  const Index size = static_cast<Index>(ids.size());
   Matrix& J = system.J;
-  J.resize(system_size, system_size);
-  for (Index k = 0; k < reduced; ++k) {
-    for (Index a = 0; a < reduced; ++a)
-      J(a, k) = folded([&](Index c) { return p.M(free_dofs[a], c); }, free_dofs[k]);
-    for (Index m = 0; m < K; ++m) J(reduced + m, k) = folded([&](Index c) { return p.f(m, c); }, free_dofs[k]);
-  }
-  for (Index a = 0; a < reduced; ++a)
-    for (Index m = 0; m < K; ++m) J(a, reduced + m) = p.b(free_dofs[a], m);
-  for (Index m = 0; m < K; ++m)
-    for (Index l = 0; l < K; ++l) J(reduced + m, reduced + l) = p.f_delta(m, l);
+  J.resize(size, size);
+  for (Index k = 0; k < size; ++k)
+    for (Index a = 0; a < size; ++a) J(a, k) = jacobian_entry(p, system.slip_factor, ids[a], ids[k]);
 }
 
 NewtonSystem newton_system(const StepInput& in, const Vector& x, const ActiveSets& state) {
@@ -205,18 +211,102 @@ NewtonSystem newton_system(const StepInput& in, const Vector& x, const ActiveSet
   return system;
 }
 
+// An update is built while the unknowns that differ from the factored system's are at
+// most this share of it: |D| + |N| solves of the update against a factorisation's n/3.
+constexpr double kUpdateShare = 0.03;
+
+// Whether z solves the system (J z = rhs to a relative 1e-6, J z computed by `apply`).
+template <class Apply>
+bool solves(const Apply& apply, const Vector& z, const Vector& rhs, double J_norm) {
+  return z.allFinite() && (apply(z) - rhs).norm() <= 1e-6 * (rhs.norm() + 1e-300) + 1e-12 * J_norm * z.norm();
+}
+
+// The system through the cache's factors: an update of them (operators/bordered_lu.hpp)
+// when the system differs from the factored one at few unknowns. False when it differs at
+// many, or the update is singular or inaccurate (the caller factors the system).
+bool solve_by_update(const StepInput& in, NewtonSystem& system, NewtonSystemCache& cache, Vector& z) {
+  const auto& p = *in.problem;
+  const bool same_update = cache.update && cache.update_free_dofs == system.free_dofs &&
+                           cache.update_slip_factor == system.slip_factor;
+  if (!same_update) {
+    cache.update.reset();
+    // Kept: the factored system's unknowns that stay free with the same column.
+    const auto column_same = [&](Index id) {
+      return id >= 2 * p.pairs || id % 2 == 1 || cache.slip_factor[id / 2] == system.slip_factor[id / 2];
+    };
+    const std::vector<Index> base_ids = unknown_ids(p, cache.free_dofs), ids = unknown_ids(p, system.free_dofs);
+    std::vector<Index> kept, order, added;
+    std::size_t b = 0;
+    for (std::size_t a = 0; a < ids.size(); ++a) {
+      while (b < base_ids.size() && base_ids[b] < ids[a]) ++b;
+      if (b < base_ids.size() && base_ids[b] == ids[a] && column_same(ids[a])) {
+        kept.push_back(static_cast<Index>(b));
+        order.push_back(static_cast<Index>(a));
+      } else {
+        added.push_back(static_cast<Index>(a));
+      }
+    }
+    const std::size_t changes = (base_ids.size() - kept.size()) + added.size();
+    if (changes > std::max<std::size_t>(8, static_cast<std::size_t>(kUpdateShare * static_cast<double>(ids.size()))))
+      return false;
+    const Index c = static_cast<Index>(kept.size()), m = static_cast<Index>(added.size());
+    Matrix Q(c, m), R(m, c), T(m, m);
+    for (Index j = 0; j < m; ++j) {
+      const Index column = ids[static_cast<std::size_t>(added[static_cast<std::size_t>(j)])];
+      for (Index a = 0; a < c; ++a) {
+        const Index other = ids[static_cast<std::size_t>(order[static_cast<std::size_t>(a)])];
+        Q(a, j) = jacobian_entry(p, system.slip_factor, other, column);
+        R(j, a) = jacobian_entry(p, system.slip_factor, column, other);
+      }
+      for (Index i = 0; i < m; ++i)
+        T(i, j) = jacobian_entry(p, system.slip_factor, ids[static_cast<std::size_t>(added[static_cast<std::size_t>(i)])], column);
+    }
+    try {
+      cache.update = std::make_unique<operators::BorderedLU>(cache.J, cache.lu, std::move(kept), std::move(Q),
+                                                             std::move(R), std::move(T));
+    } catch (const SolverError&) {
+      return false;
+    }
+    order.insert(order.end(), added.begin(), added.end());
+    cache.update_order = std::move(order);
+    cache.update_free_dofs = system.free_dofs;
+    cache.update_slip_factor = system.slip_factor;
+    ++cache.updated;
+  }
+  const auto& order = cache.update_order;
+  const Index size = static_cast<Index>(order.size());
+  Vector rhs(size);
+  for (Index j = 0; j < size; ++j) rhs[j] = system.rhs[order[static_cast<std::size_t>(j)]];
+  const Vector y = cache.update->solve(rhs);
+  const auto apply = [&](const Vector& v) { return cache.update->apply(v); };
+  if (!solves(apply, y, rhs, cache.J_norm)) {
+    cache.update.reset();
+    return false;
+  }
+  z.resize(size);
+  for (Index j = 0; j < size; ++j) z[order[static_cast<std::size_t>(j)]] = y[j];
+  return true;
+}
+
 // Solves the Newton system into z; false when it is singular (or the solution does not
 // satisfy it). LAPACK through DenseLU: the dense factorisation is the cost of an
 // iteration, at BLAS-3 speed, saved when the cache holds the same system (same free
-// unknowns and slip factors: the same matrix, so the same factors).
+// unknowns and slip factors: the same matrix, so the same factors) or one close to it.
 bool solve_newton_system(const StepInput& in, NewtonSystem& system, Vector& z) {
   NewtonSystemCache local;
   NewtonSystemCache& cache = in.newton_cache ? *in.newton_cache : local;
   const bool same = cache.valid && cache.free_dofs == system.free_dofs &&
                     cache.slip_factor.size() == system.slip_factor.size() && cache.slip_factor == system.slip_factor;
-  if (!same) {
+  if (same) {
+    if (cache.J.rows() == 0) return true;
+    ++cache.reused;
+  } else if (cache.valid && cache.J.rows() > 0 && cache.slip_factor.size() == system.slip_factor.size() &&
+             !system.free_dofs.empty() && solve_by_update(in, system, cache, z)) {
+    return true;
+  } else {
     newton_matrix(in, system);
     cache.valid = false;
+    cache.update.reset();
     cache.free_dofs = system.free_dofs;
     cache.slip_factor = system.slip_factor;
     cache.J = std::move(system.J);
@@ -227,15 +317,12 @@ bool solve_newton_system(const StepInput& in, NewtonSystem& system, Vector& z) {
       return false;
     }
     cache.valid = true;
+    cache.J_norm = cache.J.norm();
     ++cache.factored;
-  } else {
-    if (cache.J.rows() == 0) return true;
-    ++cache.reused;
   }
   const Matrix& J = cache.J;
-  const Vector& rhs = system.rhs;
-  z = cache.lu.solve(rhs);
-  return z.allFinite() && (J * z - rhs).norm() <= 1e-6 * (rhs.norm() + 1e-300) + 1e-12 * J.norm() * z.norm();
+  z = cache.lu.solve(system.rhs);
+  return solves([&](const Vector& v) { return Vector(J * v); }, z, system.rhs, cache.J_norm);
 }
 
 // The iterate of the Newton solution z, the eliminated tau restored.
@@ -274,12 +361,12 @@ StepOutput solve_step_newton(const StepInput& in, const SolverOptions& options) 
   StepOutput out;
   Vector x = in.x_start.size() == 2 * n ? in.x_start : Vector::Zero(2 * n);
   Vector delta = in.delta_start.size() == p.motions ? in.delta_start : Vector::Zero(p.motions);
-  double residual = complementarity_residual(in, x, delta);
+  Vector w = relative_displacement(in, x, delta);
+  double residual = complementarity_residual(in, x, delta, w);
   std::set<ActiveSets> seen;
   bool damped = false;
   for (int iteration = 1; iteration <= options.max_iterations; ++iteration) {
     out.newton_iterations = iteration;
-    const Vector w = relative_displacement(in, x, delta);
     const ActiveSets state = active_sets(in, x, w, c, iteration == 1);
     if (!damped && !seen.insert(state).second && iteration > 2) damped = true;  // the sets cycle
     NewtonSystem system = newton_system(in, x, state);
@@ -291,11 +378,15 @@ StepOutput solve_step_newton(const StepInput& in, const SolverOptions& options) 
     }
     Vector x_new, delta_new;
     newton_iterate(system, z, n, p.motions, x_new, delta_new);
-    double new_residual = complementarity_residual(in, x_new, delta_new);
-    if (damped && new_residual >= residual)
+    Vector w_new = relative_displacement(in, x_new, delta_new);
+    double new_residual = complementarity_residual(in, x_new, delta_new, w_new);
+    if (damped && new_residual >= residual) {
       new_residual = backtrack(in, x, delta, residual, x_new, delta_new, new_residual);
+      w_new = relative_displacement(in, x_new, delta_new);
+    }
     x = x_new;
     delta = delta_new;
+    w = std::move(w_new);
     residual = new_residual;
     out.state = state;
     if (residual <= options.tolerance) {
@@ -305,7 +396,7 @@ StepOutput solve_step_newton(const StepInput& in, const SolverOptions& options) 
   }
   out.x = x;
   out.delta = delta;
-  out.w = relative_displacement(in, x, delta);
+  out.w = std::move(w);
   out.residual = residual;
   if (!out.converged && out.failure.empty())
     out.failure = "the semi-smooth Newton method did not converge in " + std::to_string(options.max_iterations) +

@@ -93,6 +93,12 @@ struct AdaptedZone {
   std::vector<double> breakpoints1, breakpoints2;
 };
 
+// How the Newton systems of a history were solved (step_solvers.hpp, NewtonSystemCache):
+// factored, solved through the last factors by a bordered update, or with them as they stood.
+struct NewtonSystemCounts {
+  long factored = 0, updated = 0, reused = 0;
+};
+
 // The results of one contact interface (or of a group of pairs).
 struct ContactInterfaceResult {
   std::string name;
@@ -129,6 +135,7 @@ struct ContactResult : ContactInterfaceResult {
   std::vector<ReportedMotion> free_motions;  // the motions of records after the force loads'
   int steps_taken = 0;
   int rejected_steps = 0;
+  NewtonSystemCounts newton_systems;
   // When record_steps: per step, every region's boundary solution with stresses.
   std::vector<std::vector<bem::BoundarySolution>> step_boundary;
   // Per elastic region (ContactModel::prepared().regions): mesh, solution, output name.
@@ -155,6 +162,7 @@ struct LoadHistory : ContactInterfaceResult {
   std::vector<Vector> step_x, step_delta;  // per step when record_steps
   int steps_taken = 0;
   int rejected_steps = 0;               // adaptive steps redone in halves
+  NewtonSystemCounts newton_systems;
   Vector x;                             // final (lambda_n, tau) per pair
   Vector delta;                         // final motions (CondensedProblem::motions)
 };

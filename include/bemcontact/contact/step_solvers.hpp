@@ -16,6 +16,9 @@
 #include <string>
 
 #include "bemcontact/contact/condensed.hpp"
+#include <memory>
+
+#include "bemcontact/operators/bordered_lu.hpp"
 #include "bemcontact/operators/dense_lu.hpp"
 
 namespace bemcontact::contact {
@@ -24,19 +27,26 @@ struct StepInput;
 // The input of the step ending at pseudo-time t (loads evaluated there).
 StepInput step_input(const CondensedProblem& problem, double t);
 
-// The last Newton system and its factorisation, kept across iterations and load steps of
-// one history. The Jacobian depends only on which unknowns are free and on the slip
-// factors (the condensed operator is fixed), so an iteration whose active sets and slip
-// directions repeat the last system's solves with its factors, with the same numbers as a
-// new factorisation, instead of forming and factoring the matrix again: most iterations of
-// a fretting history, whose state changes at a few pairs per step.
+// The last factored Newton system, kept across iterations and load steps of one history.
+// The Jacobian depends only on which unknowns are free and on the slip factors (the
+// condensed operator is fixed), so an iteration whose active sets and slip directions
+// repeat it solves with its factors; one whose sets differ at a few pairs (most iterations
+// of a fretting history) solves through them with a bordered update
+// (operators/bordered_lu.hpp: a few solves instead of a factorisation), kept while its sets
+// repeat; a system far from the factored one is factored anew.
 struct NewtonSystemCache {
   std::vector<Index> free_dofs;
   Vector slip_factor;
   Matrix J;
+  double J_norm = 0.0;  // Frobenius, for the solves' residual check
   operators::DenseLU lu;
   bool valid = false;
-  long factored = 0, reused = 0;  // systems factored, and solved with the kept factors
+  // The update of the last system solved through the factors above, and its sets.
+  std::vector<Index> update_free_dofs;
+  Vector update_slip_factor;
+  std::vector<Index> update_order;  // the update's unknowns (kept, then new) as positions in the system
+  std::unique_ptr<operators::BorderedLU> update;
+  long factored = 0, reused = 0, updated = 0;  // systems factored, solved with kept factors, updates built
 };
 
 struct StepInput {
@@ -79,6 +89,8 @@ Vector relative_displacement(const StepInput& input, const Vector& x, const Vect
 // mismatch relative to its force (or, for a free body's equilibrium, to the sum of the
 // contact forces on it).
 double complementarity_residual(const StepInput& input, const Vector& x, const Vector& delta);
+// The same with the jump w of (x, delta) given.
+double complementarity_residual(const StepInput& input, const Vector& x, const Vector& delta, const Vector& w);
 
 StepOutput solve_step_newton(const StepInput& input, const SolverOptions& options);
 StepOutput solve_step_thesis(const StepInput& input, const SolverOptions& options);

@@ -278,7 +278,11 @@ nlohmann::json contact_summary_json(const contact::ContactProblem& problem, cons
                   {"rejected_steps", result.rejected_steps},
                   {"rule", "a step in which more than max_state_changes pairs of one contact change state (open, "
                            "stick, slip) is redone in halves; the step grows back by 2 after an accepted one"},
-                  {"max_state_changes", problem.max_state_changes}};
+                  {"max_state_changes", problem.max_state_changes},
+                  {"newton_systems",
+                   {{"factored", result.newton_systems.factored},
+                    {"updated", result.newton_systems.updated},
+                    {"reused", result.newton_systems.reused}}}};
   j["unknowns"] = result.unknowns;
   // The closed form the plots draw next to the pressure (Hertz: p0 sqrt(1 - (r/a)^2)).
   if (const auto hertz = hertz_reference(problem))

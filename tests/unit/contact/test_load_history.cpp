@@ -107,6 +107,10 @@ TEST(LoadHistory, AdaptiveStepsFollowTheFineHistory) {
   EXPECT_LT(distance(adaptive), 0.04);
   EXPECT_GT(adaptive.steps_taken, 16);
   EXPECT_LT(adaptive.steps_taken, 200);
+  // Most Newton systems are solved through earlier factors (kept, or a bordered update).
+  const auto& systems = adaptive.newton_systems;
+  EXPECT_GT(systems.updated, 0);
+  EXPECT_GT(systems.updated + systems.reused, systems.factored);
 }
 
 }  // namespace bemcontact::contact
