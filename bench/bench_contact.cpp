@@ -1,4 +1,5 @@
-// Ball on a support (hertz-sphere, V.5.2.3, P = 31.5) at the example's resolution (30
+// Three families, each over the pair count n, for the exponents of time against n:
+//  - BM_HertzSphere:
 // contact elements per body) and with 4x and 16x more contact elements, frictionless and
 // with beta = 0.1 over 16 load steps, for both algorithms.
 //   range(0): contact elements per body (30, 120, 480)
@@ -7,7 +8,19 @@
 // Counters: pairs, Newton iterations, Kalker (Alg V.3) and threshold (Alg V.2) iterations,
 // GMRES(m) cycles (Alg V.1), and the time of the contact iterations alone (the rest is
 // assembly and factorisation of the two bodies).
+//  - BM_RigidCylinder: a rigid cylinder (R = 1) pressed on a plane-strain block (16 x 8)
+//    with n elements on its contact zone |x| <= 0.1 (a = 0.07), frictionless, one step.
+//  - BM_FrettingCycle: examples/fretting_cylinder.toml (P, then Q = 0.6 mu P forth, back
+//    and forth, adaptive steps) with n elements per contact zone.
+// Counters: pairs, the phases' seconds, Newton iterations and systems (factored, updated
+// through the last factors, reused), and the process's peak resident memory (MB).
 #include <benchmark/benchmark.h>
+
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <sys/resource.h>
 
 #include "bemcontact/contact/contact_solver.hpp"
 #include "bemcontact/core/error.hpp"
@@ -53,7 +66,129 @@ void BM_HertzSphere(benchmark::State& state) {
   }
 }
 
+double peak_memory_mb() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return static_cast<double>(usage.ru_maxrss) / 1024.0;
+}
+
+void add_counters(benchmark::State& state, const contact::ContactResult& result) {
+  state.counters["pairs"] = static_cast<double>(result.pairs.size());
+  state.counters["newton_iterations"] = result.summary.newton_iterations;
+  state.counters["steps"] = result.steps_taken;
+  state.counters["factored"] = static_cast<double>(result.newton_systems.factored);
+  state.counters["updated"] = static_cast<double>(result.newton_systems.updated);
+  state.counters["reused"] = static_cast<double>(result.newton_systems.reused);
+  for (const auto& phase : result.timings.phases) {
+    if (phase.first == "contact iterations") state.counters["contact_seconds"] = phase.second;
+    if (phase.first == "assembly, factorisation and condensation") state.counters["model_seconds"] = phase.second;
+  }
+  state.counters["peak_MB"] = peak_memory_mb();
+}
+
+void run_case(benchmark::State& state, const contact::ContactProblem& problem) {
+  contact::ContactResult result;
+  for (auto _ : state) {
+    try {
+      result = contact::solve_contact(problem);
+    } catch (const bemcontact::Error& error) {
+      state.SkipWithError(error.what());
+      return;
+    }
+    benchmark::DoNotOptimize(result.summary.contact_radius);
+  }
+  add_counters(state, result);
+}
+
+const char* const kRigidCylinder = R"(
+title = "Rigid cylinder on a block"
+analysis = "plane_strain"
+[parameters]
+n = 500
+P = 148.0
+[[body]]
+name = "block"
+[body.material]
+E = 70000.0
+nu = 0.3
+[body.vertices]
+A = [-8.0, -8.0]
+B = [8.0, -8.0]
+C = [8.0, 0.0]
+D = [0.1, 0.0]
+F = [-0.1, 0.0]
+G = [-8.0, 0.0]
+[[body.boundary]]
+name = "base"
+from = "A"
+to = "B"
+elements = 10
+u1 = 0.0
+u2 = 0.0
+[[body.boundary]]
+name = "right"
+from = "B"
+to = "C"
+elements = 8
+[[body.boundary]]
+name = "top right"
+from = "C"
+to = "D"
+elements = 20
+grading = 60.0
+refine = "end"
+[[body.boundary]]
+name = "contact"
+from = "D"
+to = "F"
+elements = "n"
+[[body.boundary]]
+name = "top left"
+from = "F"
+to = "G"
+elements = 20
+grading = 60.0
+refine = "start"
+[[body.boundary]]
+name = "left"
+from = "G"
+to = "A"
+elements = 8
+[[body]]
+name = "cylinder"
+[body.rigid]
+profile = "cylinder"
+center = [0.0, 1.0]
+radius = 1.0
+[[contact]]
+body1 = "block"
+boundary1 = "contact"
+body2 = "cylinder"
+normal = "body1"
+[load]
+body = "cylinder"
+component = 2
+force = "-P"
+)";
+
+void BM_RigidCylinder(benchmark::State& state) {
+  auto file = io::parse_contact_problem(kRigidCylinder, "rigid_cylinder.toml", {{"n", static_cast<double>(state.range(0))}});
+  run_case(state, file.problem);
+}
+
+void BM_FrettingCycle(benchmark::State& state) {
+  std::ifstream in(std::string(BEMCONTACT_EXAMPLES_DIR) + "/fretting_cylinder.toml");
+  std::ostringstream text;
+  text << in.rdbuf();
+  auto file = io::parse_contact_problem(text.str(), "fretting_cylinder.toml", {{"n", static_cast<double>(state.range(0))}});
+  file.problem.drop_interior_points();
+  run_case(state, file.problem);
+}
+
 }  // namespace
+
+BENCHMARK(BM_RigidCylinder)->Arg(500)->Arg(1000)->Arg(2000)->Arg(4000)->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(BM_FrettingCycle)->Arg(60)->Arg(120)->Arg(240)->Arg(480)->Unit(benchmark::kMillisecond)->Iterations(1);
 
 BENCHMARK(BM_HertzSphere)
     ->ArgsProduct({{30, 120, 480}, {0, 1}, {0, 1}})
