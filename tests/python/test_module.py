@@ -73,6 +73,20 @@ def test_parameter_sweep_follows_hertz(examples):
         assert result.summary["results"]["contact"]["normal_force"] == pytest.approx(force, rel=1e-3)
 
 
+def test_a_zone_found_from_candidates_follows_the_load(examples):
+    """The README's demo from candidate surfaces: loads 13 times apart from one file, each
+    zone resolved to the asked spacing, a within 1 % of Hertz (validate zone-growth)."""
+    problem = bc.Problem.load(examples / "contact_hertz_sphere_adaptive.toml")
+    for force in (31.5, 400.0):
+        result = problem.run(P=force)
+        contact = result.summary["results"]["contacts"][0]
+        last = contact["zone"]["passes"][-1]
+        assert last["resolved"] and last["edge_spacing"] <= 0.02 * last["width"]
+        assert len(contact["zone"]["breakpoints1"]) == last["elements1"] + 1
+        reference = hertz_sphere_radius(problem, force)
+        assert contact["a"] == pytest.approx(reference, rel=0.01)
+
+
 def test_version_agrees_with_the_command_and_the_summary(binary, examples):
     shown = subprocess.run([binary, "--version"], capture_output=True, text=True, check=True).stdout.split()
     assert shown == ["bemcontact", bc.__version__]
