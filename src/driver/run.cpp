@@ -409,9 +409,13 @@ RunOutput mesh_model(const contact::ContactProblem& problem, RunOutput output, i
            static_cast<long>(region.mesh.node_count()), static_cast<long>(region.mesh.element_count()));
     append_transitions(output.report, region.mesh, region.label + ": ");
   }
-  for (std::size_t c = 0; c < prepared.contacts.size(); ++c)
+  for (std::size_t c = 0; c < prepared.contacts.size(); ++c) {
     append(output.report, "contact '%s': %zu pairs, %d nodes of side 1 facing nothing\n",
            problem.contacts[c].name.c_str(), prepared.contacts[c].pairs.size(), prepared.contacts[c].unpaired_nodes1);
+    if (problem.contacts[c].adaptivity.on())
+      append(output.report, "  its zone is found by the solver (contact_resolution %g): this is the first pass's mesh; "
+                            "`run` refines it where the candidates touch\n", problem.contacts[c].adaptivity.resolution);
+  }
   for (auto& output_file : io::contact_mesh_files(problem, prepared)) add_file(output, options, std::move(output_file));
   summary.mesh = meshes_json(meshes);
   json pairs = json::object();
