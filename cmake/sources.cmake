@@ -37,7 +37,8 @@ set(BEMCONTACT_REFERENCE_SOURCES
   src/reference/stress_state.cpp
   src/reference/two_layer_ring.cpp
   src/reference/uniaxial_tension.cpp
-  src/reference/wavy_contact.cpp)
+  src/reference/wavy_contact.cpp
+  src/reference/winkler.cpp)
 set(BEMCONTACT_INTEGRATION_SOURCES
   src/integration/axisymmetric_element.cpp
   src/integration/plane_element.cpp
@@ -117,7 +118,8 @@ set(BEMCONTACT_VALIDATION_SOURCES
   src/validation/multibody_cases.cpp
   src/validation/plane_cases.cpp
   src/validation/records.cpp
-  src/validation/wavy_cases.cpp)
+  src/validation/wavy_cases.cpp
+  src/validation/compliance_cases.cpp)
 set(BEMCONTACT_PARALLEL_SOURCES
   src/parallel/session.cpp)
 

@@ -28,7 +28,14 @@ const char* to_string(PairStatus status) {
   return "?";
 }
 const char* to_string(Algorithm algorithm) { return algorithm == Algorithm::newton ? "newton" : "thesis"; }
-const char* to_string(ContactKind kind) { return kind == ContactKind::bilateral ? "bilateral" : "unilateral"; }
+const char* to_string(ContactKind kind) {
+  switch (kind) {
+    case ContactKind::bilateral: return "bilateral";
+    case ContactKind::unilateral: return "unilateral";
+    case ContactKind::compliant: return "compliant";
+  }
+  return "?";
+}
 
 namespace {
 
@@ -43,19 +50,33 @@ double seconds_since(Clock::time_point start) {
 struct PairLaws {
   std::vector<ContactKind> kind;
   Vector friction;
+  std::vector<NormalCompliance> compliance;
+  // The coefficient of the threshold g = beta_eff p_n: beta, or beta c_t / c_n for a
+  // compliant pair (m_t = m_n).
+  double threshold_coefficient(Index i) const {
+    const auto k = static_cast<std::size_t>(i);
+    return kind[k] == ContactKind::compliant ? friction[i] * compliance[k].friction_stiffness / compliance[k].stiffness
+                                             : friction[i];
+  }
 };
 PairLaws pair_laws(const ContactProblem& problem, const std::vector<Index>& groups) {
   const Index n = groups.back();
   const ContactLaw all = problem.contacts.size() == 1 ? problem.contacts.front().law : ContactLaw{};
-  PairLaws laws{std::vector<ContactKind>(static_cast<std::size_t>(n), all.kind), Vector::Constant(n, all.friction)};
+  const auto count = static_cast<std::size_t>(n);
+  PairLaws laws{std::vector<ContactKind>(count, all.kind), Vector::Constant(n, all.friction),
+                std::vector<NormalCompliance>(count, all.compliance)};
   if (groups.size() != problem.contacts.size() + 1) return laws;
   for (std::size_t c = 0; c < problem.contacts.size(); ++c)
     for (Index i = groups[c]; i < groups[c + 1]; ++i) {
       laws.kind[static_cast<std::size_t>(i)] = problem.contacts[c].law.kind;
       laws.friction[i] = problem.contacts[c].law.friction;
+      laws.compliance[static_cast<std::size_t>(i)] = problem.contacts[c].law.compliance;
     }
   return laws;
 }
+
+// Laws where a pair may open (unilateral, compliant) rather than hold (bilateral).
+bool may_open(ContactKind kind) { return kind != ContactKind::bilateral; }
 
 // The part of each pair's interference applied at pseudo-time t (its contact's amplitude):
 // the solver carries it in the jump w (ContactModel's loads), the results in the gap.
@@ -89,10 +110,10 @@ std::vector<PairResult> pair_results(const std::vector<ContactPair>& pairs, cons
     r.p_t = step.x[2 * i + 1];
     r.jump_n = step.w[2 * i] - interference[first + i];
     r.jump_t = step.w[2 * i + 1];
-    const double friction = laws.friction[first + i];
+    const double friction = laws.threshold_coefficient(first + i);
     const double g = friction * std::abs(lambda);
     r.slip_ratio = g > 0.0 ? std::abs(r.p_t) / g : 0.0;
-    const bool open = laws.kind[static_cast<std::size_t>(first + i)] == ContactKind::unilateral && lambda <= 1e-12 * scale;
+    const bool open = may_open(laws.kind[static_cast<std::size_t>(first + i)]) && lambda <= 1e-12 * scale;
     if (open) r.status = PairStatus::open;
     else if (friction == 0.0 || pairs[i].on_axis) r.status = friction == 0.0 ? PairStatus::slip : PairStatus::stick;
     // Slip within 1e-3 of the threshold: the thesis algorithm meets |p_t| = g only to the
@@ -104,8 +125,9 @@ std::vector<PairResult> pair_results(const std::vector<ContactPair>& pairs, cons
 }
 
 ContactSummary summarise(const std::vector<ContactPair>& geometry, const std::vector<PairResult>& pairs,
-                         const StepOutput& step, double load, bool half_model, const ContactSummary* previous) {
-  ContactSummary s = summarise_pairs(geometry, pairs, half_model, previous);
+                         const StepOutput& step, double load, bool half_model, const ContactSummary* previous,
+                         double edge_power) {
+  ContactSummary s = summarise_pairs(geometry, pairs, half_model, previous, edge_power);
   s.time = load;
   s.approach = 0.0;  // set by the caller (the force load's motion)
   s.residual = step.residual;
@@ -158,7 +180,7 @@ void check_zones_not_clipped(const ContactModel& model, const std::vector<PairSt
   const bool axisymmetric = problem.analysis == AnalysisType::axisymmetric;
   for (std::size_t c = 0; c < problem.contacts.size(); ++c) {
     const auto& contact = model.prepared().contacts[c];
-    if (contact.smooth_ends.empty() || problem.contacts[c].law.kind != ContactKind::unilateral) continue;
+    if (contact.smooth_ends.empty() || !may_open(problem.contacts[c].law.kind)) continue;
     const bool side_face = zone_faces_sideways(contact.pairs);
     std::vector<bool> in_contact;
     std::vector<double> coordinate;
@@ -209,7 +231,11 @@ void record_step(ContactInterfaceResult& out, const std::vector<ContactPair>& pa
   part.w = step.w.segment(2 * first, 2 * (last - first));
   out.pairs = pair_results(group, part, laws, interference, first);
   const ContactSummary* previous = out.steps.empty() ? nullptr : &out.steps.back();
-  const ContactSummary summary = summarise(group, out.pairs, part, load, half_model, previous);
+  const auto law = static_cast<std::size_t>(first);
+  const double edge_power = first < last && laws.kind[law] == ContactKind::compliant
+                                ? 1.0 / laws.compliance[law].exponent
+                                : 2.0;
+  const ContactSummary summary = summarise(group, out.pairs, part, load, half_model, previous, edge_power);
   out.steps.push_back(summary);
   out.steps.back().approach = approach;
   if (problem.record_steps) out.step_pairs.push_back(out.pairs);
@@ -284,6 +310,7 @@ StepInput history_start(const HistoryData& data) {
   StepInput start = step_input(data.condensed, 0.0);
   start.kind = data.laws.kind;
   start.friction = data.laws.friction;
+  start.compliance = data.laws.compliance;
   start.previous_tangential_jump = Vector::Zero(n);
   start.x_start = Vector::Zero(2 * n);
   start.delta_start = Vector::Zero(data.condensed.motions);
@@ -295,6 +322,7 @@ StepOutput solve_step(const HistoryData& data, const StepInput& previous, double
   StepInput input = step_input(data.condensed, t_next);
   input.kind = data.laws.kind;
   input.friction = data.laws.friction;
+  input.compliance = data.laws.compliance;
   input.previous_tangential_jump = previous.previous_tangential_jump;
   input.x_start = previous.x_start;
   input.delta_start = previous.delta_start;

@@ -43,11 +43,14 @@ MarginFit fit_margin(const std::vector<double>& x, const std::vector<double>& m,
 }
 
 // The zone in contact's edge beyond its outermost closed pair (coordinate `outer`, pressure
-// p) before the open pair at `limit`, with the next pair inward at `inner` (pressure q): at a
-// smooth contact edge p ~ sqrt(a - x), so p^2 is extrapolated linearly to its zero.
-double contact_edge(double outer, double p, double inner, double q, double limit) {
-  if (!(q * q > p * p)) return 0.5 * (outer + limit);
-  const double edge = outer + p * p * (outer - inner) / (q * q - p * p);
+// p) before the open pair at `limit`, with the next pair inward at `inner` (pressure q): the
+// pressure vanishes at the edge like (a - x)^(1/power), so |p|^power is extrapolated
+// linearly to its zero: power 2 at a smooth edge of unilateral contact (p ~ sqrt(a - x)),
+// 1/m_n under normal compliance (p ~ (a - x)^m_n).
+double contact_edge(double outer, double p, double inner, double q, double limit, double power) {
+  const double tp = std::pow(std::abs(p), power), tq = std::pow(std::abs(q), power);
+  if (!(tq > tp)) return 0.5 * (outer + limit);
+  const double edge = outer + tp * (outer - inner) / (tq - tp);
   return std::clamp(edge, std::min(outer, limit), std::max(outer, limit));
 }
 
@@ -123,7 +126,7 @@ void add_zone_coverage(const std::vector<ContactPair>& geometry, const std::vect
 }
 
 void add_contact_extent(const std::vector<PairResult>& pairs, const std::vector<std::size_t>& order,
-                        ContactSummary& s) {
+                        double edge_power, ContactSummary& s) {
   // Contact radius a, along x1 from 0 (axisymmetric and symmetric models): the outermost
   // pair in |x1| in contact, extrapolated as contact_edge toward the first open pair.
   std::vector<std::size_t> by_distance = order;
@@ -142,7 +145,7 @@ void add_contact_extent(const std::vector<PairResult>& pairs, const std::vector<
       // The next pair inward (a symmetric model holds two pairs at each |x1|).
       if (pairs[k].status != PairStatus::open && r < r_last * (1.0 - 1e-9)) r_prev = r, p_prev = pairs[k].p_n;
     }
-    if (r_open > 0.0) s.contact_radius = r_prev >= 0.0 ? contact_edge(r_last, p_last, r_prev, p_prev, r_open)
+    if (r_open > 0.0) s.contact_radius = r_prev >= 0.0 ? contact_edge(r_last, p_last, r_prev, p_prev, r_open, edge_power)
                                                        : 0.5 * (r_last + r_open);
   }
   // The extent of the pairs in contact.
@@ -218,12 +221,12 @@ void add_stick_zone(const std::vector<PairResult>& pairs, const std::vector<std:
 }  // namespace
 
 ContactSummary summarise_pairs(const std::vector<ContactPair>& geometry, const std::vector<PairResult>& pairs,
-                               bool half_model, const ContactSummary* previous) {
+                               bool half_model, const ContactSummary* previous, double edge_power) {
   ContactSummary s;
   const std::vector<std::size_t> order = order_by_coordinate(pairs);
   add_pressures_and_forces(geometry, pairs, s);
   add_zone_coverage(geometry, pairs, order, s);
-  add_contact_extent(pairs, order, s);
+  add_contact_extent(pairs, order, edge_power, s);
   add_stick_zone(pairs, order, half_model, previous, s);
   return s;
 }

@@ -16,8 +16,39 @@ double penalty_scale(const CondensedProblem& p) {
   return sum > 0.0 ? p.M.rows() / sum : 1.0;
 }
 
+// Coulomb's threshold g of pair i at lambda_n: beta lambda_n (unilateral, lambda_n >= 0),
+// beta |lambda_n| (bilateral), and for a compliant pair beta c_t pen^m written with the
+// pressure lambda_n = c_n pen^m it carries: beta (c_t / c_n) lambda_n (m_t = m_n: the reader
+// refuses other exponents for now).
 double threshold(const StepInput& in, Index i, double lambda_n) {
-  return in.friction[i] * (in.kind[i] == ContactKind::unilateral ? std::max(lambda_n, 0.0) : std::abs(lambda_n));
+  switch (in.kind[i]) {
+    case ContactKind::unilateral: return in.friction[i] * std::max(lambda_n, 0.0);
+    case ContactKind::bilateral: return in.friction[i] * std::abs(lambda_n);
+    case ContactKind::compliant:
+      return in.friction[i] * in.compliance[i].friction_stiffness / in.compliance[i].stiffness *
+             std::max(lambda_n, 0.0);
+  }
+  return 0.0;
+}
+
+// The normal complementarity function of pair i: C_n of step_solvers.hpp, or for a
+// compliant pair lambda_n - c_n pen^m_n.
+double normal_function(const StepInput& in, Index i, double lambda, double w_n, double c) {
+  const double normal_gap = in.problem->gap[i] - w_n;
+  switch (in.kind[i]) {
+    case ContactKind::unilateral: return lambda - std::max(0.0, lambda - c * normal_gap);
+    case ContactKind::bilateral: return c * normal_gap;
+    case ContactKind::compliant: return lambda - in.compliance[i].pressure(-normal_gap);
+  }
+  return 0.0;
+}
+
+// Where a compliant pair's law is linearised: its interpenetration, or where none is
+// positive yet (a pair just closed), where the law's stiffness c_n m pen^(m-1) equals m
+// times the elastic scale c (m > 1; any point for m = 1).
+double linearisation_point(const NormalCompliance& law, double pen, double c) {
+  if (pen > 0.0 || law.exponent == 1.0) return std::max(pen, 0.0);
+  return std::pow(c / law.stiffness, 1.0 / (law.exponent - 1.0));
 }
 
 }  // namespace
@@ -51,9 +82,7 @@ double complementarity_residual(const StepInput& in, const Vector& x, const Vect
   if (scale == 0.0) scale = 1.0;
   for (Index i = 0; i < p.pairs; ++i) {
     const double lambda = x[2 * i], tau = x[2 * i + 1];
-    const double normal_gap = p.gap[i] - w[2 * i];
-    const double cn = in.kind[i] == ContactKind::unilateral ? lambda - std::max(0.0, lambda - c * normal_gap)
-                                                         : c * normal_gap;
+    const double cn = normal_function(in, i, lambda, w[2 * i], c);
     const double g = threshold(in, i, lambda);
     const double slip = w[2 * i + 1] - in.previous_tangential_jump[i];
     const double ct = p.on_axis[i] ? tau : tau - std::clamp(tau - c * slip, -g, g);
@@ -107,7 +136,9 @@ ActiveSets active_sets(const StepInput& in, const Vector& x, const Vector& w, do
   bool any_active = false;
   for (Index i = 0; i < n; ++i) {
     const double lambda = x[2 * i];
-    const bool active = in.kind[i] == ContactKind::bilateral || lambda - c * (p.gap[i] - w[2 * i]) > 0.0;
+    const bool active = in.kind[i] == ContactKind::bilateral ||
+                        (in.kind[i] == ContactKind::compliant ? w[2 * i] - p.gap[i] > 0.0
+                                                               : lambda - c * (p.gap[i] - w[2 * i]) > 0.0);
     state[2 * i] = active ? 1 : 0;
     any_active = any_active || active;
   }
@@ -143,27 +174,39 @@ ActiveSets active_sets(const StepInput& in, const Vector& x, const Vector& w, do
 struct NewtonSystem {
   std::vector<Index> free_dofs;
   Vector slip_factor;  // tau_i = slip_factor_i lambda_i when slipping
+  // A compliant pair in contact: its row w_n - lambda_n / k = ... with k the law's stiffness
+  // at the linearisation point; normal_shift_i = 1 / k (0 for the other laws).
+  Vector normal_shift;
   Matrix J;
   Vector rhs;
 };
 
 // The unknowns the system keeps, and the slip factors of the eliminated slipping tau.
-void choose_free_unknowns(const StepInput& in, const Vector& x, const ActiveSets& state, NewtonSystem& system) {
+void choose_free_unknowns(const StepInput& in, const Vector& x, const Vector& w, const ActiveSets& state, double c,
+                          NewtonSystem& system) {
   const Index n = in.problem->pairs;
   system.slip_factor = Vector::Zero(n);
+  system.normal_shift = Vector::Zero(n);
   for (Index i = 0; i < n; ++i) {
     if (state[2 * i] == 1) system.free_dofs.push_back(2 * i);
     if (state[2 * i + 1] == 1) system.free_dofs.push_back(2 * i + 1);
-    if (state[2 * i + 1] >= 2) {
-      const double s = state[2 * i + 1] == 2 ? 1.0 : -1.0;
-      const double sigma = in.kind[i] == ContactKind::bilateral && x[2 * i] < 0.0 ? -1.0 : 1.0;
-      system.slip_factor[i] = in.friction[i] * s * sigma;
+    const bool compliant = in.kind[i] == ContactKind::compliant;
+    if (compliant && state[2 * i] == 1) {
+      const auto& law = in.compliance[i];
+      const double pen = linearisation_point(law, w[2 * i] - in.problem->gap[i], c);
+      system.normal_shift[i] = 1.0 / (law.stiffness * law.exponent * std::pow(pen, law.exponent - 1.0));
     }
+    if (state[2 * i + 1] < 2) continue;
+    const double s = state[2 * i + 1] == 2 ? 1.0 : -1.0;
+    const double sigma = in.kind[i] == ContactKind::bilateral && x[2 * i] < 0.0 ? -1.0 : 1.0;
+    // Compliant (m_t = m_n): g = beta c_t pen^m = beta (c_t / c_n) lambda_n.
+    const double ratio = compliant ? in.compliance[i].friction_stiffness / in.compliance[i].stiffness : 1.0;
+    system.slip_factor[i] = in.friction[i] * ratio * s * sigma;
   }
 }
 
 // The right-hand side of the Newton system of `system`'s free unknowns.
-void newton_rhs(const StepInput& in, NewtonSystem& system) {
+void newton_rhs(const StepInput& in, const Vector& w, double c, NewtonSystem& system) {
   const auto& p = *in.problem;
   const Index reduced = static_cast<Index>(system.free_dofs.size());
   const Index K = p.motions;
@@ -171,6 +214,12 @@ void newton_rhs(const StepInput& in, NewtonSystem& system) {
   for (Index a = 0; a < reduced; ++a) {
     const Index row = system.free_dofs[a], i = row / 2;
     system.rhs[a] = (row % 2 == 0 ? p.gap[i] : in.previous_tangential_jump[i]) - in.jump0[row];
+    // A compliant pair: lambda = c_n pen0^m + k (w_n - d - pen0), i.e. w_n - lambda / k = d + pen0 (1 - 1/m).
+    if (row % 2 == 0 && system.normal_shift[i] != 0.0) {
+      const auto& law = in.compliance[i];
+      const double pen = linearisation_point(law, w[row] - p.gap[i], c);
+      system.rhs[a] += pen * (1.0 - 1.0 / law.exponent);
+    }
   }
   for (Index m = 0; m < K; ++m) system.rhs[reduced + m] = in.target[m];
 }
@@ -178,12 +227,14 @@ void newton_rhs(const StepInput& in, NewtonSystem& system) {
 // The Jacobian's entry in the row of unknown `row` and the column of unknown `column`:
 // unknown ids are free dofs (< 2N) and motions (2N + m). A row of (M | f), with the slip
 // column tau = slip_factor lambda folded into lambda's; the motions' columns b and f_delta.
-double jacobian_entry(const CondensedProblem& p, const Vector& slip_factor, Index row, Index column) {
+double jacobian_entry(const CondensedProblem& p, const NewtonSystem& system, Index row, Index column) {
   const Index dofs = 2 * p.pairs;
   if (column >= dofs) return row < dofs ? p.b(row, column - dofs) : p.f_delta(row - dofs, column - dofs);
   const auto entry = [&](Index c) { return row < dofs ? p.M(row, c) : p.f(row - dofs, c); };
-  const double slip = column % 2 == 0 ? slip_factor[column / 2] : 0.0;
-  return slip != 0.0 ? entry(column) + slip * entry(column + 1) : entry(column);
+  const double slip = column % 2 == 0 ? system.slip_factor[column / 2] : 0.0;
+  double value = slip != 0.0 ? entry(column) + slip * entry(column + 1) : entry(column);
+  if (row == column && column % 2 == 0) value -= system.normal_shift[column / 2];
+  return value;
 }
 
 // The system's unknown ids: its free dofs, then the motions.
@@ -201,13 +252,13 @@ void newton_matrix(const StepInput& in, NewtonSystem& system) {
   Matrix& J = system.J;
   J.resize(size, size);
   for (Index k = 0; k < size; ++k)
-    for (Index a = 0; a < size; ++a) J(a, k) = jacobian_entry(p, system.slip_factor, ids[a], ids[k]);
+    for (Index a = 0; a < size; ++a) J(a, k) = jacobian_entry(p, system, ids[a], ids[k]);
 }
 
-NewtonSystem newton_system(const StepInput& in, const Vector& x, const ActiveSets& state) {
+NewtonSystem newton_system(const StepInput& in, const Vector& x, const Vector& w, const ActiveSets& state, double c) {
   NewtonSystem system;
-  choose_free_unknowns(in, x, state, system);
-  newton_rhs(in, system);
+  choose_free_unknowns(in, x, w, state, c, system);
+  newton_rhs(in, w, c, system);
   return system;
 }
 
@@ -227,12 +278,15 @@ bool solves(const Apply& apply, const Vector& z, const Vector& rhs, double J_nor
 bool solve_by_update(const StepInput& in, NewtonSystem& system, NewtonSystemCache& cache, Vector& z) {
   const auto& p = *in.problem;
   const bool same_update = cache.update && cache.update_free_dofs == system.free_dofs &&
-                           cache.update_slip_factor == system.slip_factor;
+                           cache.update_slip_factor == system.slip_factor &&
+                           cache.update_normal_shift == system.normal_shift;
   if (!same_update) {
     cache.update.reset();
     // Kept: the factored system's unknowns that stay free with the same column.
     const auto column_same = [&](Index id) {
-      return id >= 2 * p.pairs || id % 2 == 1 || cache.slip_factor[id / 2] == system.slip_factor[id / 2];
+      return id >= 2 * p.pairs || id % 2 == 1 ||
+             (cache.slip_factor[id / 2] == system.slip_factor[id / 2] &&
+              cache.normal_shift[id / 2] == system.normal_shift[id / 2]);
     };
     const std::vector<Index> base_ids = unknown_ids(p, cache.free_dofs), ids = unknown_ids(p, system.free_dofs);
     std::vector<Index> kept, order, added;
@@ -255,11 +309,11 @@ bool solve_by_update(const StepInput& in, NewtonSystem& system, NewtonSystemCach
       const Index column = ids[static_cast<std::size_t>(added[static_cast<std::size_t>(j)])];
       for (Index a = 0; a < c; ++a) {
         const Index other = ids[static_cast<std::size_t>(order[static_cast<std::size_t>(a)])];
-        Q(a, j) = jacobian_entry(p, system.slip_factor, other, column);
-        R(j, a) = jacobian_entry(p, system.slip_factor, column, other);
+        Q(a, j) = jacobian_entry(p, system, other, column);
+        R(j, a) = jacobian_entry(p, system, column, other);
       }
       for (Index i = 0; i < m; ++i)
-        T(i, j) = jacobian_entry(p, system.slip_factor, ids[static_cast<std::size_t>(added[static_cast<std::size_t>(i)])], column);
+        T(i, j) = jacobian_entry(p, system, ids[static_cast<std::size_t>(added[static_cast<std::size_t>(i)])], column);
     }
     try {
       cache.update = std::make_unique<operators::BorderedLU>(cache.J, cache.lu, std::move(kept), std::move(Q),
@@ -271,6 +325,7 @@ bool solve_by_update(const StepInput& in, NewtonSystem& system, NewtonSystemCach
     cache.update_order = std::move(order);
     cache.update_free_dofs = system.free_dofs;
     cache.update_slip_factor = system.slip_factor;
+    cache.update_normal_shift = system.normal_shift;
     ++cache.updated;
   }
   const auto& order = cache.update_order;
@@ -296,7 +351,8 @@ bool solve_newton_system(const StepInput& in, NewtonSystem& system, Vector& z) {
   NewtonSystemCache local;
   NewtonSystemCache& cache = in.newton_cache ? *in.newton_cache : local;
   const bool same = cache.valid && cache.free_dofs == system.free_dofs &&
-                    cache.slip_factor.size() == system.slip_factor.size() && cache.slip_factor == system.slip_factor;
+                    cache.slip_factor.size() == system.slip_factor.size() && cache.slip_factor == system.slip_factor &&
+                    cache.normal_shift == system.normal_shift;
   if (same) {
     if (cache.J.rows() == 0) return true;
     ++cache.reused;
@@ -309,6 +365,7 @@ bool solve_newton_system(const StepInput& in, NewtonSystem& system, Vector& z) {
     cache.update.reset();
     cache.free_dofs = system.free_dofs;
     cache.slip_factor = system.slip_factor;
+    cache.normal_shift = system.normal_shift;
     cache.J = std::move(system.J);
     if (cache.J.rows() == 0) return cache.valid = true;
     try {
@@ -369,7 +426,7 @@ StepOutput solve_step_newton(const StepInput& in, const SolverOptions& options) 
     out.newton_iterations = iteration;
     const ActiveSets state = active_sets(in, x, w, c, iteration == 1);
     if (!damped && !seen.insert(state).second && iteration > 2) damped = true;  // the sets cycle
-    NewtonSystem system = newton_system(in, x, state);
+    NewtonSystem system = newton_system(in, x, w, state, c);
     Vector z;
     if (!solve_newton_system(in, system, z)) {
       out.failure = "the Newton system of iteration " + std::to_string(iteration) +

@@ -276,6 +276,9 @@ BilateralResult kalker(const StepInput& in, const Vector& friction, const Vector
 }  // namespace
 
 StepOutput solve_step_thesis(const StepInput& in, const SolverOptions& options) {
+  for (const ContactKind kind : in.kind)
+    if (kind == ContactKind::compliant)
+      throw InputError({}, "normal compliance is solved by the Newton algorithm only (algorithm = \"newton\")");
   const auto& p = *in.problem;
   StepOutput out;
   Vector x = in.x_start.size() == 2 * p.pairs ? in.x_start : Vector::Zero(2 * p.pairs);

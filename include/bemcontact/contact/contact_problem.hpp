@@ -5,6 +5,7 @@
 // loading (prescribed data of the bodies, optionally a total force on one boundary) and the
 // load history. Built by io/contact_file from a problem file, or by code (tests, cases).
 #include <array>
+#include <cmath>
 #include <optional>
 #include <string>
 #include <vector>
@@ -17,6 +18,20 @@ namespace bemcontact::contact {
 enum class ContactKind {
   bilateral,   // (V.4): the pairs never separate, [u_n] = d
   unilateral,  // (V.5): [u_n] - d <= 0, p_n <= 0, complementary
+  compliant,   // normal compliance (NormalCompliance): the pressure follows the interpenetration
+};
+
+// Normal compliance [OdenMartins1985, (3.1)-(3.3)]: a pair whose surfaces interpenetrate by
+// pen = [u_n] - d > 0 carries the pressure lambda_n = c_n pen^m_n (0 when pen <= 0), and
+// Coulomb's threshold becomes beta c_t pen^m_t (a rough or coated interface, a lubricated
+// film; as c_n grows the unilateral law is recovered).
+struct NormalCompliance {
+  double stiffness = 0.0;           // c_n > 0 (pressure per length^m_n)
+  double exponent = 1.0;            // m_n >= 1
+  double friction_stiffness = 0.0;  // c_t > 0 (default c_n)
+  double friction_exponent = 1.0;   // m_t (= m_n: other exponents are not available yet)
+  double pressure(double pen) const { return pen > 0.0 ? stiffness * std::pow(pen, exponent) : 0.0; }
+  bool operator==(const NormalCompliance&) const = default;
 };
 
 enum class Algorithm {
@@ -127,6 +142,7 @@ struct BoundaryRef {
 struct ContactLaw {
   ContactKind kind = ContactKind::unilateral;
   double friction = 0.0;  // Coulomb's beta; 0: frictionless
+  NormalCompliance compliance;  // kind == compliant
   bool operator==(const ContactLaw&) const = default;
 };
 

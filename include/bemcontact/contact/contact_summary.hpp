@@ -12,10 +12,12 @@ namespace bemcontact::contact {
 // `half_model`: the zone starts on a symmetry line or the axis at coordinate 0
 // (zone_starts_on_symmetry_line): the contact and stick zones are then symmetric about 0, and
 // the half-width c is measured from there. `previous`: the same contact's summary at the
-// previous step (null at the first), for the law of each stick edge. Iterations, residual,
-// time and approach are left to the caller.
+// previous step (null at the first), for the law of each stick edge. `edge_power`: how the
+// pressure vanishes at the contact's edge, p^edge_power linear in the distance to it (2
+// unilateral, 1 / m_n under normal compliance). Iterations, residual, time and approach are
+// left to the caller.
 ContactSummary summarise_pairs(const std::vector<ContactPair>& geometry, const std::vector<PairResult>& pairs,
-                               bool half_model, const ContactSummary* previous);
+                               bool half_model, const ContactSummary* previous, double edge_power = 2.0);
 
 // The contact spots: maximal runs of pairs in contact (stick or slip), consecutive in
 // `order` (the pairs' indices sorted by coordinate).

@@ -36,14 +36,14 @@ StepInput step_input(const CondensedProblem& problem, double t);
 // repeat; a system far from the factored one is factored anew.
 struct NewtonSystemCache {
   std::vector<Index> free_dofs;
-  Vector slip_factor;
+  Vector slip_factor, normal_shift;
   Matrix J;
   double J_norm = 0.0;  // Frobenius, for the solves' residual check
   operators::DenseLU lu;
   bool valid = false;
   // The update of the last system solved through the factors above, and its sets.
   std::vector<Index> update_free_dofs;
-  Vector update_slip_factor;
+  Vector update_slip_factor, update_normal_shift;
   std::vector<Index> update_order;  // the update's unknowns (kept, then new) as positions in the system
   std::unique_ptr<operators::BorderedLU> update;
   long factored = 0, reused = 0, updated = 0;  // systems factored, solved with kept factors, updates built
@@ -58,6 +58,7 @@ struct StepInput {
   // The law of each pair (that of its contact).
   std::vector<ContactKind> kind;
   Vector friction;
+  std::vector<NormalCompliance> compliance;  // of the compliant pairs (kind == compliant)
   Vector previous_tangential_jump;  // N: w_t at the end of the previous step
   Vector x_start;                   // 2N: initial guess (previous step)
   Vector delta_start;               // K: motions (previous step); empty for zeros

@@ -10,4 +10,5 @@ std::vector<Case> contact_cases();        // src/validation/contact_cases.cpp
 std::vector<Case> multibody_cases();      // src/validation/multibody_cases.cpp
 std::vector<Case> fretting_cases();       // src/validation/fretting_cases.cpp
 std::vector<Case> rough_cases();          // src/validation/wavy_cases.cpp
+std::vector<Case> compliance_cases();     // src/validation/compliance_cases.cpp
 }  // namespace bemcontact::validation

@@ -391,12 +391,40 @@ void read_bodies(toml::table& root_table, const TableReader& root, FileContext& 
 
 // A contact's law, its defaults applied here; and the tangential coupling (one for all
 // contacts, checked by the caller).
+// kind = "compliant": the compliance keys (NormalCompliance); refused with another kind.
+void read_compliance(const TableReader& reader, contact::ContactLaw& law) {
+  constexpr const char* keys[] = {"normal_stiffness", "normal_exponent", "friction_stiffness", "friction_exponent"};
+  if (law.kind != contact::ContactKind::compliant) {
+    for (const char* key : keys)
+      if (reader.has(key))
+        reader.fail(key, std::string(key) + " belongs to normal compliance: give kind = \"compliant\", or remove it");
+    return;
+  }
+  if (!reader.has("normal_stiffness"))
+    reader.fail("kind", "kind = \"compliant\" needs normal_stiffness (c_n: the pressure at a unit interpenetration)");
+  auto& c = law.compliance;
+  c.stiffness = *reader.optional_number("normal_stiffness");
+  c.exponent = reader.optional_number("normal_exponent").value_or(1.0);
+  c.friction_stiffness = reader.optional_number("friction_stiffness").value_or(c.stiffness);
+  c.friction_exponent = reader.optional_number("friction_exponent").value_or(c.exponent);
+  if (c.friction_exponent != c.exponent)
+    reader.fail("friction_exponent", "a friction threshold exponent m_t other than normal_exponent (m_n) is not "
+                                     "available yet: remove friction_exponent (m_t = m_n)");
+  if (law.friction == 0.0)
+    for (const char* key : {"friction_stiffness", "friction_exponent"})
+      if (reader.has(key))
+        reader.fail(key, std::string(key) + " sets the friction threshold; with friction = 0 it has no effect (remove "
+                                            "it, or give a friction coefficient)");
+}
+
 contact::ContactLaw read_law(const TableReader& reader, bool& coupling) {
   contact::ContactLaw law;
-  law.kind = reader.choice("kind") == "bilateral"
-                 ? contact::ContactKind::bilateral
-                 : contact::ContactKind::unilateral;
+  const std::string kind = reader.choice("kind");
+  law.kind = kind == "bilateral"   ? contact::ContactKind::bilateral
+             : kind == "compliant" ? contact::ContactKind::compliant
+                                   : contact::ContactKind::unilateral;
   law.friction = reader.optional_number("friction").value_or(0.0);
+  read_compliance(reader, law);
   coupling = reader.boolean_or("coupling", true);
   if (reader.has("coupling") && law.friction == 0.0)
     reader.fail("coupling", "'coupling' acts on the tangential tractions of friction; with friction = 0 it has "
@@ -473,6 +501,11 @@ void read_solver(const TableReader& reader, contact::ContactProblem& problem) {
     reader.fail("tolerance", "'tolerance' is the Newton algorithm's; the thesis algorithm stops on xi (give xi "
                              "instead, or set algorithm = \"newton\")");
   problem.solver.max_iterations = reader.integer_or("max_iterations", problem.solver.max_iterations);
+  if (problem.solver.algorithm == contact::Algorithm::thesis)
+    for (const auto& contact : problem.contacts)
+      if (contact.law.kind == contact::ContactKind::compliant)
+        reader.fail("algorithm", "contact '" + contact.name + "' is compliant: normal compliance is solved by the "
+                                 "Newton algorithm only (remove algorithm = \"thesis\")");
 }
 
 // A total force on a boundary of an elastic body (a rigid platen) or on a rigid body.

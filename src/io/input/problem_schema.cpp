@@ -150,7 +150,16 @@ std::vector<Key> operator_keys() {
 
 std::vector<Key> law_keys() {
   return {
-      choice("kind", {"unilateral", "bilateral"}, "unilateral", "bilateral: the pairs never separate (V.4)"),
+      choice("kind", {"unilateral", "bilateral", "compliant"}, "unilateral",
+             "bilateral: the pairs never separate (V.4); compliant: normal compliance, the pressure c_n pen^m_n of the "
+             "interpenetration pen (docs/contact.md, Normal compliance)"),
+      number("normal_stiffness", "required (compliant)", "compliant: c_n, the pressure at a unit interpenetration",
+             above(0)),
+      number("normal_exponent", "1", "compliant: m_n", at_least(1)),
+      number("friction_stiffness", "normal_stiffness", "compliant, with friction: c_t of the threshold beta c_t pen^m_t",
+             above(0)),
+      number("friction_exponent", "normal_exponent", "compliant, with friction: m_t (only m_t = m_n for now)",
+             at_least(1)),
       number("friction", "0 (frictionless)", "Coulomb's coefficient", at_least(0)),
       of(Type::boolean, "coupling", "true",
          "false: the uncoupled model (Spence's E.1), with friction only; the same in every contact"),

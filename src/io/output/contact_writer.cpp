@@ -247,10 +247,19 @@ nlohmann::json law_json(const contact::ContactProblem& problem) {
                         {"tangential_coupling", problem.tangential_coupling}};
   if (problem.contacts.empty()) return law;
   nlohmann::json contacts = nlohmann::json::array();
-  for (const auto& contact : problem.contacts)
-    contacts.push_back({{"name", contact.name},
-                        {"kind", contact::to_string(contact.law.kind)},
-                        {"friction", contact.law.friction}});
+  for (const auto& contact : problem.contacts) {
+    nlohmann::json entry = {{"name", contact.name},
+                            {"kind", contact::to_string(contact.law.kind)},
+                            {"friction", contact.law.friction}};
+    if (contact.law.kind == contact::ContactKind::compliant) {
+      const auto& c = contact.law.compliance;
+      entry["normal_compliance"] = {{"normal_stiffness", c.stiffness},
+                                    {"normal_exponent", c.exponent},
+                                    {"friction_stiffness", c.friction_stiffness},
+                                    {"friction_exponent", c.friction_exponent}};
+    }
+    contacts.push_back(entry);
+  }
   law["contacts"] = contacts;
   return law;
 }
