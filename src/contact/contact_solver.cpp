@@ -12,6 +12,7 @@
 #include "bemcontact/bem/postprocess.hpp"
 #include "bemcontact/bem/resultants.hpp"
 #include "bemcontact/contact/contact_summary.hpp"
+#include "bemcontact/contact/nonlocal_friction.hpp"
 #include "bemcontact/contact/step_solvers.hpp"
 #include "bemcontact/contact/zone_ends.hpp"
 #include "bemcontact/contact/zone_refinement.hpp"
@@ -51,6 +52,7 @@ struct PairLaws {
   std::vector<ContactKind> kind;
   Vector friction;
   std::vector<NormalCompliance> compliance;
+  MollifierRows mollifier;  // the non-local contacts' pairs (nonlocal_friction.hpp); empty: none
   // The coefficient of the threshold g = beta_eff p_n: beta, or beta c_t / c_n for a
   // compliant pair (m_t = m_n).
   double threshold_coefficient(Index i) const {
@@ -111,7 +113,13 @@ std::vector<PairResult> pair_results(const std::vector<ContactPair>& pairs, cons
     r.jump_n = step.w[2 * i] - interference[first + i];
     r.jump_t = step.w[2 * i + 1];
     const double friction = laws.threshold_coefficient(first + i);
-    const double g = friction * std::abs(lambda);
+    double measure = std::abs(lambda);
+    if (!laws.mollifier.empty() && !laws.mollifier[static_cast<std::size_t>(first + i)].empty()) {
+      measure = 0.0;  // the mollified |p_n| (step.x holds this group's pairs from `first` on)
+      for (const auto& [j, weight] : laws.mollifier[static_cast<std::size_t>(first + i)])
+        measure += weight * std::abs(step.x[2 * (j - first)]);
+    }
+    const double g = friction * measure;
     r.slip_ratio = g > 0.0 ? std::abs(r.p_t) / g : 0.0;
     const bool open = may_open(laws.kind[static_cast<std::size_t>(first + i)]) && lambda <= 1e-12 * scale;
     if (open) r.status = PairStatus::open;
@@ -301,6 +309,11 @@ HistoryData history_data(const CondensedProblem& condensed, const std::vector<Co
                          const ContactProblem& problem, const std::vector<Index>& groups) {
   std::vector<Index> all_groups = groups.size() > 1 ? groups : std::vector<Index>{0, condensed.pairs};
   PairLaws laws = pair_laws(problem, all_groups);
+  if (all_groups.size() == problem.contacts.size() + 1)
+    for (std::size_t c = 0; c < problem.contacts.size(); ++c)
+      if (problem.contacts[c].law.nonlocal_radius > 0.0)
+        add_mollifier_rows(pairs, all_groups[c], all_groups[c + 1], problem.contacts[c].law.nonlocal_radius,
+                           laws.mollifier);
   return {condensed, pairs, problem, groups, std::move(all_groups), std::move(laws), std::make_unique<NewtonSystemCache>()};
 }
 
@@ -311,6 +324,7 @@ StepInput history_start(const HistoryData& data) {
   start.kind = data.laws.kind;
   start.friction = data.laws.friction;
   start.compliance = data.laws.compliance;
+  if (!data.laws.mollifier.empty()) start.mollifier = &data.laws.mollifier;
   start.previous_tangential_jump = Vector::Zero(n);
   start.x_start = Vector::Zero(2 * n);
   start.delta_start = Vector::Zero(data.condensed.motions);
@@ -323,6 +337,7 @@ StepOutput solve_step(const HistoryData& data, const StepInput& previous, double
   input.kind = data.laws.kind;
   input.friction = data.laws.friction;
   input.compliance = data.laws.compliance;
+  if (!data.laws.mollifier.empty()) input.mollifier = &data.laws.mollifier;
   input.previous_tangential_jump = previous.previous_tangential_jump;
   input.x_start = previous.x_start;
   input.delta_start = previous.delta_start;

@@ -16,19 +16,50 @@ double penalty_scale(const CondensedProblem& p) {
   return sum > 0.0 ? p.M.rows() / sum : 1.0;
 }
 
-// Coulomb's threshold g of pair i at lambda_n: beta lambda_n (unilateral, lambda_n >= 0),
-// beta |lambda_n| (bilateral), and for a compliant pair beta c_t pen^m written with the
-// pressure lambda_n = c_n pen^m it carries: beta (c_t / c_n) lambda_n (m_t = m_n: the reader
-// refuses other exponents for now).
-double threshold(const StepInput& in, Index i, double lambda_n) {
+// What Coulomb's threshold multiplies at pair i: lambda_n (unilateral, lambda_n >= 0),
+// |lambda_n| (bilateral), and for a compliant pair, whose threshold beta c_t pen^m is written
+// with the pressure lambda_n = c_n pen^m it carries, (c_t / c_n) lambda_n (m_t = m_n: the
+// reader refuses other exponents for now).
+double threshold_measure(const StepInput& in, Index i, double lambda_n) {
   switch (in.kind[i]) {
-    case ContactKind::unilateral: return in.friction[i] * std::max(lambda_n, 0.0);
-    case ContactKind::bilateral: return in.friction[i] * std::abs(lambda_n);
+    case ContactKind::unilateral: return std::max(lambda_n, 0.0);
+    case ContactKind::bilateral: return std::abs(lambda_n);
     case ContactKind::compliant:
-      return in.friction[i] * in.compliance[i].friction_stiffness / in.compliance[i].stiffness *
-             std::max(lambda_n, 0.0);
+      return in.compliance[i].friction_stiffness / in.compliance[i].stiffness * std::max(lambda_n, 0.0);
   }
   return 0.0;
+}
+
+// d threshold_measure / d lambda_n of an active pair: its sign for a bilateral pair.
+double threshold_slope(const StepInput& in, Index i, double lambda_n) {
+  switch (in.kind[i]) {
+    case ContactKind::unilateral: return 1.0;
+    case ContactKind::bilateral: return lambda_n < 0.0 ? -1.0 : 1.0;
+    case ContactKind::compliant: return in.compliance[i].friction_stiffness / in.compliance[i].stiffness;
+  }
+  return 0.0;
+}
+
+bool is_nonlocal(const StepInput& in, Index i) {
+  return in.mollifier && !(*in.mollifier)[static_cast<std::size_t>(i)].empty();
+}
+
+// Every pair's slip threshold g at x: beta times its measure, or, where the law is non-local
+// (nonlocal_friction.hpp), beta times the mollified measure sum_j W_ij measure_j.
+Vector thresholds(const StepInput& in, const Vector& x) {
+  const Index n = in.problem->pairs;
+  Vector g(n);
+  for (Index i = 0; i < n; ++i) {
+    if (!is_nonlocal(in, i)) {
+      g[i] = in.friction[i] * threshold_measure(in, i, x[2 * i]);
+      continue;
+    }
+    double sum = 0.0;
+    for (const auto& [j, weight] : (*in.mollifier)[static_cast<std::size_t>(i)])
+      sum += weight * threshold_measure(in, j, x[2 * j]);
+    g[i] = in.friction[i] * sum;
+  }
+  return g;
 }
 
 // The normal complementarity function of pair i: C_n of step_solvers.hpp, or for a
@@ -78,12 +109,13 @@ double complementarity_residual(const StepInput& in, const Vector& x, const Vect
   const auto& p = *in.problem;
   const double c = penalty_scale(p);
   double scale = 0.0, worst = 0.0;
+  const Vector g_all = thresholds(in, x);
   for (Index i = 0; i < p.pairs; ++i) scale = std::max(scale, std::abs(x[2 * i]));
   if (scale == 0.0) scale = 1.0;
   for (Index i = 0; i < p.pairs; ++i) {
     const double lambda = x[2 * i], tau = x[2 * i + 1];
     const double cn = normal_function(in, i, lambda, w[2 * i], c);
-    const double g = threshold(in, i, lambda);
+    const double g = g_all[i];
     const double slip = w[2 * i + 1] - in.previous_tangential_jump[i];
     const double ct = p.on_axis[i] ? tau : tau - std::clamp(tau - c * slip, -g, g);
     worst = std::max({worst, std::abs(cn) / scale, std::abs(ct) / scale});
@@ -143,13 +175,14 @@ ActiveSets active_sets(const StepInput& in, const Vector& x, const Vector& w, do
     any_active = any_active || active;
   }
   if (!any_active && p.motions > 0) close_nearest_pairs(p, w, state);
+  const Vector g_all = thresholds(in, x);
   for (Index i = 0; i < n; ++i) {
     const double lambda = x[2 * i], tau = x[2 * i + 1];
     if (p.on_axis[i] || in.friction[i] == 0.0 || state[2 * i] == 0) {
       state[2 * i + 1] = 0;  // tau = 0
       continue;
     }
-    const double g = threshold(in, i, lambda);
+    const double g = g_all[i];
     const double z = tau - c * (w[2 * i + 1] - in.previous_tangential_jump[i]);
     // A pair just closing (lambda = 0: g = 0, z = 0) starts sticking.
     if (std::abs(z) <= g) state[2 * i + 1] = 1;  // stick
@@ -173,7 +206,11 @@ ActiveSets active_sets(const StepInput& in, const Vector& x, const Vector& w, do
 // force.
 struct NewtonSystem {
   std::vector<Index> free_dofs;
-  Vector slip_factor;  // tau_i = slip_factor_i lambda_i when slipping
+  // A slipping tau_i = slip_factor_i lambda_i + sum_j c_ij lambda_j, the sum over other
+  // pairs where the law is non-local (their mollified pressure): slip_rows[i] holds (j, c_ij),
+  // slip_columns[j] the same entries as (i, c_ij), for the column of lambda_j.
+  Vector slip_factor;
+  SlipCoupling slip_rows, slip_columns;
   // A compliant pair in contact: its row w_n - lambda_n / k = ... with k the law's stiffness
   // at the linearisation point; normal_shift_i = 1 / k (0 for the other laws).
   Vector normal_shift;
@@ -198,10 +235,22 @@ void choose_free_unknowns(const StepInput& in, const Vector& x, const Vector& w,
     }
     if (state[2 * i + 1] < 2) continue;
     const double s = state[2 * i + 1] == 2 ? 1.0 : -1.0;
-    const double sigma = in.kind[i] == ContactKind::bilateral && x[2 * i] < 0.0 ? -1.0 : 1.0;
-    // Compliant (m_t = m_n): g = beta c_t pen^m = beta (c_t / c_n) lambda_n.
-    const double ratio = compliant ? in.compliance[i].friction_stiffness / in.compliance[i].stiffness : 1.0;
-    system.slip_factor[i] = in.friction[i] * ratio * s * sigma;
+    if (!is_nonlocal(in, i)) {
+      system.slip_factor[i] = in.friction[i] * s * threshold_slope(in, i, x[2 * i]);
+      continue;
+    }
+    // Non-local: tau_i = s beta sum_j W_ij measure_j, over the pairs j in contact.
+    for (const auto& [j, weight] : (*in.mollifier)[static_cast<std::size_t>(i)]) {
+      if (state[2 * j] != 1) continue;
+      const double coefficient = s * in.friction[i] * weight * threshold_slope(in, j, x[2 * j]);
+      if (j == i) {
+        system.slip_factor[i] = coefficient;
+      } else {
+        if (system.slip_rows.empty()) system.slip_rows.resize(static_cast<std::size_t>(n)), system.slip_columns.resize(static_cast<std::size_t>(n));
+        system.slip_rows[static_cast<std::size_t>(i)].emplace_back(j, coefficient);
+        system.slip_columns[static_cast<std::size_t>(j)].emplace_back(i, coefficient);
+      }
+    }
   }
 }
 
@@ -233,6 +282,9 @@ double jacobian_entry(const CondensedProblem& p, const NewtonSystem& system, Ind
   const auto entry = [&](Index c) { return row < dofs ? p.M(row, c) : p.f(row - dofs, c); };
   const double slip = column % 2 == 0 ? system.slip_factor[column / 2] : 0.0;
   double value = slip != 0.0 ? entry(column) + slip * entry(column + 1) : entry(column);
+  if (column % 2 == 0 && !system.slip_columns.empty())
+    for (const auto& [i, coefficient] : system.slip_columns[static_cast<std::size_t>(column / 2)])
+      value += coefficient * entry(2 * i + 1);
   if (row == column && column % 2 == 0) value -= system.normal_shift[column / 2];
   return value;
 }
@@ -266,6 +318,14 @@ NewtonSystem newton_system(const StepInput& in, const Vector& x, const Vector& w
 // most this share of it: |D| + |N| solves of the update against a factorisation's n/3.
 constexpr double kUpdateShare = 0.03;
 
+// Whether column j's non-local slip entries are the same in two couplings (empty: none).
+bool same_coupling(const SlipCoupling& a, const SlipCoupling& b, Index j) {
+  static const std::vector<std::pair<Index, double>> none;
+  const auto& x = a.empty() ? none : a[static_cast<std::size_t>(j)];
+  const auto& y = b.empty() ? none : b[static_cast<std::size_t>(j)];
+  return x == y;
+}
+
 // Whether z solves the system (J z = rhs to a relative 1e-6, J z computed by `apply`).
 template <class Apply>
 bool solves(const Apply& apply, const Vector& z, const Vector& rhs, double J_norm) {
@@ -279,14 +339,16 @@ bool solve_by_update(const StepInput& in, NewtonSystem& system, NewtonSystemCach
   const auto& p = *in.problem;
   const bool same_update = cache.update && cache.update_free_dofs == system.free_dofs &&
                            cache.update_slip_factor == system.slip_factor &&
-                           cache.update_normal_shift == system.normal_shift;
+                           cache.update_normal_shift == system.normal_shift &&
+                           cache.update_slip_columns == system.slip_columns;
   if (!same_update) {
     cache.update.reset();
     // Kept: the factored system's unknowns that stay free with the same column.
     const auto column_same = [&](Index id) {
       return id >= 2 * p.pairs || id % 2 == 1 ||
              (cache.slip_factor[id / 2] == system.slip_factor[id / 2] &&
-              cache.normal_shift[id / 2] == system.normal_shift[id / 2]);
+              cache.normal_shift[id / 2] == system.normal_shift[id / 2] &&
+              same_coupling(cache.slip_columns, system.slip_columns, id / 2));
     };
     const std::vector<Index> base_ids = unknown_ids(p, cache.free_dofs), ids = unknown_ids(p, system.free_dofs);
     std::vector<Index> kept, order, added;
@@ -326,6 +388,7 @@ bool solve_by_update(const StepInput& in, NewtonSystem& system, NewtonSystemCach
     cache.update_free_dofs = system.free_dofs;
     cache.update_slip_factor = system.slip_factor;
     cache.update_normal_shift = system.normal_shift;
+    cache.update_slip_columns = system.slip_columns;
     ++cache.updated;
   }
   const auto& order = cache.update_order;
@@ -352,7 +415,7 @@ bool solve_newton_system(const StepInput& in, NewtonSystem& system, Vector& z) {
   NewtonSystemCache& cache = in.newton_cache ? *in.newton_cache : local;
   const bool same = cache.valid && cache.free_dofs == system.free_dofs &&
                     cache.slip_factor.size() == system.slip_factor.size() && cache.slip_factor == system.slip_factor &&
-                    cache.normal_shift == system.normal_shift;
+                    cache.normal_shift == system.normal_shift && cache.slip_columns == system.slip_columns;
   if (same) {
     if (cache.J.rows() == 0) return true;
     ++cache.reused;
@@ -366,6 +429,7 @@ bool solve_newton_system(const StepInput& in, NewtonSystem& system, Vector& z) {
     cache.free_dofs = system.free_dofs;
     cache.slip_factor = system.slip_factor;
     cache.normal_shift = system.normal_shift;
+    cache.slip_columns = system.slip_columns;
     cache.J = std::move(system.J);
     if (cache.J.rows() == 0) return cache.valid = true;
     try {
@@ -390,6 +454,10 @@ void newton_iterate(const NewtonSystem& system, const Vector& z, Index n, Index 
   for (Index k = 0; k < reduced; ++k) x_new[system.free_dofs[k]] = z[k];
   for (Index i = 0; i < n; ++i)
     if (system.slip_factor[i] != 0.0) x_new[2 * i + 1] = system.slip_factor[i] * x_new[2 * i];
+  if (!system.slip_rows.empty())
+    for (Index i = 0; i < n; ++i)
+      for (const auto& [j, coefficient] : system.slip_rows[static_cast<std::size_t>(i)])
+        x_new[2 * i + 1] += coefficient * x_new[2 * j];
   delta_new = K > 0 ? Vector(z.tail(K)) : Vector::Zero(0);
 }
 

@@ -212,8 +212,20 @@ BilateralResult successive_thresholds(const StepInput& in, const std::vector<boo
       break;
     }
     if (!has_friction(friction)) break;
+    // g = beta |p_n| (V.17), or beta times the mollified |p_n| where the law is non-local
+    // (nonlocal_friction.hpp), over the pairs in contact.
+    Vector magnitude = Vector::Zero(p.pairs);
+    for (Index a = 0; a < m; a += 2) magnitude[r.dofs[a] / 2] = std::abs(y[a]);
     Vector g_new = Vector::Zero(p.pairs);
-    for (Index a = 0; a < m; a += 2) g_new[r.dofs[a] / 2] = friction[r.dofs[a] / 2] * std::abs(y[a]);
+    for (Index a = 0; a < m; a += 2) {
+      const Index i = r.dofs[a] / 2;
+      double measure = magnitude[i];
+      if (in.mollifier && !(*in.mollifier)[static_cast<std::size_t>(i)].empty()) {
+        measure = 0.0;
+        for (const auto& [j, weight] : (*in.mollifier)[static_cast<std::size_t>(i)]) measure += weight * magnitude[j];
+      }
+      g_new[i] = friction[i] * measure;
+    }
     const double change = (g_new - g).norm() / std::max(g_new.norm(), 1e-300);
     g = g_new;
     // (V.19), with sqrt(xi) (1e-4, the thesis' value, for the default xi = 1e-8): the threshold

@@ -143,6 +143,8 @@ struct ContactLaw {
   ContactKind kind = ContactKind::unilateral;
   double friction = 0.0;  // Coulomb's beta; 0: frictionless
   NormalCompliance compliance;  // kind == compliant
+  // The non-local Coulomb law's radius rho (contact/nonlocal_friction.hpp); 0: the local law.
+  double nonlocal_radius = 0.0;
   bool operator==(const ContactLaw&) const = default;
 };
 

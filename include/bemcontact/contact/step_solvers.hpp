@@ -16,6 +16,7 @@
 #include <string>
 
 #include "bemcontact/contact/condensed.hpp"
+#include "bemcontact/contact/nonlocal_friction.hpp"
 #include <memory>
 
 #include "bemcontact/operators/bordered_lu.hpp"
@@ -34,9 +35,13 @@ StepInput step_input(const CondensedProblem& problem, double t);
 // of a fretting history) solves through them with a bordered update
 // (operators/bordered_lu.hpp: a few solves instead of a factorisation), kept while its sets
 // repeat; a system far from the factored one is factored anew.
+// Per pair, the (pair, coefficient) entries of a non-local slip threshold's coupling; empty: none.
+using SlipCoupling = std::vector<std::vector<std::pair<Index, double>>>;
+
 struct NewtonSystemCache {
   std::vector<Index> free_dofs;
   Vector slip_factor, normal_shift;
+  SlipCoupling slip_columns;
   Matrix J;
   double J_norm = 0.0;  // Frobenius, for the solves' residual check
   operators::DenseLU lu;
@@ -44,6 +49,7 @@ struct NewtonSystemCache {
   // The update of the last system solved through the factors above, and its sets.
   std::vector<Index> update_free_dofs;
   Vector update_slip_factor, update_normal_shift;
+  SlipCoupling update_slip_columns;
   std::vector<Index> update_order;  // the update's unknowns (kept, then new) as positions in the system
   std::unique_ptr<operators::BorderedLU> update;
   long factored = 0, reused = 0, updated = 0;  // systems factored, solved with kept factors, updates built
@@ -59,6 +65,9 @@ struct StepInput {
   std::vector<ContactKind> kind;
   Vector friction;
   std::vector<NormalCompliance> compliance;  // of the compliant pairs (kind == compliant)
+  // The mollifier of the pairs whose friction law is non-local (nonlocal_friction.hpp); null or
+  // an empty row: local.
+  const MollifierRows* mollifier = nullptr;
   Vector previous_tangential_jump;  // N: w_t at the end of the previous step
   Vector x_start;                   // 2N: initial guess (previous step)
   Vector delta_start;               // K: motions (previous step); empty for zeros

@@ -425,6 +425,12 @@ contact::ContactLaw read_law(const TableReader& reader, bool& coupling) {
                                    : contact::ContactKind::unilateral;
   law.friction = reader.optional_number("friction").value_or(0.0);
   read_compliance(reader, law);
+  law.nonlocal_radius = reader.optional_number("nonlocal_radius").value_or(0.0);
+  if (reader.has("nonlocal_radius") && law.friction == 0.0)
+    reader.fail("nonlocal_radius", "the non-local law mollifies the friction threshold; with friction = 0 it has no "
+                                   "effect (remove it, or give a friction coefficient)");
+  if (reader.has("nonlocal_radius") && law.kind == contact::ContactKind::compliant)
+    reader.fail("nonlocal_radius", "the non-local law is not available with normal compliance yet (remove one of them)");
   coupling = reader.boolean_or("coupling", true);
   if (reader.has("coupling") && law.friction == 0.0)
     reader.fail("coupling", "'coupling' acts on the tangential tractions of friction; with friction = 0 it has "
@@ -450,6 +456,15 @@ void read_pairing(const TableReader& reader, contact::ContactInterface& contact)
                         : normal == "body2" ? contact::PairNormal::body2
                                             : contact::PairNormal::common;
   contact.pairing = reader.choice("pairing") == "mortar" ? contact::Pairing::mortar : contact::Pairing::node_to_segment;
+}
+
+// The non-local law's kernel runs along a plane boundary; axisymmetry would need its ring
+// weights (not built yet).
+void check_nonlocal_analysis(const TableReader& reader, const contact::ContactLaw& law,
+                             const contact::ContactProblem& problem) {
+  if (law.nonlocal_radius > 0.0 && problem.analysis == AnalysisType::axisymmetric)
+    reader.fail("nonlocal_radius", "the non-local friction law is available in plane problems only, not yet in "
+                                   "axisymmetry");
 }
 
 // An adaptive zone (contact_resolution) and its limits; the limits alone have no effect.
@@ -700,6 +715,7 @@ void read_single_contact(const TableReader& contact, const TableReader& root, Fi
   interface.side2 = read_side(contact, problem, 1, 2);
   read_pairing(contact, interface);
   interface.law = read_law(contact, problem.tangential_coupling);
+  check_nonlocal_analysis(contact, interface.law, problem);
   read_zone_adaptivity(contact, interface);
   problem.contacts.push_back(interface);
   read_solver(contact, problem);
@@ -746,6 +762,7 @@ void read_contact_tables(const toml::node& contact_node, const TableReader& root
     // condensed operator: one for every contact.
     bool coupling = true;
     interface.law = read_law(contact, coupling);
+    check_nonlocal_analysis(contact, interface.law, problem);
     read_zone_adaptivity(contact, interface);
     if (index == 1) problem.tangential_coupling = coupling;
     problem.contacts.push_back(interface);

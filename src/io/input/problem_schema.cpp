@@ -161,6 +161,10 @@ std::vector<Key> law_keys() {
       number("friction_exponent", "normal_exponent", "compliant, with friction: m_t (only m_t = m_n for now)",
              at_least(1)),
       number("friction", "0 (frictionless)", "Coulomb's coefficient", at_least(0)),
+      number("nonlocal_radius", "none (the local law)",
+             "plane, with friction: the non-local Coulomb law's radius rho, the threshold beta (omega_rho * |p_n|) "
+             "(docs/contact.md, Non-local friction)",
+             above(0)),
       of(Type::boolean, "coupling", "true",
          "false: the uncoupled model (Spence's E.1), with friction only; the same in every contact"),
   };
