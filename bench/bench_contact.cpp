@@ -9,7 +9,8 @@
 // GMRES(m) cycles (Alg V.1), and the time of the contact iterations alone (the rest is
 // assembly and factorisation of the two bodies).
 //  - BM_RigidCylinder: a rigid cylinder (R = 1) pressed on a plane-strain block (16 x 8)
-//    with n elements on its contact zone |x| <= 0.1 (a = 0.07), frictionless, one step.
+//    with n elements on its contact zone |x| <= 0.1 (a = 0.07), frictionless, one step
+//    (examples/contact_compliant_cylinder.toml with the unilateral law).
 //  - BM_FrettingCycle: examples/fretting_cylinder.toml (P, then Q = 0.6 mu P forth, back
 //    and forth, adaptive steps) with n elements per contact zone.
 // Counters: pairs, the phases' seconds, Newton iterations and systems (factored, updated
@@ -100,79 +101,14 @@ void run_case(benchmark::State& state, const contact::ContactProblem& problem) {
   add_counters(state, result);
 }
 
-const char* const kRigidCylinder = R"(
-title = "Rigid cylinder on a block"
-analysis = "plane_strain"
-[parameters]
-n = 500
-P = 148.0
-[[body]]
-name = "block"
-[body.material]
-E = 70000.0
-nu = 0.3
-[body.vertices]
-A = [-8.0, -8.0]
-B = [8.0, -8.0]
-C = [8.0, 0.0]
-D = [0.1, 0.0]
-F = [-0.1, 0.0]
-G = [-8.0, 0.0]
-[[body.boundary]]
-name = "base"
-from = "A"
-to = "B"
-elements = 10
-u1 = 0.0
-u2 = 0.0
-[[body.boundary]]
-name = "right"
-from = "B"
-to = "C"
-elements = 8
-[[body.boundary]]
-name = "top right"
-from = "C"
-to = "D"
-elements = 20
-grading = 60.0
-refine = "end"
-[[body.boundary]]
-name = "contact"
-from = "D"
-to = "F"
-elements = "n"
-[[body.boundary]]
-name = "top left"
-from = "F"
-to = "G"
-elements = 20
-grading = 60.0
-refine = "start"
-[[body.boundary]]
-name = "left"
-from = "G"
-to = "A"
-elements = 8
-[[body]]
-name = "cylinder"
-[body.rigid]
-profile = "cylinder"
-center = [0.0, 1.0]
-radius = 1.0
-[[contact]]
-body1 = "block"
-boundary1 = "contact"
-body2 = "cylinder"
-normal = "body1"
-[load]
-body = "cylinder"
-component = 2
-force = "-P"
-)";
 
+
+// examples/contact_compliant_cylinder.toml with the unilateral law, on an aluminium-like block.
 void BM_RigidCylinder(benchmark::State& state) {
-  auto file = io::parse_contact_problem(kRigidCylinder, "rigid_cylinder.toml", {{"n", static_cast<double>(state.range(0))}});
+  auto file = io::read_contact_file(std::string(BEMCONTACT_EXAMPLES_DIR) + "/contact_compliant_cylinder.toml",
+                                    {{"n", static_cast<double>(state.range(0))}, {"rc", 0.1}, {"E_block", 70000.0},
+                                     {"P", 148.0}});
+  file.problem.contacts.front().law = contact::ContactLaw{};
   run_case(state, file.problem);
 }
 

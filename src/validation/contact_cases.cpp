@@ -555,6 +555,16 @@ std::vector<Record> run_hertz_cylinder_half(const Context& context) {
   return records;
 }
 
+// The ball examples' a and p0 (fitted) at load P against Hertz, within 1 %.
+void add_ball_against_hertz(const io::ContactFile& file, double P, const contact::ContactResult& result,
+                            std::vector<Record>& records) {
+  const auto& problem = file.problem;
+  const auto hertz = reference::hertz_point_contact(P, file.parameters.at("R"), problem.elastic(0).material,
+                                                    std::numeric_limits<double>::infinity(), problem.elastic(1).material);
+  records.push_back(compare_relative("a", result.summary.contact_radius, hertz.contact_radius(), 0.01));
+  records.push_back(compare_relative("p0", fitted_p0(result.pairs, hertz.contact_radius()), hertz.max_pressure(), 0.01));
+}
+
 // The README's ball at P = 400, where Hertz's a = 0.163 outgrows the example's zones (r <=
 // 0.1): the run stops with the clipped-zone error (contact/zone_ends.hpp) instead of a
 // punch-like answer (a = 0.099, -39 %; centre pressure +30 %). With zones to r = 0.2 (60
@@ -574,12 +584,8 @@ std::vector<Record> run_clipped_zone(const Context& context) {
   records.push_back(require_at_least("example_zone_refused", refused ? 1.0 : 0.0, 1.0));
   const auto file = load_contact_example(context, "contact_hertz_sphere.toml",
                                          {{"P", P}, {"rc", 0.2}, {"contact_elements", 60}});
-  const auto& problem = file.problem;
-  const auto hertz = reference::hertz_point_contact(P, file.parameters.at("R"), problem.elastic(0).material,
-                                                    std::numeric_limits<double>::infinity(), problem.elastic(1).material);
-  const auto result = contact::solve_contact(with_operator(context, problem), context.progress);
-  records.push_back(compare_relative("a", result.summary.contact_radius, hertz.contact_radius(), 0.01));
-  records.push_back(compare_relative("p0", fitted_p0(result.pairs, hertz.contact_radius()), hertz.max_pressure(), 0.01));
+  const auto result = contact::solve_contact(with_operator(context, file.problem), context.progress);
+  add_ball_against_hertz(file, P, result, records);
   tag(records, 0, "clipped-zone", {{"P", number_text(P)}});
   return records;
 }
@@ -605,12 +611,8 @@ std::vector<Record> run_zone_growth(const Context& context) {
     const std::size_t first = records.size();
     auto file = load_contact_example(context, "contact_hertz_sphere_adaptive.toml", {{"P", P}});
     file.problem.drop_interior_points();
-    const auto& problem = file.problem;
-    const auto hertz = reference::hertz_point_contact(P, file.parameters.at("R"), problem.elastic(0).material,
-                                                      std::numeric_limits<double>::infinity(), problem.elastic(1).material);
-    const auto result = contact::solve_contact(with_operator(context, problem), context.progress);
-    records.push_back(compare_relative("a", result.summary.contact_radius, hertz.contact_radius(), 0.01));
-    records.push_back(compare_relative("p0", fitted_p0(result.pairs, hertz.contact_radius()), hertz.max_pressure(), 0.01));
+    const auto result = contact::solve_contact(with_operator(context, file.problem), context.progress);
+    add_ball_against_hertz(file, P, result, records);
     resolved(result);
     tag(records, first, "zone-growth", {{"body", "ball"}, {"P", number_text(P)}});
   }

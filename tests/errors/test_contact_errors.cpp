@@ -12,6 +12,7 @@
 #include "bemcontact/contact/contact_solver.hpp"
 #include "bemcontact/core/error.hpp"
 #include "bemcontact/io/input/contact_file.hpp"
+#include "support/contact_input.hpp"
 #include "support/example_text.hpp"
 
 namespace bemcontact {
@@ -20,14 +21,7 @@ namespace {
 std::string example_text() { return test_support::example_text("contact_hertz_sphere.toml"); }
 using test_support::replaced;
 
-std::string input_error(const std::string& text) {
-  try {
-    io::parse_contact_problem(text, "ball.toml");
-  } catch (const InputError& error) {
-    return error.what();
-  }
-  return "no error";
-}
+std::string input_error(const std::string& text) { return test_support::contact_input_error(text, "ball.toml"); }
 
 // The message of the solver error the problem raises (a failure when it solves).
 std::string solver_error(const contact::ContactProblem& problem) {

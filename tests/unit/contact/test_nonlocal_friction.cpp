@@ -8,6 +8,7 @@
 #include "bemcontact/contact/nonlocal_friction.hpp"
 #include "bemcontact/core/error.hpp"
 #include "bemcontact/io/input/contact_file.hpp"
+#include "support/contact_input.hpp"
 #include "support/example_text.hpp"
 
 namespace bemcontact {
@@ -16,14 +17,7 @@ namespace {
 using test_support::example_text;
 using test_support::replaced;
 
-std::string nonlocal_input_error(const std::string& text) {
-  try {
-    io::parse_contact_problem(text, "punch.toml");
-  } catch (const InputError& error) {
-    return error.what();
-  }
-  return "no error";
-}
+std::string nonlocal_input_error(const std::string& text) { return test_support::contact_input_error(text, "punch.toml"); }
 
 contact::ContactProblem nonlocal_punch(int elements, contact::Algorithm algorithm) {
   auto file = io::parse_contact_problem(example_text("contact_nonlocal_punch.toml"), "punch.toml", {{"n", elements}});

@@ -9,6 +9,7 @@
 #include "bemcontact/core/error.hpp"
 #include "bemcontact/io/input/contact_file.hpp"
 #include "bemcontact/reference/winkler.hpp"
+#include "support/contact_input.hpp"
 #include "support/example_text.hpp"
 
 namespace bemcontact {
@@ -20,15 +21,10 @@ using test_support::replaced;
 std::string compliant_text() { return example_text("contact_compliant_cylinder.toml"); }
 
 std::string compliance_input_error(const std::string& text) {
-  try {
-    io::parse_contact_problem(text, "compliant.toml");
-  } catch (const InputError& error) {
-    return error.what();
-  }
-  return "no error";
+  return test_support::contact_input_error(text, "compliant.toml");
 }
 
-bool mentions(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+using test_support::mentions;
 
 }  // namespace
 

@@ -13,6 +13,7 @@
 #include "bemcontact/geometry/boundary.hpp"
 #include "bemcontact/io/input/contact_file.hpp"
 #include "bemcontact/reference/hertz.hpp"
+#include "support/contact_input.hpp"
 #include "support/example_text.hpp"
 
 namespace bemcontact {
@@ -29,14 +30,7 @@ contact::ContactProblem adaptive_problem(const std::string& text) {
   return problem;
 }
 
-std::string zone_input_error(const std::string& text) {
-  try {
-    io::parse_contact_problem(text, "ball.toml");
-  } catch (const InputError& error) {
-    return error.what();
-  }
-  return "no error";
-}
+std::string zone_input_error(const std::string& text) { return test_support::contact_input_error(text, "ball.toml"); }
 
 std::string zone_solver_error(const std::string& text) {
   try {
@@ -47,7 +41,7 @@ std::string zone_solver_error(const std::string& text) {
   return "no error";
 }
 
-bool has(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+bool has(const std::string& text, const std::string& part) { return test_support::mentions(text, part); }
 
 }  // namespace
 
