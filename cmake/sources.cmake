@@ -38,6 +38,7 @@ set(BEMCONTACT_REFERENCE_SOURCES
   src/reference/two_layer_ring.cpp
   src/reference/uniaxial_tension.cpp
   src/reference/wavy_contact.cpp
+  src/reference/nonlocal_cattaneo.cpp
   src/reference/winkler.cpp)
 set(BEMCONTACT_INTEGRATION_SOURCES
   src/integration/axisymmetric_element.cpp

@@ -66,7 +66,7 @@ PairLaws pair_laws(const ContactProblem& problem, const std::vector<Index>& grou
   const ContactLaw all = problem.contacts.size() == 1 ? problem.contacts.front().law : ContactLaw{};
   const auto count = static_cast<std::size_t>(n);
   PairLaws laws{std::vector<ContactKind>(count, all.kind), Vector::Constant(n, all.friction),
-                std::vector<NormalCompliance>(count, all.compliance)};
+                std::vector<NormalCompliance>(count, all.compliance), {}};
   if (groups.size() != problem.contacts.size() + 1) return laws;
   for (std::size_t c = 0; c < problem.contacts.size(); ++c)
     for (Index i = groups[c]; i < groups[c + 1]; ++i) {

@@ -54,6 +54,12 @@ Vector thresholds(const StepInput& in, const Vector& x) {
       g[i] = in.friction[i] * threshold_measure(in, i, x[2 * i]);
       continue;
     }
+    // A pair carrying no pressure carries no shear: its neighbours' pressure does not give
+    // it a threshold (the law holds where the surfaces press on each other).
+    if (in.kind[i] != ContactKind::bilateral && x[2 * i] <= 0.0) {
+      g[i] = 0.0;
+      continue;
+    }
     double sum = 0.0;
     for (const auto& [j, weight] : (*in.mollifier)[static_cast<std::size_t>(i)])
       sum += weight * threshold_measure(in, j, x[2 * j]);
@@ -177,7 +183,7 @@ ActiveSets active_sets(const StepInput& in, const Vector& x, const Vector& w, do
   if (!any_active && p.motions > 0) close_nearest_pairs(p, w, state);
   const Vector g_all = thresholds(in, x);
   for (Index i = 0; i < n; ++i) {
-    const double lambda = x[2 * i], tau = x[2 * i + 1];
+    const double tau = x[2 * i + 1];
     if (p.on_axis[i] || in.friction[i] == 0.0 || state[2 * i] == 0) {
       state[2 * i + 1] = 0;  // tau = 0
       continue;
