@@ -1,24 +1,26 @@
 #pragma once
 // One quasi-static load step of the condensed contact problem, with Coulomb's law in
 // incremental form: the slip increment s = w_t - w_t(previous step) vanishes where
-// |tau| < g (stick) and opposes tau where |tau| = g (slip), g = beta |p_n|.
+// |tau| < g (stick) and opposes tau where |tau| = g (slip), g = beta |p_n| (beta (c_t / c_n)
+// |p_n| under normal compliance; beta times the mollified |p_n| under the non-local law,
+// nonlocal_friction.hpp).
 //
 // Two solvers:
 //  - solve_step_newton: semi-smooth Newton / primal-dual active set on the nonlinear
 //    complementarity functions ([AlartCurnier1991] form, c = 1 / mean diag M)
-//      C_n = lambda_n - max(0, lambda_n - c (d - w_n))        (unilateral; c (d - w_n) bilateral)
+//      C_n = lambda_n - max(0, lambda_n - c (d - w_n))        (unilateral; c (d - w_n) bilateral;
+//            lambda_n - c_n <w_n - d>_+^m_n compliant)
 //      C_t = tau - proj_[-g, g](tau - c s)
 //    The slip direction is part of the solution. Each iteration solves one dense linear
 //    system in the unknowns not fixed by their own row (lambda_n in contact, tau sticking,
 //    delta); the step ends when max |C| <= tolerance * pressure scale.
 //  - solve_step_thesis: the thesis' algorithms (Alg V.1, V.2, V.3, section V.3.4).
 // Both return the residual max |C| (relative) so that a failure is never silent.
+#include <memory>
 #include <string>
 
 #include "bemcontact/contact/condensed.hpp"
 #include "bemcontact/contact/nonlocal_friction.hpp"
-#include <memory>
-
 #include "bemcontact/operators/bordered_lu.hpp"
 #include "bemcontact/operators/dense_lu.hpp"
 
