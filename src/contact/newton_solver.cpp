@@ -44,9 +44,9 @@ bool is_nonlocal(const StepInput& in, Index i) {
   return in.mollifier && !(*in.mollifier)[static_cast<std::size_t>(i)].empty();
 }
 
-// Every pair's slip threshold g at x: beta times its measure, or, where the law is non-local
-// (nonlocal_friction.hpp), beta times the mollified measure sum_j W_ij measure_j.
-Vector thresholds(const StepInput& in, const Vector& x) {
+// Every pair's slip threshold g at x (jump w): beta times its measure, or, where the law is
+// non-local (nonlocal_friction.hpp), beta times the mollified measure sum_j W_ij measure_j.
+Vector thresholds(const StepInput& in, const Vector& x, const Vector& w, double c) {
   const Index n = in.problem->pairs;
   Vector g(n);
   for (Index i = 0; i < n; ++i) {
@@ -54,9 +54,11 @@ Vector thresholds(const StepInput& in, const Vector& x) {
       g[i] = in.friction[i] * threshold_measure(in, i, x[2 * i]);
       continue;
     }
-    // A pair carrying no pressure carries no shear: its neighbours' pressure does not give
-    // it a threshold (the law holds where the surfaces press on each other).
-    if (in.kind[i] != ContactKind::bilateral && x[2 * i] <= 0.0) {
+    // A pair out of contact carries no shear: its neighbours' pressure does not give it a
+    // threshold (the law holds where the surfaces touch). In contact as the normal active set
+    // has it (lambda_n - c (d - w_n) > 0), so that the threshold the Newton system uses and
+    // the residual's agree.
+    if (in.kind[i] != ContactKind::bilateral && !(x[2 * i] - c * (in.problem->gap[i] - w[2 * i]) > 0.0)) {
       g[i] = 0.0;
       continue;
     }
@@ -115,7 +117,7 @@ double complementarity_residual(const StepInput& in, const Vector& x, const Vect
   const auto& p = *in.problem;
   const double c = penalty_scale(p);
   double scale = 0.0, worst = 0.0;
-  const Vector g_all = thresholds(in, x);
+  const Vector g_all = thresholds(in, x, w, c);
   for (Index i = 0; i < p.pairs; ++i) scale = std::max(scale, std::abs(x[2 * i]));
   if (scale == 0.0) scale = 1.0;
   for (Index i = 0; i < p.pairs; ++i) {
@@ -181,7 +183,7 @@ ActiveSets active_sets(const StepInput& in, const Vector& x, const Vector& w, do
     any_active = any_active || active;
   }
   if (!any_active && p.motions > 0) close_nearest_pairs(p, w, state);
-  const Vector g_all = thresholds(in, x);
+  const Vector g_all = thresholds(in, x, w, c);
   for (Index i = 0; i < n; ++i) {
     const double tau = x[2 * i + 1];
     if (p.on_axis[i] || in.friction[i] == 0.0 || state[2 * i] == 0) {

@@ -98,6 +98,20 @@ TEST(NonlocalFriction, BothAlgorithmsAgree) {
   EXPECT_LT(worst, 1e-3 * peak);
 }
 
+// Unilateral contact with a kernel five pair spacings wide (the fretting cycle, 60 elements):
+// the first steps, where the contact holds a few pairs and the kernel reaches open ones,
+// converge (a pair out of contact has no threshold, as the normal active set says), and the
+// stick zone stays near the local law's.
+TEST(NonlocalFriction, AWideKernelOnAGrowingContactConverges) {
+  auto file = io::parse_contact_problem(example_text("fretting_cylinder.toml"), "fretting.toml");
+  file.problem.drop_interior_points();
+  const auto local = contact::solve_contact(file.problem);
+  file.problem.contacts.front().law.nonlocal_radius = 0.014;  // 0.2 a
+  const auto nonlocal = contact::solve_contact(file.problem);
+  EXPECT_NEAR(nonlocal.summary.stick_ratio(), local.summary.stick_ratio(), 0.05);
+  EXPECT_NEAR(nonlocal.summary.tangential_force, local.summary.tangential_force, 1e-6 * std::abs(local.summary.tangential_force));
+}
+
 TEST(NonlocalFriction, KeyIsCheckedWhereItIsRead) {
   const std::string text = example_text("contact_nonlocal_punch.toml");
   const auto frictionless = nonlocal_input_error(replaced(text, "friction = \"beta\"", "friction = 0.0"));
