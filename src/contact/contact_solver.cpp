@@ -57,8 +57,7 @@ struct PairLaws {
   // compliant pair (m_t = m_n).
   double threshold_coefficient(Index i) const {
     const auto k = static_cast<std::size_t>(i);
-    return kind[k] == ContactKind::compliant ? friction[i] * compliance[k].friction_stiffness / compliance[k].stiffness
-                                             : friction[i];
+    return kind[k] == ContactKind::compliant ? friction[i] * compliance[k].threshold_ratio() : friction[i];
   }
 };
 PairLaws pair_laws(const ContactProblem& problem, const std::vector<Index>& groups) {
@@ -114,11 +113,10 @@ std::vector<PairResult> pair_results(const std::vector<ContactPair>& pairs, cons
     r.jump_t = step.w[2 * i + 1];
     const double friction = laws.threshold_coefficient(first + i);
     double measure = std::abs(lambda);
-    if (!laws.mollifier.empty() && !laws.mollifier[static_cast<std::size_t>(first + i)].empty()) {
-      measure = 0.0;  // the mollified |p_n| (step.x holds this group's pairs from `first` on)
-      for (const auto& [j, weight] : laws.mollifier[static_cast<std::size_t>(first + i)])
-        measure += weight * std::abs(step.x[2 * (j - first)]);
-    }
+    if (!laws.mollifier.empty() && !laws.mollifier[static_cast<std::size_t>(first + i)].empty())
+      // the mollified |p_n| (step.x holds this group's pairs from `first` on)
+      measure = mollified(laws.mollifier[static_cast<std::size_t>(first + i)],
+                          [&](Index j) { return std::abs(step.x[2 * (j - first)]); });
     const double g = friction * measure;
     r.slip_ratio = g > 0.0 ? std::abs(r.p_t) / g : 0.0;
     const bool open = may_open(laws.kind[static_cast<std::size_t>(first + i)]) && lambda <= 1e-12 * scale;

@@ -25,7 +25,7 @@ double threshold_measure(const StepInput& in, Index i, double lambda_n) {
     case ContactKind::unilateral: return std::max(lambda_n, 0.0);
     case ContactKind::bilateral: return std::abs(lambda_n);
     case ContactKind::compliant:
-      return in.compliance[i].friction_stiffness / in.compliance[i].stiffness * std::max(lambda_n, 0.0);
+      return in.compliance[i].threshold_ratio() * std::max(lambda_n, 0.0);
   }
   return 0.0;
 }
@@ -35,7 +35,7 @@ double threshold_slope(const StepInput& in, Index i, double lambda_n) {
   switch (in.kind[i]) {
     case ContactKind::unilateral: return 1.0;
     case ContactKind::bilateral: return lambda_n < 0.0 ? -1.0 : 1.0;
-    case ContactKind::compliant: return in.compliance[i].friction_stiffness / in.compliance[i].stiffness;
+    case ContactKind::compliant: return in.compliance[i].threshold_ratio();
   }
   return 0.0;
 }
@@ -62,10 +62,8 @@ Vector thresholds(const StepInput& in, const Vector& x, const Vector& w, double 
       g[i] = 0.0;
       continue;
     }
-    double sum = 0.0;
-    for (const auto& [j, weight] : (*in.mollifier)[static_cast<std::size_t>(i)])
-      sum += weight * threshold_measure(in, j, x[2 * j]);
-    g[i] = in.friction[i] * sum;
+    g[i] = in.friction[i] * mollified((*in.mollifier)[static_cast<std::size_t>(i)],
+                                      [&](Index j) { return threshold_measure(in, j, x[2 * j]); });
   }
   return g;
 }
@@ -220,8 +218,9 @@ struct NewtonSystem {
   Vector slip_factor;
   SlipCoupling slip_rows, slip_columns;
   // A compliant pair in contact: its row w_n - lambda_n / k = ... with k the law's stiffness
-  // at the linearisation point; normal_shift_i = 1 / k (0 for the other laws).
-  Vector normal_shift;
+  // at the linearisation point pen0; normal_shift_i = 1 / k (0 for the other laws), and
+  // normal_offset_i = pen0 (1 - 1/m_n) its right-hand side's part beyond d.
+  Vector normal_shift, normal_offset;
   Matrix J;
   Vector rhs;
 };
@@ -232,6 +231,7 @@ void choose_free_unknowns(const StepInput& in, const Vector& x, const Vector& w,
   const Index n = in.problem->pairs;
   system.slip_factor = Vector::Zero(n);
   system.normal_shift = Vector::Zero(n);
+  system.normal_offset = Vector::Zero(n);
   for (Index i = 0; i < n; ++i) {
     if (state[2 * i] == 1) system.free_dofs.push_back(2 * i);
     if (state[2 * i + 1] == 1) system.free_dofs.push_back(2 * i + 1);
@@ -240,6 +240,7 @@ void choose_free_unknowns(const StepInput& in, const Vector& x, const Vector& w,
       const auto& law = in.compliance[i];
       const double pen = linearisation_point(law, w[2 * i] - in.problem->gap[i], c);
       system.normal_shift[i] = 1.0 / (law.stiffness * law.exponent * std::pow(pen, law.exponent - 1.0));
+      system.normal_offset[i] = pen * (1.0 - 1.0 / law.exponent);
     }
     if (state[2 * i + 1] < 2) continue;
     const double s = state[2 * i + 1] == 2 ? 1.0 : -1.0;
@@ -263,7 +264,7 @@ void choose_free_unknowns(const StepInput& in, const Vector& x, const Vector& w,
 }
 
 // The right-hand side of the Newton system of `system`'s free unknowns.
-void newton_rhs(const StepInput& in, const Vector& w, double c, NewtonSystem& system) {
+void newton_rhs(const StepInput& in, NewtonSystem& system) {
   const auto& p = *in.problem;
   const Index reduced = static_cast<Index>(system.free_dofs.size());
   const Index K = p.motions;
@@ -272,11 +273,7 @@ void newton_rhs(const StepInput& in, const Vector& w, double c, NewtonSystem& sy
     const Index row = system.free_dofs[a], i = row / 2;
     system.rhs[a] = (row % 2 == 0 ? p.gap[i] : in.previous_tangential_jump[i]) - in.jump0[row];
     // A compliant pair: lambda = c_n pen0^m + k (w_n - d - pen0), i.e. w_n - lambda / k = d + pen0 (1 - 1/m).
-    if (row % 2 == 0 && system.normal_shift[i] != 0.0) {
-      const auto& law = in.compliance[i];
-      const double pen = linearisation_point(law, w[row] - p.gap[i], c);
-      system.rhs[a] += pen * (1.0 - 1.0 / law.exponent);
-    }
+    if (row % 2 == 0) system.rhs[a] += system.normal_offset[i];
   }
   for (Index m = 0; m < K; ++m) system.rhs[reduced + m] = in.target[m];
 }
@@ -318,7 +315,7 @@ void newton_matrix(const StepInput& in, NewtonSystem& system) {
 NewtonSystem newton_system(const StepInput& in, const Vector& x, const Vector& w, const ActiveSets& state, double c) {
   NewtonSystem system;
   choose_free_unknowns(in, x, w, state, c, system);
-  newton_rhs(in, w, c, system);
+  newton_rhs(in, system);
   return system;
 }
 

@@ -219,12 +219,10 @@ BilateralResult successive_thresholds(const StepInput& in, const std::vector<boo
     Vector g_new = Vector::Zero(p.pairs);
     for (Index a = 0; a < m; a += 2) {
       const Index i = r.dofs[a] / 2;
-      double measure = magnitude[i];
-      if (in.mollifier && !(*in.mollifier)[static_cast<std::size_t>(i)].empty()) {
-        measure = 0.0;
-        for (const auto& [j, weight] : (*in.mollifier)[static_cast<std::size_t>(i)]) measure += weight * magnitude[j];
-      }
-      g_new[i] = friction[i] * measure;
+      const bool nonlocal = in.mollifier && !(*in.mollifier)[static_cast<std::size_t>(i)].empty();
+      g_new[i] = friction[i] * (nonlocal ? mollified((*in.mollifier)[static_cast<std::size_t>(i)],
+                                                     [&](Index j) { return magnitude[j]; })
+                                         : magnitude[i]);
     }
     const double change = (g_new - g).norm() / std::max(g_new.norm(), 1e-300);
     g = g_new;

@@ -31,6 +31,8 @@ struct NormalCompliance {
   double friction_stiffness = 0.0;  // c_t > 0 (default c_n)
   double friction_exponent = 1.0;   // m_t (= m_n: other exponents are not available yet)
   double pressure(double pen) const { return pen > 0.0 ? stiffness * std::pow(pen, exponent) : 0.0; }
+  // The threshold beta c_t pen^m per unit of beta p_n = beta c_n pen^m (m_t = m_n).
+  double threshold_ratio() const { return friction_stiffness / stiffness; }
   bool operator==(const NormalCompliance&) const = default;
 };
 

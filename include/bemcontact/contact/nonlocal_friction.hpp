@@ -22,6 +22,14 @@ using MollifierRows = std::vector<std::vector<std::pair<Index, double>>>;
 
 double mollifier_bump(double distance, double radius);
 
+// sum_j W_ij measure(j) over one row of W: a pair's mollified |p_n| (or any pairwise measure).
+template <class Measure>
+double mollified(const std::vector<std::pair<Index, double>>& row, const Measure& measure) {
+  double sum = 0.0;
+  for (const auto& [j, weight] : row) sum += weight * measure(j);
+  return sum;
+}
+
 // The rows of the pairs [first, last) (one contact, in the zone's order) for the radius rho.
 void add_mollifier_rows(const std::vector<ContactPair>& pairs, Index first, Index last, double radius,
                         MollifierRows& rows);
