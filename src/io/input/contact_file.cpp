@@ -460,11 +460,21 @@ void read_pairing(const TableReader& reader, contact::ContactInterface& contact)
 
 // The non-local law's kernel runs along a plane boundary; axisymmetry would need its ring
 // weights (not built yet).
-void check_nonlocal_analysis(const TableReader& reader, const contact::ContactLaw& law,
-                             const contact::ContactProblem& problem) {
-  if (law.nonlocal_radius > 0.0 && problem.analysis == AnalysisType::axisymmetric)
+void check_nonlocal_radius(const TableReader& reader, const contact::ContactInterface& contact,
+                           const contact::ContactProblem& problem) {
+  const double rho = contact.law.nonlocal_radius;
+  if (!(rho > 0.0)) return;
+  if (problem.analysis == AnalysisType::axisymmetric)
     reader.fail("nonlocal_radius", "the non-local friction law is available in plane problems only, not yet in "
                                    "axisymmetry");
+  // A kernel wider than the zone mollifies the whole contact into one mean: not a law of the
+  // pairs' neighbourhoods any more.
+  const auto& piece = problem.region(contact.side1).body.pieces.at(static_cast<std::size_t>(contact.side1.piece));
+  const double length = geometry::piece_length(piece);
+  if (rho > length)
+    reader.fail("nonlocal_radius", "the radius " + format_number(rho) + " is larger than the contact boundary '" +
+                                       piece.name + "' (length " + format_number(length) +
+                                       "); the kernel should span a part of the contact, a tenth of its width say");
 }
 
 // An adaptive zone (contact_resolution) and its limits; the limits alone have no effect.
@@ -715,7 +725,7 @@ void read_single_contact(const TableReader& contact, const TableReader& root, Fi
   interface.side2 = read_side(contact, problem, 1, 2);
   read_pairing(contact, interface);
   interface.law = read_law(contact, problem.tangential_coupling);
-  check_nonlocal_analysis(contact, interface.law, problem);
+  check_nonlocal_radius(contact, interface, problem);
   read_zone_adaptivity(contact, interface);
   problem.contacts.push_back(interface);
   read_solver(contact, problem);
@@ -762,7 +772,7 @@ void read_contact_tables(const toml::node& contact_node, const TableReader& root
     // condensed operator: one for every contact.
     bool coupling = true;
     interface.law = read_law(contact, coupling);
-    check_nonlocal_analysis(contact, interface.law, problem);
+    check_nonlocal_radius(contact, interface, problem);
     read_zone_adaptivity(contact, interface);
     if (index == 1) problem.tangential_coupling = coupling;
     problem.contacts.push_back(interface);
