@@ -73,6 +73,7 @@ set(BEMCONTACT_CONTACT_SOURCES
   src/contact/halfspace_model.cpp
   src/contact/newton_solver.cpp
   src/contact/nonlocal_friction.cpp
+  src/contact/wear.cpp
   src/contact/model_routes.cpp
   src/contact/pairing.cpp
   src/contact/rigid_profile.cpp

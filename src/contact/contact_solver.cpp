@@ -14,6 +14,7 @@
 #include "bemcontact/contact/contact_summary.hpp"
 #include "bemcontact/contact/nonlocal_friction.hpp"
 #include "bemcontact/contact/step_solvers.hpp"
+#include "bemcontact/contact/wear.hpp"
 #include "bemcontact/contact/zone_ends.hpp"
 #include "bemcontact/contact/zone_refinement.hpp"
 #include "bemcontact/core/error.hpp"
@@ -53,6 +54,7 @@ struct PairLaws {
   Vector friction;
   std::vector<NormalCompliance> compliance;
   MollifierRows mollifier;  // the non-local contacts' pairs (nonlocal_friction.hpp); empty: none
+  WearCoefficients wear;    // Archard's k of each side per pair (wear.hpp)
   // The coefficient of the threshold g = beta_eff p_n: beta, or beta c_t / c_n for a
   // compliant pair (m_t = m_n).
   double threshold_coefficient(Index i) const {
@@ -65,13 +67,17 @@ PairLaws pair_laws(const ContactProblem& problem, const std::vector<Index>& grou
   const ContactLaw all = problem.contacts.size() == 1 ? problem.contacts.front().law : ContactLaw{};
   const auto count = static_cast<std::size_t>(n);
   PairLaws laws{std::vector<ContactKind>(count, all.kind), Vector::Constant(n, all.friction),
-                std::vector<NormalCompliance>(count, all.compliance), {}};
+                std::vector<NormalCompliance>(count, all.compliance), {},
+                {Vector::Constant(n, all.wear_coefficient1), Vector::Constant(n, all.wear_coefficient2)}};
   if (groups.size() != problem.contacts.size() + 1) return laws;
   for (std::size_t c = 0; c < problem.contacts.size(); ++c)
     for (Index i = groups[c]; i < groups[c + 1]; ++i) {
-      laws.kind[static_cast<std::size_t>(i)] = problem.contacts[c].law.kind;
-      laws.friction[i] = problem.contacts[c].law.friction;
-      laws.compliance[static_cast<std::size_t>(i)] = problem.contacts[c].law.compliance;
+      const auto& law = problem.contacts[c].law;
+      laws.kind[static_cast<std::size_t>(i)] = law.kind;
+      laws.friction[i] = law.friction;
+      laws.compliance[static_cast<std::size_t>(i)] = law.compliance;
+      laws.wear.side1[i] = law.wear_coefficient1;
+      laws.wear.side2[i] = law.wear_coefficient2;
     }
   return laws;
 }
@@ -91,11 +97,13 @@ Vector interference_at(const std::vector<ContactPair>& pairs, const ContactProbl
   return out;
 }
 
-// Results of the pairs [first, first + pairs.size()) of `laws` and `interference`. The
-// reported gap is the initial gap less the interference applied so far, and jump_n the
-// relative displacement [u]·n itself: closed pairs have jump_n = gap (docs/contact.md).
+// Results of the pairs [first, first + pairs.size()) of `laws`, `interference` and `wear`
+// (the worn depths of both sides; empty: none). The reported gap is the initial gap less
+// the interference applied so far plus the wear, and jump_n the relative displacement
+// [u]·n itself: closed pairs have jump_n = gap (docs/contact.md).
 std::vector<PairResult> pair_results(const std::vector<ContactPair>& pairs, const StepOutput& step,
-                                     const PairLaws& laws, const Vector& interference, Index first) {
+                                     const PairLaws& laws, const Vector& interference, Index first,
+                                     const Vector& wear = {}) {
   double scale = 0.0;
   for (Index i = 0; i < static_cast<Index>(pairs.size()); ++i) scale = std::max(scale, std::abs(step.x[2 * i]));
   const bool side_face = zone_faces_sideways(pairs);
@@ -105,7 +113,7 @@ std::vector<PairResult> pair_results(const std::vector<ContactPair>& pairs, cons
     r.position = pairs[i].position1;
     r.coordinate = side_face ? pairs[i].position1.y() : pairs[i].position1.x();
     r.normal = pairs[i].normal;
-    r.gap = pairs[i].gap - interference[first + i];
+    r.gap = pairs[i].gap - interference[first + i] + (wear.size() > 0 ? wear[first + i] : 0.0);
     const double lambda = step.x[2 * i];
     r.p_n = -lambda;
     r.p_t = step.x[2 * i + 1];
@@ -205,6 +213,11 @@ void check_history_options(const ContactProblem& problem) {
   if (problem.increments < 1) throw Error("contact: the number of load increments must be >= 1");
   if (!(problem.end_time > 0.0)) throw Error("contact: the history's end_time must be > 0");
   if (problem.max_steps < problem.increments) throw Error("contact: max_steps must be >= increments");
+  const auto& cycles = problem.cycles;
+  if (cycles.repeated() && !(cycles.start >= 0.0 && cycles.start < problem.end_time))
+    throw Error("contact: the repeated cycle must start in [0, end_time)");
+  if (cycles.repeated() && (cycles.max_jump < 1 || cycles.fixed_jump < 0 || !(cycles.max_pressure_change > 0.0)))
+    throw Error("contact: cycle jumps must be >= 1 and max_pressure_change > 0");
   for (const auto& contact : problem.contacts)
     if (!(contact.law.friction >= 0.0)) throw Error("contact '" + contact.name + "': the friction coefficient must be >= 0");
 }
@@ -229,13 +242,14 @@ void add_iterations(ContactSummary& totals, const StepOutput& step) {
 
 // Records one step in a result of pairs [first, last).
 void record_step(ContactInterfaceResult& out, const std::vector<ContactPair>& pairs, const StepOutput& step,
-                 const ContactProblem& problem, const PairLaws& laws, const Vector& interference, double load,
-                 double approach, Index first, Index last, bool half_model) {
+                 const ContactProblem& problem, const PairLaws& laws, const Vector& interference,
+                 const WearDepths& wear, double load, double approach, Index first, Index last, bool half_model) {
   const std::vector<ContactPair> group(pairs.begin() + first, pairs.begin() + last);
   StepOutput part = step;
   part.x = step.x.segment(2 * first, 2 * (last - first));
   part.w = step.w.segment(2 * first, 2 * (last - first));
-  out.pairs = pair_results(group, part, laws, interference, first);
+  const bool worn = wear.side1.size() > 0;
+  out.pairs = pair_results(group, part, laws, interference, first, worn ? wear.total() : Vector());
   const ContactSummary* previous = out.steps.empty() ? nullptr : &out.steps.back();
   const auto law = static_cast<std::size_t>(first);
   const double edge_power = first < last && laws.kind[law] == ContactKind::compliant
@@ -244,6 +258,10 @@ void record_step(ContactInterfaceResult& out, const std::vector<ContactPair>& pa
   const ContactSummary summary = summarise(group, out.pairs, part, load, half_model, previous, edge_power);
   out.steps.push_back(summary);
   out.steps.back().approach = approach;
+  if (worn) {
+    out.steps.back().worn_volume1 = worn_volume(pairs, wear.side1, first, last);
+    out.steps.back().worn_volume2 = worn_volume(pairs, wear.side2, first, last);
+  }
   if (problem.record_steps) out.step_pairs.push_back(out.pairs);
 }
 
@@ -315,10 +333,24 @@ HistoryData history_data(const CondensedProblem& condensed, const std::vector<Co
   return {condensed, pairs, problem, groups, std::move(all_groups), std::move(laws), std::make_unique<NewtonSystemCache>()};
 }
 
-// The state before the first step: no force, no jump, every pair open.
-StepInput history_start(const HistoryData& data) {
+// What a history carries from step to step; copied to undo a cycle jump.
+struct HistoryRun {
+  StepInput previous;  // the last accepted step, as the next one's start (its gap worn)
+  std::vector<PairStatus> state;
+  StepOutput step;
+  ContactSummary totals;
+  Vector dissipated;   // per group
+  WearDepths wear;     // empty without wear
+  Vector slip_path;    // per pair: sum |slip increment| since the cycle started (wear only)
+  int taken = 0;
+};
+
+// The state before the first step: no force, no jump, every pair open, nothing worn.
+HistoryRun history_start(const HistoryData& data) {
   const Index n = data.condensed.pairs;
-  StepInput start = step_input(data.condensed, 0.0);
+  HistoryRun run;
+  StepInput& start = run.previous;
+  start = step_input(data.condensed, 0.0);
   start.kind = data.laws.kind;
   start.friction = data.laws.friction;
   start.compliance = data.laws.compliance;
@@ -326,12 +358,21 @@ StepInput history_start(const HistoryData& data) {
   start.previous_tangential_jump = Vector::Zero(n);
   start.x_start = Vector::Zero(2 * n);
   start.delta_start = Vector::Zero(data.condensed.motions);
-  return start;
+  run.state.assign(static_cast<std::size_t>(n), PairStatus::open);
+  run.step.x = Vector::Zero(2 * n);
+  run.step.delta = Vector::Zero(data.condensed.motions);
+  run.dissipated = Vector::Zero(static_cast<Index>(data.all_groups.size()) - 1);
+  if (data.laws.wear.any()) {
+    run.wear = {Vector::Zero(n), Vector::Zero(n)};
+    run.slip_path = Vector::Zero(n);
+  }
+  return run;
 }
 
 // The step to t_next, from the solution at the end of the previous step.
 StepOutput solve_step(const HistoryData& data, const StepInput& previous, double t_next) {
   StepInput input = step_input(data.condensed, t_next);
+  input.gap = previous.gap;
   input.kind = data.laws.kind;
   input.friction = data.laws.friction;
   input.compliance = data.laws.compliance;
@@ -403,25 +444,35 @@ void add_dissipation(const HistoryData& data, const StepOutput& step, const Vect
           data.pairs[i].weight * step.x[2 * i + 1] * (step.w[2 * i + 1] - previous_tangential_jump[i]);
 }
 
-// The accepted step at pseudo-time t in the history: all pairs, each contact's, the forces
-// and motions, and the unknowns when every step is recorded.
-void record_history_step(const HistoryData& data, const StepOutput& step, double t, const Vector& dissipated,
+// The accepted step's wear (wear.hpp), in the gap of the steps after it.
+void add_wear(const HistoryData& data, HistoryRun& run) {
+  if (run.wear.side1.size() == 0) return;
+  add_step_wear(data.laws.wear, run.step.x, run.step.w, run.previous.previous_tangential_jump, run.wear);
+  run.slip_path += (run.step.w(Eigen::seqN(1, run.slip_path.size(), 2)) - run.previous.previous_tangential_jump).cwiseAbs();
+  run.previous.gap = data.condensed.gap + run.wear.total();
+}
+
+// The accepted step, with the loads at pseudo-time t, recorded at t + offset (a repeated
+// cycle's place in the history): all pairs, each contact's, the forces and motions, and the
+// unknowns when every step is recorded.
+void record_history_step(const HistoryData& data, const HistoryRun& run, double t, double offset,
                          const MotionReport& report, LoadHistory& history) {
   const auto& condensed = data.condensed;
   const auto& groups = data.groups;
+  const auto& step = run.step;
   const Index n = condensed.pairs;
   const double approach = condensed.motions > 0 && condensed.force[0] != 0.0 ? step.delta[0] : 0.0;
   const Vector interference = interference_at(data.pairs, data.problem, data.all_groups, t);
-  record_step(history, data.pairs, step, data.problem, data.laws, interference, t, approach, 0, n,
+  record_step(history, data.pairs, step, data.problem, data.laws, interference, run.wear, t + offset, approach, 0, n,
               condensed.half_model(0, n));
-  history.steps.back().dissipated_energy = dissipated.sum();
+  history.steps.back().dissipated_energy = run.dissipated.sum();
   for (std::size_t c = 0; c < history.contacts.size(); ++c) {
-    record_step(history.contacts[c], data.pairs, step, data.problem, data.laws, interference, t, approach, groups[c],
-                groups[c + 1], condensed.half_model(groups[c], groups[c + 1]));
-    history.contacts[c].steps.back().dissipated_energy = dissipated[static_cast<Index>(c)];
+    record_step(history.contacts[c], data.pairs, step, data.problem, data.laws, interference, run.wear, t + offset,
+                approach, groups[c], groups[c + 1], condensed.half_model(groups[c], groups[c + 1]));
+    history.contacts[c].steps.back().dissipated_energy = run.dissipated[static_cast<Index>(c)];
   }
   StepRecord record;
-  record.time = t;
+  record.time = t + offset;
   record.forces = condensed.force_at(t);
   record.motions = report ? report(step.x, step.delta, t) : step.delta;
   history.records.push_back(record);
@@ -448,14 +499,198 @@ void check_step_budget(const ContactProblem& problem, int taken, double t) {
                       {"load history", -1, -1.0, taken, t});
 }
 
+// How a history reports its steps: the zone check, the motions, the progress.
+struct HistoryHooks {
+  const StepCheck& check_step;
+  const MotionReport& report;
+  const bem::ProgressCallback& progress;
+};
+
+// The steps from pseudo-time `from` to `to`, recorded at their times + offset.
+void advance(const HistoryData& data, double from, double to, double offset, const HistoryHooks& hooks,
+             HistoryRun& run, LoadHistory& history) {
+  const auto& problem = data.problem;
+  const double end = problem.end_time;
+  auto corners = history_corners(data.condensed, end);
+  corners.insert(std::upper_bound(corners.begin(), corners.end(), to), to);
+  const double base_step = end / problem.increments;
+  const double min_step = end / problem.max_steps;
+  // Adaptive stepping matters for friction: frictionless contact does not depend on the path.
+  const bool adaptive = problem.adaptive && problem.has_friction();
+  double t = from, dt = base_step;
+  std::size_t corner = 0;
+  int taken = 0;  // in this stretch (max_steps bounds each cycle)
+  while (t < to - 1e-12 * end) {
+    while (corner < corners.size() && corners[corner] <= t + 1e-12 * end) ++corner;
+    const double t_next = std::min(t + dt, corners[corner]);
+    StepOutput trial = solve_step(data, run.previous, t_next);
+    add_iterations(run.totals, trial);
+    const double h = t_next - t;
+    reject_runaway_motions(data, trial);
+    if (!trial.converged && adaptive && h > 2.0 * min_step) {
+      dt = 0.5 * h;  // a smaller step may converge
+      continue;
+    }
+    if (!trial.converged) throw_no_solution(data, trial, t, t_next, run.taken);
+    const auto trial_state = statuses(data.pairs, trial, data.laws);
+    if (adaptive && h > 2.0 * min_step && changes_too_fast(data, run.state, trial_state)) {
+      dt = 0.5 * h;
+      ++history.rejected_steps;
+      continue;
+    }
+    if (hooks.check_step) hooks.check_step(run.taken + 1, t_next + offset, trial_state);
+    run.step = trial;
+    add_dissipation(data, run.step, run.previous.previous_tangential_jump, run.dissipated);
+    add_wear(data, run);
+    ++run.taken;
+    ++taken;
+    t = t_next;
+    run.state = trial_state;
+    record_history_step(data, run, t, offset, hooks.report, history);
+    carry_over(run.step, run.previous);
+    // Grow again after an accepted step.
+    if (adaptive && dt < base_step) dt = std::min(base_step, 2.0 * dt);
+    check_step_budget(problem, taken, t);
+    if (hooks.progress) hooks.progress("contact load steps", (t - from) / (to - from));
+  }
+}
+
+// Where a history's records stand, to cut them back when a cycle jump is undone.
+struct HistoryMark {
+  std::size_t steps = 0, step_pairs = 0, records = 0, step_x = 0;
+  std::vector<std::size_t> contact_steps, contact_step_pairs;
+  std::vector<std::vector<PairResult>> contact_pairs;
+  std::vector<PairResult> pairs;
+};
+HistoryMark mark(const LoadHistory& history) {
+  HistoryMark m{history.steps.size(), history.step_pairs.size(), history.records.size(), history.step_x.size(),
+                {}, {}, {}, history.pairs};
+  for (const auto& c : history.contacts) {
+    m.contact_steps.push_back(c.steps.size());
+    m.contact_step_pairs.push_back(c.step_pairs.size());
+    m.contact_pairs.push_back(c.pairs);
+  }
+  return m;
+}
+void cut_back(const HistoryMark& m, LoadHistory& history) {
+  history.steps.resize(m.steps);
+  history.step_pairs.resize(m.step_pairs);
+  history.records.resize(m.records);
+  history.step_x.resize(m.step_x);
+  history.step_delta.resize(m.step_x);
+  history.pairs = m.pairs;
+  for (std::size_t c = 0; c < history.contacts.size(); ++c) {
+    history.contacts[c].steps.resize(m.contact_steps[c]);
+    history.contacts[c].step_pairs.resize(m.contact_step_pairs[c]);
+    history.contacts[c].pairs = m.contact_pairs[c];
+  }
+}
+
+// The wear of every wearing contact at the end of a computed cycle; a contact whose worn
+// surfaces no longer touch stops the run.
+void record_wear_cycle(const HistoryData& data, const HistoryRun& run, long cycle, int computed, long jump,
+                       double change, double stable_jump, LoadHistory& history) {
+  const auto& groups = data.all_groups;
+  for (std::size_t g = 0; g + 1 < groups.size(); ++g) {
+    const Index first = groups[g], last = groups[g + 1];
+    if (first == last || (data.laws.wear.side1.segment(first, last - first).maxCoeff() <= 0.0 &&
+                          data.laws.wear.side2.segment(first, last - first).maxCoeff() <= 0.0))
+      continue;
+    ContactInterfaceResult& out = history.contacts.empty() ? history : history.contacts[g];
+    WearCycle record;
+    record.cycle = cycle;
+    record.computed = computed;
+    record.jump = jump;
+    record.pressure_change = change;
+    record.stable_jump = stable_jump;
+    for (Index i = first; i < last; ++i) {
+      record.depth1.push_back(run.wear.side1[i]);
+      record.depth2.push_back(run.wear.side2[i]);
+    }
+    record.pairs = out.pairs;
+    record.summary = out.steps.back();
+    out.wear.push_back(std::move(record));
+    if (out.steps.back().pairs_in_contact > 0) continue;
+    const std::string name = groups.size() == data.problem.contacts.size() + 1
+                                 ? "contact '" + data.problem.contacts[g].name + "'"
+                                 : std::string("the contact");
+    throw SolverError(name + ": the worn surfaces no longer touch at the end of load cycle " + std::to_string(cycle) +
+                          " (computed cycle " + std::to_string(computed) +
+                          "): every pair is open. The wear has taken the contact out of its load's reach (a "
+                          "prescribed approach rather than a force?); fewer cycles or a smaller wear coefficient",
+                      {"wear cycle", computed, -1.0, run.taken, run.step.x.size() > 0 ? data.problem.end_time : 0.0});
+  }
+}
+
+// Cycle jumping (wear.hpp): after the history's first cycle, each computed cycle stands for
+// ΔN, the wear of ΔN - 1 of them extrapolated from the last computed one.
+void repeat_cycles(const HistoryData& data, const HistoryHooks& hooks, WearDepths at_cycle_start, HistoryRun& run,
+                   LoadHistory& history) {
+  const LoadCycles& cycles = data.problem.cycles;
+  const double period = data.problem.end_time - cycles.start;
+  const CycleJumpControl control{cycles.max_jump, cycles.max_pressure_change};
+  const bool adaptive = cycles.fixed_jump == 0;
+  long represented = 1, jump = adaptive ? 1 : cycles.fixed_jump;
+  int computed = 1;
+  // The longest stable jump after the last computed cycle (wear.hpp), from its slip paths.
+  const auto stable_jump = [&] {
+    return cycle_jump_bound(data.condensed.M, run.step.x,
+                            (data.laws.wear.side1 + data.laws.wear.side2).cwiseProduct(run.slip_path));
+  };
+  double bound = stable_jump();
+  record_wear_cycle(data, run, represented, computed, 1, 0.0, bound, history);
+  const auto within_bound = [&](long n) {
+    return std::max(1L, std::min(n, static_cast<long>(std::min(bound, 1e15))));
+  };
+  if (adaptive) jump = within_bound(cycles.max_jump);  // the first jump: as long as stable, then the
+                                                       // pressure change decides
+  bool warned = false;
+  while (represented < cycles.cycles) {
+    const long dn = std::min(jump, cycles.cycles - represented);
+    const HistoryRun saved = run;
+    const HistoryMark saved_records = mark(history);
+    const Vector last1 = run.wear.side1 - at_cycle_start.side1, last2 = run.wear.side2 - at_cycle_start.side2;
+    run.wear.side1 += static_cast<double>(dn - 1) * last1;
+    run.wear.side2 += static_cast<double>(dn - 1) * last2;
+    run.previous.gap = data.condensed.gap + run.wear.total();
+    run.slip_path.setZero();
+    const WearDepths start_of_cycle = run.wear;
+    advance(data, cycles.start, data.problem.end_time, computed * period, hooks, run, history);
+    const double change = relative_pressure_change(saved.step.x, run.step.x);
+    if (adaptive && control.reject(dn, change)) {
+      run = saved;
+      cut_back(saved_records, history);
+      jump = control.next(dn, change);
+      ++history.rejected_jumps;
+      continue;
+    }
+    at_cycle_start = start_of_cycle;
+    represented += dn;
+    ++computed;
+    if (!adaptive && !warned && static_cast<double>(dn) > bound) {
+      warned = true;
+      std::ostringstream text;
+      text << "cycle_jump = " << dn << " is longer than the stable jump " << format_residual(bound)
+           << " before load cycle " << represented
+           << " (docs/contact.md, Wear): the worn depths may oscillate from pair to pair; the adaptive jump stays "
+              "within it";
+      history.warnings.push_back(text.str());
+    }
+    bound = stable_jump();
+    record_wear_cycle(data, run, represented, computed, dn, change, bound, history);
+    if (adaptive) jump = within_bound(control.next(dn, change));
+    if (hooks.progress) hooks.progress("wear cycles", static_cast<double>(represented) / cycles.cycles);
+  }
+}
+
 // The history's totals and its final solution (that of the last step).
-void finish_history(const StepOutput& step, int taken, const ContactSummary& totals, LoadHistory& history) {
+void finish_history(const HistoryRun& run, const ContactSummary& totals, LoadHistory& history) {
   if (history.steps.empty()) throw SolverError("contact: the load history has no step (end_time must be > 0)");
-  history.steps_taken = taken;
+  history.steps_taken = run.taken;
   finish(history, totals);
   for (auto& contact : history.contacts) finish(contact, totals);
-  history.x = step.x;
-  history.delta = step.delta;
+  history.x = run.step.x;
+  history.delta = run.step.delta;
 }
 
 }  // namespace
@@ -465,59 +700,22 @@ LoadHistory solve_load_history(const CondensedProblem& condensed, const std::vec
                                const std::vector<Index>& groups, const StepCheck& check_step,
                                const MotionReport& report) {
   check_history_options(problem);
-  const Index n = condensed.pairs;
   LoadHistory history;
   if (groups.size() > 1) history.contacts.resize(groups.size() - 1);
   const HistoryData data = history_data(condensed, pairs, problem, groups);
-  const double end = problem.end_time;
-  const auto corners = history_corners(condensed, end);
-  const double base_step = end / problem.increments;
-  const double min_step = end / problem.max_steps;
-  // Adaptive stepping matters for friction: frictionless contact does not depend on the path.
-  const bool adaptive = problem.adaptive && problem.has_friction();
-
-  StepInput previous = history_start(data);
-  std::vector<PairStatus> state(static_cast<std::size_t>(n), PairStatus::open);
-  StepOutput step;
-  step.x = Vector::Zero(2 * n);
-  step.delta = Vector::Zero(condensed.motions);
-  ContactSummary totals;
-  Vector dissipated = Vector::Zero(static_cast<Index>(data.all_groups.size()) - 1);
-  double t = 0.0, dt = base_step;
-  std::size_t corner = 0;
-  int taken = 0;
-  while (t < end * (1.0 - 1e-12)) {
-    while (corner < corners.size() && corners[corner] <= t * (1.0 + 1e-12)) ++corner;
-    const double t_next = std::min(t + dt, corners[corner]);
-    StepOutput trial = solve_step(data, previous, t_next);
-    add_iterations(totals, trial);
-    const double h = t_next - t;
-    reject_runaway_motions(data, trial);
-    if (!trial.converged && adaptive && h > 2.0 * min_step) {
-      dt = 0.5 * h;  // a smaller step may converge
-      continue;
-    }
-    if (!trial.converged) throw_no_solution(data, trial, t, t_next, taken);
-    const auto trial_state = statuses(pairs, trial, data.laws);
-    if (adaptive && h > 2.0 * min_step && changes_too_fast(data, state, trial_state)) {
-      dt = 0.5 * h;
-      ++history.rejected_steps;
-      continue;
-    }
-    if (check_step) check_step(taken + 1, t_next, trial_state);
-    step = trial;
-    add_dissipation(data, step, previous.previous_tangential_jump, dissipated);
-    ++taken;
-    t = t_next;
-    state = trial_state;
-    record_history_step(data, step, t, dissipated, report, history);
-    carry_over(step, previous);
-    // Grow again after an accepted step.
-    if (adaptive && dt < base_step) dt = std::min(base_step, 2.0 * dt);
-    check_step_budget(problem, taken, t);
-    if (progress) progress("contact load steps", t / end);
+  const HistoryHooks hooks{check_step, report, progress};
+  HistoryRun run = history_start(data);
+  const LoadCycles& cycles = problem.cycles;
+  if (!cycles.repeated()) {
+    advance(data, 0.0, problem.end_time, 0.0, hooks, run, history);
+    if (run.wear.side1.size() > 0) record_wear_cycle(data, run, 1, 1, 1, 0.0, 0.0, history);
+  } else {
+    if (cycles.start > 0.0) advance(data, 0.0, cycles.start, 0.0, hooks, run, history);
+    const WearDepths at_cycle_start = run.wear;
+    advance(data, cycles.start, problem.end_time, 0.0, hooks, run, history);
+    repeat_cycles(data, hooks, at_cycle_start, run, history);
   }
-  finish_history(step, taken, totals, history);
+  finish_history(run, run.totals, history);
   history.newton_systems = {data.newton_cache->factored, data.newton_cache->updated, data.newton_cache->reused};
   return history;
 }
@@ -588,6 +786,8 @@ void take_history(const ContactProblem& problem, LoadHistory& history, ContactRe
   result.records = std::move(history.records);
   result.steps_taken = history.steps_taken;
   result.rejected_steps = history.rejected_steps;
+  result.rejected_jumps = history.rejected_jumps;
+  for (auto& warning : history.warnings) result.warnings.push_back(std::move(warning));
   result.newton_systems = history.newton_systems;
   for (std::size_t c = 0; c < result.contacts.size(); ++c) result.contacts[c].name = problem.contacts[c].name;
   if (!result.contacts.empty()) static_cast<ContactInterfaceResult&>(result) = result.contacts.front();
@@ -678,7 +878,7 @@ ContactResult solve_on_meshes(const ContactProblem& problem, const bem::Progress
   if (finish_pass && !finish_pass(result)) return result;
 
   start = Clock::now();
-  result.warnings = model.prepared().warnings;
+  result.warnings.insert(result.warnings.begin(), model.prepared().warnings.begin(), model.prepared().warnings.end());
   add_region_boundaries(problem, model, history, result);
   add_step_boundaries(problem, model, history, result);
   result.timings.add("boundary stresses", seconds_since(start));

@@ -58,7 +58,7 @@ Vector thresholds(const StepInput& in, const Vector& x, const Vector& w, double 
     // threshold (the law holds where the surfaces touch). In contact as the normal active set
     // has it (lambda_n - c (d - w_n) > 0), so that the threshold the Newton system uses and
     // the residual's agree.
-    if (in.kind[i] != ContactKind::bilateral && !(x[2 * i] - c * (in.problem->gap[i] - w[2 * i]) > 0.0)) {
+    if (in.kind[i] != ContactKind::bilateral && !(x[2 * i] - c * (in.gap[i] - w[2 * i]) > 0.0)) {
       g[i] = 0.0;
       continue;
     }
@@ -71,7 +71,7 @@ Vector thresholds(const StepInput& in, const Vector& x, const Vector& w, double 
 // The normal complementarity function of pair i: C_n of step_solvers.hpp, or for a
 // compliant pair lambda_n - c_n pen^m_n.
 double normal_function(const StepInput& in, Index i, double lambda, double w_n, double c) {
-  const double normal_gap = in.problem->gap[i] - w_n;
+  const double normal_gap = in.gap[i] - w_n;
   switch (in.kind[i]) {
     case ContactKind::unilateral: return lambda - std::max(0.0, lambda - c * normal_gap);
     case ContactKind::bilateral: return c * normal_gap;
@@ -97,6 +97,7 @@ StepInput step_input(const CondensedProblem& problem, double t) {
   in.jump0 = problem.jump_at(t);
   in.target = problem.target_at(t);
   in.force_scale = problem.force_at(t).cwiseAbs();
+  in.gap = problem.gap;
   return in;
 }
 
@@ -146,7 +147,7 @@ using ActiveSets = std::vector<int>;
 // on each side: the closest pair of every contact, among the pairs that carry force (the
 // node on the axis of a quadratic element has zero weight: its shape function times r
 // integrates to 0).
-void close_nearest_pairs(const CondensedProblem& p, const Vector& w, ActiveSets& state) {
+void close_nearest_pairs(const CondensedProblem& p, const Vector& gap, const Vector& w, ActiveSets& state) {
   const double carrying = 1e-3 * p.f.cwiseAbs().maxCoeff();
   const auto groups = pair_groups(p);
   // All pairs at the closest distance (to round-off) go in: a flat face touches along
@@ -156,12 +157,12 @@ void close_nearest_pairs(const CondensedProblem& p, const Vector& w, ActiveSets&
     Index closest = -1;
     for (Index i = groups[g]; i < groups[g + 1]; ++i)
       if (p.f.col(2 * i).cwiseAbs().maxCoeff() > carrying &&
-          (closest < 0 || p.gap[i] - w[2 * i] < p.gap[closest] - w[2 * closest]))
+          (closest < 0 || gap[i] - w[2 * i] < gap[closest] - w[2 * closest]))
         closest = i;
     if (closest < 0) continue;
     for (Index i = groups[g]; i < groups[g + 1]; ++i)
       if (p.f.col(2 * i).cwiseAbs().maxCoeff() > carrying &&
-          p.gap[i] - w[2 * i] <= p.gap[closest] - w[2 * closest] + tie)
+          gap[i] - w[2 * i] <= gap[closest] - w[2 * closest] + tie)
         state[2 * i] = 1;
   }
 }
@@ -175,12 +176,12 @@ ActiveSets active_sets(const StepInput& in, const Vector& x, const Vector& w, do
   for (Index i = 0; i < n; ++i) {
     const double lambda = x[2 * i];
     const bool active = in.kind[i] == ContactKind::bilateral ||
-                        (in.kind[i] == ContactKind::compliant ? w[2 * i] - p.gap[i] > 0.0
-                                                               : lambda - c * (p.gap[i] - w[2 * i]) > 0.0);
+                        (in.kind[i] == ContactKind::compliant ? w[2 * i] - in.gap[i] > 0.0
+                                                               : lambda - c * (in.gap[i] - w[2 * i]) > 0.0);
     state[2 * i] = active ? 1 : 0;
     any_active = any_active || active;
   }
-  if (!any_active && p.motions > 0) close_nearest_pairs(p, w, state);
+  if (!any_active && p.motions > 0) close_nearest_pairs(p, in.gap, w, state);
   const Vector g_all = thresholds(in, x, w, c);
   for (Index i = 0; i < n; ++i) {
     const double tau = x[2 * i + 1];
@@ -238,7 +239,7 @@ void choose_free_unknowns(const StepInput& in, const Vector& x, const Vector& w,
     const bool compliant = in.kind[i] == ContactKind::compliant;
     if (compliant && state[2 * i] == 1) {
       const auto& law = in.compliance[i];
-      const double pen = linearisation_point(law, w[2 * i] - in.problem->gap[i], c);
+      const double pen = linearisation_point(law, w[2 * i] - in.gap[i], c);
       system.normal_shift[i] = 1.0 / (law.stiffness * law.exponent * std::pow(pen, law.exponent - 1.0));
       system.normal_offset[i] = pen * (1.0 - 1.0 / law.exponent);
     }
@@ -271,7 +272,7 @@ void newton_rhs(const StepInput& in, NewtonSystem& system) {
   system.rhs.resize(reduced + K);
   for (Index a = 0; a < reduced; ++a) {
     const Index row = system.free_dofs[a], i = row / 2;
-    system.rhs[a] = (row % 2 == 0 ? p.gap[i] : in.previous_tangential_jump[i]) - in.jump0[row];
+    system.rhs[a] = (row % 2 == 0 ? in.gap[i] : in.previous_tangential_jump[i]) - in.jump0[row];
     // A compliant pair: lambda = c_n pen0^m + k (w_n - d - pen0), i.e. w_n - lambda / k = d + pen0 (1 - 1/m).
     if (row % 2 == 0) system.rhs[a] += system.normal_offset[i];
   }

@@ -45,7 +45,7 @@ Restricted restrict_to(const StepInput& in, const std::vector<bool>& in_contact)
     for (Index b = 0; b < m; ++b) r.A(a, b) = p.M(row, r.dofs[b]);
     for (Index k = 0; k < K; ++k) r.A(a, m + k) = p.b(row, k);
     const Index pair = row / 2;
-    r.rhs[a] = row % 2 == 0 ? p.gap[pair] - in.jump0[row]  // [u_n] = d
+    r.rhs[a] = row % 2 == 0 ? in.gap[pair] - in.jump0[row]  // [u_n] = d
                             : in.previous_tangential_jump[pair] - in.jump0[row];  // no slip increment
   }
   if (K > 0) {
@@ -257,11 +257,11 @@ BilateralResult kalker(const StepInput& in, const Vector& friction, const Vector
     const Vector w = relative_displacement(step, x, delta);
     std::vector<bool> next = in_contact;
     double gap_scale = 0.0;
-    for (Index i = 0; i < p.pairs; ++i) gap_scale = std::max({gap_scale, std::abs(w[2 * i]), p.gap[i]});
+    for (Index i = 0; i < p.pairs; ++i) gap_scale = std::max({gap_scale, std::abs(w[2 * i]), in.gap[i]});
     for (Index i = 0; i < p.pairs; ++i) {
       if (in.kind[i] == ContactKind::bilateral) continue;  // always in contact
       if (in_contact[i] && x[2 * i] < 0.0) next[i] = false;                            // tension: release
-      if (!in_contact[i] && w[2 * i] - p.gap[i] > 1e-12 * gap_scale) next[i] = true;  // penetration: admit
+      if (!in_contact[i] && w[2 * i] - in.gap[i] > 1e-12 * gap_scale) next[i] = true;  // penetration: admit
     }
     // A force needs a contact to go through, and a free body a contact on each side.
     if (std::none_of(next.begin(), next.end(), [](bool b) { return b; }) && p.motions > 0) {
@@ -272,9 +272,9 @@ BilateralResult kalker(const StepInput& in, const Vector& friction, const Vector
         if (groups[g] == groups[g + 1]) continue;
         Index closest = groups[g];
         for (Index i = groups[g] + 1; i < groups[g + 1]; ++i)
-          if (p.gap[i] - w[2 * i] < p.gap[closest] - w[2 * closest]) closest = i;
+          if (in.gap[i] - w[2 * i] < in.gap[closest] - w[2 * closest]) closest = i;
         for (Index i = groups[g]; i < groups[g + 1]; ++i)
-          if (p.gap[i] - w[2 * i] <= p.gap[closest] - w[2 * closest] + tie) next[i] = true;
+          if (in.gap[i] - w[2 * i] <= in.gap[closest] - w[2 * closest] + tie) next[i] = true;
       }
     }
     if (next == in_contact) return result;

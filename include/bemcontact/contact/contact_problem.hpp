@@ -147,6 +147,10 @@ struct ContactLaw {
   NormalCompliance compliance;  // kind == compliant
   // The non-local Coulomb law's radius rho (contact/nonlocal_friction.hpp); 0: the local law.
   double nonlocal_radius = 0.0;
+  // Archard's wear coefficient k of side 1 and side 2 (contact/wear.hpp): the worn depth grows
+  // by k p_n |slip increment| in each step; 0: that side does not wear.
+  double wear_coefficient1 = 0.0, wear_coefficient2 = 0.0;
+  bool wears() const { return wear_coefficient1 > 0.0 || wear_coefficient2 > 0.0; }
   bool operator==(const ContactLaw&) const = default;
 };
 
@@ -183,6 +187,19 @@ struct ContactInterface {
   ZoneAdaptivity adaptivity;
 };
 
+// Repeated load cycles for wear (contact/wear.hpp): the history from `start` to end_time is
+// one cycle, which closes (every load is the same at both ends); the run stands for `cycles`
+// of them, each computed cycle for a jump of cycles (fixed_jump, or adaptive up to max_jump,
+// keeping the pressure change per jump within max_pressure_change of the peak pressure).
+struct LoadCycles {
+  long cycles = 1;
+  double start = 0.0;
+  long fixed_jump = 0;  // 0: adaptive
+  long max_jump = 1;
+  double max_pressure_change = 0.05;
+  bool repeated() const { return cycles > 1; }
+};
+
 // Bodies, contacts (each with its law) and one load history. The tangential coupling and
 // the solver are shared by every contact.
 struct ContactProblem : bem::ProblemHeader {
@@ -200,6 +217,7 @@ struct ContactProblem : bem::ProblemHeader {
   std::vector<Amplitude> boundary_amplitudes;
   double end_time = 1.0;
   int increments = 1;       // steps over the history (the initial step count when adaptive)
+  LoadCycles cycles;        // wear: the history's cycle repeated
   // Adaptive stepping: a step in which more pairs change state (open / stick / slip) than
   // max_state_changes per contact is redone in halves, down to end_time / max_steps.
   bool adaptive = false;
@@ -239,6 +257,11 @@ struct ContactProblem : bem::ProblemHeader {
     for (const auto& contact : contacts)
       if (!(contact.law == contacts.front().law)) return std::nullopt;
     return contacts.front().law;
+  }
+  bool has_wear() const {
+    for (const auto& contact : contacts)
+      if (contact.law.wears()) return true;
+    return false;
   }
   // Every contact's friction coefficient (reference cases and tests that vary it).
   void set_friction(double beta) {

@@ -73,6 +73,9 @@ struct ContactSummary {
   int newton_iterations = 0, kalker_iterations = 0, threshold_iterations = 0, gmres_cycles = 0;
   double residual = 0.0;        // relative complementarity residual
   double dissipated_energy = 0.0;  // by friction since the start: -sum weight p_t (slip increment)
+  // Worn volume of side 1 and side 2 since the start (wear.hpp: sum weight h; an area per unit
+  // thickness in plane problems), 0 without wear.
+  double worn_volume1 = 0.0, worn_volume2 = 0.0;
 
   double stick_ratio() const { return contact_radius > 0.0 ? stick_radius / contact_radius : 0.0; }  // c/a
 };
@@ -99,6 +102,18 @@ struct NewtonSystemCounts {
   long factored = 0, updated = 0, reused = 0;
 };
 
+// The wear of a contact at the end of a computed load cycle (wear.hpp).
+struct WearCycle {
+  long cycle = 1;        // the load cycles this state stands for
+  int computed = 1;      // computed cycles so far
+  long jump = 1;         // the cycles the last computed one stood for (its ΔN)
+  double pressure_change = 0.0;  // against the previous computed cycle's end, relative to its peak
+  double stable_jump = 0.0;      // the longest stable jump after this cycle (wear.hpp; 0: not repeated)
+  std::vector<double> depth1, depth2;  // per pair: worn depth of side 1 and side 2
+  std::vector<PairResult> pairs;       // at the cycle's end
+  ContactSummary summary;              // at the cycle's end (worn volumes, a, c, peak pressure)
+};
+
 // The results of one contact interface (or of a group of pairs).
 struct ContactInterfaceResult {
   std::string name;
@@ -107,6 +122,7 @@ struct ContactInterfaceResult {
   std::vector<ContactSummary> steps;    // per load step
   std::vector<std::vector<PairResult>> step_pairs;  // per load step when record_steps
   AdaptedZone zone;                     // an adaptive zone's passes
+  std::vector<WearCycle> wear;          // a wearing contact's computed cycles
 };
 
 // The motions at the end of one step: the prescribed forces and the motions (approaches
@@ -135,6 +151,7 @@ struct ContactResult : ContactInterfaceResult {
   std::vector<ReportedMotion> free_motions;  // the motions of records after the force loads'
   int steps_taken = 0;
   int rejected_steps = 0;
+  int rejected_jumps = 0;
   NewtonSystemCounts newton_systems;
   // When record_steps: per step, every region's boundary solution with stresses.
   std::vector<std::vector<bem::BoundarySolution>> step_boundary;
@@ -162,6 +179,8 @@ struct LoadHistory : ContactInterfaceResult {
   std::vector<Vector> step_x, step_delta;  // per step when record_steps
   int steps_taken = 0;
   int rejected_steps = 0;               // adaptive steps redone in halves
+  int rejected_jumps = 0;               // cycle jumps undone (wear.hpp)
+  std::vector<std::string> warnings;    // a fixed cycle jump beyond the stable one
   NewtonSystemCounts newton_systems;
   Vector x;                             // final (lambda_n, tau) per pair
   Vector delta;                         // final motions (CondensedProblem::motions)

@@ -63,6 +63,7 @@ struct StepInput {
   Vector jump0;       // 2N: the loads' jump at `time` (CondensedProblem::jump_at)
   Vector target;      // K: the motions' right-hand sides at `time`
   Vector force_scale; // K: |prescribed force| at `time`, for the residual
+  Vector gap;         // N: each pair's gap d (V.3), grown by the wear so far (wear.hpp)
   // The law of each pair (that of its contact).
   std::vector<ContactKind> kind;
   Vector friction;

@@ -431,6 +431,8 @@ contact::ContactLaw read_law(const TableReader& reader, bool& coupling) {
                                    "effect (remove it, or give a friction coefficient)");
   if (reader.has("nonlocal_radius") && law.kind == contact::ContactKind::compliant)
     reader.fail("nonlocal_radius", "the non-local law is not available with normal compliance yet (remove one of them)");
+  law.wear_coefficient1 = reader.optional_number("wear_coefficient1").value_or(0.0);
+  law.wear_coefficient2 = reader.optional_number("wear_coefficient2").value_or(0.0);
   coupling = reader.boolean_or("coupling", true);
   if (reader.has("coupling") && law.friction == 0.0)
     reader.fail("coupling", "'coupling' acts on the tangential tractions of friction; with friction = 0 it has "
@@ -475,6 +477,15 @@ void check_nonlocal_radius(const TableReader& reader, const contact::ContactInte
     reader.fail("nonlocal_radius", "the radius " + format_number(rho) + " is larger than the contact boundary '" +
                                        piece.name + "' (length " + format_number(length) +
                                        "); the kernel should span a part of the contact, a tenth of its width say");
+}
+
+// A rigid body does not wear (its surface is the profile given).
+void check_wear(const TableReader& reader, const contact::ContactInterface& contact,
+                const contact::ContactProblem& problem) {
+  const auto& side2 = problem.bodies.at(static_cast<std::size_t>(contact.side2.body));
+  if (contact.law.wear_coefficient2 > 0.0 && side2.rigid)
+    reader.fail("wear_coefficient2", "body '" + side2.name + "' is rigid: it does not wear (put the wear on side 1 "
+                                     "with wear_coefficient1, or make body2 elastic)");
 }
 
 // An adaptive zone (contact_resolution) and its limits; the limits alone have no effect.
@@ -544,9 +555,6 @@ void read_force_load(const TableReader& load, contact::ContactProblem& problem) 
   if (body.rigid) {
     if (load.has("boundary"))
       load.fail("boundary", "body '" + *body_name + "' is rigid: the force acts on the whole body; remove 'boundary'");
-    if (body.rigid->displacement)
-      load.fail("body", "rigid body '" + *body_name + "' has a prescribed displacement; a force on it would leave "
-                        "nothing to move (give the displacement or the forces)");
   } else {
     const auto boundary = load.optional_string("boundary");
     if (!boundary) load.fail("boundary", "missing: the boundary that carries the force");
@@ -580,6 +588,12 @@ void read_force_load(const TableReader& load, contact::ContactProblem& problem) 
       load.fail("component", "rigid body '" + *body_name + "' is a contour: it has no centre to rotate about (use a "
                              "profile with a center)");
   }
+  // A prescribed translation moves a rigid body along its other components (a fretting
+  // stroke along x under a normal force along y).
+  if (body.rigid && body.rigid->displacement && component < 3 && (*body.rigid->displacement)[component - 1] != 0.0)
+    load.fail("component", "rigid body '" + *body_name + "' has a prescribed displacement along this component; a "
+                           "force along it would leave nothing to move (give that displacement component as 0, or "
+                           "drop the force)");
   force.component = component - 1;
   force.force = load.number("force");
   if (force.force == 0.0) load.fail("force", "the total force must not be zero (a zero force through a "
@@ -617,6 +631,62 @@ void read_force_loads(const TableReader& root, FileContext& context, contact::Co
   }
 }
 
+// The loads whose amplitude differs at t0 and t1 (by more than 1e-9 of its largest value),
+// as "name (a at t0, b at t1)"; empty when every load agrees.
+std::string loads_differing(const contact::ContactProblem& problem, double t0, double t1) {
+  std::string out;
+  const auto compare = [&](const std::string& name, const contact::Amplitude& a) {
+    double scale = 1.0;
+    for (const auto& p : a.points) scale = std::max(scale, std::abs(p.y()));
+    const double v0 = a.at(t0), v1 = a.at(t1);
+    if (std::abs(v1 - v0) <= 1e-9 * scale || !out.empty()) return;
+    out = name + " (" + format_number(v0) + " at cycle_start, " + format_number(v1) + " at end_time)";
+  };
+  for (const auto& force : problem.forces) compare("load '" + force.name + "'", force.amplitude);
+  for (const auto& body : problem.bodies)
+    if (body.rigid) compare("the motion of rigid body '" + body.name + "'", body.rigid->amplitude);
+  for (const auto& contact : problem.contacts)
+    if (contact.interference != 0.0) compare("the interference of '" + contact.name + "'", contact.interference_amplitude);
+  compare("data_amplitude", problem.data_amplitude);
+  for (std::size_t g = 0; g < problem.boundary_amplitudes.size(); ++g)
+    compare("a boundary's amplitude", problem.boundary_amplitudes[g]);
+  return out;
+}
+
+// [history]'s repeated cycle (wear; contact_problem.hpp, LoadCycles): its keys have an
+// effect only with cycles > 1 and a wearing contact, and the cycle must close.
+void read_load_cycles(const TableReader& history, contact::ContactProblem& problem) {
+  auto& cycles = problem.cycles;
+  cycles.cycles = history.integer_or("cycles", 1);
+  if (cycles.cycles == 1) {
+    for (const char* key : {"cycle_start", "cycle_jump", "max_cycle_jump", "max_pressure_change"})
+      if (history.has(key))
+        history.fail(key, std::string(key) + " sets the repeated load cycles of a wear run; without cycles > 1 it "
+                                             "has no effect");
+    return;
+  }
+  if (!problem.has_wear())
+    history.fail("cycles", "repeated load cycles serve the wear of a contact (wear_coefficient1 or 2 in a "
+                           "[[contact]]); without wear every cycle is the same: remove cycles, or give a wear "
+                           "coefficient");
+  if (!history.has("cycle_start"))
+    history.fail("cycles", "cycles > 1 needs cycle_start: the time where the repeated cycle starts (the history "
+                           "from there to end_time is one load cycle)");
+  cycles.start = *history.optional_number("cycle_start");
+  if (!(cycles.start < problem.end_time))
+    history.fail("cycle_start", "the cycle must start before end_time (" + format_number(problem.end_time) + ")");
+  if (const std::string differing = loads_differing(problem, cycles.start, problem.end_time); !differing.empty())
+    history.fail("cycle_start", "the cycle from " + format_number(cycles.start) + " to end_time " +
+                                    format_number(problem.end_time) + " does not close: " + differing +
+                                    "; a repeated cycle must end where it starts");
+  cycles.fixed_jump = history.has("cycle_jump") ? history.integer_or("cycle_jump", 1) : 0;
+  for (const char* key : {"max_cycle_jump", "max_pressure_change"})
+    if (cycles.fixed_jump > 0 && history.has(key))
+      history.fail(key, std::string(key) + " controls the adaptive jump; with a fixed cycle_jump it has no effect");
+  cycles.max_jump = history.integer_or("max_cycle_jump", static_cast<int>(std::max(1L, cycles.cycles / 20)));
+  cycles.max_pressure_change = history.optional_number("max_pressure_change").value_or(0.05);
+}
+
 // [history]: end_time and the amplitude of the bodies' own data.
 void read_history(const TableReader& root, FileContext& context, contact::ContactProblem& problem) {
   double last = 1.0;
@@ -638,6 +708,7 @@ void read_history(const TableReader& root, FileContext& context, contact::Contac
     problem.end_time = history.optional_number("end_time").value_or(last);
     if (!(problem.end_time > 0.0 && std::isfinite(problem.end_time)))
       history.fail("end_time", "the end of the history must be a finite time > 0");
+    read_load_cycles(history, problem);
   } else {
     problem.end_time = last;
   }
@@ -726,6 +797,7 @@ void read_single_contact(const TableReader& contact, const TableReader& root, Fi
   read_pairing(contact, interface);
   interface.law = read_law(contact, problem.tangential_coupling);
   check_nonlocal_radius(contact, interface, problem);
+  check_wear(contact, interface, problem);
   read_zone_adaptivity(contact, interface);
   problem.contacts.push_back(interface);
   read_solver(contact, problem);
@@ -773,6 +845,7 @@ void read_contact_tables(const toml::node& contact_node, const TableReader& root
     bool coupling = true;
     interface.law = read_law(contact, coupling);
     check_nonlocal_radius(contact, interface, problem);
+    check_wear(contact, interface, problem);
     read_zone_adaptivity(contact, interface);
     if (index == 1) problem.tangential_coupling = coupling;
     problem.contacts.push_back(interface);

@@ -167,6 +167,11 @@ std::vector<Key> law_keys() {
              above(0)),
       of(Type::boolean, "coupling", "true",
          "false: the uncoupled model (Spence's E.1), with friction only; the same in every contact"),
+      number("wear_coefficient1", "0 (no wear)",
+             "Archard's k of side 1: in each step its worn depth at a pair grows by k p_n |slip increment| "
+             "(docs/contact.md, Wear)",
+             at_least(0)),
+      number("wear_coefficient2", "0 (no wear)", "the same for side 2 (an elastic body)", at_least(0)),
   };
 }
 
@@ -358,7 +363,7 @@ std::vector<Table> build_tables() {
                 integer("seed", "0", "rough: the seed of the random phases (std::mt19937_64)",
                         between(0, 2147483647, false, false)),
                 of(Type::point, "displacement", "none (a force in [load])",
-                   "a prescribed translation at amplitude 1"),
+                   "a prescribed translation at amplitude 1; a component along a force load must be 0 (the force moves the body along it)"),
                 number("rotation", "none", "plane: a prescribed small rotation (radians, counter-clockwise)",
                        between(-0.1, 0.1, false, false), "the model is linear in it: a small rotation"),
                 of(Type::amplitude, "amplitude", "a ramp over 0 <= t <= 1",
@@ -391,7 +396,23 @@ std::vector<Table> build_tables() {
                {number("end_time", "the last time of the amplitudes (1 without)", "the end of the pseudo-time",
                        above(0)),
                 of(Type::amplitude, "data_amplitude", "a ramp over 0 <= t <= 1",
-                   "the history of every other prescribed value of the elastic bodies")}});
+                   "the history of every other prescribed value of the elastic bodies"),
+                integer("cycles", "1",
+                        "with wear: the load cycles the run stands for; the history from cycle_start to end_time "
+                        "is one cycle, repeated (docs/contact.md, Wear)",
+                        between(1, 1e9, false, false)),
+                number("cycle_start", "required (cycles > 1)",
+                       "cycles: where the repeated cycle starts; the loads at cycle_start and end_time must agree",
+                       at_least(0)),
+                integer("cycle_jump", "none (adaptive)",
+                        "cycles: each computed cycle stands for this many (fixed), instead of the adaptive jump",
+                        between(1, 1e9, false, false)),
+                integer("max_cycle_jump", "cycles / 20 (at least 1)", "cycles, adaptive: the largest jump",
+                        between(1, 1e9, false, false)),
+                number("max_pressure_change", "0.05",
+                       "cycles, adaptive: the largest pressure change a jump may cause, as a fraction of the peak "
+                       "pressure (a larger one is undone and the jump halved)",
+                       between(0, 1, true, true))}});
   t.push_back({"amplitude.cyclic", "a cyclic amplitude", "a cyclic amplitude",
                {number("mean", "0", "the value the triangle wave starts from and returns to"),
                 number("amplitude", "required", "the wave goes up to mean + amplitude and down to mean - amplitude"),

@@ -137,17 +137,71 @@ CsvTable contact_steps_table(const contact::ContactInterfaceResult& result) {
                   {"threshold_iterations", i},
                   {"gmres_cycles", i},
                   {"residual", c}});
+  const bool worn = !result.wear.empty();
+  if (worn) {
+    table.add_column("worn_volume1", c);
+    table.add_column("worn_volume2", c);
+  }
   table.reserve(result.steps.size());
   for (std::size_t k = 0; k < result.steps.size(); ++k) {
     const auto& s = result.steps[k];
-    table.row() << static_cast<double>(k + 1) << s.time << s.contact_radius << s.stick_radius << s.stick_start
+    auto row = table.row();
+    row << static_cast<double>(k + 1) << s.time << s.contact_radius << s.stick_radius << s.stick_start
                 << s.stick_end << s.stick_offset << s.contact_start << s.contact_end << s.peak_pressure
                 << s.centre_pressure << s.normal_force << s.tangential_force << s.approach
                 << static_cast<double>(s.pairs_in_contact) << s.contact_fraction
                 << static_cast<double>(s.contact_spots) << s.mean_gap << s.dissipated_energy
                 << static_cast<double>(s.newton_iterations) << static_cast<double>(s.kalker_iterations)
                 << static_cast<double>(s.threshold_iterations) << static_cast<double>(s.gmres_cycles) << s.residual;
+    if (worn) row << s.worn_volume1 << s.worn_volume2;
   }
+  return table;
+}
+
+// A wearing contact's computed cycles (contact/wear.hpp): the cycles each stands for, the
+// worn volumes and deepest points of both sides, and the contact at the cycle's end.
+CsvTable wear_table(const contact::ContactInterfaceResult& result) {
+  constexpr auto c = CsvTable::compact;
+  constexpr auto i = CsvTable::integer;
+  CsvTable table({{"cycle", i},
+                  {"computed", i},
+                  {"jump", i},
+                  {"pressure_change", c},
+                  {"stable_jump", c},
+                  {"worn_volume1", c},
+                  {"worn_volume2", c},
+                  {"max_depth1", c},
+                  {"max_depth2", c},
+                  {"a", c},
+                  {"contact_start", c},
+                  {"contact_end", c},
+                  {"c", c},
+                  {"peak_pressure", c},
+                  {"centre_pressure", c},
+                  {"pairs_in_contact", i}});
+  for (const auto& w : result.wear) {
+    const auto& s = w.summary;
+    const double max1 = w.depth1.empty() ? 0.0 : *std::max_element(w.depth1.begin(), w.depth1.end());
+    const double max2 = w.depth2.empty() ? 0.0 : *std::max_element(w.depth2.begin(), w.depth2.end());
+    table.row() << static_cast<double>(w.cycle) << static_cast<double>(w.computed) << static_cast<double>(w.jump)
+                << w.pressure_change << w.stable_jump << s.worn_volume1 << s.worn_volume2 << max1 << max2 << s.contact_radius
+                << s.contact_start << s.contact_end << s.stick_radius << s.peak_pressure << s.centre_pressure
+                << static_cast<double>(s.pairs_in_contact);
+  }
+  return table;
+}
+
+// The scar of every computed cycle, pair by pair: depth of each side, tractions, status.
+CsvTable wear_profile_table(const contact::ContactInterfaceResult& result) {
+  constexpr auto c = CsvTable::compact;
+  CsvTable table({{"cycle", CsvTable::integer}, {"pair", CsvTable::integer}, {"x", c}, {"y", c}, {"coordinate", c},
+                  {"depth1", c}, {"depth2", c}, {"p_n", c}, {"p_t", c}, {"status", CsvTable::text}});
+  for (const auto& w : result.wear)
+    for (std::size_t k = 0; k < w.pairs.size(); ++k) {
+      const auto& p = w.pairs[k];
+      table.row() << static_cast<double>(w.cycle) << static_cast<double>(k) << p.position.x() << p.position.y()
+                  << p.coordinate << w.depth1[k] << w.depth2[k] << p.p_n << p.p_t << contact::to_string(p.status);
+    }
   return table;
 }
 
@@ -176,6 +230,21 @@ nlohmann::json interface_json(const contact::ContactInterfaceResult& result) {
   j["name"] = result.name;
   j["pairs"] = result.pairs.size();
   if (!result.zone.passes.empty()) j["zone"] = zone_json(result.zone);
+  if (!result.wear.empty()) {
+    nlohmann::json cycles = nlohmann::json::array();
+    for (const auto& w : result.wear)
+      cycles.push_back({{"cycle", w.cycle},
+                        {"computed", w.computed},
+                        {"jump", w.jump},
+                        {"pressure_change", w.pressure_change},
+                        {"stable_jump", w.stable_jump},
+                        {"worn_volume1", w.summary.worn_volume1},
+                        {"worn_volume2", w.summary.worn_volume2},
+                        {"a", w.summary.contact_radius},
+                        {"c", w.summary.stick_radius},
+                        {"peak_pressure", w.summary.peak_pressure}});
+    j["wear"] = {{"cycles", cycles}};
+  }
   nlohmann::json steps = nlohmann::json::array();
   for (const auto& s : result.steps) steps.push_back(summary_json(s));
   j["steps"] = steps;
@@ -405,6 +474,23 @@ std::vector<OutputFile> contact_output_files(const contact::ContactProblem& prob
     add(stem + ".csv", contact_table(contact.pairs));
     if (vtk) add(stem + ".vtk", contact_vtk(contact.pairs, problem.title + ": contact " + contact.name));
     add(stem + "_steps.csv", contact_steps_table(contact));
+    if (!contact.wear.empty()) {
+      add(stem + "_wear.csv", wear_table(contact));
+      add(stem + "_wear_profile.csv", wear_profile_table(contact));
+    }
+    if (vtk && !contact.wear.empty()) {
+      // The scar cycle by cycle as a ParaView series (time: the cycle count).
+      std::vector<std::pair<double, std::string>> series;
+      for (const auto& w : contact.wear) {
+        const std::string name = "wear/" + stem + "_cycle" + std::to_string(w.cycle) + ".vtp";
+        auto fields = pair_fields(w.pairs);
+        fields.scalars.emplace_back("depth1", w.depth1);
+        fields.scalars.emplace_back("depth2", w.depth2);
+        add(name, point_cloud_vtp(fields.points, fields.scalars, {{"normal", fields.normals}}));
+        series.emplace_back(static_cast<double>(w.cycle), name);
+      }
+      add(stem + "_wear.pvd", time_series_pvd(series));
+    }
     for (std::size_t k = 0; k < contact.step_pairs.size(); ++k)
       add(steps_folder + stem + "_step" + std::to_string(k + 1) + ".csv", contact_table(contact.step_pairs[k]));
     if (vtk && !contact.step_pairs.empty()) {
