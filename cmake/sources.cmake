@@ -122,7 +122,8 @@ set(BEMCONTACT_VALIDATION_SOURCES
   src/validation/plane_cases.cpp
   src/validation/records.cpp
   src/validation/wavy_cases.cpp
-  src/validation/compliance_cases.cpp)
+  src/validation/compliance_cases.cpp
+  src/validation/wear_cases.cpp)
 set(BEMCONTACT_PARALLEL_SOURCES
   src/parallel/session.cpp)
 

@@ -9,7 +9,8 @@ SOURCE an output folder: the mesh again (from the problem file named in summary.
 it is unchanged), von Mises and principal stresses on each interior grid, contact pressure
 and shear per contact (with the closed form when the run names one; against the angle
 about the centre of curvature for a conformal contact), load-history curves with the Q -
-delta loop of a tangential force load, as computed and without the bulk compliance.
+delta loop of a tangential force load, as computed and without the bulk compliance; for a
+contact that wears, its scar's evolution over the load cycles (wear_<contact>).
 """
 import argparse
 import hashlib
@@ -355,6 +356,63 @@ def history_figure(result, names, title, path=None):
     return _finish(fig, path)
 
 
+def wear_cycles(cycles, count=6):
+    """Indices of about `count` cycles spread logarithmically from the first to the last
+    (both kept): the computed cycle nearest each of geomspace(first, last, count)."""
+    logs = np.log(np.maximum(cycles, 1.0))
+    targets = np.linspace(logs[0], logs[-1], count)
+    return np.unique([np.argmin(np.abs(logs - t)) for t in targets])
+
+
+def wear_figure(result, name, title, path=None):
+    """The wear scar of contact `name` over the load cycles (<name>_wear.csv and
+    <name>_wear_profile.csv): worn depth and pressure -p_n against the coordinate at about
+    six cycles spread logarithmically (wear_cycles; side 1 solid, side 2 dashed when it
+    wears), worn volume per side, and peak and centre pressure (stick half-width c on a
+    twin axis when there is a stick zone) against the cycle."""
+    history = result.table(_file(name, "wear.csv"))
+    profile = result.table(_file(name, "wear_profile.csv"))
+    cycles = history["cycle"]
+    side2 = bool(np.any(profile["depth2"] != 0.0))
+    fig, axes = plt.subplots(2, 2, figsize=(12, 8))
+    (depth, pressure), (volume, peak) = axes
+    picked = wear_cycles(cycles)
+    colours = plt.get_cmap("viridis")
+    for k, index in enumerate(picked):
+        colour = colours(k / max(len(picked) - 1, 1))
+        rows = profile["cycle"] == cycles[index]
+        order = np.argsort(profile["coordinate"][rows])
+        x = profile["coordinate"][rows][order]
+        label = f"N = {cycles[index]:.0f}"
+        depth.plot(x, profile["depth1"][rows][order], "-", color=colour, label=label)
+        if side2:
+            depth.plot(x, profile["depth2"][rows][order], "--", color=colour)
+        pressure.plot(x, -profile["p_n"][rows][order], ".-", ms=3, color=colour, label=label)
+    volume.plot(cycles, history["worn_volume1"], ".-", ms=3, label="side 1")
+    if side2 or np.any(history["worn_volume2"] != 0.0):
+        volume.plot(cycles, history["worn_volume2"], ".--", ms=3, label="side 2")
+    peak.plot(cycles, history["peak_pressure"], ".-", ms=3, label="peak pressure")
+    peak.plot(cycles, history["centre_pressure"], ".-", ms=3, label="centre pressure")
+    if np.any(history["c"] > 0.0):
+        stick = peak.twinx()
+        stick.plot(cycles, history["c"], ".:", ms=3, color="tab:green", label="c (stick)")
+        stick.set_ylabel("stick half-width c")
+        stick.legend(fontsize=7, loc="lower right")
+    for ax in (depth, pressure):
+        ax.set_xlabel("position along the contact (coordinate)")
+    for ax in (volume, peak):
+        ax.set_xlabel("load cycles N")
+        if cycles[0] > 0 and cycles[-1] > 10 * cycles[0]:
+            ax.set_xscale("log")
+    for ax, label in zip(axes.flat, ("worn depth (side 1 solid" + (", side 2 dashed)" if side2 else ")"),
+                                     "contact pressure -p_n at the cycle's end",
+                                     "worn area per unit thickness", "pressure at the cycle's end")):
+        ax.set_title(label, fontsize=9)
+        ax.legend(fontsize=7)
+    fig.suptitle(f"{title}: wear of contact '{name}' ({len(cycles)} computed cycles)", fontsize=10)
+    return _finish(fig, path)
+
+
 def _load_folder(folder):
     if not (folder / "summary.json").is_file():
         raise SystemExit(f"bemcontact plot: {folder} is not an output folder of bemcontact (no summary.json)")
@@ -399,6 +457,9 @@ def figures(source, out_dir=None, fmt="png"):
             friction = frictions.get(name, law.get("friction") or 0.0)
             written.append(contact_figure(result, name, reference if k == 0 else None, friction, title,
                                           out / f"contact_{name}.{fmt}"))
+        for name in contacts:
+            if _file(name, "wear.csv") in result.names():
+                written.append(wear_figure(result, name, title, out / f"wear_{name}.{fmt}"))
         if contacts and len(result.contact_steps(contacts[0])) > 1:
             written.append(history_figure(result, contacts, title, out / f"history.{fmt}"))
     elif source.is_file():

@@ -115,7 +115,7 @@ std::vector<PairResult> pair_results(const std::vector<ContactPair>& pairs, cons
     r.normal = pairs[i].normal;
     r.gap = pairs[i].gap - interference[first + i] + (wear.size() > 0 ? wear[first + i] : 0.0);
     const double lambda = step.x[2 * i];
-    r.p_n = -lambda;
+    r.p_n = 0.0 - lambda;  // +0 for an open pair
     r.p_t = step.x[2 * i + 1];
     r.jump_n = step.w[2 * i] - interference[first + i];
     r.jump_t = step.w[2 * i + 1];

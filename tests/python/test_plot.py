@@ -204,3 +204,55 @@ def test_example_scripts_run(examples, tmp_path):
                            capture_output=True, text=True, env=env)
     assert drawn.returncode == 0, drawn.stderr
     assert figure.read_bytes()[:8] == PNG_SIGNATURE
+
+
+def _wear_folder(folder, wear=True):
+    """A small output folder written by hand: one contact 'contact' of 5 pairs and, with
+    `wear`, its wear files over the cycles 1, 2, 4, ..., 1024 (both sides wearing)."""
+    folder.mkdir()
+    x = np.linspace(-1.0, 1.0, 5)
+    files = {"contact.csv": ["x,y,nx,ny,coordinate,p_n,p_t,status"] +
+             [f"{v},0,0,1,{v},{-50.0 - 10 * v * v},0,slip" for v in x],
+             "contact_steps.csv": ["time,normal_force,a,c,dissipated_energy", "1,100,1,0,0"]}
+    if wear:
+        cycles = 2.0 ** np.arange(11)
+        files["contact_wear.csv"] = [
+            "cycle,computed,jump,pressure_change,stable_jump,worn_volume1,worn_volume2,max_depth1,max_depth2,a,"
+            "contact_start,contact_end,c,peak_pressure,centre_pressure,pairs_in_contact"] + [
+            f"{n:g},{k + 1},{n / 2 if k else 1:g},0.01,300,{1e-6 * n},{5e-7 * n},{1e-6 * n},{5e-7 * n},1,-1,1,"
+            f"{0.5 / (1 + k)},{300 / (1 + k)},40,5" for k, n in enumerate(cycles)]
+        files["contact_wear_profile.csv"] = ["cycle,pair,x,y,coordinate,depth1,depth2,p_n,p_t,status"] + [
+            f"{n:g},{i},{v},0,{v},{1e-6 * n * (1 + v * v)},{5e-7 * n},{-40 - 10 * v * v},0,slip"
+            for n in cycles for i, v in enumerate(x[::-1])]
+    for name, lines in files.items():
+        (folder / name).write_text("\n".join(lines) + "\n")
+    summary = {"title": "wear", "outputs": list(files), "results": {"contacts": [{"name": "contact"}]}}
+    (folder / "summary.json").write_text(json.dumps(summary))
+    return folder
+
+
+def test_wear_figure_draws_the_scar_over_the_cycles(tmp_path):
+    worn = _wear_folder(tmp_path / "worn")
+    written = plot.figures(worn)
+    assert sorted(p.name for p in written) == ["contact_contact.png", "wear_contact.png"]
+    assert (worn / "figures" / "wear_contact.png").read_bytes()[:8] == PNG_SIGNATURE
+    fig = plot.wear_figure(plot._load_folder(worn), "contact", "wear")
+    depth = _axes_titled(fig, "worn depth")
+    # Six cycles spread logarithmically over 1 ... 1024, first and last kept: side 1 solid,
+    # side 2 (which wears here) dashed, in the same colour; the profile sorted by coordinate.
+    assert [t.get_text() for t in depth.get_legend().get_texts()] == [f"N = {2 ** k}" for k in (0, 2, 4, 6, 8, 10)]
+    solid, dashed = depth.get_lines()[-2:]
+    assert (solid.get_linestyle(), dashed.get_linestyle()) == ("-", "--")
+    np.testing.assert_array_equal(solid.get_xdata(), np.linspace(-1.0, 1.0, 5))
+    np.testing.assert_allclose(solid.get_ydata(), 1024e-6 * (1 + np.linspace(-1.0, 1.0, 5) ** 2))
+    np.testing.assert_allclose(dashed.get_ydata(), 512e-6)
+    pressure_last = _axes_titled(fig, "contact pressure").get_lines()[-1]
+    np.testing.assert_allclose(pressure_last.get_ydata(), 40 + 10 * np.linspace(-1.0, 1.0, 5) ** 2)
+    volume = _axes_titled(fig, "worn area")
+    assert volume.get_xscale() == "log" and len(volume.get_lines()) == 2
+    np.testing.assert_allclose(volume.get_lines()[0].get_ydata(), 1e-6 * 2.0 ** np.arange(11))
+    assert len(fig.axes) == 5  # c > 0: the stick half-width on a twin axis
+    plot.plt.close(fig)
+    # A folder without wear files gets no wear figure.
+    plain = _wear_folder(tmp_path / "plain", wear=False)
+    assert [p.name for p in plot.figures(plain)] == ["contact_contact.png"]

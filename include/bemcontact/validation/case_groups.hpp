@@ -11,4 +11,5 @@ std::vector<Case> multibody_cases();      // src/validation/multibody_cases.cpp
 std::vector<Case> fretting_cases();       // src/validation/fretting_cases.cpp
 std::vector<Case> rough_cases();          // src/validation/wavy_cases.cpp
 std::vector<Case> compliance_cases();     // src/validation/compliance_cases.cpp
+std::vector<Case> wear_cases();           // src/validation/wear_cases.cpp
 }  // namespace bemcontact::validation

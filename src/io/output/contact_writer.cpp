@@ -393,6 +393,28 @@ std::string zone_text(const contact::ContactInterface& contact, const contact::A
 
 }  // namespace
 
+// A wearing contact's cycles and scar, in two lines.
+std::string wear_text(const contact::ContactInterfaceResult& contact, int rejected_jumps) {
+  const auto& first = contact.wear.front();
+  const auto& last = contact.wear.back();
+  long longest = 1;
+  for (const auto& w : contact.wear) longest = std::max(longest, w.jump);
+  const auto deepest = [](const std::vector<double>& depth) {
+    return depth.empty() ? 0.0 : *std::max_element(depth.begin(), depth.end());
+  };
+  char line[320];
+  std::snprintf(line, sizeof line,
+                "  wear: %ld load cycle%s in %d computed (jumps up to %ld cycles, %d undone); worn volume %.6g (side "
+                "1), %.6g (side 2); deepest %.6g, %.6g\n",
+                last.cycle, last.cycle == 1 ? "" : "s", last.computed, longest, rejected_jumps,
+                last.summary.worn_volume1, last.summary.worn_volume2, deepest(last.depth1), deepest(last.depth2));
+  std::string out = line;
+  std::snprintf(line, sizeof line, "  wear: peak pressure %.6g after cycle 1, %.6g after cycle %ld; a %.6g, %.6g\n",
+                first.summary.peak_pressure, last.summary.peak_pressure, last.cycle, first.summary.contact_radius,
+                last.summary.contact_radius);
+  return out + line;
+}
+
 std::string contact_report_text(const contact::ContactProblem& problem, const contact::ContactResult& result) {
   char line[256];
   std::string out = problem.title + " (" + to_string(problem.analysis) +
@@ -423,6 +445,7 @@ std::string contact_report_text(const contact::ContactProblem& problem, const co
                   s.contact_fraction, s.contact_spots, s.contact_spots == 1 ? "" : "s", s.mean_gap);
     out += line;
     if (!contact.zone.passes.empty()) out += zone_text(problem.contacts[c], contact.zone);
+    if (!contact.wear.empty()) out += wear_text(contact, result.rejected_jumps);
   }
   if (problem.contacts.empty()) return out;
   const auto& s = result.summary;
