@@ -589,7 +589,7 @@ void cut_back(const HistoryMark& m, LoadHistory& history) {
 // The wear of every wearing contact at the end of a computed cycle; a contact whose worn
 // surfaces no longer touch stops the run.
 void record_wear_cycle(const HistoryData& data, const HistoryRun& run, long cycle, int computed, long jump,
-                       double change, double stable_jump, LoadHistory& history) {
+                       double change, LoadHistory& history) {
   const auto& groups = data.all_groups;
   for (std::size_t g = 0; g + 1 < groups.size(); ++g) {
     const Index first = groups[g], last = groups[g + 1];
@@ -602,7 +602,6 @@ void record_wear_cycle(const HistoryData& data, const HistoryRun& run, long cycl
     record.computed = computed;
     record.jump = jump;
     record.pressure_change = change;
-    record.stable_jump = stable_jump;
     for (Index i = first; i < last; ++i) {
       record.depth1.push_back(run.wear.side1[i]);
       record.depth2.push_back(run.wear.side2[i]);
@@ -632,26 +631,25 @@ void repeat_cycles(const HistoryData& data, const HistoryHooks& hooks, WearDepth
   const bool adaptive = cycles.fixed_jump == 0;
   long represented = 1, jump = adaptive ? 1 : cycles.fixed_jump;
   int computed = 1;
-  // The longest stable jump after the last computed cycle (wear.hpp), from its slip paths.
-  const auto stable_jump = [&] {
-    return cycle_jump_bound(data.condensed.M, run.step.x,
-                            (data.laws.wear.side1 + data.laws.wear.side2).cwiseProduct(run.slip_path));
-  };
-  double bound = stable_jump();
-  record_wear_cycle(data, run, represented, computed, 1, 0.0, bound, history);
-  const auto within_bound = [&](long n) {
-    return std::max(1L, std::min(n, static_cast<long>(std::min(bound, 1e15))));
-  };
-  if (adaptive) jump = within_bound(cycles.max_jump);  // the first jump: as long as stable, then the
-                                                       // pressure change decides
-  bool warned = false;
+  record_wear_cycle(data, run, represented, computed, 1, 0.0, history);
   while (represented < cycles.cycles) {
     const long dn = std::min(jump, cycles.cycles - represented);
     const HistoryRun saved = run;
     const HistoryMark saved_records = mark(history);
-    const Vector last1 = run.wear.side1 - at_cycle_start.side1, last2 = run.wear.side2 - at_cycle_start.side2;
-    run.wear.side1 += static_cast<double>(dn - 1) * last1;
-    run.wear.side2 += static_cast<double>(dn - 1) * last2;
+    // The jump (wear.hpp): the last computed cycle's wear, extrapolated over dn - 1 cycles
+    // through the pressures' response, shared between the sides as their coefficients.
+    const auto& k = data.laws.wear;
+    const Vector last_cycle = run.wear.total() - at_cycle_start.total();
+    const Vector rate = (k.side1 + k.side2).cwiseProduct(run.slip_path);
+    const auto& p = data.condensed;
+    const Vector extra = implicit_jump(pressure_response(p.M, p.b, p.f, p.f_delta, run.step.x), rate, last_cycle,
+                                       static_cast<double>(dn - 1));
+    for (Index i = 0; i < extra.size(); ++i) {
+      const double sum = k.side1[i] + k.side2[i];
+      if (sum <= 0.0) continue;
+      run.wear.side1[i] += extra[i] * k.side1[i] / sum;
+      run.wear.side2[i] += extra[i] * k.side2[i] / sum;
+    }
     run.previous.gap = data.condensed.gap + run.wear.total();
     run.slip_path.setZero();
     const WearDepths start_of_cycle = run.wear;
@@ -667,18 +665,8 @@ void repeat_cycles(const HistoryData& data, const HistoryHooks& hooks, WearDepth
     at_cycle_start = start_of_cycle;
     represented += dn;
     ++computed;
-    if (!adaptive && !warned && static_cast<double>(dn) > bound) {
-      warned = true;
-      std::ostringstream text;
-      text << "cycle_jump = " << dn << " is longer than the stable jump " << format_residual(bound)
-           << " before load cycle " << represented
-           << " (docs/contact.md, Wear): the worn depths may oscillate from pair to pair; the adaptive jump stays "
-              "within it";
-      history.warnings.push_back(text.str());
-    }
-    bound = stable_jump();
-    record_wear_cycle(data, run, represented, computed, dn, change, bound, history);
-    if (adaptive) jump = within_bound(control.next(dn, change));
+    record_wear_cycle(data, run, represented, computed, dn, change, history);
+    if (adaptive) jump = control.next(dn, change);
     if (hooks.progress) hooks.progress("wear cycles", static_cast<double>(represented) / cycles.cycles);
   }
 }
@@ -708,7 +696,7 @@ LoadHistory solve_load_history(const CondensedProblem& condensed, const std::vec
   const LoadCycles& cycles = problem.cycles;
   if (!cycles.repeated()) {
     advance(data, 0.0, problem.end_time, 0.0, hooks, run, history);
-    if (run.wear.side1.size() > 0) record_wear_cycle(data, run, 1, 1, 1, 0.0, 0.0, history);
+    if (run.wear.side1.size() > 0) record_wear_cycle(data, run, 1, 1, 1, 0.0, history);
   } else {
     if (cycles.start > 0.0) advance(data, 0.0, cycles.start, 0.0, hooks, run, history);
     const WearDepths at_cycle_start = run.wear;
@@ -787,7 +775,6 @@ void take_history(const ContactProblem& problem, LoadHistory& history, ContactRe
   result.steps_taken = history.steps_taken;
   result.rejected_steps = history.rejected_steps;
   result.rejected_jumps = history.rejected_jumps;
-  for (auto& warning : history.warnings) result.warnings.push_back(std::move(warning));
   result.newton_systems = history.newton_systems;
   for (std::size_t c = 0; c < result.contacts.size(); ++c) result.contacts[c].name = problem.contacts[c].name;
   if (!result.contacts.empty()) static_cast<ContactInterfaceResult&>(result) = result.contacts.front();

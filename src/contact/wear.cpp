@@ -33,35 +33,45 @@ double relative_pressure_change(const Vector& before, const Vector& after) {
   return peak > 0.0 ? change / peak : 0.0;
 }
 
-double cycle_jump_bound(const Matrix& M, const Vector& x, const Vector& wear_rate) {
-  std::vector<Index> closed;
-  for (Index i = 0; i < wear_rate.size(); ++i)
-    if (x[2 * i] > 0.0) closed.push_back(i);
-  const Index m = static_cast<Index>(closed.size());
-  Matrix block(m, m);
-  Vector rate(m);
+PressureResponse pressure_response(const Matrix& M, const Matrix& b, const Matrix& f, const Matrix& f_delta,
+                                   const Vector& x) {
+  PressureResponse response;
+  for (Index i = 0; 2 * i < x.size(); ++i)
+    if (x[2 * i] > 0.0) response.closed.push_back(i);
+  const Index m = static_cast<Index>(response.closed.size()), K = f_delta.rows();
+  // The normal rows of the closed pairs, w_n = gap, and the motions' equations.
+  Matrix A = Matrix::Zero(m + K, m + K);
   for (Index a = 0; a < m; ++a) {
-    rate[a] = wear_rate[closed[a]];
-    for (Index b = 0; b < m; ++b) block(a, b) = M(2 * closed[a], 2 * closed[b]);
+    const Index row = 2 * response.closed[a];
+    for (Index c = 0; c < m; ++c) A(a, c) = M(row, 2 * response.closed[c]);
+    for (Index k = 0; k < K; ++k) {
+      A(a, m + k) = b(row, k);
+      A(m + k, a) = f(k, row);
+    }
   }
-  if (m == 0 || !(rate.maxCoeff() > 0.0)) return std::numeric_limits<double>::infinity();
-  const Eigen::PartialPivLU<Matrix> lu(block);
-  // Start from the alternating vector on the wearing pairs: the stiffest mode is near it.
-  Vector v(m);
-  for (Index a = 0; a < m; ++a) v[a] = (a % 2 == 0 ? 1.0 : -1.0) * (rate[a] > 0.0 ? 1.0 : 0.0);
-  v.normalize();
-  double lambda = 0.0;
-  for (int iteration = 0; iteration < 200; ++iteration) {
-    Vector next = lu.solve(rate.cwiseProduct(v));
-    const double estimate = next.norm();
-    if (!(estimate > 0.0) || !std::isfinite(estimate)) break;
-    next /= estimate;
-    const bool settled = std::abs(estimate - lambda) <= 1e-4 * estimate;
-    lambda = estimate;
-    v = next;
-    if (settled) break;
+  A.bottomRightCorner(K, K) = f_delta;
+  if (m == 0) return response;
+  const Eigen::PartialPivLU<Matrix> lu(A);
+  Matrix unit = Matrix::Zero(m + K, m);
+  unit.topRows(m).setIdentity();
+  response.G = lu.solve(unit).topRows(m);
+  return response;
+}
+
+Vector implicit_jump(const PressureResponse& response, const Vector& wear_rate, const Vector& cycle_wear, double tau) {
+  Vector jump = tau * cycle_wear;  // the pairs out of contact: explicit (no pressure responds)
+  const Index m = static_cast<Index>(response.closed.size());
+  if (m == 0 || tau == 0.0) return jump;
+  Matrix system = Matrix::Identity(m, m);
+  Vector rhs(m);
+  for (Index a = 0; a < m; ++a) {
+    const Index i = response.closed[a];
+    system.row(a) -= tau * wear_rate[i] * response.G.row(a);
+    rhs[a] = tau * cycle_wear[i];
   }
-  return lambda > 0.0 ? 1.0 / lambda : std::numeric_limits<double>::infinity();
+  const Vector closed = Eigen::PartialPivLU<Matrix>(system).solve(rhs);
+  for (Index a = 0; a < m; ++a) jump[response.closed[a]] = closed[a];
+  return jump;
 }
 
 long CycleJumpControl::next(long jump, double change) const {

@@ -36,57 +36,31 @@ double depth_difference(const contact::WearCycle& a, const contact::WearCycle& b
 
 // (i) Each step's worn volume against k sum_i w_i p_i |ds_i| from the step's own pair results
 // (the pairs' weights from the pairing, their pressures and tangential jumps), over three
-// computed cycles; and a jump of 10 cycles: the volume after it is the one before plus 9
-// times the last computed cycle's plus the new cycle's own. Both to 1e-10: the sums are the
-// same in another order.
+// computed cycles (the first steps after a jump carry it: tests/unit/contact/test_wear.cpp
+// checks the jump), to 1e-10: the sums are the same in another order.
 std::vector<Record> run_wear_bookkeeping(const Context& context) {
   std::vector<Record> records;
   const double k = 1e-8;
-  auto file = punch_wear(context, 20, k, 12, 10);  // cycles 1, 2 (+9 extrapolated) and 12
+  auto file = punch_wear(context, 20, k, 12, 10);  // cycles 1, 11 (a jump of 10) and 12
   file.problem.record_steps = true;
   const auto result = contact::solve_contact(with_operator(context, file.problem), context.progress);
   const auto weights = contact::prepare_contact(file.problem).contacts.front().pairs;
   const auto& contact = result.contacts.front();
   double worst = 0.0, scale = 0.0;
   for (std::size_t s = 1; s < contact.steps.size(); ++s) {
-    const double t = contact.steps[s].time;
-    const bool jumped = std::abs(t - 4.0 - std::round(t - 4.0)) > 1e-9 && t > 4.0 && t <= 4.0 + 0.25 + 1e-9;
+    // The jump of 10 cycles is made between the first cycle's end (t = 4) and the next step.
+    const bool jumped = std::abs(contact.steps[s - 1].time - 4.0) < 1e-9;
     double expected = 0.0;
     for (std::size_t i = 0; i < weights.size(); ++i)
       expected += k * weights[i].weight * std::max(0.0, -contact.step_pairs[s][i].p_n) *
                   std::abs(contact.step_pairs[s][i].jump_t - contact.step_pairs[s - 1][i].jump_t);
-    if (jumped) continue;  // the first step after the jump carries the extrapolation (checked below)
+    if (jumped) continue;
     const double computed = contact.steps[s].worn_volume1 - contact.steps[s - 1].worn_volume1;
     worst = std::max(worst, std::abs(computed - expected));
     scale = std::max(scale, expected);
   }
   records.push_back(compare_scaled("step_worn_volume_error", worst / scale, 0.0, 1.0, 1e-10));
-  // The cycles: 1 (t in (0, 4]), 2 (t in (4, 6]: 2 computed + 9 jumped), 12 (t in (6, 8]).
-  const auto& cycles = contact.wear;
-  if (cycles.size() == 3) {
-    const double v1 = cycles[0].summary.worn_volume1, v2 = cycles[1].summary.worn_volume1;
-    // The volume worn in the first cycle proper (t from 2 to 4) and in the computed second.
-    double at_cycle_start = 0.0, second_own = 0.0;
-    for (std::size_t s = 0; s < contact.steps.size(); ++s)
-      if (std::abs(contact.steps[s].time - 2.0) < 1e-9) at_cycle_start = contact.steps[s].worn_volume1;
-    double before = v1;
-    for (std::size_t s = 0; s < contact.steps.size(); ++s) {
-      const double t = contact.steps[s].time;
-      if (t <= 4.0 + 1e-9 || t > 6.0 + 1e-9) continue;
-      double own = 0.0;
-      for (std::size_t i = 0; i < weights.size(); ++i)
-        own += k * weights[i].weight * std::max(0.0, -contact.step_pairs[s][i].p_n) *
-               std::abs(contact.step_pairs[s][i].jump_t - contact.step_pairs[s - 1][i].jump_t);
-      second_own += own;
-      before = contact.steps[s].worn_volume1;
-    }
-    const double expected = v1 + 9.0 * (v1 - at_cycle_start) + second_own;
-    records.push_back(compare_relative("worn_volume_after_jump", v2, expected, 1e-10));
-    records.push_back(report_value("cycles_after_jump", static_cast<double>(cycles[1].cycle)));
-    (void)before;
-  } else {
-    records.push_back(compare_relative("computed_cycles", static_cast<double>(cycles.size()), 3.0, 0.0));
-  }
+  records.push_back(report_value("cycles", static_cast<double>(contact.wear.back().cycle)));
   tag(records, 0, "archard-wear", {{"check", "worn volume bookkeeping"}, {"contact_elements", "20"}});
   return records;
 }

@@ -108,7 +108,6 @@ struct WearCycle {
   int computed = 1;      // computed cycles so far
   long jump = 1;         // the cycles the last computed one stood for (its ΔN)
   double pressure_change = 0.0;  // against the previous computed cycle's end, relative to its peak
-  double stable_jump = 0.0;      // the longest stable jump after this cycle (wear.hpp; 0: not repeated)
   std::vector<double> depth1, depth2;  // per pair: worn depth of side 1 and side 2
   std::vector<PairResult> pairs;       // at the cycle's end
   ContactSummary summary;              // at the cycle's end (worn volumes, a, c, peak pressure)
@@ -180,7 +179,6 @@ struct LoadHistory : ContactInterfaceResult {
   int steps_taken = 0;
   int rejected_steps = 0;               // adaptive steps redone in halves
   int rejected_jumps = 0;               // cycle jumps undone (wear.hpp)
-  std::vector<std::string> warnings;    // a fixed cycle jump beyond the stable one
   NewtonSystemCounts newton_systems;
   Vector x;                             // final (lambda_n, tau) per pair
   Vector delta;                         // final motions (CondensedProblem::motions)

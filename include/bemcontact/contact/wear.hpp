@@ -8,19 +8,20 @@
 // depth is that of the point the pair faces.
 //
 // Cycle jumping [McCollDingLeen2004, section 3]: the part of the history from cycle_start to
-// end_time is one load cycle; after a computed cycle, the wear of ΔN - 1 more cycles is
-// extrapolated from it (forward Euler in the cycle count) and the next cycle is computed on
-// the worn gap. Two rules bound ΔN:
-//  - stability: per cycle the depths grow by dh = k S p(h) (S a pair's slip path over the
-//    cycle), and a gap change moves the pressures of the pairs in contact by
-//    d lambda = -M_cc^-1 dh (M_cc the normal block of the condensed flexibility over them; a
-//    force load only removes a uniform part). Forward Euler in N is free of oscillation
-//    while ΔN Lambda <= 1, Lambda the largest eigenvalue of M_cc^-1 diag(k S) (the stiffest
-//    mode alternates from pair to pair: it is what a too long jump excites first), so
-//    ΔN <= 1 / Lambda (cycle_jump_bound);
-//  - accuracy (adaptive ΔN): the largest pressure change between the ends of two computed
-//    cycles stays within max_pressure_change of the peak pressure; a jump that exceeds it is
-//    undone and halved, one that changed them by less than half of it doubles ΔN.
+// end_time is one load cycle; after a computed cycle, the wear of tau = ΔN - 1 more cycles
+// is extrapolated from it and the next cycle is computed on the worn gap. Per cycle the
+// depths grow by r(h) ~ D p(h) (D = k S, S a pair's slip path over the cycle), and a gap
+// change moves the pressures of the pairs in contact by dp = G dh, G the normal block of the
+// inverse of the condensed problem bordered by its motions (pressure_response: a force
+// load's approach follows, so a uniform wear under a force leaves the pressures alone). The
+// explicit jump dh = tau r is stable only while tau |eig(D G)| <= 1, which the stiffest,
+// pair-to-pair alternating mode limits to tens of cycles on fine meshes; the jump is
+// linearly implicit instead (Rosenbrock-Euler),
+//   (I - tau D G) dh = tau r,
+// stable for every ΔN and first order in it like the explicit one. ΔN then follows accuracy
+// (adaptive ΔN): the largest pressure change between the ends of two computed cycles stays
+// within max_pressure_change of the peak pressure; a jump that exceeds it is undone and
+// halved, one that changed them by less than half of it doubles ΔN.
 #include <vector>
 
 #include "bemcontact/contact/pairing.hpp"
@@ -53,11 +54,18 @@ double worn_volume(const std::vector<ContactPair>& pairs, const Vector& depth, I
 // to the earlier peak pressure (0 when nothing presses).
 double relative_pressure_change(const Vector& before, const Vector& after);
 
-// 1 / Lambda: the longest stable jump (see above) for the flexibility M (2N x 2N, rows and
-// columns (w_n, w_t) per pair), the solution x = (lambda_n, tau) per pair (the pairs with
-// lambda_n > 0 are in contact) and each pair's wear rate k S per unit pressure; infinity
-// when nothing in contact wears. Inverse power iteration on M_cc^-1 diag(k S).
-double cycle_jump_bound(const Matrix& M, const Vector& x, const Vector& wear_rate);
+// G (above) at the solution x = (lambda_n, tau) per pair of the condensed problem: the pairs
+// with lambda_n > 0 are in contact; the tangential tractions are held.
+struct PressureResponse {
+  std::vector<Index> closed;  // the pairs in contact
+  Matrix G;                   // d lambda_closed / d gap_closed
+};
+PressureResponse pressure_response(const Matrix& M, const Matrix& b, const Matrix& f, const Matrix& f_delta,
+                                   const Vector& x);
+
+// The linearly implicit jump (above): per pair, the extra depth of tau more cycles from the
+// last computed cycle's wear r and the wear rate D = k S per unit pressure.
+Vector implicit_jump(const PressureResponse& response, const Vector& wear_rate, const Vector& cycle_wear, double tau);
 
 // Adaptive cycle jumping: after a jump of `jump` cycles that changed the pressures by
 // `change` (relative), whether to undo it, and the next jump.

@@ -167,7 +167,6 @@ CsvTable wear_table(const contact::ContactInterfaceResult& result) {
                   {"computed", i},
                   {"jump", i},
                   {"pressure_change", c},
-                  {"stable_jump", c},
                   {"worn_volume1", c},
                   {"worn_volume2", c},
                   {"max_depth1", c},
@@ -184,7 +183,7 @@ CsvTable wear_table(const contact::ContactInterfaceResult& result) {
     const double max1 = w.depth1.empty() ? 0.0 : *std::max_element(w.depth1.begin(), w.depth1.end());
     const double max2 = w.depth2.empty() ? 0.0 : *std::max_element(w.depth2.begin(), w.depth2.end());
     table.row() << static_cast<double>(w.cycle) << static_cast<double>(w.computed) << static_cast<double>(w.jump)
-                << w.pressure_change << w.stable_jump << s.worn_volume1 << s.worn_volume2 << max1 << max2 << s.contact_radius
+                << w.pressure_change << s.worn_volume1 << s.worn_volume2 << max1 << max2 << s.contact_radius
                 << s.contact_start << s.contact_end << s.stick_radius << s.peak_pressure << s.centre_pressure
                 << static_cast<double>(s.pairs_in_contact);
   }
@@ -237,7 +236,6 @@ nlohmann::json interface_json(const contact::ContactInterfaceResult& result) {
                         {"computed", w.computed},
                         {"jump", w.jump},
                         {"pressure_change", w.pressure_change},
-                        {"stable_jump", w.stable_jump},
                         {"worn_volume1", w.summary.worn_volume1},
                         {"worn_volume2", w.summary.worn_volume2},
                         {"a", w.summary.contact_radius},
