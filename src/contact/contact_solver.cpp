@@ -342,6 +342,7 @@ struct HistoryRun {
   Vector dissipated;   // per group
   WearDepths wear;     // empty without wear
   Vector slip_path;    // per pair: sum |slip increment| since the cycle started (wear only)
+  std::vector<double> step_ends;  // the last stretch's accepted steps (a repeated cycle's plan)
   int taken = 0;
 };
 
@@ -506,9 +507,11 @@ struct HistoryHooks {
   const bem::ProgressCallback& progress;
 };
 
-// The steps from pseudo-time `from` to `to`, recorded at their times + offset.
+// The steps from pseudo-time `from` to `to`, recorded at their times + offset. A plan (the
+// step ends of the same stretch before: a repeated cycle) sets the steps, adaptive stepping
+// halving them where the state now changes faster; without one they start at the base step.
 void advance(const HistoryData& data, double from, double to, double offset, const HistoryHooks& hooks,
-             HistoryRun& run, LoadHistory& history) {
+             HistoryRun& run, LoadHistory& history, const std::vector<double>& plan = {}) {
   const auto& problem = data.problem;
   const double end = problem.end_time;
   auto corners = history_corners(data.condensed, end);
@@ -518,11 +521,14 @@ void advance(const HistoryData& data, double from, double to, double offset, con
   // Adaptive stepping matters for friction: frictionless contact does not depend on the path.
   const bool adaptive = problem.adaptive && problem.has_friction();
   double t = from, dt = base_step;
-  std::size_t corner = 0;
+  std::size_t corner = 0, planned = 0;
   int taken = 0;  // in this stretch (max_steps bounds each cycle)
+  run.step_ends.clear();
   while (t < to - 1e-12 * end) {
     while (corner < corners.size() && corners[corner] <= t + 1e-12 * end) ++corner;
-    const double t_next = std::min(t + dt, corners[corner]);
+    while (planned < plan.size() && plan[planned] <= t + 1e-12 * end) ++planned;
+    double t_next = std::min(t + dt, corners[corner]);
+    if (planned < plan.size()) t_next = std::min(t_next, plan[planned]);
     StepOutput trial = solve_step(data, run.previous, t_next);
     add_iterations(run.totals, trial);
     const double h = t_next - t;
@@ -547,6 +553,7 @@ void advance(const HistoryData& data, double from, double to, double offset, con
     t = t_next;
     run.state = trial_state;
     record_history_step(data, run, t, offset, hooks.report, history);
+    run.step_ends.push_back(t);
     carry_over(run.step, run.previous);
     // Grow again after an accepted step.
     if (adaptive && dt < base_step) dt = std::min(base_step, 2.0 * dt);
@@ -653,7 +660,8 @@ void repeat_cycles(const HistoryData& data, const HistoryHooks& hooks, WearDepth
     run.previous.gap = data.condensed.gap + run.wear.total();
     run.slip_path.setZero();
     const WearDepths start_of_cycle = run.wear;
-    advance(data, cycles.start, data.problem.end_time, computed * period, hooks, run, history);
+    const std::vector<double> plan = run.step_ends;
+    advance(data, cycles.start, data.problem.end_time, computed * period, hooks, run, history, plan);
     const double change = relative_pressure_change(saved.step.x, run.step.x);
     if (adaptive && control.reject(dn, change)) {
       run = saved;
