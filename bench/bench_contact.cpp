@@ -13,6 +13,9 @@
 //    (examples/contact_compliant_cylinder.toml with the unilateral law).
 //  - BM_FrettingCycle: examples/fretting_cylinder.toml (P, then Q = 0.6 mu P forth, back
 //    and forth, adaptive steps) with n elements per contact zone.
+//  - BM_FrettingWear: examples/fretting_wear.toml (the same cylinder, Archard wear on both
+//    bodies, k = 1e-7) over 10^5 cycles with n elements per zone (n = 199: 200 pairs);
+//    counters: the computed cycles and the jumps undone.
 // Counters: pairs, the phases' seconds, Newton iterations and systems (factored, updated
 // through the last factors, reused), and the process's peak resident memory (MB).
 #include <benchmark/benchmark.h>
@@ -87,18 +90,20 @@ void add_counters(benchmark::State& state, const contact::ContactResult& result)
   state.counters["peak_MB"] = peak_memory_mb();
 }
 
-void run_case(benchmark::State& state, const contact::ContactProblem& problem) {
+// The result of the last run (empty after an error, which the state reports).
+contact::ContactResult run_case(benchmark::State& state, const contact::ContactProblem& problem) {
   contact::ContactResult result;
   for (auto _ : state) {
     try {
       result = contact::solve_contact(problem);
     } catch (const bemcontact::Error& error) {
       state.SkipWithError(error.what());
-      return;
+      return {};
     }
     benchmark::DoNotOptimize(result.summary.contact_radius);
   }
   add_counters(state, result);
+  return result;
 }
 
 
@@ -121,8 +126,22 @@ void BM_FrettingCycle(benchmark::State& state) {
   run_case(state, file.problem);
 }
 
+void BM_FrettingWear(benchmark::State& state) {
+  std::ifstream in(std::string(BEMCONTACT_EXAMPLES_DIR) + "/fretting_wear.toml");
+  std::ostringstream text;
+  text << in.rdbuf();
+  auto file = io::parse_contact_problem(text.str(), "fretting_wear.toml", {{"n", static_cast<double>(state.range(0))}});
+  file.problem.drop_interior_points();
+  const auto result = run_case(state, file.problem);
+  if (result.wear.empty()) return;
+  state.counters["cycles"] = static_cast<double>(result.wear.back().cycle);
+  state.counters["computed_cycles"] = result.wear.back().computed;
+  state.counters["undone_jumps"] = result.rejected_jumps;
+}
+
 }  // namespace
 
+BENCHMARK(BM_FrettingWear)->Arg(59)->Arg(99)->Arg(199)->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK(BM_RigidCylinder)->Arg(500)->Arg(1000)->Arg(2000)->Arg(4000)->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK(BM_FrettingCycle)->Arg(60)->Arg(120)->Arg(240)->Arg(480)->Unit(benchmark::kMillisecond)->Iterations(1);
 
