@@ -1,5 +1,5 @@
 #pragma once
-// Archard's wear law on the pairs of a contact [Archard1953; McCollDingLeen2004, (1)-(2)]:
+// Archard's wear law on the pairs of a contact [Archard1953] (the form of [McCollDingLeen2004]):
 // in each load step the worn depth of side s at a pair grows by
 //   dh_s = k_s p_n |ds|,
 // p_n the pair's pressure at the end of the step and ds its slip increment (the change of
@@ -7,7 +7,7 @@
 // the pair's gap d from the next step on. Small slip: a pair keeps its partner, so side 2's
 // depth is that of the point the pair faces.
 //
-// Cycle jumping [McCollDingLeen2004, section 3]: the part of the history from cycle_start to
+// Cycle jumping [McCollDingLeen2004]: the part of the history from cycle_start to
 // end_time is one load cycle; after a computed cycle, the wear of tau = ΔN - 1 more cycles
 // is extrapolated from it and the next cycle is computed on the worn gap. Per cycle the
 // depths grow by r(h) ~ D p(h) (D = k S, S a pair's slip path over the cycle), and a gap
