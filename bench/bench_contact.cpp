@@ -117,22 +117,20 @@ void BM_RigidCylinder(benchmark::State& state) {
   run_case(state, file.problem);
 }
 
-void BM_FrettingCycle(benchmark::State& state) {
-  std::ifstream in(std::string(BEMCONTACT_EXAMPLES_DIR) + "/fretting_cylinder.toml");
+// An example with n elements per contact zone, without its stress points.
+contact::ContactProblem example_with_zones(const std::string& name, benchmark::State& state) {
+  std::ifstream in(std::string(BEMCONTACT_EXAMPLES_DIR) + "/" + name);
   std::ostringstream text;
   text << in.rdbuf();
-  auto file = io::parse_contact_problem(text.str(), "fretting_cylinder.toml", {{"n", static_cast<double>(state.range(0))}});
+  auto file = io::parse_contact_problem(text.str(), name, {{"n", static_cast<double>(state.range(0))}});
   file.problem.drop_interior_points();
-  run_case(state, file.problem);
+  return file.problem;
 }
 
+void BM_FrettingCycle(benchmark::State& state) { run_case(state, example_with_zones("fretting_cylinder.toml", state)); }
+
 void BM_FrettingWear(benchmark::State& state) {
-  std::ifstream in(std::string(BEMCONTACT_EXAMPLES_DIR) + "/fretting_wear.toml");
-  std::ostringstream text;
-  text << in.rdbuf();
-  auto file = io::parse_contact_problem(text.str(), "fretting_wear.toml", {{"n", static_cast<double>(state.range(0))}});
-  file.problem.drop_interior_points();
-  const auto result = run_case(state, file.problem);
+  const auto result = run_case(state, example_with_zones("fretting_wear.toml", state));
   if (result.wear.empty()) return;
   state.counters["cycles"] = static_cast<double>(result.wear.back().cycle);
   state.counters["computed_cycles"] = result.wear.back().computed;

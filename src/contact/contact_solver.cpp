@@ -474,6 +474,7 @@ void record_history_step(const HistoryData& data, const HistoryRun& run, double 
   }
   StepRecord record;
   record.time = t + offset;
+  record.load_time = t;
   record.forces = condensed.force_at(t);
   record.motions = report ? report(step.x, step.delta, t) : step.delta;
   history.records.push_back(record);
@@ -817,7 +818,7 @@ void add_step_boundaries(const ContactProblem& problem, const ContactModel& mode
     std::vector<bem::BoundarySolution> regions_at_step;
     for (std::size_t r = 0; r < regions.size(); ++r) {
       auto boundary = model.region_solution(static_cast<int>(r), history.step_x[k], history.step_delta[k],
-                                            result.records[k].time);
+                                            result.records[k].load_time);
       boundary.stress =
           bem::boundary_stresses(regions[r].mesh, problem.analysis, regions[r].definition.material, boundary);
       regions_at_step.push_back(std::move(boundary));

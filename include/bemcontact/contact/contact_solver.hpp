@@ -128,6 +128,7 @@ struct ContactInterfaceResult {
 // of the force loads, then the free bodies' motions), for force-displacement loops.
 struct StepRecord {
   double time = 0.0;
+  double load_time = 0.0;  // where the loads were taken: time less a repeated cycle's shift (wear.hpp)
   Vector forces;   // K: prescribed force of each motion at `time` (0 for free bodies)
   Vector motions;  // K; in solve_contact's result the free bodies' are their rigid motions (free_motions.hpp)
 };
