@@ -55,11 +55,11 @@ struct PairLaws {
   std::vector<NormalCompliance> compliance;
   MollifierRows mollifier;  // the non-local contacts' pairs (nonlocal_friction.hpp); empty: none
   WearCoefficients wear;    // Archard's k of each side per pair (wear.hpp)
-  // The coefficient of the threshold g = beta_eff p_n: beta, or beta c_t / c_n for a
-  // compliant pair (m_t = m_n).
-  double threshold_coefficient(Index i) const {
+  // The slip threshold g of pair i at its pressure |p_n| = measure: beta |p_n|, or beta c_t
+  // pen^m_t for a compliant pair (NormalCompliance::threshold).
+  double threshold(Index i, double measure) const {
     const auto k = static_cast<std::size_t>(i);
-    return kind[k] == ContactKind::compliant ? friction[i] * compliance[k].threshold_ratio() : friction[i];
+    return kind[k] == ContactKind::compliant ? friction[i] * compliance[k].threshold(measure) : friction[i] * measure;
   }
 };
 PairLaws pair_laws(const ContactProblem& problem, const std::vector<Index>& groups) {
@@ -119,13 +119,13 @@ std::vector<PairResult> pair_results(const std::vector<ContactPair>& pairs, cons
     r.p_t = step.x[2 * i + 1];
     r.jump_n = step.w[2 * i] - interference[first + i];
     r.jump_t = step.w[2 * i + 1];
-    const double friction = laws.threshold_coefficient(first + i);
+    const double friction = laws.friction[first + i];
     double measure = std::abs(lambda);
     if (!laws.mollifier.empty() && !laws.mollifier[static_cast<std::size_t>(first + i)].empty())
       // the mollified |p_n| (step.x holds this group's pairs from `first` on)
       measure = mollified(laws.mollifier[static_cast<std::size_t>(first + i)],
                           [&](Index j) { return std::abs(step.x[2 * (j - first)]); });
-    const double g = friction * measure;
+    const double g = laws.threshold(first + i, measure);
     r.slip_ratio = g > 0.0 ? std::abs(r.p_t) / g : 0.0;
     const bool open = may_open(laws.kind[static_cast<std::size_t>(first + i)]) && lambda <= 1e-12 * scale;
     if (open) r.status = PairStatus::open;

@@ -17,15 +17,14 @@ double penalty_scale(const CondensedProblem& p) {
 }
 
 // What Coulomb's threshold multiplies at pair i: lambda_n (unilateral, lambda_n >= 0),
-// |lambda_n| (bilateral), and for a compliant pair, whose threshold beta c_t pen^m is written
-// with the pressure lambda_n = c_n pen^m it carries, (c_t / c_n) lambda_n (m_t = m_n: the
-// reader refuses other exponents for now).
+// |lambda_n| (bilateral), and for a compliant pair, whose threshold beta c_t pen^m_t is written
+// with the pressure lambda_n = c_n pen^m_n it carries, c_t (lambda_n / c_n)^(m_t / m_n)
+// (NormalCompliance::threshold).
 double threshold_measure(const StepInput& in, Index i, double lambda_n) {
   switch (in.kind[i]) {
     case ContactKind::unilateral: return std::max(lambda_n, 0.0);
     case ContactKind::bilateral: return std::abs(lambda_n);
-    case ContactKind::compliant:
-      return in.compliance[i].threshold_ratio() * std::max(lambda_n, 0.0);
+    case ContactKind::compliant: return in.compliance[i].threshold(lambda_n);
   }
   return 0.0;
 }
@@ -35,7 +34,7 @@ double threshold_slope(const StepInput& in, Index i, double lambda_n) {
   switch (in.kind[i]) {
     case ContactKind::unilateral: return 1.0;
     case ContactKind::bilateral: return lambda_n < 0.0 ? -1.0 : 1.0;
-    case ContactKind::compliant: return in.compliance[i].threshold_ratio();
+    case ContactKind::compliant: return in.compliance[i].threshold_slope(lambda_n);
   }
   return 0.0;
 }
@@ -217,6 +216,9 @@ struct NewtonSystem {
   // pairs where the law is non-local (their mollified pressure): slip_rows[i] holds (j, c_ij),
   // slip_columns[j] the same entries as (i, c_ij), for the column of lambda_j.
   Vector slip_factor;
+  // A slipping tau whose threshold is not linear in lambda_n (normal compliance with m_t !=
+  // m_n) is its tangent at the iterate: tau_i = slip_factor_i lambda_i + slip_offset_i.
+  Vector slip_offset;
   SlipCoupling slip_rows, slip_columns;
   // A compliant pair in contact: its row w_n - lambda_n / k = ... with k the law's stiffness
   // at the linearisation point pen0; normal_shift_i = 1 / k (0 for the other laws), and
@@ -231,7 +233,9 @@ void choose_free_unknowns(const StepInput& in, const Vector& x, const Vector& w,
                           NewtonSystem& system) {
   const Index n = in.problem->pairs;
   system.slip_factor = Vector::Zero(n);
+  system.slip_offset = Vector::Zero(n);
   system.normal_shift = Vector::Zero(n);
+
   system.normal_offset = Vector::Zero(n);
   for (Index i = 0; i < n; ++i) {
     if (state[2 * i] == 1) system.free_dofs.push_back(2 * i);
@@ -246,7 +250,10 @@ void choose_free_unknowns(const StepInput& in, const Vector& x, const Vector& w,
     if (state[2 * i + 1] < 2) continue;
     const double s = state[2 * i + 1] == 2 ? 1.0 : -1.0;
     if (!is_nonlocal(in, i)) {
-      system.slip_factor[i] = in.friction[i] * s * threshold_slope(in, i, x[2 * i]);
+      const double lambda = x[2 * i];
+      system.slip_factor[i] = in.friction[i] * s * threshold_slope(in, i, lambda);
+      if (compliant && in.compliance[i].friction_exponent != in.compliance[i].exponent)
+        system.slip_offset[i] = in.friction[i] * s * threshold_measure(in, i, lambda) - system.slip_factor[i] * lambda;
       continue;
     }
     // Non-local: tau_i = s beta sum_j W_ij measure_j, over the pairs j in contact.
@@ -277,6 +284,13 @@ void newton_rhs(const StepInput& in, NewtonSystem& system) {
     if (row % 2 == 0) system.rhs[a] += system.normal_offset[i];
   }
   for (Index m = 0; m < K; ++m) system.rhs[reduced + m] = in.target[m];
+  // The slip offsets' share of every row (known terms of the eliminated tau).
+  for (Index j = 0; j < p.pairs; ++j) {
+    const double offset = system.slip_offset[j];
+    if (offset == 0.0) continue;
+    for (Index a = 0; a < reduced; ++a) system.rhs[a] -= p.M(system.free_dofs[a], 2 * j + 1) * offset;
+    for (Index m = 0; m < K; ++m) system.rhs[reduced + m] -= p.f(m, 2 * j + 1) * offset;
+  }
 }
 
 // The Jacobian's entry in the row of unknown `row` and the column of unknown `column`:
@@ -459,7 +473,8 @@ void newton_iterate(const NewtonSystem& system, const Vector& z, Index n, Index 
   x_new = Vector::Zero(2 * n);
   for (Index k = 0; k < reduced; ++k) x_new[system.free_dofs[k]] = z[k];
   for (Index i = 0; i < n; ++i)
-    if (system.slip_factor[i] != 0.0) x_new[2 * i + 1] = system.slip_factor[i] * x_new[2 * i];
+    if (system.slip_factor[i] != 0.0 || system.slip_offset[i] != 0.0)
+      x_new[2 * i + 1] = system.slip_factor[i] * x_new[2 * i] + system.slip_offset[i];
   if (!system.slip_rows.empty())
     for (Index i = 0; i < n; ++i)
       for (const auto& [j, coefficient] : system.slip_rows[static_cast<std::size_t>(i)])

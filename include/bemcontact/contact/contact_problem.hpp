@@ -29,10 +29,23 @@ struct NormalCompliance {
   double stiffness = 0.0;           // c_n > 0 (pressure per length^m_n)
   double exponent = 1.0;            // m_n >= 1
   double friction_stiffness = 0.0;  // c_t > 0 (default c_n)
-  double friction_exponent = 1.0;   // m_t (= m_n: other exponents are not available yet)
+  double friction_exponent = 1.0;   // m_t >= m_n (default m_n; the reader refuses m_t < m_n)
   double pressure(double pen) const { return pen > 0.0 ? stiffness * std::pow(pen, exponent) : 0.0; }
-  // The threshold beta c_t pen^m per unit of beta p_n = beta c_n pen^m (m_t = m_n).
-  double threshold_ratio() const { return friction_stiffness / stiffness; }
+  // The threshold per unit of beta, written with the pressure the pair carries:
+  // c_t pen^m_t with pen = (lambda_n / c_n)^(1/m_n), i.e. c_t (lambda_n / c_n)^q, q = m_t / m_n
+  // (c_t / c_n lambda_n when m_t = m_n); 0 for lambda_n <= 0.
+  double threshold(double lambda_n) const {
+    if (!(lambda_n > 0.0)) return 0.0;
+    const double q = friction_exponent / exponent;
+    return q == 1.0 ? friction_stiffness / stiffness * lambda_n
+                    : friction_stiffness * std::pow(lambda_n / stiffness, q);
+  }
+  // d threshold / d lambda_n (0 for lambda_n <= 0).
+  double threshold_slope(double lambda_n) const {
+    const double q = friction_exponent / exponent;
+    if (q == 1.0) return friction_stiffness / stiffness;
+    return lambda_n > 0.0 ? q * threshold(lambda_n) / lambda_n : 0.0;
+  }
   bool operator==(const NormalCompliance&) const = default;
 };
 

@@ -55,30 +55,58 @@ TEST(NormalCompliance, EveryPairFollowsTheLaw) {
 // A tangential force near the friction limit Q = beta (c_t / c_n) P (on an elastic block:
 // on the example's near-rigid one the tangential stiffness is 10^5 times the normal one and
 // the step stalls at a residual of 1e-7): most pairs slip, with p_t = beta (c_t / c_n) p_n.
+// With m_t > m_n (2 against 1; 3 against 2.2, c_t giving the centre the threshold beta p0)
+// under Q = 0.1 P: every slipping pair carries beta c_t pen^m_t of its own interpenetration.
 TEST(NormalCompliance, GrossSlipFollowsTheThreshold) {
-  auto text = replaced(compliant_text(), "normal_exponent = \"m\"",
-                       "normal_exponent = \"m\"\nfriction = 0.3\nfriction_stiffness = 2.0e4");
-  text = replaced(text, "[load]\nbody = \"cylinder\"\ncomponent = 2\nforce = \"-P\"\n",
-                  "[[load]]\nname = \"P\"\nbody = \"cylinder\"\ncomponent = 2\nforce = \"-P\"\n"
-                  "amplitude = [[0.0, 0.0], [1.0, 1.0]]\n"
-                  "[[load]]\nname = \"Q\"\nbody = \"cylinder\"\ncomponent = 1\nforce = \"0.6 * P\"\n"
-                  "amplitude = [[0.0, 0.0], [1.0, 0.0], [2.0, 0.999]]\n");
-  const auto file = io::parse_contact_problem(text, "compliant.toml", {{"E_block", 70000.0}});
-  const auto result = contact::solve_contact(file.problem);
-  double peak = 0.0;
-  for (const auto& pair : result.pairs) peak = std::max(peak, -pair.p_n);
-  int slipping = 0;
-  for (const auto& pair : result.pairs) {
-    if (pair.status == contact::PairStatus::open) continue;
-    EXPECT_LE(std::abs(pair.p_t), 0.6 * -pair.p_n + 1e-9 * peak) << pair.coordinate;
-    if (pair.status == contact::PairStatus::slip) {
-      ++slipping;
-      EXPECT_NEAR(std::abs(pair.p_t), 0.6 * -pair.p_n, 1e-7 * peak) << pair.coordinate;
+  const std::string loads = "[[load]]\nname = \"P\"\nbody = \"cylinder\"\ncomponent = 2\nforce = \"-P\"\n"
+                            "amplitude = [[0.0, 0.0], [1.0, 1.0]]\n"
+                            "[[load]]\nname = \"Q\"\nbody = \"cylinder\"\ncomponent = 1\nforce = \"Qr * P\"\n"
+                            "amplitude = [[0.0, 0.0], [1.0, 0.0], [2.0, 1.0]]\n";
+  const auto with_friction = [&](const std::string& law) {
+    auto text = replaced(compliant_text(), "normal_exponent = \"m\"", "normal_exponent = \"m\"\nfriction = 0.3\n" + law);
+    text = replaced(text, "\nm = 1.0", "\nm = 1.0\nQr = 0.1\nct = 1.0e4\nmt = 1.0");
+    return replaced(text, "[load]\nbody = \"cylinder\"\ncomponent = 2\nforce = \"-P\"\n", loads);
+  };
+  {
+    const auto file = io::parse_contact_problem(with_friction("friction_stiffness = 2.0e4"), "compliant.toml",
+                                                {{"E_block", 70000.0}, {"Qr", 0.6 * 0.999}});
+    const auto result = contact::solve_contact(file.problem);
+    double peak = 0.0;
+    for (const auto& pair : result.pairs) peak = std::max(peak, -pair.p_n);
+    int slipping = 0;
+    for (const auto& pair : result.pairs) {
+      if (pair.status == contact::PairStatus::open) continue;
+      EXPECT_LE(std::abs(pair.p_t), 0.6 * -pair.p_n + 1e-9 * peak) << pair.coordinate;
+      if (pair.status == contact::PairStatus::slip) {
+        ++slipping;
+        EXPECT_NEAR(std::abs(pair.p_t), 0.6 * -pair.p_n, 1e-7 * peak) << pair.coordinate;
+      }
     }
+    EXPECT_GT(slipping, result.summary.pairs_in_contact / 2);
+    EXPECT_NEAR(std::abs(result.summary.tangential_force), 0.999 * 0.6 * file.parameters.at("P"),
+                1e-6 * file.parameters.at("P"));
   }
-  EXPECT_GT(slipping, result.summary.pairs_in_contact / 2);
-  EXPECT_NEAR(std::abs(result.summary.tangential_force), 0.999 * 0.6 * file.parameters.at("P"),
-              1e-6 * file.parameters.at("P"));
+  struct Case {
+    double m, cn, mt, ct;
+  };
+  for (const Case& law : {Case{1.0, 1.0e4, 2.0, 2.0e6}, Case{2.2, 5.8e6, 3.0, 3.74e8}}) {
+    const auto file = io::parse_contact_problem(
+        with_friction("friction_stiffness = \"ct\"\nfriction_exponent = \"mt\""), "compliant.toml",
+        {{"E_block", 70000.0}, {"Qr", 0.1}, {"m", law.m}, {"cn", law.cn}, {"mt", law.mt}, {"ct", law.ct}});
+    const auto result = contact::solve_contact(file.problem);
+    double peak = 0.0;
+    for (const auto& pair : result.pairs) peak = std::max(peak, -pair.p_n);
+    int slipping = 0;
+    for (const auto& pair : result.pairs) {
+      if (pair.status != contact::PairStatus::slip) continue;
+      ++slipping;
+      const double pen = std::max(pair.jump_n - pair.gap, 0.0);
+      EXPECT_NEAR(std::abs(pair.p_t), 0.3 * law.ct * std::pow(pen, law.mt), 1e-9 * peak) << law.mt << " " << pair.coordinate;
+      EXPECT_NEAR(-pair.p_n, law.cn * std::pow(pen, law.m), 1e-8 * peak) << law.mt << " " << pair.coordinate;
+    }
+    EXPECT_GT(slipping, result.summary.pairs_in_contact / 3) << law.mt;
+    EXPECT_NEAR(std::abs(result.summary.tangential_force), 0.1 * file.parameters.at("P"), 1e-6 * file.parameters.at("P"));
+  }
 }
 
 TEST(NormalCompliance, KeysAreCheckedWhereTheyAreRead) {
@@ -97,8 +125,11 @@ TEST(NormalCompliance, KeysAreCheckedWhereTheyAreRead) {
       compliance_input_error(replaced(compliant_text(), "normal_exponent = \"m\"", "normal_exponent = \"m\"\nfriction_stiffness = 1.0"));
   EXPECT_TRUE(mentions(no_friction, "with friction = 0 it has no effect")) << no_friction;
   const auto exponent = compliance_input_error(replaced(
-      compliant_text(), "normal_exponent = \"m\"", "normal_exponent = \"m\"\nfriction = 0.2\nfriction_exponent = 1.5"));
-  EXPECT_TRUE(mentions(exponent, "not available yet")) << exponent;
+      compliant_text(), "normal_exponent = \"m\"", "normal_exponent = 2.2\nfriction = 0.2\nfriction_exponent = 1.5"));
+  EXPECT_TRUE(mentions(exponent, "friction_exponent") && mentions(exponent, "m_t >= m_n")) << exponent;
+  EXPECT_EQ(compliance_input_error(replaced(compliant_text(), "normal_exponent = \"m\"",
+                                            "normal_exponent = 1.0\nfriction = 0.2\nfriction_exponent = 1.5")),
+            "no error");
   const auto thesis =
       compliance_input_error(replaced(compliant_text(), "[load]", "[solver]\nalgorithm = \"thesis\"\n\n[load]"));
   EXPECT_TRUE(mentions(thesis, "Newton algorithm only")) << thesis;
