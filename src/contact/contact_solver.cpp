@@ -419,6 +419,18 @@ void reject_runaway_motions(const HistoryData& data, StepOutput& trial) {
     message << " (a force that no contact state can carry, such as a tangential force above the friction limit "
                "or without friction, has no solution)";
   }
+  for (const auto& contact : problem.contacts) {
+    const auto& law = contact.law.compliance;
+    if (contact.law.kind != ContactKind::compliant || contact.law.friction == 0.0 ||
+        !(law.friction_exponent < law.exponent))
+      continue;
+    message << ". Contact '" << contact.name << "' has friction_exponent " << law.friction_exponent
+            << " below normal_exponent " << law.exponent
+            << ": where pairs close the threshold c_t pen^m_t far exceeds beta times the pressure, which the Newton "
+               "iteration may not resolve at small loads (docs/contact.md, Normal compliance); equal load steps "
+               "(adaptive = false) that start at a larger load may converge";
+    break;
+  }
   throw SolverError(message.str(), {"contact step", trial.newton_iterations > 0 ? trial.newton_iterations
                                                                                 : trial.kalker_iterations,
                                      trial.residual, taken + 1, t_next});

@@ -249,7 +249,25 @@ void choose_free_unknowns(const StepInput& in, const Vector& x, const Vector& w,
     }
     if (state[2 * i + 1] < 2) continue;
     const double s = state[2 * i + 1] == 2 ? 1.0 : -1.0;
+    if (compliant && state[2 * i] == 1 && !is_nonlocal(in, i) &&
+        in.compliance[i].friction_exponent < in.compliance[i].exponent) {
+      // m_t < m_n: the threshold is concave in lambda, its slope infinite at 0 (the Newton
+      // iteration failed with it). It is linearised in pen instead, at the normal law's point
+      // pen0, pen following lambda through the normal row lambda = c_n pen0^m_n + k (pen -
+      // pen0): tau = s beta (c_t pen0^m_t + B (lambda - c_n pen0^m_n)), B = c_t m_t
+      // pen0^(m_t - 1) / k, finite where a pair closes (pen0 > 0 there).
+      const auto& law = in.compliance[i];
+      const double pen = linearisation_point(law, w[2 * i] - in.gap[i], c);
+      const double threshold0 = law.friction_stiffness * std::pow(pen, law.friction_exponent);
+      const double slope = law.friction_stiffness * law.friction_exponent *
+                           std::pow(pen, law.friction_exponent - 1.0) * system.normal_shift[i];
+      system.slip_factor[i] = s * in.friction[i] * slope;
+      system.slip_offset[i] = s * in.friction[i] * (threshold0 - slope * law.pressure(pen));
+      continue;
+    }
     if (!is_nonlocal(in, i)) {
+      // The threshold linearised in lambda at the iterate (convex in it, or linear, for
+      // m_t >= m_n): a known term when it is not linear.
       const double lambda = x[2 * i];
       system.slip_factor[i] = in.friction[i] * s * threshold_slope(in, i, lambda);
       if (compliant && in.compliance[i].friction_exponent != in.compliance[i].exponent)

@@ -29,7 +29,7 @@ struct NormalCompliance {
   double stiffness = 0.0;           // c_n > 0 (pressure per length^m_n)
   double exponent = 1.0;            // m_n >= 1
   double friction_stiffness = 0.0;  // c_t > 0 (default c_n)
-  double friction_exponent = 1.0;   // m_t >= m_n (default m_n; the reader refuses m_t < m_n)
+  double friction_exponent = 1.0;   // m_t >= 1 (default m_n)
   double pressure(double pen) const { return pen > 0.0 ? stiffness * std::pow(pen, exponent) : 0.0; }
   // The threshold per unit of beta, written with the pressure the pair carries:
   // c_t pen^m_t with pen = (lambda_n / c_n)^(1/m_n), i.e. c_t (lambda_n / c_n)^q, q = m_t / m_n

@@ -407,13 +407,6 @@ void read_compliance(const TableReader& reader, contact::ContactLaw& law) {
   c.exponent = reader.optional_number("normal_exponent").value_or(1.0);
   c.friction_stiffness = reader.optional_number("friction_stiffness").value_or(c.stiffness);
   c.friction_exponent = reader.optional_number("friction_exponent").value_or(c.exponent);
-  // The threshold in the pressure, c_t (lambda_n / c_n)^(m_t / m_n), is concave for m_t < m_n,
-  // its slope infinite where a pair closes: the Newton iteration failed there (m_n = 2.2, m_t
-  // = 1 and 1.5: no convergence in the first load step).
-  if (c.friction_exponent < c.exponent)
-    reader.fail("friction_exponent", "a friction exponent m_t below normal_exponent (m_n = " + format_number(c.exponent) +
-                                         ") is not available yet (the threshold's slope in the pressure is infinite "
-                                         "where a pair closes, and the Newton iteration fails there); give m_t >= m_n");
   if (law.friction == 0.0)
     for (const char* key : {"friction_stiffness", "friction_exponent"})
       if (reader.has(key))

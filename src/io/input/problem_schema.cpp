@@ -158,7 +158,7 @@ std::vector<Key> law_keys() {
       number("normal_exponent", "1", "compliant: m_n", at_least(1)),
       number("friction_stiffness", "normal_stiffness", "compliant, with friction: c_t of the threshold beta c_t pen^m_t",
              above(0)),
-      number("friction_exponent", "normal_exponent", "compliant, with friction: m_t >= m_n, of the threshold beta c_t pen^m_t",
+      number("friction_exponent", "normal_exponent", "compliant, with friction: m_t of the threshold beta c_t pen^m_t",
              at_least(1)),
       number("friction", "0 (frictionless)", "Coulomb's coefficient", at_least(0)),
       number("nonlocal_radius", "none (the local law)",

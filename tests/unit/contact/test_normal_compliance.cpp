@@ -55,8 +55,9 @@ TEST(NormalCompliance, EveryPairFollowsTheLaw) {
 // A tangential force near the friction limit Q = beta (c_t / c_n) P (on an elastic block:
 // on the example's near-rigid one the tangential stiffness is 10^5 times the normal one and
 // the step stalls at a residual of 1e-7): most pairs slip, with p_t = beta (c_t / c_n) p_n.
-// With m_t > m_n (2 against 1; 3 against 2.2, c_t giving the centre the threshold beta p0)
-// under Q = 0.1 P: every slipping pair carries beta c_t pen^m_t of its own interpenetration.
+// With m_t != m_n (2 against 1; 3 and 1.5 against 2.2, c_t giving the centre the threshold
+// beta p0) under Q = 0.1 P: every slipping pair carries beta c_t pen^m_t of its own
+// interpenetration.
 TEST(NormalCompliance, GrossSlipFollowsTheThreshold) {
   const std::string loads = "[[load]]\nname = \"P\"\nbody = \"cylinder\"\ncomponent = 2\nforce = \"-P\"\n"
                             "amplitude = [[0.0, 0.0], [1.0, 1.0]]\n"
@@ -89,7 +90,7 @@ TEST(NormalCompliance, GrossSlipFollowsTheThreshold) {
   struct Case {
     double m, cn, mt, ct;
   };
-  for (const Case& law : {Case{1.0, 1.0e4, 2.0, 2.0e6}, Case{2.2, 5.8e6, 3.0, 3.74e8}}) {
+  for (const Case& law : {Case{1.0, 1.0e4, 2.0, 2.0e6}, Case{2.2, 5.8e6, 3.0, 3.74e8}, Case{2.2, 5.8e6, 1.5, 1.515e5}}) {
     const auto file = io::parse_contact_problem(
         with_friction("friction_stiffness = \"ct\"\nfriction_exponent = \"mt\""), "compliant.toml",
         {{"E_block", 70000.0}, {"Qr", 0.1}, {"m", law.m}, {"cn", law.cn}, {"mt", law.mt}, {"ct", law.ct}});
@@ -125,11 +126,8 @@ TEST(NormalCompliance, KeysAreCheckedWhereTheyAreRead) {
       compliance_input_error(replaced(compliant_text(), "normal_exponent = \"m\"", "normal_exponent = \"m\"\nfriction_stiffness = 1.0"));
   EXPECT_TRUE(mentions(no_friction, "with friction = 0 it has no effect")) << no_friction;
   const auto exponent = compliance_input_error(replaced(
-      compliant_text(), "normal_exponent = \"m\"", "normal_exponent = 2.2\nfriction = 0.2\nfriction_exponent = 1.5"));
-  EXPECT_TRUE(mentions(exponent, "friction_exponent") && mentions(exponent, "m_t >= m_n")) << exponent;
-  EXPECT_EQ(compliance_input_error(replaced(compliant_text(), "normal_exponent = \"m\"",
-                                            "normal_exponent = 1.0\nfriction = 0.2\nfriction_exponent = 1.5")),
-            "no error");
+      compliant_text(), "normal_exponent = \"m\"", "normal_exponent = \"m\"\nfriction_exponent = 1.5"));
+  EXPECT_TRUE(mentions(exponent, "friction_exponent") && mentions(exponent, "no effect")) << exponent;
   const auto thesis =
       compliance_input_error(replaced(compliant_text(), "[load]", "[solver]\nalgorithm = \"thesis\"\n\n[load]"));
   EXPECT_TRUE(mentions(thesis, "Newton algorithm only")) << thesis;
