@@ -674,7 +674,14 @@ void repeat_cycles(const HistoryData& data, const HistoryHooks& hooks, WearDepth
     run.slip_path.setZero();
     const WearDepths start_of_cycle = run.wear;
     const std::vector<double> plan = run.step_ends;
-    advance(data, cycles.start, data.problem.end_time, computed * period, hooks, run, history, plan);
+    try {
+      advance(data, cycles.start, data.problem.end_time, computed * period, hooks, run, history, plan);
+    } catch (const SolverError& error) {  // say which cycle (its pseudo-times are shifted)
+      throw SolverError(error.what() + std::string(" (in the computed cycle standing for load cycles ") +
+                            std::to_string(represented + 1) + " to " + std::to_string(represented + dn) +
+                            ", its pseudo-times shifted by " + format_residual(computed * period) + ")",
+                        error.failure());
+    }
     const double change = relative_pressure_change(saved.step.x, run.step.x);
     if (adaptive && control.reject(dn, change)) {
       run = saved;

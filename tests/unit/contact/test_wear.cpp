@@ -129,7 +129,7 @@ TEST(Wear, AContactWornAwayStopsTheRun) {
                               "displacement = [\"delta\", -1e-4]");
   const auto start = text.find("[load]");
   text = text.substr(0, start) + text.substr(text.find("[history]"));
-  auto file = io::parse_contact_problem(text, "wear.toml", {{"k", 10.0}, {"N", 10.0}});
+  auto file = io::parse_contact_problem(text, "wear.toml", {{"k", 10.0}, {"N", 10.0}, {"n", 10.0}});
   file.problem.drop_interior_points();
   try {
     (void)contact::solve_contact(file.problem);
