@@ -152,6 +152,17 @@ class Result:
         """Rigid-body and platen motions and forces per step."""
         return self.table("motions")
 
+    def wear(self, name=None, profile=False):
+        """A wearing contact's computed load cycles (cycles each stands for, worn volumes,
+        deepest points, contact zone, peak pressure), or with profile=True its scar pair by pair
+        per computed cycle (depth1, depth2, p_n, p_t, status)."""
+        contact = self._contact_name(name)
+        table = contact + ("_wear_profile" if profile else "_wear")
+        if table + ".csv" not in self.files:
+            raise KeyError(f"contact '{contact}' does not wear: give it wear_coefficient1 or "
+                           f"wear_coefficient2 (docs/contact.md, Wear)")
+        return self.table(table)
+
     def probe(self, points=(), lines=(), output=None, threads=0):
         """Displacements and stresses at new points, from this result's boundary solution (no
         new solve), as `bemcontact probe`: `points` a sequence of (x, y), `lines` of

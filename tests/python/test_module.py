@@ -179,6 +179,18 @@ def test_results_are_the_files_of_the_command_line(examples, binary, tmp_path):
     assert len(result.boundary("roller")) > 0
 
 
+def test_wear_tables_follow_the_cycles(examples):
+    result = bc.run(examples / "wear_punch_gross_slip.toml", N=1000, n=20)
+    cycles = result.wear()
+    assert cycles["cycle"][0] == 1 and cycles["cycle"][-1] == 1000
+    assert np.all(np.diff(cycles["worn_volume1"]) > 0) and np.all(cycles["worn_volume2"] == 0)
+    scar = result.wear(profile=True)
+    last = scar["cycle"] == 1000
+    assert np.max(scar["depth1"][last]) == pytest.approx(cycles["max_depth1"][-1])
+    with pytest.raises(KeyError, match="does not wear"):
+        bc.run(examples / "fretting_cylinder.toml", n=10).wear()
+
+
 def test_motions_are_named_by_body_and_direction(examples):
     fretting = bc.run(examples / "fretting_cylinder.toml", n=20).motions()
     assert fretting.columns == ["step", "time", "cylinder_P_force", "cylinder_P_displacement", "cylinder_Q_force",
