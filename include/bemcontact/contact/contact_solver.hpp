@@ -152,6 +152,7 @@ struct ContactResult : ContactInterfaceResult {
   int steps_taken = 0;
   int rejected_steps = 0;
   int rejected_jumps = 0;
+  int steps_past_state_limit = 0;  // LoadHistory's
   NewtonSystemCounts newton_systems;
   // When record_steps: per step, every region's boundary solution with stresses.
   std::vector<std::vector<bem::BoundarySolution>> step_boundary;
@@ -180,6 +181,9 @@ struct LoadHistory : ContactInterfaceResult {
   int steps_taken = 0;
   int rejected_steps = 0;               // adaptive steps redone in halves
   int rejected_jumps = 0;               // cycle jumps undone (wear.hpp)
+  // Steps taken although they changed more pairs than max_state_changes: their halves did
+  // not converge.
+  int steps_past_state_limit = 0;
   NewtonSystemCounts newton_systems;
   Vector x;                             // final (lambda_n, tau) per pair
   Vector delta;                         // final motions (CondensedProblem::motions)

@@ -452,6 +452,13 @@ std::string contact_report_text(const contact::ContactProblem& problem, const co
                 result.rejected_steps, s.newton_iterations,
                 s.kalker_iterations, s.threshold_iterations, s.gmres_cycles);
   out += line;
+  if (result.steps_past_state_limit > 0) {
+    std::snprintf(line, sizeof line,
+                  "  %d step%s changed more pairs than max_state_changes: %s halves did not converge\n",
+                  result.steps_past_state_limit, result.steps_past_state_limit == 1 ? "" : "s",
+                  result.steps_past_state_limit == 1 ? "its" : "their");
+    out += line;
+  }
   out += hertz_comparison(problem, s);
   return out;
 }

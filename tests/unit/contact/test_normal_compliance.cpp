@@ -112,6 +112,27 @@ TEST(NormalCompliance, GrossSlipFollowsTheThreshold) {
   }
 }
 
+// m_t = 1 against m_n = 2.2: the halves of the first steps do not converge (the threshold far
+// exceeds beta p_n at small interpenetrations); adaptive stepping takes the last longer step
+// that converged, says so, and the law holds pair by pair.
+TEST(NormalCompliance, AConcaveThresholdTakesAConvergedLongerStep) {
+  auto text = replaced(compliant_text(), "normal_exponent = \"m\"",
+                       "normal_exponent = 2.2\nfriction = 0.3\nfriction_stiffness = 11207.0\nfriction_exponent = 1.0");
+  text = replaced(text, "[load]\nbody = \"cylinder\"\ncomponent = 2\nforce = \"-P\"\n",
+                  "[[load]]\nname = \"P\"\nbody = \"cylinder\"\ncomponent = 2\nforce = \"-P\"\n"
+                  "amplitude = [[0.0, 0.0], [1.0, 1.0]]\n"
+                  "[[load]]\nname = \"Q\"\nbody = \"cylinder\"\ncomponent = 1\nforce = \"0.1 * P\"\n"
+                  "amplitude = [[0.0, 0.0], [1.0, 0.0], [2.0, 1.0]]\n");
+  const auto file = io::parse_contact_problem(text, "compliant.toml", {{"E_block", 70000.0}, {"cn", 5.8e6}});
+  const auto result = contact::solve_contact(file.problem);
+  EXPECT_GT(result.steps_past_state_limit, 0);
+  double peak = 0.0;
+  for (const auto& pair : result.pairs) peak = std::max(peak, -pair.p_n);
+  for (const auto& pair : result.pairs)
+    if (pair.status == contact::PairStatus::slip)
+      EXPECT_NEAR(std::abs(pair.p_t), 0.3 * 11207.0 * std::max(pair.jump_n - pair.gap, 0.0), 1e-9 * peak);
+}
+
 TEST(NormalCompliance, KeysAreCheckedWhereTheyAreRead) {
   const auto missing = compliance_input_error(replaced(compliant_text(), "normal_stiffness = \"cn\"\n", ""));
   EXPECT_TRUE(mentions(missing, "compliant.toml:")) << missing;
