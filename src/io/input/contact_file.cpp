@@ -676,6 +676,14 @@ void read_load_cycles(const TableReader& history, contact::ContactProblem& probl
     history.fail("cycle_start", "the cycle from " + format_number(cycles.start) + " to end_time " +
                                     format_number(problem.end_time) + " does not close: " + differing +
                                     "; a repeated cycle must end where it starts");
+  // Every step of every computed cycle would be kept in memory and written (tens of
+  // thousands): the wear outputs hold each computed cycle instead.
+  if (problem.record_steps)
+    throw InputError(problem.record_steps_where,
+                     "record_steps would keep every step of every computed load cycle (cycles = " +
+                         std::to_string(cycles.cycles) +
+                         "); <contact>_wear_profile.csv and the wear/ series hold each computed cycle's pairs: "
+                         "remove record_steps (or cycles)");
   cycles.fixed_jump = history.has("cycle_jump") ? history.integer_or("cycle_jump", 1) : 0;
   for (const char* key : {"max_cycle_jump", "max_pressure_change"})
     if (cycles.fixed_jump > 0 && history.has(key))

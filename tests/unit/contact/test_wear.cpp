@@ -119,6 +119,8 @@ TEST(Wear, KeysAreCheckedWhereTheyAreRead) {
   const auto single = wear_input_error(replaced(replaced(punch, "N = 100000", "N = 1"), "cycle_start = 2.0",
                                                 "cycle_start = 2.0\nmax_pressure_change = 0.1"));
   EXPECT_TRUE(mentions(single, "cycle_start") && mentions(single, "no effect")) << single;
+  const auto recorded = wear_input_error(replaced(punch, "increments = 16", "increments = 16\nrecord_steps = true"));
+  EXPECT_TRUE(mentions(recorded, "solver.record_steps") && mentions(recorded, "wear_profile")) << recorded;
   EXPECT_EQ(wear_input_error(cylinder), "no error");
 }
 
