@@ -341,8 +341,7 @@ struct HistoryRun {
   StepOutput step;
   ContactSummary totals;
   Vector dissipated;   // per group
-  WearDepths wear;     // empty without wear
-  Vector slip_path;    // per pair: sum |slip increment| since the cycle started (wear only)
+  WearDepths wear;     // empty without wear; its slip path since the cycle started
   std::vector<double> step_ends;  // the last stretch's accepted steps (a repeated cycle's plan)
   int taken = 0;
 };
@@ -365,8 +364,7 @@ HistoryRun history_start(const HistoryData& data) {
   run.step.delta = Vector::Zero(data.condensed.motions);
   run.dissipated = Vector::Zero(static_cast<Index>(data.all_groups.size()) - 1);
   if (data.laws.wear.any()) {
-    run.wear = {Vector::Zero(n), Vector::Zero(n)};
-    run.slip_path = Vector::Zero(n);
+    run.wear = {Vector::Zero(n), Vector::Zero(n), Vector::Zero(n)};
   }
   return run;
 }
@@ -462,7 +460,6 @@ void add_dissipation(const HistoryData& data, const StepOutput& step, const Vect
 void add_wear(const HistoryData& data, HistoryRun& run) {
   if (run.wear.side1.size() == 0) return;
   add_step_wear(data.laws.wear, run.step.x, run.step.w, run.previous.previous_tangential_jump, run.wear);
-  run.slip_path += (run.step.w(Eigen::seqN(1, run.slip_path.size(), 2)) - run.previous.previous_tangential_jump).cwiseAbs();
   run.previous.gap = data.condensed.gap + run.wear.total();
 }
 
@@ -651,7 +648,7 @@ void record_wear_cycle(const HistoryData& data, const HistoryRun& run, long cycl
                           " (computed cycle " + std::to_string(computed) +
                           "): every pair is open. The wear has taken the contact out of its load's reach (a "
                           "prescribed approach rather than a force?); fewer cycles or a smaller wear coefficient",
-                      {"wear cycle", computed, -1.0, run.taken, run.step.x.size() > 0 ? data.problem.end_time : 0.0});
+                      {"wear cycle", computed, -1.0, run.taken, data.problem.end_time});
   }
 }
 
@@ -670,22 +667,13 @@ void repeat_cycles(const HistoryData& data, const HistoryHooks& hooks, WearDepth
     const long dn = std::min(jump, cycles.cycles - represented);
     const HistoryRun saved = run;
     const HistoryMark saved_records = mark(history);
-    // The jump (wear.hpp): the last computed cycle's wear, extrapolated over dn - 1 cycles
-    // through the pressures' response, shared between the sides as their coefficients.
-    const auto& k = data.laws.wear;
-    const Vector last_cycle = run.wear.total() - at_cycle_start.total();
-    const Vector rate = (k.side1 + k.side2).cwiseProduct(run.slip_path);
+    // The jump (wear.hpp): the last computed cycle's wear extrapolated over dn - 1 cycles
+    // through the pressures' response at its end.
     const auto& p = data.condensed;
-    const Vector extra = implicit_jump(pressure_response(p.M, p.b, p.f, p.f_delta, run.step.x), rate, last_cycle,
-                                       static_cast<double>(dn - 1));
-    for (Index i = 0; i < extra.size(); ++i) {
-      const double sum = k.side1[i] + k.side2[i];
-      if (sum <= 0.0) continue;
-      run.wear.side1[i] += extra[i] * k.side1[i] / sum;
-      run.wear.side2[i] += extra[i] * k.side2[i] / sum;
-    }
+    add_cycle_jump(data.laws.wear, pressure_response(p.M, p.b, p.f, p.f_delta, run.step.x), at_cycle_start,
+                   static_cast<double>(dn - 1), run.wear);
     run.previous.gap = data.condensed.gap + run.wear.total();
-    run.slip_path.setZero();
+    run.wear.slip_path.setZero();
     const WearDepths start_of_cycle = run.wear;
     const std::vector<double> plan = run.step_ends;
     try {
@@ -908,7 +896,7 @@ ContactResult solve_on_meshes(const ContactProblem& problem, const bem::Progress
   if (finish_pass && !finish_pass(result)) return result;
 
   start = Clock::now();
-  result.warnings.insert(result.warnings.begin(), model.prepared().warnings.begin(), model.prepared().warnings.end());
+  result.warnings = model.prepared().warnings;
   add_region_boundaries(problem, model, history, result);
   add_step_boundaries(problem, model, history, result);
   result.timings.add("boundary stresses", seconds_since(start));

@@ -241,11 +241,12 @@ void choose_free_unknowns(const StepInput& in, const Vector& x, const Vector& w,
     if (state[2 * i] == 1) system.free_dofs.push_back(2 * i);
     if (state[2 * i + 1] == 1) system.free_dofs.push_back(2 * i + 1);
     const bool compliant = in.kind[i] == ContactKind::compliant;
+    double pen0 = 0.0;  // a compliant pair's linearisation point
     if (compliant && state[2 * i] == 1) {
       const auto& law = in.compliance[i];
-      const double pen = linearisation_point(law, w[2 * i] - in.gap[i], c);
-      system.normal_shift[i] = 1.0 / (law.stiffness * law.exponent * std::pow(pen, law.exponent - 1.0));
-      system.normal_offset[i] = pen * (1.0 - 1.0 / law.exponent);
+      pen0 = linearisation_point(law, w[2 * i] - in.gap[i], c);
+      system.normal_shift[i] = 1.0 / (law.stiffness * law.exponent * std::pow(pen0, law.exponent - 1.0));
+      system.normal_offset[i] = pen0 * (1.0 - 1.0 / law.exponent);
     }
     if (state[2 * i + 1] < 2) continue;
     const double s = state[2 * i + 1] == 2 ? 1.0 : -1.0;
@@ -257,12 +258,11 @@ void choose_free_unknowns(const StepInput& in, const Vector& x, const Vector& w,
       // pen0): tau = s beta (c_t pen0^m_t + B (lambda - c_n pen0^m_n)), B = c_t m_t
       // pen0^(m_t - 1) / k, finite where a pair closes (pen0 > 0 there).
       const auto& law = in.compliance[i];
-      const double pen = linearisation_point(law, w[2 * i] - in.gap[i], c);
-      const double threshold0 = law.friction_stiffness * std::pow(pen, law.friction_exponent);
+      const double threshold0 = law.friction_stiffness * std::pow(pen0, law.friction_exponent);
       const double slope = law.friction_stiffness * law.friction_exponent *
-                           std::pow(pen, law.friction_exponent - 1.0) * system.normal_shift[i];
+                           std::pow(pen0, law.friction_exponent - 1.0) * system.normal_shift[i];
       system.slip_factor[i] = s * in.friction[i] * slope;
-      system.slip_offset[i] = s * in.friction[i] * (threshold0 - slope * law.pressure(pen));
+      system.slip_offset[i] = s * in.friction[i] * (threshold0 - slope * law.pressure(pen0));
       continue;
     }
     if (!is_nonlocal(in, i)) {

@@ -15,6 +15,7 @@ void add_step_wear(const WearCoefficients& k, const Vector& x, const Vector& w, 
     const double slip = std::abs(w[2 * i + 1] - previous_tangential_jump[i]);
     depths.side1[i] += k.side1[i] * pressure * slip;  // [Archard1953]
     depths.side2[i] += k.side2[i] * pressure * slip;
+    if (depths.slip_path.size() > 0) depths.slip_path[i] += slip;
   }
 }
 
@@ -72,6 +73,18 @@ Vector implicit_jump(const PressureResponse& response, const Vector& wear_rate, 
   const Vector closed = Eigen::PartialPivLU<Matrix>(system).solve(rhs);
   for (Index a = 0; a < m; ++a) jump[response.closed[a]] = closed[a];
   return jump;
+}
+
+void add_cycle_jump(const WearCoefficients& k, const PressureResponse& response, const WearDepths& at_cycle_start,
+                    double tau, WearDepths& depths) {
+  const Vector sum = k.side1 + k.side2;
+  const Vector extra =
+      implicit_jump(response, sum.cwiseProduct(depths.slip_path), depths.total() - at_cycle_start.total(), tau);
+  for (Index i = 0; i < extra.size(); ++i) {
+    if (sum[i] <= 0.0) continue;
+    depths.side1[i] += extra[i] * k.side1[i] / sum[i];
+    depths.side2[i] += extra[i] * k.side2[i] / sum[i];
+  }
 }
 
 long CycleJumpControl::next(long jump, double change) const {

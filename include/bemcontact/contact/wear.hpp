@@ -35,14 +35,16 @@ struct WearCoefficients {
   bool any() const { return side1.size() > 0 && (side1.maxCoeff() > 0.0 || side2.maxCoeff() > 0.0); }
 };
 
-// Per pair: the worn depth of each side so far.
+// Per pair: the worn depth of each side so far, and the slip path sum |ds| since it was last
+// reset (the current cycle's S; empty: not kept).
 struct WearDepths {
   Vector side1, side2;
+  Vector slip_path;
   Vector total() const { return side1 + side2; }
 };
 
 // One step's wear: h_s += k_s lambda_n |w_t - w_t(previous step)| per pair, from the step's
-// unknowns x = (lambda_n, tau) and jump w = (w_n, w_t) per pair.
+// unknowns x = (lambda_n, tau) and jump w = (w_n, w_t) per pair; the slip path grows by |ds|.
 void add_step_wear(const WearCoefficients& k, const Vector& x, const Vector& w, const Vector& previous_tangential_jump,
                    WearDepths& depths);
 
@@ -66,6 +68,12 @@ PressureResponse pressure_response(const Matrix& M, const Matrix& b, const Matri
 // The linearly implicit jump (above): per pair, the extra depth of tau more cycles from the
 // last computed cycle's wear r and the wear rate D = k S per unit pressure.
 Vector implicit_jump(const PressureResponse& response, const Vector& wear_rate, const Vector& cycle_wear, double tau);
+
+// The jump of tau cycles after the computed cycle that began at `at_cycle_start`: r its wear,
+// D = (k_1 + k_2) S from its slip path, the extra depth shared between the sides as their
+// coefficients.
+void add_cycle_jump(const WearCoefficients& k, const PressureResponse& response, const WearDepths& at_cycle_start,
+                    double tau, WearDepths& depths);
 
 // Adaptive cycle jumping: after a jump of `jump` cycles that changed the pressures by
 // `change` (relative), whether to undo it, and the next jump.

@@ -158,6 +158,12 @@ CsvTable contact_steps_table(const contact::ContactInterfaceResult& result) {
   return table;
 }
 
+namespace {
+// The deepest point of a scar (0 for none).
+double deepest(const std::vector<double>& depth) {
+  return depth.empty() ? 0.0 : *std::max_element(depth.begin(), depth.end());
+}
+
 // A wearing contact's computed cycles (contact/wear.hpp): the cycles each stands for, the
 // worn volumes and deepest points of both sides, and the contact at the cycle's end.
 CsvTable wear_table(const contact::ContactInterfaceResult& result) {
@@ -180,8 +186,7 @@ CsvTable wear_table(const contact::ContactInterfaceResult& result) {
                   {"pairs_in_contact", i}});
   for (const auto& w : result.wear) {
     const auto& s = w.summary;
-    const double max1 = w.depth1.empty() ? 0.0 : *std::max_element(w.depth1.begin(), w.depth1.end());
-    const double max2 = w.depth2.empty() ? 0.0 : *std::max_element(w.depth2.begin(), w.depth2.end());
+    const double max1 = deepest(w.depth1), max2 = deepest(w.depth2);
     table.row() << static_cast<double>(w.cycle) << static_cast<double>(w.computed) << static_cast<double>(w.jump)
                 << w.pressure_change << s.worn_volume1 << s.worn_volume2 << max1 << max2 << s.contact_radius
                 << s.contact_start << s.contact_end << s.stick_radius << s.peak_pressure << s.centre_pressure
@@ -203,6 +208,8 @@ CsvTable wear_profile_table(const contact::ContactInterfaceResult& result) {
     }
   return table;
 }
+
+}  // namespace
 
 std::string contact_steps_csv(const contact::ContactInterfaceResult& result) {
   return csv_text(contact_steps_table(result));
@@ -391,15 +398,14 @@ std::string zone_text(const contact::ContactInterface& contact, const contact::A
 
 }  // namespace
 
+namespace {
+
 // A wearing contact's cycles and scar, in two lines.
 std::string wear_text(const contact::ContactInterfaceResult& contact, int rejected_jumps) {
   const auto& first = contact.wear.front();
   const auto& last = contact.wear.back();
   long longest = 1;
   for (const auto& w : contact.wear) longest = std::max(longest, w.jump);
-  const auto deepest = [](const std::vector<double>& depth) {
-    return depth.empty() ? 0.0 : *std::max_element(depth.begin(), depth.end());
-  };
   char line[320];
   std::snprintf(line, sizeof line,
                 "  wear: %ld load cycle%s in %d computed (jumps up to %ld cycles, %d undone); worn volume %.6g (side "
@@ -412,6 +418,8 @@ std::string wear_text(const contact::ContactInterfaceResult& contact, int reject
                 last.summary.contact_radius);
   return out + line;
 }
+
+}  // namespace
 
 std::string contact_report_text(const contact::ContactProblem& problem, const contact::ContactResult& result) {
   char line[256];
