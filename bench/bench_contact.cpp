@@ -38,7 +38,8 @@ contact::ContactProblem ball(int elements, bool thesis, bool friction) {
   auto file = io::read_contact_file(std::string(BEMCONTACT_EXAMPLES_DIR) + "/contact_hertz_sphere.toml");
   auto& problem = file.problem;
   const auto& contact = problem.contacts.front();
-  for (const auto* side : {&contact.side1, &contact.side2}) problem.region(*side).body.pieces[side->piece].elements = elements;
+  for (const auto* side : {&contact.side1, &contact.side2})
+    for (const int piece : side->pieces) problem.region(*side).body.pieces[piece].elements = elements;
   problem.solver.algorithm = thesis ? contact::Algorithm::thesis : contact::Algorithm::newton;
   if (friction) {
     problem.set_friction(0.1);

@@ -908,9 +908,7 @@ ContactResult solve_on_meshes(const ContactProblem& problem, const bem::Progress
 
 std::string zone_name(const ContactProblem& problem, int c) {
   const auto& contact = problem.contacts[static_cast<std::size_t>(c)];
-  return "contact '" + contact.name + "' (boundary '" +
-         problem.region(contact.side1).body.pieces[static_cast<std::size_t>(contact.side1.piece)].name + "' of body '" +
-         problem.bodies[static_cast<std::size_t>(contact.side1.body)].name + "')";
+  return "contact '" + contact.name + "' (" + side_text(problem, contact.side1) + ")";
 }
 
 std::string pass_text(const ZonePass& pass) {
@@ -928,11 +926,16 @@ void check_zone_limits(const ContactProblem& problem, int c, const ZoneAssessmen
                       format_residual(adaptivity.resolution) + " in " + std::to_string(adaptivity.max_passes) +
                       " adaptive passes (last " + pass_text(zone.passes.back()) +
                       "); raise max_adaptive_passes, or relax contact_resolution");
-  const int elements = static_cast<int>(std::max(next.breakpoints1.size(), next.breakpoints2.size())) - 1;
+  const auto count = [](const std::vector<std::vector<double>>& side) {
+    std::size_t elements = 0;
+    for (const auto& piece : side) elements += piece.size() - 1;
+    return static_cast<int>(elements);
+  };
+  const int elements = std::max(count(next.breakpoints1), count(next.breakpoints2));
   if (elements > adaptivity.max_elements)
     throw SolverError(zone_name(problem, c) + ": resolving the zone in contact to contact_resolution = " +
                       format_residual(adaptivity.resolution) + " takes " + std::to_string(elements) +
-                      " elements on a boundary, over max_zone_elements = " + std::to_string(adaptivity.max_elements) +
+                      " elements on a side, over max_zone_elements = " + std::to_string(adaptivity.max_elements) +
                       " (" + pass_text(zone.passes.back()) + "); raise max_zone_elements, or relax contact_resolution");
 }
 
@@ -965,11 +968,8 @@ ContactResult solve_contact(const ContactProblem& problem, const bem::ProgressCa
       for (std::size_t c = 0; c < problem.contacts.size(); ++c) {
         if (!adaptive(c)) continue;
         const auto& contact = current.contacts[c];
-        zones[c].breakpoints1 = geometry::element_breakpoints(
-            current.region(contact.side1).body.pieces[static_cast<std::size_t>(contact.side1.piece)]);
-        if (next[c].pass.elements2 > 0)
-          zones[c].breakpoints2 = geometry::element_breakpoints(
-              current.region(contact.side2).body.pieces[static_cast<std::size_t>(contact.side2.piece)]);
+        zones[c].breakpoints1 = side_breakpoints(current, contact.side1);
+        if (next[c].pass.elements2 > 0) zones[c].breakpoints2 = side_breakpoints(current, contact.side2);
         result.contacts[c].zone = zones[c];
       }
       if (!result.contacts.empty()) result.zone = result.contacts.front().zone;

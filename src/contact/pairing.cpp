@@ -97,18 +97,32 @@ struct Projection {
 };
 
 // None when the pair normal through y misses the zone, or meets it with a normal that is
-// not opposite to n1 (the surfaces do not face each other there).
-std::optional<Projection> project_on_zone(const geometry::BoundaryPiece& piece2, const geometry::BoundaryMesh& mesh2,
-                                          int zone2, const Vec2& y, const Vec2& n1, PairNormal choice) {
+// not opposite to n1 (the surfaces do not face each other there). A zone of joined pieces:
+// the nearest piece met.
+std::optional<Projection> project_on_zone(const std::vector<geometry::BoundaryPiece>& pieces,
+                                          const geometry::BoundaryMesh& mesh2, const std::vector<int>& zone2,
+                                          const Vec2& y, const Vec2& n1, PairNormal choice) {
   constexpr double end_tolerance = 1e-9;  // a point facing the very end of the zone still pairs
-  double f = 0.0;
-  if (!facing_point(piece2, y, n1, f, choice) || f < -end_tolerance || f > 1.0 + end_tolerance) return std::nullopt;
-  Projection p;
-  p.facing = geometry::point_on_piece(piece2, std::clamp(f, 0.0, 1.0));
-  if (n1.dot(p.facing.outward_normal) > -0.5) return std::nullopt;
+  std::optional<Projection> found;
+  int found_piece = -1;
+  double nearest = std::numeric_limits<double>::infinity();
+  for (const int piece : zone2) {
+    double f = 0.0;
+    const auto& piece2 = pieces[static_cast<std::size_t>(piece)];
+    if (!facing_point(piece2, y, n1, f, choice) || f < -end_tolerance || f > 1.0 + end_tolerance) continue;
+    const geometry::PiecePoint facing = geometry::point_on_piece(piece2, std::clamp(f, 0.0, 1.0));
+    if (n1.dot(facing.outward_normal) > -0.5) continue;
+    const double distance = (facing.position - y).norm();
+    if (distance >= nearest) continue;
+    nearest = distance;
+    found = Projection{facing, -1, 0.0};
+    found_piece = piece;
+  }
+  if (!found) return std::nullopt;
+  Projection& p = *found;
   // The element whose chord (or arc) holds the facing point.
   double best = std::numeric_limits<double>::infinity();
-  for (const Index e : mesh2.piece_elements[zone2]) {
+  for (const Index e : mesh2.piece_elements[static_cast<std::size_t>(found_piece)]) {
     const auto& el = mesh2.elements[e];
     const double fraction = integration::ElementCurve(el).fraction_of(p.facing.position);
     const double outside = std::max({0.0, -fraction, fraction - 1.0});  // beyond the element, in its lengths
@@ -157,11 +171,13 @@ void mesh_regions(const ContactProblem& problem, PreparedContact& prepared) {
     decomposition.subdomains = body.regions;
     for (const auto& contact : problem.contacts)
       for (const BoundaryRef* side : {&contact.side1, &contact.side2}) {
-        if (side->body != static_cast<int>(b) || side->piece < 0) continue;
-        // The zone's tractions jump at its ends: split the nodes there.
+        if (side->body != static_cast<int>(b)) continue;
+        // The zone's tractions jump at its ends: split the nodes there (not between its pieces).
         auto& zone = decomposition.subdomains[side->region].body;
-        zone.conditions[side->piece].signature = "contact zone";
-        zone.pieces[side->piece].condition_signature = "contact zone";
+        for (const int piece : side->pieces) {
+          zone.conditions[piece].signature = "contact zone";
+          zone.pieces[piece].condition_signature = "contact zone";
+        }
       }
     for (const auto& force : problem.forces) {
       if (force.body != static_cast<int>(b)) continue;
@@ -201,8 +217,10 @@ void check_reference(const ContactProblem& problem, const BoundaryRef& ref, bool
                        what + ": body '" + body.name + "' is rigid; a rigid body can only be the second side");
     return;
   }
-  if (ref.region < 0 || ref.region >= static_cast<int>(body.regions.size()) || ref.piece < 0 ||
-      ref.piece >= static_cast<int>(body.regions[ref.region].body.pieces.size()))
+  bool known = ref.region >= 0 && ref.region < static_cast<int>(body.regions.size()) && !ref.pieces.empty();
+  for (const int piece : ref.pieces)
+    known = known && piece >= 0 && piece < static_cast<int>(body.regions[ref.region].body.pieces.size());
+  if (!known)
     throw InputError(SourceLocation{problem.source_file, 0, ""},
                      what + ": no such boundary in body '" + body.name + "'");
 }
@@ -231,11 +249,49 @@ std::vector<double> node_weights(const geometry::BoundaryMesh& mesh, const std::
   return weights;
 }
 
-namespace {
-
-std::string zone_text(const PreparedRegion& region, int piece) {
-  return "boundary '" + region.definition.pieces[piece].name + "' of " + region.label;
+std::vector<Index> zone_nodes(const geometry::BoundaryMesh& mesh, const std::vector<int>& pieces) {
+  std::vector<Index> nodes;
+  for (const int piece : pieces)
+    for (const Index node : mesh.piece_nodes[static_cast<std::size_t>(piece)])
+      if (std::find(nodes.begin(), nodes.end(), node) == nodes.end()) nodes.push_back(node);
+  return nodes;
 }
+
+std::vector<Index> zone_elements(const geometry::BoundaryMesh& mesh, const std::vector<int>& pieces) {
+  std::vector<Index> elements;
+  for (const int piece : pieces)
+    elements.insert(elements.end(), mesh.piece_elements[static_cast<std::size_t>(piece)].begin(),
+                    mesh.piece_elements[static_cast<std::size_t>(piece)].end());
+  return elements;
+}
+
+std::string zone_name(const PreparedRegion& region, const std::vector<int>& pieces) {
+  std::string names;
+  for (std::size_t k = 0; k < pieces.size(); ++k)
+    names += (k ? ", '" : "'") + region.definition.pieces[static_cast<std::size_t>(pieces[k])].name + "'";
+  return (pieces.size() > 1 ? "boundaries " : "boundary ") + names + " of " + region.label;
+}
+
+std::vector<const geometry::BoundaryPiece*> side_pieces(const ContactProblem& problem, const BoundaryRef& side) {
+  std::vector<const geometry::BoundaryPiece*> out;
+  for (const int piece : side.pieces) out.push_back(&problem.region(side).body.pieces.at(static_cast<std::size_t>(piece)));
+  return out;
+}
+
+double side_length(const ContactProblem& problem, const BoundaryRef& side) {
+  double length = 0.0;
+  for (const auto* piece : side_pieces(problem, side)) length += geometry::piece_length(*piece);
+  return length;
+}
+
+std::string side_text(const ContactProblem& problem, const BoundaryRef& side) {
+  const auto pieces = side_pieces(problem, side);
+  std::string names;
+  for (std::size_t k = 0; k < pieces.size(); ++k) names += (k ? ", '" : "'") + pieces[k]->name + "'";
+  return (pieces.size() > 1 ? "boundaries " : "boundary ") + names + " of body '" + problem.bodies.at(side.body).name + "'";
+}
+
+namespace {
 
 // The mortar integrals of an elastic side 2 (pairing.hpp: mortar) and the
 // coupling M21 of the transfer. Each element of side 1's zone is cut where the projection
@@ -250,7 +306,6 @@ Matrix build_mortar(const PreparedRegion& side1, const PreparedRegion& side2, co
                     AnalysisType type, const std::vector<Index>& zone_index2, PreparedInterface& out) {
   const auto& mesh1 = side1.mesh;
   const auto& mesh2 = side2.mesh;
-  const auto& piece2 = side2.definition.pieces[out.piece2];
   const Index n = static_cast<Index>(out.pairs.size());
   const Index m = static_cast<Index>(out.zone_nodes2.size());
   std::vector<Index> pair_of_node(mesh1.node_count(), -1);
@@ -261,7 +316,7 @@ Matrix build_mortar(const PreparedRegion& side1, const PreparedRegion& side2, co
   constexpr int kMortarPoints = 6;  // exact for the products of quadratic shape functions times r
   constexpr int kFirstCuts = 8;     // initial subdivision of a side-1 element before the bisection
   const quadrature::Rule& rule = quadrature::gauss_legendre(kMortarPoints);
-  for (const Index e1 : mesh1.piece_elements[out.piece1]) {
+  for (const Index e1 : zone_elements(mesh1, out.pieces1)) {
     const auto& el1 = mesh1.elements[e1];
     const int nodes = el1.node_count;
     // The element's dual shape functions.
@@ -277,7 +332,8 @@ Matrix build_mortar(const PreparedRegion& side1, const PreparedRegion& side2, co
     for (int b = 0; b < nodes; ++b)
       if (const Index i = pair_of_node[el1.nodes[b]]; i >= 0) full[i] += De[b];
     const auto project = [&](double f) {
-      return project_on_zone(piece2, mesh2, out.piece2, el1.point(f), el1.normal_at(f), contact.pair_normal);
+      return project_on_zone(side2.definition.pieces, mesh2, out.pieces2, el1.point(f), el1.normal_at(f),
+                             contact.pair_normal);
     };
     const auto element_at = [&](double f) -> Index {
       const auto p = project(f);
@@ -351,18 +407,17 @@ void build_transfer(const PreparedRegion& side1, const PreparedRegion& side2, co
                     std::vector<std::string>& warnings, const Matrix* mortar_coupling) {
   const auto& mesh1 = side1.mesh;
   const auto& mesh2 = side2.mesh;
-  const auto& piece2 = side2.definition.pieces[out.piece2];
   std::vector<Index> pair_of_node(mesh1.node_count(), -1);
   for (std::size_t i = 0; i < out.pairs.size(); ++i) pair_of_node[out.pairs[i].node1] = static_cast<Index>(i);
   const Index m = static_cast<Index>(out.zone_nodes2.size());
   Matrix coupling = Matrix::Zero(m, static_cast<Index>(out.pairs.size()));
   constexpr int kTransferPoints = 6;
   if (mortar_coupling) coupling = *mortar_coupling;
-  else for (const Index e1 : mesh1.piece_elements[out.piece1]) {
+  else for (const Index e1 : zone_elements(mesh1, out.pieces1)) {
     const auto& el1 = mesh1.elements[e1];
     for_each_gauss_point(el1, kTransferPoints, type, [&](double f1, double w) {
-      const auto projection =
-          project_on_zone(piece2, mesh2, out.piece2, el1.point(f1), el1.normal_at(f1), contact.pair_normal);
+      const auto projection = project_on_zone(side2.definition.pieces, mesh2, out.pieces2, el1.point(f1),
+                                              el1.normal_at(f1), contact.pair_normal);
       if (!projection) return;
       const auto& el2 = mesh2.elements[projection->element];
       for (int b = 0; b < el1.node_count; ++b) {
@@ -375,7 +430,7 @@ void build_transfer(const PreparedRegion& side1, const PreparedRegion& side2, co
   }
   // Body 2's zone mass matrix, then transfer = M22^-1 M21.
   Matrix mass = Matrix::Zero(m, m);
-  for (const Index e2 : mesh2.piece_elements[out.piece2]) {
+  for (const Index e2 : zone_elements(mesh2, out.pieces2)) {
     const auto& el = mesh2.elements[e2];
     for_each_gauss_point(el, kTransferPoints, type, [&](double f, double w) {
       for (int a = 0; a < el.node_count; ++a)
@@ -391,14 +446,14 @@ void build_transfer(const PreparedRegion& side1, const PreparedRegion& side2, co
   Index carrying = 0;  // body 2's zone nodes that receive some force
   for (Index k = 0; k < coupling.rows(); ++k) carrying += coupling.row(k).cwiseAbs().sum() > 0.0;
   // Mortar with quadratic elements does not oscillate there (docs/contact.md, Mortar pairing).
-  const bool quadratic = !mesh1.piece_elements[out.piece1].empty() &&
-                         mesh1.elements[mesh1.piece_elements[out.piece1].front()].node_count == 3;
+  const auto elements1 = zone_elements(mesh1, out.pieces1);
+  const bool quadratic = !elements1.empty() && mesh1.elements[elements1.front()].node_count == 3;
   // An adaptive zone's meshes are the solver's (zone_refinement.hpp: the same spacing on both sides).
   if (!(mortar_coupling && quadratic) && !contact.adaptivity.on() &&
       static_cast<double>(out.pairs.size()) > 1.1 * static_cast<double>(carrying))
-    warnings.push_back("contact '" + contact.name + "': " + zone_text(side1, out.piece1) + " has " +
+    warnings.push_back("contact '" + contact.name + "': " + zone_name(side1, out.pieces1) + " has " +
                        std::to_string(out.pairs.size()) + " nodes facing only " + std::to_string(carrying) +
-                       " nodes of " + zone_text(side2, out.piece2) +
+                       " nodes of " + zone_name(side2, out.pieces2) +
                        ": with the finer mesh on body 1's side the contact pressures may oscillate; give " +
                        "body 1 the coarser contact zone (swap the bodies) or refine body 2's");
 }
@@ -420,13 +475,13 @@ SecondSide second_side(const ContactProblem& problem, const ContactInterface& co
     return side2;
   }
   out.region2 = prepared.body_regions[contact.side2.body][contact.side2.region];
-  out.piece2 = contact.side2.piece;
+  out.pieces2 = contact.side2.pieces;
   side2.region = &prepared.regions[out.region2];
-  side2.zone = zone_text(*side2.region, out.piece2);
-  out.zone_nodes2 = side2.region->mesh.piece_nodes[out.piece2];
+  side2.zone = zone_name(*side2.region, out.pieces2);
+  out.zone_nodes2 = zone_nodes(side2.region->mesh, out.pieces2);
   side2.zone_index.assign(side2.region->mesh.node_count(), -1);
   for (std::size_t k = 0; k < out.zone_nodes2.size(); ++k) side2.zone_index[out.zone_nodes2[k]] = static_cast<Index>(k);
-  out.zone_weights2 = node_weights(side2.region->mesh, {out.piece2}, out.zone_nodes2, problem.analysis);
+  out.zone_weights2 = node_weights(side2.region->mesh, out.pieces2, out.zone_nodes2, problem.analysis);
   return side2;
 }
 
@@ -448,7 +503,7 @@ std::optional<geometry::PiecePoint> face_side2(const ContactProblem& problem, co
     return project_on_contour(problem.bodies[out.rigid_body].rigid->contour, x1, n1, contact.pair_normal);
   const auto& mesh2 = side2.region->mesh;
   const auto projection =
-      project_on_zone(side2.region->definition.pieces[out.piece2], mesh2, out.piece2, x1, n1, contact.pair_normal);
+      project_on_zone(side2.region->definition.pieces, mesh2, out.pieces2, x1, n1, contact.pair_normal);
   if (!projection) return std::nullopt;
   const auto& el = mesh2.elements[projection->element];
   pair.count2 = el.node_count;
@@ -506,18 +561,17 @@ PreparedInterface pair_interface(const ContactProblem& problem, const ContactInt
                                  const PreparedContact& prepared, std::vector<std::string>& warnings) {
   PreparedInterface out;
   out.region1 = prepared.body_regions[contact.side1.body][contact.side1.region];
-  out.piece1 = contact.side1.piece;
+  out.pieces1 = contact.side1.pieces;
   const auto& side1 = prepared.regions[out.region1];
   const SecondSide side2 = second_side(problem, contact, prepared, out);
-  const std::string zone1 = zone_text(side1, out.piece1);
+  const std::string zone1 = zone_name(side1, out.pieces1);
   const auto& mesh1 = side1.mesh;
-  const auto& piece1 = side1.definition.pieces[out.piece1];
-  const std::vector<Index>& nodes1 = mesh1.piece_nodes[out.piece1];
-  const auto weights = node_weights(mesh1, {out.piece1}, nodes1, problem.analysis);
+  const std::vector<Index> nodes1 = zone_nodes(mesh1, out.pieces1);
+  const auto weights = node_weights(mesh1, out.pieces1, nodes1, problem.analysis);
   const double scale = std::max(mesh1.scale, side2.region ? side2.region->mesh.scale : 0.0);
   for (std::size_t i = 0; i < nodes1.size(); ++i) {
     const auto& node1 = mesh1.nodes[nodes1[i]];
-    const Vec2 x1 = gap_point(piece1, node1);
+    const Vec2 x1 = gap_point(side1.definition.pieces[static_cast<std::size_t>(node1.piece)], node1);
     ContactPair pair;
     const auto facing = face_side2(problem, contact, out, side2, x1, node1.normal, pair);
     if (!facing) {
@@ -667,8 +721,8 @@ ContactProblem two_body_problem(int piece1, int piece2) {
     problem.bodies[b].regions[0].body.name = problem.bodies[b].name;
   }
   ContactInterface contact;
-  contact.side1 = {0, 0, piece1};
-  contact.side2 = {1, 0, piece2};
+  contact.side1 = {0, 0, {piece1}};
+  contact.side2 = {1, 0, {piece2}};
   problem.contacts.push_back(contact);
   return problem;
 }

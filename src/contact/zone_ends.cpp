@@ -33,8 +33,9 @@ PieceEnd piece_end(const geometry::BoundaryMesh& mesh, int piece, bool at_start)
   return end;
 }
 
-std::string zone_name(const PreparedRegion& region, int piece) {
-  return "boundary '" + region.definition.pieces[static_cast<std::size_t>(piece)].name + "' of " + region.label;
+// An end of a zone of joined pieces: the first piece's start or the last one's end.
+PieceEnd zone_end(const geometry::BoundaryMesh& mesh, const std::vector<int>& pieces, bool at_start) {
+  return piece_end(mesh, at_start ? pieces.front() : pieces.back(), at_start);
 }
 
 // Whether the zone runs on smoothly past this end (not at a corner, not on the axis).
@@ -52,10 +53,10 @@ double element_length_at(const geometry::BoundaryMesh& mesh, Index node) {
   return length;
 }
 
-// The length of the piece's element nearest to a point.
-double element_length_near(const geometry::BoundaryMesh& mesh, int piece, const Vec2& point) {
+// The length of the zone's element nearest to a point.
+double element_length_near(const geometry::BoundaryMesh& mesh, const std::vector<int>& pieces, const Vec2& point) {
   double length = 0.0, best = std::numeric_limits<double>::infinity();
-  for (const Index e : mesh.piece_elements[static_cast<std::size_t>(piece)]) {
+  for (const Index e : zone_elements(mesh, pieces)) {
     const auto& element = mesh.elements[static_cast<std::size_t>(e)];
     const double d = (0.5 * (element.start + element.end) - point).norm();
     if (d < best) best = d, length = element.length;
@@ -124,17 +125,17 @@ bool is_roller_line(const bem::BodyDefinition& body, int piece) {
 std::vector<std::string> roller_line_warnings(const ContactInterface& contact, const PreparedInterface& prepared,
                                               const std::vector<PreparedRegion>& regions) {
   std::vector<std::string> warnings;
-  for (const auto& [region_index, piece] : {std::pair{prepared.region1, prepared.piece1}, std::pair{prepared.region2, prepared.piece2}}) {
+  for (const auto& [region_index, pieces] :
+       {std::pair{prepared.region1, prepared.pieces1}, std::pair{prepared.region2, prepared.pieces2}}) {
     if (region_index < 0) continue;
     const auto& region = regions[static_cast<std::size_t>(region_index)];
     for (const bool at_start : {true, false}) {
-      const PieceEnd end = piece_end(region.mesh, piece, at_start);
+      const PieceEnd end = zone_end(region.mesh, pieces, at_start);
       if (end.next < 0 || !is_roller_line(region.definition, end.next)) continue;
       warnings.push_back("contact '" + contact.name + "': boundary '" +
                          region.definition.pieces[static_cast<std::size_t>(end.next)].name + "' of " + region.label +
-                         " (u_n = 0, t_t = 0) meets the contact zone '" +
-                         region.definition.pieces[static_cast<std::size_t>(piece)].name +
-                         "': as a roller line its discretisation error next to the contact does not fall under "
+                         " (u_n = 0, t_t = 0) meets the contact zone, " + zone_name(region, pieces) +
+                         ": as a roller line its discretisation error next to the contact does not fall under "
                          "refinement, and the pressure there drifts (+1 % at 800 elements on a Hertz half model, "
                          "docs/corners.md); if it is a symmetry line write symmetry = true instead (no elements, the "
                          "mirror image: the half model is then the whole one)");
@@ -151,7 +152,8 @@ bool zone_starts_on_symmetry_line(const ContactProblem& problem, const PreparedI
   for (const bool at_start : {true, false}) {
     const auto& vertices = region.mesh.vertices;
     for (const auto& vertex : vertices) {
-      if ((at_start ? vertex.piece_out : vertex.piece_in) != contact.piece1 || std::abs(vertex.position.x()) > tolerance)
+      const int end_piece = at_start ? contact.pieces1.front() : contact.pieces1.back();
+      if ((at_start ? vertex.piece_out : vertex.piece_in) != end_piece || std::abs(vertex.position.x()) > tolerance)
         continue;
       if (problem.analysis == AnalysisType::axisymmetric) return true;  // on the axis
       const int next = at_start ? vertex.piece_in : vertex.piece_out;
@@ -172,9 +174,9 @@ std::vector<SmoothZoneEnd> smooth_zone_ends(const ContactProblem& problem, const
   for (int side = 0; side < 2; ++side) {
     const PreparedRegion* region = side == 0 ? &region1 : region2;
     if (!region) continue;
-    const int piece = side == 0 ? contact.piece1 : contact.piece2;
+    const auto& pieces = side == 0 ? contact.pieces1 : contact.pieces2;
     for (int k = 0; k < 2; ++k) {
-      ends[side][k] = piece_end(region->mesh, piece, k == 0);
+      ends[side][k] = zone_end(region->mesh, pieces, k == 0);
       if (!runs_on(ends[side][k], region->mesh, analysis)) corners[side].push_back(ends[side][k].position);
     }
   }
@@ -187,7 +189,7 @@ std::vector<SmoothZoneEnd> smooth_zone_ends(const ContactProblem& problem, const
   const auto& mesh1 = region1.mesh;
   std::vector<SmoothZoneEnd> out;
   // Side 1: the pair of the zone's end node, unless it faces a corner of side 2.
-  const auto& nodes1 = mesh1.piece_nodes[static_cast<std::size_t>(contact.piece1)];
+  const auto nodes1 = zone_nodes(mesh1, contact.pieces1);
   for (int k = 0; k < 2; ++k) {
     const PieceEnd& end = ends[0][k];
     if (!runs_on(end, mesh1, analysis)) continue;
@@ -196,9 +198,9 @@ std::vector<SmoothZoneEnd> smooth_zone_ends(const ContactProblem& problem, const
       const auto& pair = contact.pairs[static_cast<std::size_t>(i)];
       if (pair.node1 != end_node) continue;
       const double within = element_length_at(mesh1, pair.node1) +
-                            (region2 ? element_length_near(region2->mesh, contact.piece2, pair.position2) : 0.0);
+                            (region2 ? element_length_near(region2->mesh, contact.pieces2, pair.position2) : 0.0);
       if (near_corner(corners[1], pair.position2, within)) continue;
-      out.push_back({1, i, end.position, zone_name(region1, contact.piece1),
+      out.push_back({1, i, end.position, zone_name(region1, contact.pieces1),
                      region1.definition.pieces[static_cast<std::size_t>(end.next)].name});
     }
   }
@@ -207,7 +209,7 @@ std::vector<SmoothZoneEnd> smooth_zone_ends(const ContactProblem& problem, const
   // of body 1 across the end: a coarser side 1 leaves its next node unpaired), unless its
   // node is at a corner of side 1.
   const auto& mesh2 = region2->mesh;
-  const auto& elements2 = mesh2.piece_elements[static_cast<std::size_t>(contact.piece2)];
+  const auto elements2 = zone_elements(mesh2, contact.pieces2);
   for (int k = 0; k < 2; ++k) {
     const PieceEnd& end = ends[1][k];
     if (!runs_on(end, mesh2, analysis)) continue;
@@ -223,7 +225,7 @@ std::vector<SmoothZoneEnd> smooth_zone_ends(const ContactProblem& problem, const
     const double length1 = element_length_at(mesh1, pair.node1);
     if (distance > (end_length + length1) * (1.0 + 1e-9) || near_corner(corners[0], pair.position1, end_length + length1))
       continue;
-    out.push_back({2, nearest, end.position, zone_name(*region2, contact.piece2),
+    out.push_back({2, nearest, end.position, zone_name(*region2, contact.pieces2),
                    region2->definition.pieces[static_cast<std::size_t>(end.next)].name});
   }
   return out;

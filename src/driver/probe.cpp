@@ -124,8 +124,9 @@ void apply_adapted_zones(const json& summary, contact::ContactProblem& model) {
   for (std::size_t c = 0; c < contacts.size() && c < model.contacts.size(); ++c) {
     const auto zone = contacts[c].find("zone");
     if (zone == contacts[c].end()) continue;
-    contact::set_zone_meshes(model, static_cast<int>(c), zone->value("breakpoints1", std::vector<double>{}),
-                             zone->value("breakpoints2", std::vector<double>{}));
+    using Meshes = std::vector<std::vector<double>>;
+    contact::set_zone_meshes(model, static_cast<int>(c), zone->value("breakpoints1", Meshes{}),
+                             zone->value("breakpoints2", Meshes{}));
   }
 }
 

@@ -192,7 +192,8 @@ std::int64_t most_pairs(const contact::ContactProblem& problem, const geometry::
   std::int64_t pairs = 0;
   for (const auto& contact : problem.contacts) {
     bem::BodyDefinition zone;
-    zone.pieces.push_back(problem.region(contact.side1).body.pieces.at(contact.side1.piece));
+    for (const int piece : contact.side1.pieces)
+      zone.pieces.push_back(problem.region(contact.side1).body.pieces.at(static_cast<std::size_t>(piece)));
     pairs += body_nodes(zone, mesh);
   }
   return pairs;

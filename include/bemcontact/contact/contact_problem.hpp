@@ -1,9 +1,10 @@
 #pragma once
 // The definition of a two-body contact problem (chapter V) as the numerics see it: two
-// bodies with their own conditions, one boundary of each declared as the potential contact
+// bodies with their own conditions, boundaries of each declared as the potential contact
 // zone Gamma_c, the contact law (bilateral or unilateral, Coulomb coefficient beta), the
 // loading (prescribed data of the bodies, optionally a total force on one boundary) and the
 // load history. Built by io/contact_file from a problem file, or by code (tests, cases).
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <optional>
@@ -145,10 +146,17 @@ struct Body {
   bool named = false;
 };
 
+// One side of a contact: boundaries of one region joined end to start, in the order of
+// travel along its contour (one zone, paired as one: pairing.hpp), or a rigid body's whole
+// contour (no pieces).
 struct BoundaryRef {
   int body = -1;
   int region = 0;
-  int piece = -1;  // -1: the whole contour of a rigid body
+  std::vector<int> pieces;
+  bool whole_contour() const { return pieces.empty(); }
+  bool holds(int r, int piece) const {
+    return r == region && std::find(pieces.begin(), pieces.end(), piece) != pieces.end();
+  }
 };
 
 // The law of one contact: the one place a contact's law lives (filled by the reader with
@@ -306,5 +314,11 @@ dd::DecompositionProblem decomposition_problem(const ContactProblem& model, cons
 // Two one-region elastic bodies named body1 and body2 and one contact between piece1 of
 // the first and piece2 of the second (pieces to be added by the caller when -1).
 ContactProblem two_body_problem(int piece1 = -1, int piece2 = -1);
+
+// An elastic side's boundaries in order, their joined length, and their names for messages
+// ("boundary 'a' of body 'b'", "boundaries 'a', 'c' of body 'b'").
+std::vector<const geometry::BoundaryPiece*> side_pieces(const ContactProblem& problem, const BoundaryRef& side);
+double side_length(const ContactProblem& problem, const BoundaryRef& side);
+std::string side_text(const ContactProblem& problem, const BoundaryRef& side);
 
 }  // namespace bemcontact::contact

@@ -89,11 +89,12 @@ struct ZonePass {
   double edge_spacing = 0.0;  // the largest pair spacing at the zone's edges (0: no edge)
   bool resolved = false;   // edge_spacing <= resolution x width
 };
-// The passes, and the final meshes of the two boundaries (element end points as fractions
-// of their lengths; breakpoints2 empty for a rigid side 2). No passes: a declared zone.
+// The passes, and the final meshes of the two sides (per boundary of the side, in its
+// order: element end points as fractions of its length; breakpoints2 empty for a rigid side
+// 2). No passes: a declared zone.
 struct AdaptedZone {
   std::vector<ZonePass> passes;
-  std::vector<double> breakpoints1, breakpoints2;
+  std::vector<std::vector<double>> breakpoints1, breakpoints2;
 };
 
 // How the Newton systems of a history were solved (step_solvers.hpp, NewtonSystemCache):

@@ -69,8 +69,10 @@ struct SmoothZoneEnd {
 
 // The pairs of one contact interface.
 struct PreparedInterface {
-  int region1 = -1, piece1 = -1;  // side 1: index into PreparedContact::regions, its zone piece
-  int region2 = -1, piece2 = -1;  // side 2 when elastic
+  int region1 = -1;               // side 1: index into PreparedContact::regions
+  std::vector<int> pieces1;       // its zone's pieces, joined end to start (BoundaryRef)
+  int region2 = -1;               // side 2 when elastic
+  std::vector<int> pieces2;
   int rigid_body = -1;            // side 2 when rigid: index into ContactProblem::bodies
   std::vector<ContactPair> pairs;                    // in the order of body 1's zone
   int unpaired_nodes1 = 0;                           // side-1 zone nodes facing no part of side 2
@@ -119,6 +121,13 @@ struct PreparedContact {
 // a side-1 zone faces its side 2, or the bodies initially overlap; InputError for
 // references out of range.
 PreparedContact prepare_contact(const ContactProblem& problem);
+
+// The nodes and elements of a zone of joined pieces, in order (a node the pieces share
+// once).
+std::vector<Index> zone_nodes(const geometry::BoundaryMesh& mesh, const std::vector<int>& pieces);
+std::vector<Index> zone_elements(const geometry::BoundaryMesh& mesh, const std::vector<int>& pieces);
+// "boundary 'a' of body 'b'", "boundaries 'a', 'c' of region 'r' of body 'b'", for messages.
+std::string zone_name(const PreparedRegion& region, const std::vector<int>& pieces);
 
 // Whether the pairs face sideways (every pair normal closer to the x1 axis): their
 // abscissa along the zone is then x2 (y, z), otherwise x1 (x, r).

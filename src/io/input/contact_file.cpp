@@ -42,15 +42,15 @@ contact::BoundaryRef boundary_named(const contact::ContactProblem& problem, int 
     for (std::size_t k = 0; k < b.regions[r].body.pieces.size(); ++k) {
       const auto& piece = b.regions[r].body.pieces[k];
       if (piece.name == name) {
-        if (found.piece >= 0)
+        if (!found.whole_contour())
           reader.fail(key, "body '" + b.name + "' has two boundaries named '" + name + "' (regions '" +
                                b.regions[found.region].body.name + "' and '" + b.regions[r].body.name +
                                "'); rename one");
-        found = {body, static_cast<int>(r), static_cast<int>(k)};
+        found = {body, static_cast<int>(r), {static_cast<int>(k)}};
       }
       names += (names.empty() ? "'" : ", '") + piece.name + "'";
     }
-  if (found.piece < 0) reader.fail(key, "body '" + b.name + "' has no boundary named '" + name + "'; its boundaries are " + names);
+  if (found.whole_contour()) reader.fail(key, "body '" + b.name + "' has no boundary named '" + name + "'; its boundaries are " + names);
   return found;
 }
 
@@ -468,11 +468,10 @@ void check_nonlocal_radius(const TableReader& reader, const contact::ContactInte
                                    "axisymmetry");
   // A kernel wider than the zone mollifies the whole contact into one mean: not a law of the
   // pairs' neighbourhoods any more.
-  const auto& piece = problem.region(contact.side1).body.pieces.at(static_cast<std::size_t>(contact.side1.piece));
-  const double length = geometry::piece_length(piece);
+  const double length = contact::side_length(problem, contact.side1);
   if (rho > length)
-    reader.fail("nonlocal_radius", "the radius " + format_number(rho) + " is larger than the contact boundary '" +
-                                       piece.name + "' (length " + format_number(length) +
+    reader.fail("nonlocal_radius", "the radius " + format_number(rho) + " is larger than side 1's contact zone " +
+                                       contact::side_text(problem, contact.side1) + " (length " + format_number(length) +
                                        "); the kernel should span a part of the contact, a tenth of its width say");
 }
 
@@ -557,10 +556,10 @@ void read_force_load(const TableReader& load, contact::ContactProblem& problem) 
     if (!boundary) load.fail("boundary", "missing: the boundary that carries the force");
     const auto ref = boundary_named(problem, force.body, *boundary, load, "boundary");
     force.region = ref.region;
-    force.piece = ref.piece;
+    force.piece = ref.pieces.front();
     for (const auto& contact : problem.contacts)
       for (const auto* side : {&contact.side1, &contact.side2})
-        if (side->body == ref.body && side->region == ref.region && side->piece == ref.piece)
+        if (side->body == ref.body && side->holds(ref.region, force.piece))
           load.fail("boundary", "the force cannot act on a contact boundary itself");
     if (problem.region(ref).body.conditions[force.piece].signature != "free" &&
         problem.region(ref).body.conditions[force.piece].signature != "rigid platen")
@@ -720,6 +719,16 @@ void read_history(const TableReader& root, FileContext& context, contact::Contac
 }
 
 // Side `side` (1 or 2) of a contact from its body and boundary names.
+// The boundary names of a side: one string, or a list of them (a chain).
+std::vector<std::string> side_names(const TableReader& reader, const std::string& key) {
+  const toml::node* node = reader.find(key);
+  if (!node) return {};
+  if (node->is_string()) return {*node->value<std::string>()};
+  std::vector<std::string> names;
+  for (const toml::node& item : *node->as_array()) names.push_back(*item.value<std::string>());  // checked: strings
+  return names;
+}
+
 contact::BoundaryRef read_side(const TableReader& reader, const contact::ContactProblem& problem, int body, int side) {
   const std::string key = "boundary" + std::to_string(side);
   const auto& b = problem.bodies[body];
@@ -729,20 +738,44 @@ contact::BoundaryRef read_side(const TableReader& reader, const contact::Contact
                                                "(body2), the elastic zone the first");
     if (reader.has(key))
       reader.fail(key, "body '" + b.name + "' is rigid: its whole profile is the contact surface; remove '" + key + "'");
-    return {body, 0, -1};
+    return {body, 0, {}};
   }
-  const auto name = reader.optional_string(key);
-  if (!name) reader.fail(key, "missing: name the boundary of body '" + b.name + "' in contact");
-  const auto ref = boundary_named(problem, body, *name, reader, key);
-  const auto& condition = problem.region(ref).body.conditions[ref.piece];
-  if (condition.kind[0] == bem::ConditionKind::displacement || condition.kind[1] == bem::ConditionKind::displacement ||
-      condition.value[0] || condition.value[1] || !problem.region(ref).piece_interface[ref.piece].empty())
-    throw InputError(problem.region(ref).body.pieces[ref.piece].where,
-                     "boundary '" + *name + "' of body '" + b.name + "' carries conditions (" + condition.signature +
-                         ") but is in contact (" + reader.key_path(key) +
-                         "); a contact boundary must have none: the contact sets them (remove them, or name another "
-                         "boundary in the contact)");
-  return ref;
+  const auto names = side_names(reader, key);
+  if (names.empty()) reader.fail(key, "missing: name the boundary of body '" + b.name + "' in contact");
+  contact::BoundaryRef out{body, 0, {}};
+  for (std::size_t k = 0; k < names.size(); ++k) {
+    const auto& name = names[k];
+    const auto ref = boundary_named(problem, body, name, reader, key);
+    const int piece = ref.pieces.front();
+    const auto& region = problem.region(ref);
+    const auto& condition = region.body.conditions[piece];
+    if (condition.kind[0] == bem::ConditionKind::displacement || condition.kind[1] == bem::ConditionKind::displacement ||
+        condition.value[0] || condition.value[1] || !region.piece_interface[piece].empty())
+      throw InputError(region.body.pieces[piece].where,
+                       "boundary '" + name + "' of body '" + b.name + "' carries conditions (" + condition.signature +
+                           ") but is in contact (" + reader.key_path(key) +
+                           "); a contact boundary must have none: the contact sets them (remove them, or name another "
+                           "boundary in the contact)");
+    if (k == 0) {
+      out.region = ref.region;
+    } else {
+      // A side is one zone: its boundaries of one region, each starting where the one before ends.
+      if (ref.region != out.region)
+        reader.fail(key, "boundaries '" + names[0] + "' and '" + name + "' of body '" + b.name +
+                             "' lie in different regions; a side's boundaries must be of one region (one contact per "
+                             "region)");
+      if (out.holds(ref.region, piece)) reader.fail(key, "boundary '" + name + "' is named twice");
+      const auto& before = region.body.pieces[out.pieces.back()];
+      const auto& next = region.body.pieces[piece];
+      const double size = std::max(geometry::piece_length(before), geometry::piece_length(next));
+      if ((before.end - next.start).norm() > 1e-9 * size)
+        reader.fail(key, "boundary '" + name + "' does not start where '" + names[k - 1] +
+                             "' ends: list the side's boundaries joined end to start, in the order of travel along "
+                             "the body's contour");
+    }
+    out.pieces.push_back(piece);
+  }
+  return out;
 }
 
 }  // namespace
@@ -834,16 +867,18 @@ void read_contact_tables(const toml::node& contact_node, const TableReader& root
     interface.side1 = read_side(contact, problem, body1, 1);
     interface.side2 = read_side(contact, problem, body2, 2);
     // Self-contact (a slot's or a crack's faces, a split ring): two boundaries of one body.
-    if (body1 == body2 && interface.side1.region == interface.side2.region &&
-        interface.side1.piece == interface.side2.piece)
-      contact.fail("boundary2", "a boundary cannot be in contact with itself; for self-contact name two boundaries "
-                                "of the body (split the boundary where the faces meet)");
+    if (body1 == body2)
+      for (const int piece : interface.side2.pieces)
+        if (interface.side1.holds(interface.side2.region, piece))
+          contact.fail("boundary2", "a boundary cannot be in contact with itself; for self-contact name two "
+                                    "boundaries of the body (split the boundary where the faces meet)");
     read_pairing(contact, interface);
     for (const auto& other : problem.contacts)
       for (const auto* side : {&other.side1, &other.side2})
         for (const auto* mine : {&interface.side1, &interface.side2})
-          if (mine->piece >= 0 && side->body == mine->body && side->region == mine->region && side->piece == mine->piece)
-            contact.fail("boundary1", "a boundary is in two contacts ('" + other.name + "' and '" + interface.name +
+          for (const int piece : mine->pieces)
+            if (side->body == mine->body && side->holds(mine->region, piece))
+              contact.fail("boundary1", "a boundary is in two contacts ('" + other.name + "' and '" + interface.name +
                                           "'); split it into two boundaries");
     // Each contact its own law (kind, friction). The tangential coupling shapes the
     // condensed operator: one for every contact.

@@ -198,7 +198,7 @@ std::vector<Key> zone_keys() {
              between(0, 1, true, true)),
       integer("max_adaptive_passes", "8", "contact_resolution: the most solves on refined meshes",
               between(1, 50, false, false)),
-      integer("max_zone_elements", "5000", "contact_resolution: the most elements on each side's boundary",
+      integer("max_zone_elements", "5000", "contact_resolution: the most elements on each side's boundaries together",
               between(2, 200000, false, false)),
   };
 }
@@ -371,14 +371,18 @@ std::vector<Table> build_tables() {
   t.push_back({"contact", "[[contact]]", "a [[contact]] table (solver keys go in [solver], a force in [load])",
                joined({named("`\"contact\"`, or `\"contact<k>\"`", "the contact's name (output files `<name>.csv`, ...)"),
                        {of(Type::string, "body1", "required", "side 1: an elastic body (the pairs are its nodes)"),
-                        of(Type::string, "boundary1", "required", "side 1's boundary"),
+                        of(Type::strings, "boundary1", "required",
+                           "side 1's boundary, or its boundaries joined end to start in the order of travel"),
                         of(Type::string, "body2", "required",
                            "side 2: an elastic body (body1 itself: self-contact) or a rigid body"),
-                        of(Type::string, "boundary2", "required (elastic side 2)", "side 2's boundary")},
+                        of(Type::strings, "boundary2", "required (elastic side 2)",
+                           "side 2's boundary, or its boundaries joined end to start in the order of travel")},
                        law_keys(), pairing_keys(), zone_keys()})});
   t.push_back({"contact.single", "[contact]", "the [contact] table",
-               joined({{of(Type::string, "boundary1", "required", "the first [[body]]'s contact boundary"),
-                        of(Type::string, "boundary2", "required", "the second [[body]]'s contact boundary"),
+               joined({{of(Type::strings, "boundary1", "required",
+                           "the first [[body]]'s contact boundary, or its boundaries joined end to start in order"),
+                        of(Type::strings, "boundary2", "required",
+                           "the second [[body]]'s contact boundary, or its boundaries joined end to start in order"),
                         of(Type::table, "load", "none", "its force load ([contact.load])")},
                        law_keys(), pairing_keys(), zone_keys(), contact_solver_keys()})});
   t.push_back({"contact.solver", "[solver] (contact files)", "the [solver] table", contact_solver_keys()});
@@ -450,6 +454,7 @@ std::string type_text(const Key& key) {
     case Type::integer: return with_range("integer");
     case Type::boolean: return "`true` or `false`";
     case Type::string: return "string";
+    case Type::strings: return "string or list of strings";
     case Type::name: return "name";
     case Type::choice: return quoted_choices();
     case Type::point: return "vertex name or `[x, y]`";

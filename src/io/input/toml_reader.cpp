@@ -183,6 +183,11 @@ void TableReader::check_value(const schema::Key& key, const toml::node& node) co
         if (const std::string problem = name_problem(*node.value<std::string>()); !problem.empty())
           fail(key.name, problem);
       return;
+    case Type::strings:
+      if (!node.is_string() && !(node.is_array() && !node.as_array()->empty() &&
+                                 node.as_array()->is_homogeneous(toml::node_type::string)))
+        fail(key.name, "must be a string in quotes or a list of strings [\"a\", \"b\"]" + found);
+      return;
     case Type::choice:
       (void)choice(key.name, key.choices, std::nullopt);  // present: checked as the readers read it
       return;

@@ -270,8 +270,9 @@ std::optional<HertzReference> hertz_reference(const contact::ContactProblem& pro
   if (problem.analysis != AnalysisType::axisymmetric || problem.forces.size() != 1 || problem.contacts.size() != 1)
     return std::nullopt;
   const auto& contact = problem.contacts.front();
+  if (contact.side1.pieces.size() != 1 || contact.side2.pieces.size() > 1) return std::nullopt;  // one arc, one line
   const auto& side1 = problem.region(contact.side1).body;
-  const auto& zone1 = side1.pieces[contact.side1.piece];
+  const auto& zone1 = side1.pieces[contact.side1.pieces.front()];
   const auto& body2 = problem.bodies[contact.side2.body];
   double R = 0.0;
   Material material2{std::numeric_limits<double>::infinity(), 0.3};  // rigid: E* from side 1 alone
@@ -279,7 +280,7 @@ std::optional<HertzReference> hertz_reference(const contact::ContactProblem& pro
     if (body2.rigid->profile != "sphere" || zone1.shape != geometry::PieceShape::line) return std::nullopt;
     R = geometry::arc_radius(body2.rigid->contour.front());
   } else {
-    const auto& zone2 = problem.region(contact.side2).body.pieces[contact.side2.piece];
+    const auto& zone2 = problem.region(contact.side2).body.pieces[contact.side2.pieces.front()];
     if (zone1.shape != geometry::PieceShape::arc || zone2.shape != geometry::PieceShape::line) return std::nullopt;
     R = geometry::arc_radius(zone1);
     material2 = problem.region(contact.side2).body.material;

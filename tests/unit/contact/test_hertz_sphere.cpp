@@ -15,7 +15,8 @@ namespace {
 ContactProblem coarse_ball() {
   auto file = io::read_contact_file(std::string(BEMCONTACT_EXAMPLES_DIR) + "/contact_hertz_sphere.toml");
   const auto& contact = file.problem.contacts.front();
-  for (const auto* side : {&contact.side1, &contact.side2}) file.problem.region(*side).body.pieces[side->piece].elements = 15;
+  for (const auto* side : {&contact.side1, &contact.side2})
+    for (const int piece : side->pieces) file.problem.region(*side).body.pieces[piece].elements = 15;
   return file.problem;
 }
 

@@ -120,7 +120,7 @@ TEST(NonlocalFriction, KeyIsCheckedWhereItIsRead) {
   EXPECT_TRUE(negative.find("nonlocal_radius") != std::string::npos) << negative;
   EXPECT_TRUE(negative.find("punch.toml:") != std::string::npos) << negative;
   const auto wide = nonlocal_input_error(replaced(text, "\nrho = 0.48", "\nrho = 50.0"));
-  EXPECT_TRUE(wide.find("larger than the contact boundary 'contact'") != std::string::npos) << wide;
+  EXPECT_TRUE(wide.find("larger than side 1's contact zone boundary 'contact' of body 'punch'") != std::string::npos) << wide;
   const auto axisymmetric = nonlocal_input_error(replaced(example_text("contact_spence_sphere.toml"), "[contact]\n",
                                                           "[contact]\nnonlocal_radius = 0.01\n"));
   EXPECT_TRUE(axisymmetric.find("plane problems only") != std::string::npos) << axisymmetric;

@@ -43,6 +43,25 @@ std::string zone_solver_error(const std::string& text) {
 
 bool has(const std::string& text, const std::string& part) { return test_support::mentions(text, part); }
 
+// The half cylinder on a block from candidates, each side's candidate split where the
+// contact will be: the cylinder's quarter into two arcs at x = 0.04 (a = 0.07 at P = 264.6),
+// the block's top into two lines at x = 0.03.
+std::string joined_cylinder(const std::string& boundary1, const std::string& boundary2) {
+  std::string text = example_text("contact_hertz_cylinder_adaptive.toml");
+  text = replaced(text, "E = [\"R\", \"R\"]\n", "E = [\"R\", \"R\"]\nM = [0.04, \"R - sqrt(R^2 - 0.04^2)\"]\n");
+  text = replaced(text, "name = \"surface\"      # candidate: the whole lower quarter\nshape = \"arc\"\nfrom = \"S\"\nto = \"E\"\n"
+                        "center = \"O\"\nelements = 16",
+                  "name = \"surface low\"\nshape = \"arc\"\nfrom = \"S\"\nto = \"M\"\ncenter = \"O\"\nelements = 4\n"
+                  "[[body.boundary]]\nname = \"surface high\"\nshape = \"arc\"\nfrom = \"M\"\nto = \"E\"\ncenter = \"O\"\n"
+                  "elements = 12");
+  text = replaced(text, "F = [0.0, 0.0]\n", "F = [0.0, 0.0]\nG = [0.03, 0.0]\n");
+  text = replaced(text, "name = \"top\"          # candidate: the whole top face\nfrom = \"C\"\nto = \"F\"\nelements = 16",
+                  "name = \"top outer\"\nfrom = \"C\"\nto = \"G\"\nelements = 12\n[[body.boundary]]\nname = \"top inner\"\n"
+                  "from = \"G\"\nto = \"F\"\nelements = 4");
+  text = replaced(text, "boundary1 = \"surface\"\nboundary2 = \"top\"", "boundary1 = " + boundary1 + "\nboundary2 = " + boundary2);
+  return text;
+}
+
 }  // namespace
 
 // The stretch gets elements of at most the size asked, the rest grows by at most the
@@ -103,8 +122,10 @@ TEST(ZoneRefinement, HertzBallFromCandidateSurfaces) {
   EXPECT_TRUE(last.resolved);
   EXPECT_LE(last.edge_spacing, 0.02 * last.width);
   EXPECT_EQ(last.pairs, static_cast<int>(result.pairs.size()));
-  EXPECT_EQ(static_cast<int>(zone.breakpoints1.size()) - 1, last.elements1);
-  EXPECT_EQ(static_cast<int>(zone.breakpoints2.size()) - 1, last.elements2);
+  ASSERT_EQ(zone.breakpoints1.size(), 1u);  // one boundary per side
+  ASSERT_EQ(zone.breakpoints2.size(), 1u);
+  EXPECT_EQ(static_cast<int>(zone.breakpoints1.front().size()) - 1, last.elements1);
+  EXPECT_EQ(static_cast<int>(zone.breakpoints2.front().size()) - 1, last.elements2);
   const auto hertz = reference::hertz_point_contact(31.5, 1.0, problem.elastic(0).material,
                                                     std::numeric_limits<double>::infinity(), problem.elastic(1).material);
   EXPECT_NEAR(result.summary.contact_radius / hertz.contact_radius(), 1.0, 3e-3);
@@ -149,6 +170,59 @@ TEST(ZoneRefinement, UnresolvedZonesAreSolverErrors) {
       replaced(adaptive_ball(), "contact_resolution = \"resolution\"", "contact_resolution = 0.001\nmax_zone_elements = 200"));
   EXPECT_TRUE(has(elements, "over max_zone_elements = 200")) << elements;
   EXPECT_TRUE(has(elements, "pass ")) << elements;
+}
+
+// A side of several boundaries joined end to start is one zone: the contact straddling both
+// joints is found and resolved as from one candidate per side, and matches 2D Hertz within
+// the bound of validate zone-growth (1 %); the same problem from the unsplit candidates
+// differs only by where the meshes' breakpoints fall (0.3 %). Each side reports one mesh per
+// boundary.
+TEST(ZoneRefinement, JoinedBoundariesAreOneZone) {
+  const auto joined = contact::solve_contact(
+      adaptive_problem(joined_cylinder("[\"surface low\", \"surface high\"]", "[\"top outer\", \"top inner\"]")));
+  const auto whole = contact::solve_contact(adaptive_problem(example_text("contact_hertz_cylinder_adaptive.toml")));
+  ASSERT_TRUE(joined.zone.passes.back().resolved);
+  ASSERT_EQ(joined.zone.breakpoints1.size(), 2u);
+  ASSERT_EQ(joined.zone.breakpoints2.size(), 2u);
+  const auto elements = [](const std::vector<std::vector<double>>& side) {
+    int count = 0;
+    for (const auto& piece : side) count += static_cast<int>(piece.size()) - 1;
+    return count;
+  };
+  EXPECT_EQ(elements(joined.zone.breakpoints1), joined.zone.passes.back().elements1);
+  EXPECT_EQ(elements(joined.zone.breakpoints2), joined.zone.passes.back().elements2);
+  // 2D Hertz for the whole cylinder (P per unit length; the half model carries P/2).
+  const double P = 264.6, R = 1.0, nu = 0.32;
+  const double E_star = 1.0 / ((1.0 - nu * nu) / 432000.0 + (1.0 - nu * nu) / 72000.0);
+  const double a = std::sqrt(4.0 * P * R / (std::numbers::pi * E_star)), p0 = 2.0 * P / (std::numbers::pi * a);
+  EXPECT_NEAR(joined.summary.contact_radius / a, 1.0, 0.01);
+  EXPECT_NEAR(joined.summary.centre_pressure / p0, 1.0, 0.01);
+  EXPECT_NEAR(joined.summary.contact_radius / whole.summary.contact_radius, 1.0, 3e-3);
+  EXPECT_NEAR(joined.summary.centre_pressure / whole.summary.centre_pressure, 1.0, 3e-3);
+  // The pairs run along the joined zone in order, across both joints.
+  for (std::size_t i = 1; i < joined.pairs.size(); ++i)
+    EXPECT_GT(joined.pairs[i].position.x(), joined.pairs[i - 1].position.x());
+}
+
+// A side's boundaries must be of one region, join end to start in the order of travel, and
+// be named once; a boundary of a chain cannot be in another contact or carry a force.
+TEST(ZoneRefinement, JoinedBoundariesAreChecked) {
+  const auto error = [](const std::string& boundary1, const std::string& boundary2) {
+    return test_support::contact_input_error(joined_cylinder(boundary1, boundary2), "cylinder.toml");
+  };
+  const auto reversed = error("[\"surface high\", \"surface low\"]", "[\"top outer\", \"top inner\"]");
+  EXPECT_TRUE(has(reversed, "cylinder.toml:")) << reversed;
+  EXPECT_TRUE(has(reversed, "boundary1")) << reversed;
+  EXPECT_TRUE(has(reversed, "does not start where 'surface high' ends")) << reversed;
+  const auto twice = error("[\"surface low\", \"surface low\"]", "\"top inner\"");
+  EXPECT_TRUE(has(twice, "named twice")) << twice;
+  const auto apart = error("\"surface low\"", "[\"top outer\", \"side\"]");
+  EXPECT_TRUE(has(apart, "boundary2")) << apart;
+  const auto empty = error("[]", "\"top inner\"");
+  EXPECT_TRUE(has(empty, "boundary1")) << empty;
+  EXPECT_TRUE(has(empty, "list of strings")) << empty;
+  const auto number = error("[\"surface low\", 3]", "\"top inner\"");
+  EXPECT_TRUE(has(number, "list of strings")) << number;
 }
 
 }  // namespace bemcontact

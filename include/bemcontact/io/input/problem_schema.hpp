@@ -14,7 +14,7 @@ namespace bemcontact::io::schema {
 // What a key holds. number / integer: a number or an expression of parameters in quotes;
 // field: a number, an expression of the position in quotes, or a { table, along } table;
 // point: a vertex name or [x, y]; amplitude: [[t, value], ...] or a cyclic table.
-enum class Type { number, integer, boolean, string, name, choice, point, points, field, amplitude, table, tables,
+enum class Type { number, integer, boolean, string, strings, name, choice, point, points, field, amplitude, table, tables,
                   table_or_tables, grid };
 
 // An interval of valid numbers; an open end excludes its value.
