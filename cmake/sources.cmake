@@ -11,14 +11,15 @@ set(BEMCONTACT_GEOMETRY_SOURCES
   src/geometry/boundary.cpp
   src/geometry/mesh.cpp
   src/geometry/symmetry.cpp)
-set(BEMCONTACT_PLASTICITY_SOURCES
-  src/plasticity/j2_material.cpp)
 set(BEMCONTACT_KERNELS_SOURCES
   src/kernels/axisymmetric.cpp
   src/kernels/elliptic.cpp
   src/kernels/halfspace_ring.cpp
   src/kernels/kelvin2d.cpp
   src/kernels/ring_integrals.cpp)
+set(BEMCONTACT_PLASTICITY_SOURCES
+  src/plasticity/initial_stress.cpp
+  src/plasticity/j2_material.cpp)
 set(BEMCONTACT_OPERATORS_SOURCES
   src/operators/bordered_lu.cpp
   src/operators/dense_lu.cpp
@@ -129,7 +130,7 @@ set(BEMCONTACT_VALIDATION_SOURCES
 set(BEMCONTACT_PARALLEL_SOURCES
   src/parallel/session.cpp)
 
-set(BEMCONTACT_LIBRARY_LAYERS CORE QUADRATURE GEOMETRY PLASTICITY KERNELS OPERATORS REFERENCE INTEGRATION BEM DD CONTACT IO DRIVER)
+set(BEMCONTACT_LIBRARY_LAYERS CORE QUADRATURE GEOMETRY KERNELS PLASTICITY OPERATORS REFERENCE INTEGRATION BEM DD CONTACT IO DRIVER)
 
 function(bemcontact_check_source_lists)
   file(GLOB_RECURSE present RELATIVE ${PROJECT_SOURCE_DIR} CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/*.cpp)

@@ -1,0 +1,43 @@
+#pragma once
+// The field of an initial stress sigma0 that is constant on each polygonal cell (plane
+// strain; plane stress with the kernel's nu): the domain term of the initial-strain boundary
+// element formulation of elastoplasticity [BrebbiaTellesWrobel1984, ch. 13; BonnetMukherjee1996],
+// written as line integrals over the cells' edges.
+//
+// With sigma = C eps - sigma0 and div sigma = 0, Somigliana's identity gains
+//   int_Omega grad_y U(x, y) : sigma0(y) dOmega = sum_e int_{dE} U(x, y) sigma0_e n_e dGamma
+// (the divergence theorem on each cell, where sigma0 is constant and U weakly singular), so
+//   c u(x) + int T u = int U t + sum_e int_{dE} U sigma0_e n_e                (boundary equation)
+//   C eps(x) = int D t - int S u + sum_e int_{dE} D sigma0_e n_e,  sigma = C eps - sigma0
+// at a point x off every edge (t the true traction). The strongly singular domain kernel
+// and its free term never appear: a cell's own edges are at a distance from its interior
+// points. The edge integrals are graded toward the point of the edge nearest to x (the
+// logarithm of U on an edge through x, the 1/r of D near one).
+#include <array>
+#include <vector>
+
+#include "bemcontact/kernels/kelvin2d.hpp"
+
+namespace bemcontact::plasticity {
+
+// A triangular cell, counterclockwise.
+struct Cell {
+  std::array<Vec2, 3> vertices;
+  Vec2 centroid() const { return (vertices[0] + vertices[1] + vertices[2]) / 3.0; }
+  double area() const;
+};
+
+// In-plane initial stress components (11, 22, 12).
+using InitialStress = Eigen::Vector3d;
+using Matrix23 = Eigen::Matrix<double, 2, 3>;
+using Matrix33 = Eigen::Matrix3d;
+
+// The displacement at x (2 components) per unit initial stress component of the cell
+// (columns 11, 22, 12). x may lie on an edge (a collocation node of the boundary).
+Matrix23 cell_displacement_influence(const kernels::KelvinPlane& kernel, const Vec2& x, const Cell& cell);
+
+// C eps at x (rows 11, 22, 12) per unit initial stress component of the cell; x must not
+// lie on the cell's edges (inside the cell is allowed: then sigma = C eps - sigma0 there).
+Matrix33 cell_stress_influence(const kernels::KelvinPlane& kernel, const Vec2& x, const Cell& cell);
+
+}  // namespace bemcontact::plasticity

@@ -1,0 +1,105 @@
+#include "bemcontact/plasticity/initial_stress.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "bemcontact/quadrature/gauss_legendre.hpp"
+
+namespace bemcontact::plasticity {
+namespace {
+
+constexpr int kPanelPoints = 8;
+// Panels halve toward the nearest point down to this fraction of its distance (of the edge
+// length when x lies on the edge: the logarithm's panel there is negligible).
+constexpr double kPanelToDistance = 0.25;
+constexpr double kSmallestPanel = 1e-10;
+constexpr int kMaxLevels = 40;
+
+// Calls add(y, w) at the quadrature points of the segment [a, b], graded toward the point
+// of the segment nearest to x.
+template <class Add>
+void for_each_edge_point(const Vec2& a, const Vec2& b, const Vec2& x, Add&& add) {
+  const Vec2 d = b - a;
+  const double length = d.norm();
+  const double nearest = std::clamp((x - a).dot(d) / (length * length), 0.0, 1.0) * length;
+  const double distance = (a + d * (nearest / length) - x).norm();
+  const double finest = std::max(kPanelToDistance * distance, kSmallestPanel * length);
+  const quadrature::Rule& rule = quadrature::gauss_legendre(kPanelPoints);
+  const auto panel = [&](double s0, double s1) {
+    for (int g = 0; g < rule.size(); ++g) {
+      const double s = s0 + 0.5 * (s1 - s0) * (1.0 + rule.nodes[g]);
+      add(a + d * (s / length), 0.5 * std::abs(s1 - s0) * rule.weights[g]);
+    }
+  };
+  // Each side of the nearest point: panels [nearest + h/2, nearest + h], h halving.
+  for (const double side : {-1.0, 1.0}) {
+    const double span = side < 0.0 ? nearest : length - nearest;
+    if (span <= 0.0) continue;
+    double h = span;
+    int level = 0;
+    while (h > finest && level < kMaxLevels) {
+      panel(nearest + side * 0.5 * h, nearest + side * h);
+      h *= 0.5;
+      ++level;
+    }
+    panel(nearest, nearest + side * h);
+  }
+}
+
+// The outward normal of the edge from a to b of a counterclockwise cell.
+Vec2 outward_normal(const Vec2& a, const Vec2& b) {
+  const Vec2 d = (b - a).normalized();
+  return Vec2(d.y(), -d.x());
+}
+
+// The traction sigma0 n per unit component (11, 22, 12) of sigma0.
+Eigen::Matrix<double, 2, 3> traction_of_components(const Vec2& n) {
+  Eigen::Matrix<double, 2, 3> t;
+  t << n.x(), 0.0, n.y(),  //
+      0.0, n.y(), n.x();
+  return t;
+}
+
+}  // namespace
+
+double Cell::area() const {
+  const Vec2 u = vertices[1] - vertices[0], v = vertices[2] - vertices[0];
+  return 0.5 * (u.x() * v.y() - u.y() * v.x());
+}
+
+Matrix23 cell_displacement_influence(const kernels::KelvinPlane& kernel, const Vec2& x, const Cell& cell) {
+  Matrix23 out = Matrix23::Zero();
+  for (int k = 0; k < 3; ++k) {
+    const Vec2& a = cell.vertices[k];
+    const Vec2& b = cell.vertices[(k + 1) % 3];
+    const Eigen::Matrix<double, 2, 3> traction = traction_of_components(outward_normal(a, b));
+    for_each_edge_point(a, b, x, [&](const Vec2& y, double w) {
+      // u_k(x) += U(x, y)(k, i) p_i(y)
+      out += w * kernels::kelvin_displacement(kernel, x, y) * traction;
+    });
+  }
+  return out;
+}
+
+Matrix33 cell_stress_influence(const kernels::KelvinPlane& kernel, const Vec2& x, const Cell& cell) {
+  Matrix33 out = Matrix33::Zero();
+  for (int k = 0; k < 3; ++k) {
+    const Vec2& a = cell.vertices[k];
+    const Vec2& b = cell.vertices[(k + 1) % 3];
+    const Eigen::Matrix<double, 2, 3> traction = traction_of_components(outward_normal(a, b));
+    for_each_edge_point(a, b, x, [&](const Vec2& y, double w) {
+      // sigma_ij(x) += D(x, y)[k](i, j) p_k(y)
+      const kernels::StressKernel D = kernels::kelvin_stress_from_traction(kernel, x, y);
+      for (int component = 0; component < 3; ++component)
+        for (int c = 0; c < 2; ++c) {
+          const double p = w * traction(c, component);
+          out(0, component) += D[c](0, 0) * p;
+          out(1, component) += D[c](1, 1) * p;
+          out(2, component) += D[c](0, 1) * p;
+        }
+    });
+  }
+  return out;
+}
+
+}  // namespace bemcontact::plasticity
