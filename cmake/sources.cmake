@@ -17,9 +17,6 @@ set(BEMCONTACT_KERNELS_SOURCES
   src/kernels/halfspace_ring.cpp
   src/kernels/kelvin2d.cpp
   src/kernels/ring_integrals.cpp)
-set(BEMCONTACT_PLASTICITY_SOURCES
-  src/plasticity/initial_stress.cpp
-  src/plasticity/j2_material.cpp)
 set(BEMCONTACT_OPERATORS_SOURCES
   src/operators/bordered_lu.cpp
   src/operators/dense_lu.cpp
@@ -36,6 +33,7 @@ set(BEMCONTACT_REFERENCE_SOURCES
   src/reference/kirsch.cpp
   src/reference/lame.cpp
   src/reference/pin_in_hole.cpp
+  src/reference/plastic_cylinder.cpp
   src/reference/spence.cpp
   src/reference/stress_state.cpp
   src/reference/two_layer_ring.cpp
@@ -57,6 +55,10 @@ set(BEMCONTACT_BEM_SOURCES
   src/bem/probe.cpp
   src/bem/resultants.cpp
   src/bem/rigid_modes.cpp)
+set(BEMCONTACT_PLASTICITY_SOURCES
+  src/plasticity/elastoplastic_region.cpp
+  src/plasticity/initial_stress.cpp
+  src/plasticity/j2_material.cpp)
 set(BEMCONTACT_DD_SOURCES
   src/dd/balancing.cpp
   src/dd/decomposition.cpp
@@ -130,7 +132,7 @@ set(BEMCONTACT_VALIDATION_SOURCES
 set(BEMCONTACT_PARALLEL_SOURCES
   src/parallel/session.cpp)
 
-set(BEMCONTACT_LIBRARY_LAYERS CORE QUADRATURE GEOMETRY KERNELS PLASTICITY OPERATORS REFERENCE INTEGRATION BEM DD CONTACT IO DRIVER)
+set(BEMCONTACT_LIBRARY_LAYERS CORE QUADRATURE GEOMETRY KERNELS OPERATORS REFERENCE INTEGRATION BEM PLASTICITY DD CONTACT IO DRIVER)
 
 function(bemcontact_check_source_lists)
   file(GLOB_RECURSE present RELATIVE ${PROJECT_SOURCE_DIR} CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/*.cpp)

@@ -34,7 +34,7 @@ void for_each_edge_point(const Vec2& a, const Vec2& b, const Vec2& x, Add&& add)
   // Each side of the nearest point: panels [nearest + h/2, nearest + h], h halving.
   for (const double side : {-1.0, 1.0}) {
     const double span = side < 0.0 ? nearest : length - nearest;
-    if (span <= 0.0) continue;
+    if (span <= kSmallestPanel * length) continue;  // x at this end (to round-off): nothing beyond
     double h = span;
     int level = 0;
     while (h > finest && level < kMaxLevels) {

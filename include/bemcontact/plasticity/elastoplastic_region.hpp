@@ -1,0 +1,80 @@
+#pragma once
+// One elastoplastic region in plane strain: the boundary element system of its boundary,
+// the cells that cover where it may yield (plasticity/initial_stress.hpp) and the J2
+// material (plasticity/j2_material.hpp), solved increment by increment under a
+// proportional load (the body's own data times an amplitude, loading and unloading).
+//
+// The implicit initial-strain formulation [BonnetMukherjee1996]: the unknowns of an
+// increment are the total in-plane strains E at the cells' centroids. The boundary system
+// A y = a b + B sigma0 (B: the cells' domain term at the collocation nodes) and Somigliana's
+// stress at the centroids make C E an affine map of the cells' initial stresses,
+//   C E = a s + K sigma0,   sigma0 = lambda tr(eps_p) 1 + 2 G eps_p (in-plane),
+// and the radial return makes eps_p a function of E. Newton on
+//   F(E) = E - C^-1 (a s + K sigma0(eps_p(E))) = 0
+// with the consistent tangent d eps_p / d eps = I - Ce^-1 C_ep converges quadratically.
+// The stress at a centroid is the material's; it is constant over the cell (the plastic
+// strain is cell-wise constant: its error is of the order of the cell size where it varies).
+#include <memory>
+#include <vector>
+
+#include "bemcontact/bem/boundary_system.hpp"
+#include "bemcontact/bem/problem.hpp"
+#include "bemcontact/bem/solution.hpp"
+#include "bemcontact/geometry/mesh.hpp"
+#include "bemcontact/plasticity/initial_stress.hpp"
+#include "bemcontact/plasticity/j2_material.hpp"
+
+namespace bemcontact::operators {
+class DenseLU;
+}
+
+namespace bemcontact::plasticity {
+
+struct IncrementReport {
+  double amplitude = 0.0;
+  int newton_iterations = 0;
+  double residual = 0.0;  // max |F| / (Y / E) at the end
+  int plastic_cells = 0;  // cells that yielded in the increment
+};
+
+class ElastoplasticRegion {
+ public:
+  // Throws Error for a body that is not plane strain, has symmetry lines or a bad
+  // hardening (the reader checks them first), SolverError for a singular system.
+  ElastoplasticRegion(const geometry::BoundaryMesh& mesh, const bem::BodyDefinition& body, AnalysisType type,
+                      const J2Hardening& hardening, std::vector<Cell> cells);
+  ElastoplasticRegion(ElastoplasticRegion&&) noexcept;
+  ~ElastoplasticRegion();
+
+  // Solves the increment to the load amplitude `amplitude` from the state of the last one.
+  // Throws SolverError naming the increment's amplitude and the cell where it fails when
+  // Newton does not converge.
+  IncrementReport advance(double amplitude, int max_iterations = 30, double tolerance = 1e-10);
+
+  const std::vector<Cell>& cells() const { return cells_; }
+  const std::vector<J2State>& states() const { return states_; }
+  // The stress at each cell's centroid (s33 included), and the boundary solution, at the
+  // last increment's end.
+  const std::vector<Mandel>& cell_stress() const { return stress_; }
+  bem::BoundarySolution boundary_solution() const;
+
+ private:
+  InitialStress initial_stress(const Mandel& plastic_strain) const;
+
+  geometry::BoundaryMesh mesh_;
+  Material material_;
+  J2Hardening hardening_;
+  std::vector<Cell> cells_;
+  std::vector<bem::NodeCondition> conditions_;
+  std::vector<bem::ConstraintEquation> constraints_;
+  Matrix boundary_rhs_;   // [b | B]: the load at amplitude 1 and the cells' domain term
+  Matrix boundary_unknowns_;  // A^-1 [b | B]
+  Vector load_stress_;    // s: C E per unit amplitude (3 per cell, tensor components 11, 22, 12)
+  Matrix cell_operator_;  // K: C E per unit initial stress component of each cell
+  std::vector<J2State> states_;
+  std::vector<Mandel> stress_;
+  Vector strain_;         // E of the last increment
+  double amplitude_ = 0.0;
+};
+
+}  // namespace bemcontact::plasticity

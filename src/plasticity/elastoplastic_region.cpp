@@ -1,0 +1,202 @@
+#include "bemcontact/plasticity/elastoplastic_region.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "bemcontact/bem/assembly.hpp"
+#include "bemcontact/bem/boundary_system.hpp"
+#include "bemcontact/core/error.hpp"
+#include "bemcontact/integration/plane_element.hpp"
+#include "bemcontact/operators/dense_lu.hpp"
+
+namespace bemcontact::plasticity {
+namespace {
+
+const double kSqrt2 = std::sqrt(2.0);
+
+// Plane-strain C on the in-plane tensor components (11, 22, 12).
+Matrix33 plane_strain_stiffness(const Material& material) {
+  const double G = material.shear_modulus(), nu = material.poisson_ratio;
+  const double lambda = 2.0 * G * nu / (1.0 - 2.0 * nu);
+  Matrix33 C;
+  C << lambda + 2 * G, lambda, 0.0,  //
+      lambda, lambda + 2 * G, 0.0,   //
+      0.0, 0.0, 2 * G;
+  return C;
+}
+
+// The 3D strain (Mandel) of the in-plane tensor components, eps_33 = 0.
+Mandel strain_of(const Eigen::Vector3d& E) { return mandel(E[0], E[1], 0.0, E[2]); }
+
+// Nodal values (u, t), 4N, of the boundary unknowns y with the conditions' values scaled.
+Vector boundary_values(const Vector& y, std::vector<bem::NodeCondition> conditions,
+                       const std::vector<bem::ConstraintEquation>& constraints, double scale) {
+  for (auto& c : conditions) c.value = {scale * c.value[0], scale * c.value[1]};
+  const bem::BoundarySolution s = bem::recover_boundary_values(y, conditions, constraints);
+  const Index n = static_cast<Index>(s.displacement.size());
+  Vector out(4 * n);
+  for (Index i = 0; i < n; ++i) {
+    out.segment<2>(2 * i) = s.displacement[static_cast<std::size_t>(i)];
+    out.segment<2>(2 * n + 2 * i) = s.traction[static_cast<std::size_t>(i)];
+  }
+  return out;
+}
+
+}  // namespace
+
+ElastoplasticRegion::ElastoplasticRegion(ElastoplasticRegion&&) noexcept = default;
+ElastoplasticRegion::~ElastoplasticRegion() = default;
+
+ElastoplasticRegion::ElastoplasticRegion(const geometry::BoundaryMesh& mesh, const bem::BodyDefinition& body,
+                                         AnalysisType type, const J2Hardening& hardening, std::vector<Cell> cells)
+    : mesh_(mesh), material_(body.material), hardening_(hardening), cells_(std::move(cells)) {
+  if (type != AnalysisType::plane_strain)
+    throw Error("body '" + body.name + "': elastoplastic regions are plane strain for now");
+  if (!mesh_.images.empty())
+    throw Error("body '" + body.name + "': an elastoplastic region cannot have symmetry lines yet "
+                                 "(its cells would need their images); draw the roller lines instead");
+  if (!(hardening_.yield_stress > 0.0) || hardening_.isotropic < 0.0 || hardening_.kinematic < 0.0)
+    throw Error("body '" + body.name + "': the yield stress must be > 0 and the hardening moduli >= 0");
+  conditions_ = bem::resolve_node_conditions(mesh_, body, type);
+  constraints_ = bem::resolve_point_constraints(mesh_, body, conditions_);
+  const bem::ElementIntegrator integrator(type, material_);
+  const auto kelvin = kernels::KelvinPlane::from(type, material_);
+  auto matrices = bem::assemble_influence_matrices(mesh_, integrator);
+  auto system = bem::build_boundary_system(matrices, conditions_, constraints_);
+  const Index n = mesh_.node_count(), rows = system.b.size(), m = static_cast<Index>(cells_.size());
+  // [b | B]: the cells' domain term at the collocation nodes (the boundary equation's rows).
+  boundary_rhs_ = Matrix::Zero(rows, 1 + 3 * m);
+  boundary_rhs_.col(0) = system.b;
+  for (Index i = 0; i < n; ++i)
+    for (Index e = 0; e < m; ++e)
+      boundary_rhs_.block<2, 3>(2 * i, 1 + 3 * e) =
+          cell_displacement_influence(kelvin, mesh_.nodes[static_cast<std::size_t>(i)].position, cells_[static_cast<std::size_t>(e)]);
+  const operators::DenseLU lu(std::move(system.A), "the boundary element system of body '" + body.name + "'");
+  boundary_unknowns_ = boundary_rhs_;
+  lu.solve_in_place(boundary_unknowns_);
+  // Somigliana's C E at the centroids from the nodal (u, t): sigma = int D t - int S u (I.14).
+  Matrix somigliana = Matrix::Zero(3 * m, 4 * n);
+  for (Index c = 0; c < m; ++c) {
+    const Vec2 x = cells_[static_cast<std::size_t>(c)].centroid();
+    for (const auto& element : mesh_.elements) {
+      const auto s = integration::integrate_plane_element_stress(kelvin, x, element);
+      for (int a = 0; a < element.node_count; ++a)
+        for (int k = 0; k < 2; ++k) {
+          const Index u = 2 * element.nodes[a] + k, t = 2 * n + u;
+          const Mat2& D = s.D[a][k];
+          const Mat2& S = s.S[a][k];
+          somigliana(3 * c, t) += D(0, 0), somigliana(3 * c + 1, t) += D(1, 1);
+          somigliana(3 * c + 2, t) += 0.5 * (D(0, 1) + D(1, 0));
+          somigliana(3 * c, u) -= S(0, 0), somigliana(3 * c + 1, u) -= S(1, 1);
+          somigliana(3 * c + 2, u) -= 0.5 * (S(0, 1) + S(1, 0));
+        }
+    }
+  }
+  Matrix values(4 * n, 1 + 3 * m);
+  for (Index j = 0; j < 1 + 3 * m; ++j)
+    values.col(j) = boundary_values(boundary_unknowns_.col(j), conditions_, constraints_, j == 0 ? 1.0 : 0.0);
+  const Matrix through_boundary = somigliana * values;
+  load_stress_ = through_boundary.col(0);
+  cell_operator_ = through_boundary.rightCols(3 * m);
+  for (Index c = 0; c < m; ++c)
+    for (Index e = 0; e < m; ++e)
+      cell_operator_.block<3, 3>(3 * c, 3 * e) +=
+          cell_stress_influence(kelvin, cells_[static_cast<std::size_t>(c)].centroid(), cells_[static_cast<std::size_t>(e)]);
+  states_.assign(static_cast<std::size_t>(m), J2State{});
+  stress_.assign(static_cast<std::size_t>(m), Mandel::Zero());
+  strain_ = Vector::Zero(3 * m);
+}
+
+InitialStress ElastoplasticRegion::initial_stress(const Mandel& plastic_strain) const {
+  const double G = material_.shear_modulus(), nu = material_.poisson_ratio;
+  const double lambda = 2.0 * G * nu / (1.0 - 2.0 * nu);
+  const double trace = plastic_strain.head<3>().sum();
+  return InitialStress(lambda * trace + 2 * G * plastic_strain[0], lambda * trace + 2 * G * plastic_strain[1],
+                       2 * G * component12(plastic_strain));
+}
+
+IncrementReport ElastoplasticRegion::advance(double amplitude, int max_iterations, double tolerance) {
+  const Index m = static_cast<Index>(cells_.size());
+  const Matrix33 C = plane_strain_stiffness(material_);
+  const Matrix33 compliance = C.inverse();
+  const MandelMatrix elastic_compliance = elastic_stiffness(material_).inverse();
+  const double strain_scale = hardening_.yield_stress / material_.young_modulus;
+  // d sigma0 / d eps_p (3 x 4, Mandel columns), the same for every cell.
+  Eigen::Matrix<double, 3, 4> initial_stress_map;
+  for (int k = 0; k < 4; ++k) initial_stress_map.col(k) = initial_stress(Mandel::Unit(k));
+  // d eps (Mandel) / d E (tensor 11, 22, 12).
+  Eigen::Matrix<double, 4, 3> strain_map = Eigen::Matrix<double, 4, 3>::Zero();
+  strain_map(0, 0) = strain_map(1, 1) = 1.0;
+  strain_map(3, 2) = kSqrt2;
+
+  IncrementReport report;
+  report.amplitude = amplitude;
+  // The elastic predictor: the new load with the plastic strains of the last increment.
+  Vector E(3 * m);
+  {
+    Vector sigma0(3 * m);
+    for (Index e = 0; e < m; ++e) sigma0.segment<3>(3 * e) = initial_stress(states_[static_cast<std::size_t>(e)].plastic_strain);
+    const Vector target = amplitude * load_stress_ + cell_operator_ * sigma0;
+    for (Index e = 0; e < m; ++e) E.segment<3>(3 * e) = compliance * target.segment<3>(3 * e);
+  }
+  std::vector<J2Update> updates(static_cast<std::size_t>(m));
+  for (int iteration = 0;; ++iteration) {
+    Vector sigma0(3 * m);
+    std::vector<Eigen::Matrix3d> slope(static_cast<std::size_t>(m));  // d sigma0 / d E per cell
+    for (Index e = 0; e < m; ++e) {
+      auto& update = updates[static_cast<std::size_t>(e)];
+      update = j2_update(material_, hardening_, states_[static_cast<std::size_t>(e)], strain_of(E.segment<3>(3 * e)));
+      sigma0.segment<3>(3 * e) = initial_stress(update.state.plastic_strain);
+      const MandelMatrix plastic_slope = MandelMatrix::Identity() - elastic_compliance * update.tangent;
+      slope[static_cast<std::size_t>(e)] = initial_stress_map * plastic_slope * strain_map;
+    }
+    const Vector target = amplitude * load_stress_ + cell_operator_ * sigma0;  // C E as the cells' fields give it
+    Vector F(3 * m);
+    for (Index e = 0; e < m; ++e) F.segment<3>(3 * e) = E.segment<3>(3 * e) - compliance * target.segment<3>(3 * e);
+    Index worst = 0;
+    report.residual = m > 0 ? F.cwiseAbs().maxCoeff(&worst) / strain_scale : 0.0;
+    report.newton_iterations = iteration;
+    if (report.residual <= tolerance) break;
+    if (iteration == max_iterations || !std::isfinite(report.residual)) {
+      const Vec2 at = cells_[static_cast<std::size_t>(worst / 3)].centroid();
+      std::ostringstream message;
+      message << "elastoplastic increment to load amplitude " << amplitude << " (from " << amplitude_
+              << "): Newton on the cells' strains did not converge in " << max_iterations
+              << " iterations (residual " << report.residual << " of Y/E, largest at cell " << worst / 3 << ", ("
+              << at.x() << ", " << at.y() << ")); take smaller load increments";
+      throw SolverError(message.str(), SolverFailure{"elastoplastic increment", iteration, report.residual, -1, amplitude});
+    }
+    // J = I - C^-1 K diag(d sigma0 / d E).
+    Matrix J = cell_operator_;
+    for (Index e = 0; e < m; ++e) J.middleCols<3>(3 * e) = J.middleCols<3>(3 * e) * slope[static_cast<std::size_t>(e)];
+    for (Index c = 0; c < m; ++c) J.middleRows<3>(3 * c) = -compliance * J.middleRows<3>(3 * c);
+    J += Matrix::Identity(3 * m, 3 * m);
+    const operators::DenseLU lu(std::move(J), "the elastoplastic Newton system");
+    Matrix step = -F;
+    lu.solve_in_place(step);
+    E += step.col(0);
+  }
+  for (Index e = 0; e < m; ++e) {
+    const auto& update = updates[static_cast<std::size_t>(e)];
+    report.plastic_cells += update.plastic ? 1 : 0;
+    states_[static_cast<std::size_t>(e)] = update.state;
+    stress_[static_cast<std::size_t>(e)] = update.stress;
+  }
+  strain_ = E;
+  amplitude_ = amplitude;
+  return report;
+}
+
+bem::BoundarySolution ElastoplasticRegion::boundary_solution() const {
+  const Index m = static_cast<Index>(cells_.size());
+  Vector coefficients(1 + 3 * m);
+  coefficients[0] = amplitude_;
+  for (Index e = 0; e < m; ++e)
+    coefficients.segment<3>(1 + 3 * e) = initial_stress(states_[static_cast<std::size_t>(e)].plastic_strain);
+  std::vector<bem::NodeCondition> conditions = conditions_;
+  for (auto& c : conditions) c.value = {amplitude_ * c.value[0], amplitude_ * c.value[1]};
+  return bem::recover_boundary_values(boundary_unknowns_ * coefficients, conditions, constraints_);
+}
+
+}  // namespace bemcontact::plasticity

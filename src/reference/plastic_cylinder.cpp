@@ -1,0 +1,87 @@
+#include "bemcontact/reference/plastic_cylinder.hpp"
+
+#include <cmath>
+#include <string>
+
+#include <Eigen/Dense>
+
+#include "bemcontact/core/error.hpp"
+
+namespace bemcontact::reference {
+
+double first_yield_pressure(double a, double b, const Material& material, double yield_stress) {
+  // Per unit pressure: A = a^2 / (b^2 - a^2), s_rr = -1, s_tt = A (1 + b^2 / a^2), s_zz = 2 nu A.
+  const double A = a * a / (b * b - a * a);
+  const plasticity::Mandel unit(-1.0, A * (1.0 + b * b / (a * a)), 2.0 * material.poisson_ratio * A, 0.0);
+  return yield_stress / plasticity::von_mises(unit);
+}
+
+std::vector<PlasticCylinderState> plastic_thick_cylinder(double a, double b, const Material& material,
+                                                         const plasticity::J2Hardening& hardening,
+                                                         const std::vector<double>& pressures, int elements) {
+  // Nodes graded toward a (where it yields first): element lengths growing by 1 %.
+  std::vector<double> r{a};
+  const double growth = 1.01;
+  double sum = 0.0, h = 1.0;
+  for (int e = 0; e < elements; ++e) sum += h, h *= growth;
+  h = (b - a) / sum;
+  for (int e = 0; e < elements; ++e) r.push_back(r.back() + h), h *= growth;
+  r.back() = b;
+  const int nodes = elements + 1;
+  const double g = 1.0 / std::sqrt(3.0);
+  std::vector<plasticity::J2State> states(2 * static_cast<std::size_t>(elements));
+  Eigen::VectorXd u = Eigen::VectorXd::Zero(nodes);
+  std::vector<PlasticCylinderState> out;
+  for (const double p : pressures) {
+    std::vector<plasticity::J2Update> updates(states.size());
+    for (int iteration = 0;; ++iteration) {
+      Eigen::MatrixXd K = Eigen::MatrixXd::Zero(nodes, nodes);
+      Eigen::VectorXd residual = Eigen::VectorXd::Zero(nodes);
+      residual[0] = -p * a;  // the pressure's work on u(a), per radian: internal - external
+      for (int e = 0; e < elements; ++e) {
+        const double r0 = r[e], r1 = r[e + 1], L = r1 - r0;
+        for (int q = 0; q < 2; ++q) {
+          const double xi = 0.5 * (1.0 + (q == 0 ? -g : g));
+          const double rq = r0 + xi * L, w = 0.5 * L * rq;
+          const Eigen::Vector2d N(1.0 - xi, xi), dN(-1.0 / L, 1.0 / L);
+          Eigen::Matrix2d B;  // rows: eps_rr, eps_tt; columns: the element's two nodes
+          B.row(0) = dN.transpose();
+          B.row(1) = N.transpose() / rq;
+          const Eigen::Vector2d strain = B * u.segment<2>(e);
+          auto& update = updates[2 * static_cast<std::size_t>(e) + q];
+          update = plasticity::j2_update(material, hardening, states[2 * static_cast<std::size_t>(e) + q],
+                                         plasticity::mandel(strain[0], strain[1], 0.0, 0.0));
+          const Eigen::Vector2d sigma(update.stress[0], update.stress[1]);
+          residual.segment<2>(e) += w * B.transpose() * sigma;
+          K.block<2, 2>(e, e) += w * B.transpose() * update.tangent.topLeftCorner<2, 2>() * B;
+        }
+      }
+      const double scale = (std::abs(p) + hardening.yield_stress) * a;  // force per radian
+      if (residual.cwiseAbs().maxCoeff() <= 1e-11 * scale) break;
+      if (iteration == 50)
+        throw SolverError("plastic_thick_cylinder: no convergence at pressure " + std::to_string(p) +
+                          " (beyond the limit pressure?)");
+      u -= K.partialPivLu().solve(residual);
+    }
+    for (std::size_t k = 0; k < states.size(); ++k) states[k] = updates[k].state;
+    PlasticCylinderState s;
+    s.pressure = p;
+    s.inner_displacement = u[0];
+    s.outer_displacement = u[nodes - 1];
+    s.plastic_radius = a;
+    for (int e = 0; e < elements; ++e)
+      for (int q = 0; q < 2; ++q) {
+        const double xi = 0.5 * (1.0 + (q == 0 ? -g : g));
+        const double rq = r[e] + xi * (r[e + 1] - r[e]);
+        const auto& state = states[2 * static_cast<std::size_t>(e) + q];
+        s.radii.push_back(rq);
+        s.stress.push_back(updates[2 * static_cast<std::size_t>(e) + q].stress);
+        s.equivalent_plastic_strain.push_back(state.equivalent_plastic_strain);
+        if (state.equivalent_plastic_strain > 0.0) s.plastic_radius = rq;
+      }
+    out.push_back(std::move(s));
+  }
+  return out;
+}
+
+}  // namespace bemcontact::reference
