@@ -116,22 +116,52 @@ InitialStress ElastoplasticRegion::initial_stress(const Mandel& plastic_strain) 
                        2 * G * component12(plastic_strain));
 }
 
-IncrementReport ElastoplasticRegion::advance(double amplitude, int max_iterations, double tolerance) {
+// The residual F(E) of an increment to `amplitude`, with each cell's update and
+// d sigma0 / d E (the Newton system's blocks).
+struct ElastoplasticRegion::Evaluation {
+  std::vector<J2Update> updates;
+  std::vector<Matrix33> slope;
+  Vector F;
+  double norm = 0.0;  // max |F| / (Y / E)
+  Index worst = 0;    // the cell where it is largest
+};
+
+ElastoplasticRegion::Evaluation ElastoplasticRegion::evaluate(const Vector& E, double amplitude) const {
   const Index m = static_cast<Index>(cells_.size());
-  const Matrix33 C = plane_strain_stiffness(material_);
-  const Matrix33 compliance = C.inverse();
+  const Matrix33 compliance = plane_strain_stiffness(material_).inverse();
   const MandelMatrix elastic_compliance = elastic_stiffness(material_).inverse();
-  const double strain_scale = hardening_.yield_stress / material_.young_modulus;
-  // d sigma0 / d eps_p (3 x 4, Mandel columns), the same for every cell.
+  // d sigma0 / d eps_p (3 x 4, Mandel columns) and d eps (Mandel) / d E (tensor 11, 22, 12).
   Eigen::Matrix<double, 3, 4> initial_stress_map;
   for (int k = 0; k < 4; ++k) initial_stress_map.col(k) = initial_stress(Mandel::Unit(k));
-  // d eps (Mandel) / d E (tensor 11, 22, 12).
   Eigen::Matrix<double, 4, 3> strain_map = Eigen::Matrix<double, 4, 3>::Zero();
   strain_map(0, 0) = strain_map(1, 1) = 1.0;
   strain_map(3, 2) = kSqrt2;
+  Evaluation out;
+  out.updates.resize(static_cast<std::size_t>(m));
+  out.slope.resize(static_cast<std::size_t>(m));
+  Vector sigma0(3 * m);
+  for (Index e = 0; e < m; ++e) {
+    auto& update = out.updates[static_cast<std::size_t>(e)];
+    update = j2_update(material_, hardening_, states_[static_cast<std::size_t>(e)], strain_of(E.segment<3>(3 * e)));
+    sigma0.segment<3>(3 * e) = initial_stress(update.state.plastic_strain);
+    const MandelMatrix plastic_slope = MandelMatrix::Identity() - elastic_compliance * update.tangent;
+    out.slope[static_cast<std::size_t>(e)] = initial_stress_map * plastic_slope * strain_map;
+  }
+  const Vector target = amplitude * load_stress_ + cell_operator_ * sigma0;  // C E as the cells' fields give it
+  out.F.resize(3 * m);
+  for (Index e = 0; e < m; ++e) out.F.segment<3>(3 * e) = E.segment<3>(3 * e) - compliance * target.segment<3>(3 * e);
+  out.norm = m > 0 ? out.F.cwiseAbs().maxCoeff(&out.worst) / (hardening_.yield_stress / material_.young_modulus) : 0.0;
+  out.worst /= 3;
+  return out;
+}
 
-  IncrementReport report;
-  report.amplitude = amplitude;
+// Newton from the elastic predictor, with a backtracking line search on |F| (the radial
+// return's kinks make full steps cycle near the elastic-plastic boundary). Commits the
+// state when it converges; false otherwise (`failure` says where).
+bool ElastoplasticRegion::solve_increment(double amplitude, int max_iterations, double tolerance,
+                                          IncrementReport& report, std::string& failure) {
+  const Index m = static_cast<Index>(cells_.size());
+  const Matrix33 compliance = plane_strain_stiffness(material_).inverse();
   // The elastic predictor: the new load with the plastic strains of the last increment.
   Vector E(3 * m);
   {
@@ -140,51 +170,78 @@ IncrementReport ElastoplasticRegion::advance(double amplitude, int max_iteration
     const Vector target = amplitude * load_stress_ + cell_operator_ * sigma0;
     for (Index e = 0; e < m; ++e) E.segment<3>(3 * e) = compliance * target.segment<3>(3 * e);
   }
-  std::vector<J2Update> updates(static_cast<std::size_t>(m));
+  Evaluation current = evaluate(E, amplitude);
   for (int iteration = 0;; ++iteration) {
-    Vector sigma0(3 * m);
-    std::vector<Eigen::Matrix3d> slope(static_cast<std::size_t>(m));  // d sigma0 / d E per cell
-    for (Index e = 0; e < m; ++e) {
-      auto& update = updates[static_cast<std::size_t>(e)];
-      update = j2_update(material_, hardening_, states_[static_cast<std::size_t>(e)], strain_of(E.segment<3>(3 * e)));
-      sigma0.segment<3>(3 * e) = initial_stress(update.state.plastic_strain);
-      const MandelMatrix plastic_slope = MandelMatrix::Identity() - elastic_compliance * update.tangent;
-      slope[static_cast<std::size_t>(e)] = initial_stress_map * plastic_slope * strain_map;
-    }
-    const Vector target = amplitude * load_stress_ + cell_operator_ * sigma0;  // C E as the cells' fields give it
-    Vector F(3 * m);
-    for (Index e = 0; e < m; ++e) F.segment<3>(3 * e) = E.segment<3>(3 * e) - compliance * target.segment<3>(3 * e);
-    Index worst = 0;
-    report.residual = m > 0 ? F.cwiseAbs().maxCoeff(&worst) / strain_scale : 0.0;
-    report.newton_iterations = iteration;
-    if (report.residual <= tolerance) break;
-    if (iteration == max_iterations || !std::isfinite(report.residual)) {
-      const Vec2 at = cells_[static_cast<std::size_t>(worst / 3)].centroid();
+    report.residual = current.norm;
+    if (current.norm <= tolerance) break;
+    if (iteration == max_iterations || !std::isfinite(current.norm)) {
+      const Vec2 at = cells_[static_cast<std::size_t>(current.worst)].centroid();
       std::ostringstream message;
-      message << "elastoplastic increment to load amplitude " << amplitude << " (from " << amplitude_
-              << "): Newton on the cells' strains did not converge in " << max_iterations
-              << " iterations (residual " << report.residual << " of Y/E, largest at cell " << worst / 3 << ", ("
-              << at.x() << ", " << at.y() << ")); take smaller load increments";
-      throw SolverError(message.str(), SolverFailure{"elastoplastic increment", iteration, report.residual, -1, amplitude});
+      message << "Newton on the cells' strains did not converge in " << iteration << " iterations (residual "
+              << current.norm << " of Y/E, largest at cell " << current.worst << ", (" << at.x() << ", " << at.y()
+              << "))";
+      failure = message.str();
+      return false;
     }
     // J = I - C^-1 K diag(d sigma0 / d E).
     Matrix J = cell_operator_;
-    for (Index e = 0; e < m; ++e) J.middleCols<3>(3 * e) = J.middleCols<3>(3 * e) * slope[static_cast<std::size_t>(e)];
+    for (Index e = 0; e < m; ++e) J.middleCols<3>(3 * e) = J.middleCols<3>(3 * e) * current.slope[static_cast<std::size_t>(e)];
     for (Index c = 0; c < m; ++c) J.middleRows<3>(3 * c) = -compliance * J.middleRows<3>(3 * c);
     J += Matrix::Identity(3 * m, 3 * m);
     const operators::DenseLU lu(std::move(J), "the elastoplastic Newton system");
-    Matrix step = -F;
+    Matrix step = -current.F;
     lu.solve_in_place(step);
-    E += step.col(0);
+    double fraction = 1.0;
+    Evaluation next = evaluate(E + step.col(0), amplitude);
+    constexpr int kHalvings = 10;
+    for (int k = 0; k < kHalvings && !(next.F.norm() < (1.0 - 1e-4 * fraction) * current.F.norm()); ++k) {
+      fraction *= 0.5;
+      next = evaluate(E + fraction * step.col(0), amplitude);
+    }
+    E += fraction * step.col(0);
+    current = std::move(next);
+    ++report.newton_iterations;
   }
   for (Index e = 0; e < m; ++e) {
-    const auto& update = updates[static_cast<std::size_t>(e)];
+    const auto& update = current.updates[static_cast<std::size_t>(e)];
     report.plastic_cells += update.plastic ? 1 : 0;
     states_[static_cast<std::size_t>(e)] = update.state;
     stress_[static_cast<std::size_t>(e)] = update.stress;
   }
   strain_ = E;
   amplitude_ = amplitude;
+  return true;
+}
+
+IncrementReport ElastoplasticRegion::advance(double amplitude, int max_iterations, double tolerance) {
+  IncrementReport report;
+  report.amplitude = amplitude;
+  const double from = amplitude_;
+  // An increment that fails is cut in halves, each solved in turn, down to kMaxCuts levels.
+  constexpr int kMaxCuts = 6;
+  std::vector<std::pair<double, int>> targets{{amplitude, 0}};  // (amplitude, cut level), last first
+  std::string failure;
+  while (!targets.empty()) {
+    const auto [target, level] = targets.back();
+    IncrementReport part;
+    if (solve_increment(target, max_iterations, tolerance, part, failure)) {
+      targets.pop_back();
+      report.newton_iterations += part.newton_iterations;
+      report.residual = part.residual;
+      report.plastic_cells = std::max(report.plastic_cells, part.plastic_cells);
+      continue;
+    }
+    if (level == kMaxCuts) {
+      std::ostringstream message;
+      message << "elastoplastic increment from load amplitude " << from << " to " << amplitude << ": at the step to "
+              << target << " (the increment cut " << level << " times in halves) " << failure
+              << "; take smaller load increments";
+      throw SolverError(message.str(), SolverFailure{"elastoplastic increment", max_iterations, part.residual, -1, target});
+    }
+    ++report.cuts;
+    targets.back().second = level + 1;
+    targets.push_back({0.5 * (amplitude_ + target), level + 1});
+  }
   return report;
 }
 

@@ -63,15 +63,30 @@ Eigen::Matrix<double, 2, 3> traction_of_components(const Vec2& n) {
 }  // namespace
 
 double Cell::area() const {
-  const Vec2 u = vertices[1] - vertices[0], v = vertices[2] - vertices[0];
-  return 0.5 * (u.x() * v.y() - u.y() * v.x());
+  double twice = 0.0;  // the shoelace formula
+  for (std::size_t k = 0; k < vertices.size(); ++k) {
+    const Vec2& p = vertices[k];
+    const Vec2& q = vertices[(k + 1) % vertices.size()];
+    twice += p.x() * q.y() - q.x() * p.y();
+  }
+  return 0.5 * twice;
+}
+
+Vec2 Cell::centroid() const {
+  Vec2 sum = Vec2::Zero();
+  for (std::size_t k = 0; k < vertices.size(); ++k) {
+    const Vec2& p = vertices[k];
+    const Vec2& q = vertices[(k + 1) % vertices.size()];
+    sum += (p + q) * (p.x() * q.y() - q.x() * p.y());
+  }
+  return sum / (6.0 * area());
 }
 
 Matrix23 cell_displacement_influence(const kernels::KelvinPlane& kernel, const Vec2& x, const Cell& cell) {
   Matrix23 out = Matrix23::Zero();
-  for (int k = 0; k < 3; ++k) {
+  for (std::size_t k = 0; k < cell.vertices.size(); ++k) {
     const Vec2& a = cell.vertices[k];
-    const Vec2& b = cell.vertices[(k + 1) % 3];
+    const Vec2& b = cell.vertices[(k + 1) % cell.vertices.size()];
     const Eigen::Matrix<double, 2, 3> traction = traction_of_components(outward_normal(a, b));
     for_each_edge_point(a, b, x, [&](const Vec2& y, double w) {
       // u_k(x) += U(x, y)(k, i) p_i(y)
@@ -83,9 +98,9 @@ Matrix23 cell_displacement_influence(const kernels::KelvinPlane& kernel, const V
 
 Matrix33 cell_stress_influence(const kernels::KelvinPlane& kernel, const Vec2& x, const Cell& cell) {
   Matrix33 out = Matrix33::Zero();
-  for (int k = 0; k < 3; ++k) {
+  for (std::size_t k = 0; k < cell.vertices.size(); ++k) {
     const Vec2& a = cell.vertices[k];
-    const Vec2& b = cell.vertices[(k + 1) % 3];
+    const Vec2& b = cell.vertices[(k + 1) % cell.vertices.size()];
     const Eigen::Matrix<double, 2, 3> traction = traction_of_components(outward_normal(a, b));
     for_each_edge_point(a, b, x, [&](const Vec2& y, double w) {
       // sigma_ij(x) += D(x, y)[k](i, j) p_k(y)

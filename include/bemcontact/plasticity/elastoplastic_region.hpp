@@ -15,6 +15,7 @@
 // The stress at a centroid is the material's; it is constant over the cell (the plastic
 // strain is cell-wise constant: its error is of the order of the cell size where it varies).
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "bemcontact/bem/boundary_system.hpp"
@@ -35,6 +36,7 @@ struct IncrementReport {
   int newton_iterations = 0;
   double residual = 0.0;  // max |F| / (Y / E) at the end
   int plastic_cells = 0;  // cells that yielded in the increment
+  int cuts = 0;           // halvings of the increment (Newton failed on the whole)
 };
 
 class ElastoplasticRegion {
@@ -46,9 +48,9 @@ class ElastoplasticRegion {
   ElastoplasticRegion(ElastoplasticRegion&&) noexcept;
   ~ElastoplasticRegion();
 
-  // Solves the increment to the load amplitude `amplitude` from the state of the last one.
-  // Throws SolverError naming the increment's amplitude and the cell where it fails when
-  // Newton does not converge.
+  // Solves the increment to the load amplitude `amplitude` from the state of the last one,
+  // cutting it in halves where Newton does not converge. Throws SolverError naming the
+  // increment, the step cut it tried and the cell where it fails after 6 cuts.
   IncrementReport advance(double amplitude, int max_iterations = 30, double tolerance = 1e-10);
 
   const std::vector<Cell>& cells() const { return cells_; }
@@ -60,6 +62,10 @@ class ElastoplasticRegion {
 
  private:
   InitialStress initial_stress(const Mandel& plastic_strain) const;
+  struct Evaluation;
+  Evaluation evaluate(const Vector& E, double amplitude) const;
+  bool solve_increment(double amplitude, int max_iterations, double tolerance, IncrementReport& report,
+                       std::string& failure);
 
   geometry::BoundaryMesh mesh_;
   Material material_;

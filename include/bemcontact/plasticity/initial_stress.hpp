@@ -20,10 +20,10 @@
 
 namespace bemcontact::plasticity {
 
-// A triangular cell, counterclockwise.
+// A polygonal cell (a triangle or a quadrilateral), its vertices counterclockwise.
 struct Cell {
-  std::array<Vec2, 3> vertices;
-  Vec2 centroid() const { return (vertices[0] + vertices[1] + vertices[2]) / 3.0; }
+  std::vector<Vec2> vertices;
+  Vec2 centroid() const;  // of the area
   double area() const;
 };
 
