@@ -126,7 +126,8 @@ struct ElastoplasticRegion::Evaluation {
   Index worst = 0;    // the cell where it is largest
 };
 
-ElastoplasticRegion::Evaluation ElastoplasticRegion::evaluate(const Vector& E, double amplitude) const {
+ElastoplasticRegion::Evaluation ElastoplasticRegion::evaluate(const Vector& E, double amplitude,
+                                                              const std::vector<char>& held) const {
   const Index m = static_cast<Index>(cells_.size());
   const Matrix33 compliance = plane_strain_stiffness(material_).inverse();
   const MandelMatrix elastic_compliance = elastic_stiffness(material_).inverse();
@@ -142,7 +143,8 @@ ElastoplasticRegion::Evaluation ElastoplasticRegion::evaluate(const Vector& E, d
   Vector sigma0(3 * m);
   for (Index e = 0; e < m; ++e) {
     auto& update = out.updates[static_cast<std::size_t>(e)];
-    update = j2_update(material_, hardening_, states_[static_cast<std::size_t>(e)], strain_of(E.segment<3>(3 * e)));
+    update = j2_update(material_, hardening_, states_[static_cast<std::size_t>(e)], strain_of(E.segment<3>(3 * e)),
+                       held[static_cast<std::size_t>(e)] != 0);
     sigma0.segment<3>(3 * e) = initial_stress(update.state.plastic_strain);
     const MandelMatrix plastic_slope = MandelMatrix::Identity() - elastic_compliance * update.tangent;
     out.slope[static_cast<std::size_t>(e)] = initial_stress_map * plastic_slope * strain_map;
@@ -170,10 +172,24 @@ bool ElastoplasticRegion::solve_increment(double amplitude, int max_iterations, 
     const Vector target = amplitude * load_stress_ + cell_operator_ * sigma0;
     for (Index e = 0; e < m; ++e) E.segment<3>(3 * e) = compliance * target.segment<3>(3 * e);
   }
-  Evaluation current = evaluate(E, amplitude);
+  // Cells that cycled between elastic and plastic are held on the yield surface (j2_update).
+  std::vector<char> held(static_cast<std::size_t>(m), 0);
+  std::vector<int> flips(static_cast<std::size_t>(m), 0);  // changes of state from iteration to iteration
+  std::vector<char> last_state(static_cast<std::size_t>(m), 0);
+  Evaluation current = evaluate(E, amplitude, held);
   for (int iteration = 0;; ++iteration) {
     report.residual = current.norm;
     if (current.norm <= tolerance) break;
+    // A cell that went back to the state it left is held (one change is the plastic zone
+    // growing or an unloading; a return is a cycle).
+    bool newly_held = false;
+    for (Index e = 0; e < m; ++e) {
+      const auto k = static_cast<std::size_t>(e);
+      const char state = current.updates[k].plastic ? 1 : 0;
+      if (iteration > 0 && state != last_state[k] && ++flips[k] >= 2 && !held[k]) held[k] = 1, newly_held = true;
+      last_state[k] = state;
+    }
+    if (newly_held) current = evaluate(E, amplitude, held);
     if (iteration == max_iterations || !std::isfinite(current.norm)) {
       const Vec2 at = cells_[static_cast<std::size_t>(current.worst)].centroid();
       std::ostringstream message;
@@ -192,19 +208,24 @@ bool ElastoplasticRegion::solve_increment(double amplitude, int max_iterations, 
     Matrix step = -current.F;
     lu.solve_in_place(step);
     double fraction = 1.0;
-    Evaluation next = evaluate(E + step.col(0), amplitude);
+    Evaluation next = evaluate(E + step.col(0), amplitude, held);
     constexpr int kHalvings = 10;
     for (int k = 0; k < kHalvings && !(next.F.norm() < (1.0 - 1e-4 * fraction) * current.F.norm()); ++k) {
       fraction *= 0.5;
-      next = evaluate(E + fraction * step.col(0), amplitude);
+      next = evaluate(E + fraction * step.col(0), amplitude, held);
     }
     E += fraction * step.col(0);
     current = std::move(next);
     ++report.newton_iterations;
   }
+  const double strain_scale = hardening_.yield_stress / material_.young_modulus;
   for (Index e = 0; e < m; ++e) {
     const auto& update = current.updates[static_cast<std::size_t>(e)];
     report.plastic_cells += update.plastic ? 1 : 0;
+    if (held[static_cast<std::size_t>(e)]) {
+      ++report.held_cells;
+      report.held_increment = std::min(report.held_increment, update.plastic_increment / strain_scale);
+    }
     states_[static_cast<std::size_t>(e)] = update.state;
     stress_[static_cast<std::size_t>(e)] = update.stress;
   }
@@ -229,6 +250,8 @@ IncrementReport ElastoplasticRegion::advance(double amplitude, int max_iteration
       report.newton_iterations += part.newton_iterations;
       report.residual = part.residual;
       report.plastic_cells = std::max(report.plastic_cells, part.plastic_cells);
+      report.held_cells += part.held_cells;
+      report.held_increment = std::min(report.held_increment, part.held_increment);
       continue;
     }
     if (level == kMaxCuts) {

@@ -35,7 +35,7 @@ MandelMatrix elastic_stiffness(const Material& material) {
 double von_mises(const Mandel& stress) { return std::sqrt(1.5) * deviator(stress).norm(); }
 
 J2Update j2_update(const Material& material, const J2Hardening& hardening, const J2State& previous,
-                   const Mandel& strain) {
+                   const Mandel& strain, bool hold_on_surface) {
   const double G = material.shear_modulus();
   const double K = material.young_modulus / (3.0 * (1.0 - 2.0 * material.poisson_ratio));
   const Mandel one = identity_vector();
@@ -50,7 +50,7 @@ J2Update j2_update(const Material& material, const J2Hardening& hardening, const
       kSqrtTwoThirds * (hardening.yield_stress + hardening.isotropic * previous.equivalent_plastic_strain);
   out.yield_function_trial = xi_norm - radius;
   const double pressure_part = K * strain.head<3>().sum();
-  if (out.yield_function_trial <= 0.0) {
+  if (out.yield_function_trial <= 0.0 && !(hold_on_surface && xi_norm > 0.0)) {
     out.stress = pressure_part * one + trial_deviator;
     out.tangent = elastic_stiffness(material);
     return out;
@@ -62,7 +62,8 @@ J2Update j2_update(const Material& material, const J2Hardening& hardening, const
   const double dgamma = out.yield_function_trial / (2.0 * G + 2.0 / 3.0 * H);
   out.state.plastic_strain += dgamma * n;
   out.state.back_stress += 2.0 / 3.0 * hardening.kinematic * dgamma * n;
-  out.state.equivalent_plastic_strain += kSqrtTwoThirds * dgamma;
+  out.plastic_increment = kSqrtTwoThirds * dgamma;
+  out.state.equivalent_plastic_strain += out.plastic_increment;
   out.stress = pressure_part * one + trial_deviator - 2.0 * G * dgamma * n;
   // The consistent tangent [SimoTaylor1985].
   const double theta = 1.0 - 2.0 * G * dgamma / xi_norm;

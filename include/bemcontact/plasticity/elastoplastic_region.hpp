@@ -37,6 +37,11 @@ struct IncrementReport {
   double residual = 0.0;  // max |F| / (Y / E) at the end
   int plastic_cells = 0;  // cells that yielded in the increment
   int cuts = 0;           // halvings of the increment (Newton failed on the whole)
+  // Cells held on the yield surface because Newton cycled between their elastic and plastic
+  // states, and the most negative plastic increment (of kappa, in Y / E) that holding gave
+  // them: the size of the complementarity's violation (0: none held).
+  int held_cells = 0;
+  double held_increment = 0.0;
 };
 
 class ElastoplasticRegion {
@@ -63,7 +68,7 @@ class ElastoplasticRegion {
  private:
   InitialStress initial_stress(const Mandel& plastic_strain) const;
   struct Evaluation;
-  Evaluation evaluate(const Vector& E, double amplitude) const;
+  Evaluation evaluate(const Vector& E, double amplitude, const std::vector<char>& held) const;
   bool solve_increment(double amplitude, int max_iterations, double tolerance, IncrementReport& report,
                        std::string& failure);
 

@@ -52,15 +52,19 @@ struct J2Update {
   MandelMatrix tangent = MandelMatrix::Zero();  // d stress / d strain, consistent with the update
   bool plastic = false;
   double yield_function_trial = 0.0;  // f of the elastic trial (> 0: the step yields)
+  double plastic_increment = 0.0;     // the step's increment of kappa (< 0 only when held on the surface)
 };
 
 // The elastic stiffness on Mandel vectors.
 MandelMatrix elastic_stiffness(const Material& material);
 
 // The stress of the total strain `strain` from the state `previous` (plane strain,
-// axisymmetry, 3D: every component given).
+// axisymmetry, 3D: every component given). hold_on_surface returns to the yield surface
+// even from inside it (a negative plastic increment): the stabilisation of a structural
+// Newton whose points cycle between elastic and plastic (elastoplastic_region.hpp), never
+// the material law itself.
 J2Update j2_update(const Material& material, const J2Hardening& hardening, const J2State& previous,
-                   const Mandel& strain);
+                   const Mandel& strain, bool hold_on_surface = false);
 
 // Plane stress: the in-plane strain given (its 33 component the first guess of eps_33),
 // eps_33 found with sigma_33 = 0 to `tolerance` times the stress scale; the tangent is the

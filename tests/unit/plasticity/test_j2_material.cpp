@@ -138,4 +138,18 @@ TEST(J2Material, ConsistentTangentMatchesFiniteDifferences) {
   }
 }
 
+// Held on the surface from inside it (the structural Newton's stabilisation): the stress
+// returns to the yield surface with a negative plastic increment.
+TEST(J2Material, HeldOnTheSurfaceFromInside) {
+  const J2Hardening h{250.0, 1000.0, 0.0};
+  const Mandel eps = mandel(5e-4, -2e-4, 0.0, 1e-4);  // elastic
+  const auto free = j2_update(steel, h, {}, eps);
+  const auto held = j2_update(steel, h, {}, eps, true);
+  ASSERT_FALSE(free.plastic);
+  EXPECT_TRUE(held.plastic);
+  EXPECT_LT(held.plastic_increment, 0.0);
+  EXPECT_NEAR(von_mises(held.stress - held.state.back_stress),
+              h.yield_stress + h.isotropic * held.state.equivalent_plastic_strain, 1e-9 * 250.0);
+}
+
 }  // namespace bemcontact::plasticity
