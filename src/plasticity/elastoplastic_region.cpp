@@ -75,24 +75,23 @@ ElastoplasticRegion::ElastoplasticRegion(const geometry::BoundaryMesh& mesh, con
   const operators::DenseLU lu(std::move(system.A), "the boundary element system of body '" + body.name + "'");
   boundary_unknowns_ = boundary_rhs_;
   lu.solve_in_place(boundary_unknowns_);
-  // Somigliana's C E at the centroids from the nodal (u, t): sigma = int D t - int S u (I.14).
+  // Somigliana's C E, the cells' means, from the nodal (u, t): sigma = int D t - int S u (I.14).
   Matrix somigliana = Matrix::Zero(3 * m, 4 * n);
-  for (Index c = 0; c < m; ++c) {
-    const Vec2 x = cells_[static_cast<std::size_t>(c)].centroid();
-    for (const auto& element : mesh_.elements) {
-      const auto s = integration::integrate_plane_element_stress(kelvin, x, element);
-      for (int a = 0; a < element.node_count; ++a)
-        for (int k = 0; k < 2; ++k) {
-          const Index u = 2 * element.nodes[a] + k, t = 2 * n + u;
-          const Mat2& D = s.D[a][k];
-          const Mat2& S = s.S[a][k];
-          somigliana(3 * c, t) += D(0, 0), somigliana(3 * c + 1, t) += D(1, 1);
-          somigliana(3 * c + 2, t) += 0.5 * (D(0, 1) + D(1, 0));
-          somigliana(3 * c, u) -= S(0, 0), somigliana(3 * c + 1, u) -= S(1, 1);
-          somigliana(3 * c + 2, u) -= 0.5 * (S(0, 1) + S(1, 0));
-        }
-    }
-  }
+  for (Index c = 0; c < m; ++c)
+    for (const auto& [x, weight] : cells_[static_cast<std::size_t>(c)].mean_points())
+      for (const auto& element : mesh_.elements) {
+        const auto s = integration::integrate_plane_element_stress(kelvin, x, element);
+        for (int a = 0; a < element.node_count; ++a)
+          for (int k = 0; k < 2; ++k) {
+            const Index u = 2 * element.nodes[a] + k, t = 2 * n + u;
+            const Mat2 D = weight * s.D[a][k];
+            const Mat2 S = weight * s.S[a][k];
+            somigliana(3 * c, t) += D(0, 0), somigliana(3 * c + 1, t) += D(1, 1);
+            somigliana(3 * c + 2, t) += 0.5 * (D(0, 1) + D(1, 0));
+            somigliana(3 * c, u) -= S(0, 0), somigliana(3 * c + 1, u) -= S(1, 1);
+            somigliana(3 * c + 2, u) -= 0.5 * (S(0, 1) + S(1, 0));
+          }
+      }
   Matrix values(4 * n, 1 + 3 * m);
   for (Index j = 0; j < 1 + 3 * m; ++j)
     values.col(j) = boundary_values(boundary_unknowns_.col(j), conditions_, constraints_, j == 0 ? 1.0 : 0.0);
@@ -100,9 +99,9 @@ ElastoplasticRegion::ElastoplasticRegion(const geometry::BoundaryMesh& mesh, con
   load_stress_ = through_boundary.col(0);
   cell_operator_ = through_boundary.rightCols(3 * m);
   for (Index c = 0; c < m; ++c)
-    for (Index e = 0; e < m; ++e)
-      cell_operator_.block<3, 3>(3 * c, 3 * e) +=
-          cell_stress_influence(kelvin, cells_[static_cast<std::size_t>(c)].centroid(), cells_[static_cast<std::size_t>(e)]);
+    for (const auto& [x, weight] : cells_[static_cast<std::size_t>(c)].mean_points())
+      for (Index e = 0; e < m; ++e)
+        cell_operator_.block<3, 3>(3 * c, 3 * e) += weight * cell_stress_influence(kelvin, x, cells_[static_cast<std::size_t>(e)]);
   states_.assign(static_cast<std::size_t>(m), J2State{});
   stress_.assign(static_cast<std::size_t>(m), Mandel::Zero());
   strain_ = Vector::Zero(3 * m);

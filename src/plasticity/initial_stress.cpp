@@ -72,6 +72,20 @@ double Cell::area() const {
   return 0.5 * twice;
 }
 
+std::vector<std::pair<Vec2, double>> Cell::mean_points() const {
+  std::vector<std::pair<Vec2, double>> out;
+  const double total = area();
+  for (std::size_t k = 1; k + 1 < vertices.size(); ++k) {  // the fan of triangles from vertex 0
+    const Vec2 &a = vertices[0], &b = vertices[k], &c = vertices[k + 1];
+    const Vec2 u = b - a, v = c - a;
+    const double share = 0.5 * (u.x() * v.y() - u.y() * v.x()) / total / 3.0;
+    out.emplace_back((4.0 * a + b + c) / 6.0, share);
+    out.emplace_back((a + 4.0 * b + c) / 6.0, share);
+    out.emplace_back((a + b + 4.0 * c) / 6.0, share);
+  }
+  return out;
+}
+
 Vec2 Cell::centroid() const {
   Vec2 sum = Vec2::Zero();
   for (std::size_t k = 0; k < vertices.size(); ++k) {

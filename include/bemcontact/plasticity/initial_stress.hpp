@@ -14,6 +14,7 @@
 // points. The edge integrals are graded toward the point of the edge nearest to x (the
 // logarithm of U on an edge through x, the 1/r of D near one).
 #include <array>
+#include <utility>
 #include <vector>
 
 #include "bemcontact/kernels/kelvin2d.hpp"
@@ -25,6 +26,10 @@ struct Cell {
   std::vector<Vec2> vertices;
   Vec2 centroid() const;  // of the area
   double area() const;
+  // Points strictly inside the cell and weights summing to 1 for its mean of a field:
+  // three per triangle (degree 2: the barycentric 2/3, 1/6, 1/6 points), a quadrilateral
+  // as two triangles.
+  std::vector<std::pair<Vec2, double>> mean_points() const;
 };
 
 // In-plane initial stress components (11, 22, 12).

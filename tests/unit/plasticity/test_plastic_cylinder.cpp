@@ -88,8 +88,8 @@ TEST(PlasticCylinder, RegionConvergesToTheReference) {
   ASSERT_GT(bore, 0u);
   std::vector<double> previous(pressures.size(), 1.0);
   double elastic = 0.0;
-  // Measured: 8.0 / 3.5 / 3.5 % at 6 rings of cells, 3.8 / 1.4 / 1.4 % at 12 (first order).
-  const std::vector<double> bounds6{0.0, 0.09, 0.04, 0.04}, bounds12{0.0, 0.042, 0.016, 0.016};
+  // Measured: 6.9 / 3.3 / 3.3 % at 6 rings of cells, 3.6 / 1.3 / 1.3 % at 12 (first order).
+  const std::vector<double> bounds6{0.0, 0.08, 0.04, 0.04}, bounds12{0.0, 0.04, 0.015, 0.015};
   for (const int n_r : {6, 12}) {
     plasticity::ElastoplasticRegion region(mesh, problem.body, problem.analysis, perfect, sector_cells(a, rc, n_r, 32));
     for (std::size_t k = 0; k < pressures.size(); ++k) {
@@ -121,59 +121,65 @@ TEST(PlasticCylinder, RegionConvergesToTheReference) {
   }
 }
 
-// Linear isotropic hardening (H = E / 100), quadrilateral cells, loaded in steps of 0.1 of
-// the first-yield pressure to 1.5 of it: every step converges, and the bore's displacement
-// beyond the elastic response and the mean error of the cells' hoop stress fall as the
-// cells are refined (measured: 9.2 -> 3.3 % and 1.0 -> 0.37 % of Y at 4 -> 8 rings).
-TEST(PlasticCylinder, HardeningRegionConvergesInSteps) {
-  auto file = io::read_problem_file(std::string(BEMCONTACT_EXAMPLES_DIR) + "/thick_ring_plane_strain.toml", {{"p", 1.0}});
-  auto& problem = file.problem;
-  for (auto& piece : problem.body.pieces)
-    if (piece.name == "AB" || piece.name == "CD") piece.elements = 64;  // the cells' centroids 2 elements away
-  const auto mesh = bem::mesh_body(problem);
-  const plasticity::J2Hardening hardening{250.0, 2000.0, 0.0};
-  const double a = 1.0, b = 2.0, rc = 1.6;
-  const double py = reference::first_yield_pressure(a, b, steel, hardening.yield_stress);
-  std::vector<double> pressures{0.5 * py};
-  for (int k = 9; k <= 15; ++k) pressures.push_back(0.1 * k * py);
-  const auto ref = reference::plastic_thick_cylinder(a, b, steel, hardening, pressures, 400);
-  const auto& last = ref.back();
-  std::size_t bore = 0;
-  for (std::size_t i = 0; i < mesh.nodes.size(); ++i) {
-    const Vec2& x = mesh.nodes[i].position;
-    if (std::abs(x.norm() - a) < 1e-9 && std::abs(x.x() - x.y()) < 1e-9) bore = i;
-  }
-  double previous_displacement = 1.0, previous_hoop = 1.0;
-  for (const int n_r : {4, 8}) {
-    plasticity::ElastoplasticRegion region(mesh, problem.body, problem.analysis, hardening,
-                                           sector_cells(a, rc, n_r, 32, true));
-    double elastic = 0.0, ur = 0.0;
-    for (const double p : pressures) {
-      region.advance(p);
-      const Vec2& x = mesh.nodes[bore].position;
-      ur = region.boundary_solution().displacement[bore].dot(x / x.norm());
-      if (p == pressures.front()) elastic = ur;
+// Quadrilateral cells, loaded in steps of 0.1 of the first-yield pressure to 1.5 of it,
+// perfectly plastic and with linear isotropic hardening (H = E / 100): every step converges
+// with no cell held on the surface, and the bore's displacement beyond the elastic response
+// and the mean error of the cells' hoop stress fall as the cells are refined (measured,
+// 4 -> 8 rings: perfect 6.5 -> 2.8 % and 0.65 -> 0.32 % of Y; hardening 6.4 -> 2.7 % and
+// 0.62 -> 0.29 % of Y).
+TEST(PlasticCylinder, QuadrilateralCellsConvergeInSteps) {
+  for (const double H : {0.0, 2000.0}) {
+    auto file = io::read_problem_file(std::string(BEMCONTACT_EXAMPLES_DIR) + "/thick_ring_plane_strain.toml", {{"p", 1.0}});
+    auto& problem = file.problem;
+    for (auto& piece : problem.body.pieces)
+      if (piece.name == "AB" || piece.name == "CD") piece.elements = 64;  // the cells' centroids 2 elements away
+    const auto mesh = bem::mesh_body(problem);
+    const plasticity::J2Hardening hardening{250.0, H, 0.0};
+    const double a = 1.0, b = 2.0, rc = 1.6;
+    const double py = reference::first_yield_pressure(a, b, steel, hardening.yield_stress);
+    std::vector<double> pressures{0.5 * py};
+    for (int k = 9; k <= 15; ++k) pressures.push_back(0.1 * k * py);
+    const auto ref = reference::plastic_thick_cylinder(a, b, steel, hardening, pressures, 400);
+    const auto& last = ref.back();
+    std::size_t bore = 0;
+    for (std::size_t i = 0; i < mesh.nodes.size(); ++i) {
+      const Vec2& x = mesh.nodes[i].position;
+      if (std::abs(x.norm() - a) < 1e-9 && std::abs(x.x() - x.y()) < 1e-9) bore = i;
     }
-    const double scale = pressures.back() / pressures.front();
-    const double displacement_error = std::abs((ur - scale * elastic) /
-                                               (last.inner_displacement - scale * ref.front().inner_displacement) - 1.0);
-    double hoop_error = 0.0;
-    for (std::size_t e = 0; e < region.cells().size(); ++e) {
-      const Vec2 x = region.cells()[e].centroid();
-      const double r = x.norm(), c = x.x() / r, s = x.y() / r;
-      const auto& S = region.cell_stress()[e];
-      const double hoop = S[0] * s * s + S[1] * c * c - 2.0 * plasticity::component12(S) * s * c;
-      std::size_t q = 0;  // the reference's nearest Gauss point
-      for (std::size_t k = 0; k < last.radii.size(); ++k)
-        if (std::abs(last.radii[k] - r) < std::abs(last.radii[q] - r)) q = k;
-      hoop_error += std::abs(hoop - last.stress[q][1]) / hardening.yield_stress / static_cast<double>(region.cells().size());
+    double previous_displacement = 1.0, previous_hoop = 1.0;
+    for (const int n_r : {4, 8}) {
+      plasticity::ElastoplasticRegion region(mesh, problem.body, problem.analysis, hardening,
+                                             sector_cells(a, rc, n_r, 32, true));
+      double elastic = 0.0, ur = 0.0;
+      for (const double p : pressures) {
+        const auto report = region.advance(p);
+        EXPECT_EQ(report.held_cells, 0);
+        EXPECT_LE(report.newton_iterations, 5);
+        const Vec2& x = mesh.nodes[bore].position;
+        ur = region.boundary_solution().displacement[bore].dot(x / x.norm());
+        if (p == pressures.front()) elastic = ur;
+      }
+      const double scale = pressures.back() / pressures.front();
+      const double displacement_error = std::abs((ur - scale * elastic) /
+                                                 (last.inner_displacement - scale * ref.front().inner_displacement) - 1.0);
+      double hoop_error = 0.0;
+      for (std::size_t e = 0; e < region.cells().size(); ++e) {
+        const Vec2 x = region.cells()[e].centroid();
+        const double r = x.norm(), c = x.x() / r, s = x.y() / r;
+        const auto& S = region.cell_stress()[e];
+        const double hoop = S[0] * s * s + S[1] * c * c - 2.0 * plasticity::component12(S) * s * c;
+        std::size_t q = 0;  // the reference's nearest Gauss point
+        for (std::size_t k = 0; k < last.radii.size(); ++k)
+          if (std::abs(last.radii[k] - r) < std::abs(last.radii[q] - r)) q = k;
+        hoop_error += std::abs(hoop - last.stress[q][1]) / hardening.yield_stress / static_cast<double>(region.cells().size());
+      }
+      EXPECT_LT(displacement_error, n_r == 4 ? 0.075 : 0.032) << n_r;
+      EXPECT_LT(hoop_error, n_r == 4 ? 0.007 : 0.0035) << n_r;
+      EXPECT_LT(displacement_error, 0.6 * previous_displacement) << n_r;
+      EXPECT_LT(hoop_error, 0.6 * previous_hoop) << n_r;
+      previous_displacement = displacement_error;
+      previous_hoop = hoop_error;
     }
-    EXPECT_LT(displacement_error, n_r == 4 ? 0.10 : 0.04) << n_r;
-    EXPECT_LT(hoop_error, n_r == 4 ? 0.011 : 0.0045) << n_r;
-    EXPECT_LT(displacement_error, 0.6 * previous_displacement) << n_r;
-    EXPECT_LT(hoop_error, 0.6 * previous_hoop) << n_r;
-    previous_displacement = displacement_error;
-    previous_hoop = hoop_error;
   }
 }
 
