@@ -56,6 +56,7 @@ set(BEMCONTACT_BEM_SOURCES
   src/bem/resultants.cpp
   src/bem/rigid_modes.cpp)
 set(BEMCONTACT_PLASTICITY_SOURCES
+  src/plasticity/cell_meshes.cpp
   src/plasticity/elastoplastic_region.cpp
   src/plasticity/initial_stress.cpp
   src/plasticity/j2_material.cpp)
@@ -128,6 +129,7 @@ set(BEMCONTACT_VALIDATION_SOURCES
   src/validation/records.cpp
   src/validation/wavy_cases.cpp
   src/validation/compliance_cases.cpp
+  src/validation/plasticity_cases.cpp
   src/validation/wear_cases.cpp)
 set(BEMCONTACT_PARALLEL_SOURCES
   src/parallel/session.cpp)

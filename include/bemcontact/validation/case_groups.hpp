@@ -12,4 +12,5 @@ std::vector<Case> fretting_cases();       // src/validation/fretting_cases.cpp
 std::vector<Case> rough_cases();          // src/validation/wavy_cases.cpp
 std::vector<Case> compliance_cases();     // src/validation/compliance_cases.cpp
 std::vector<Case> wear_cases();           // src/validation/wear_cases.cpp
+std::vector<Case> plasticity_cases();     // src/validation/plasticity_cases.cpp
 }  // namespace bemcontact::validation

@@ -9,6 +9,7 @@
 
 #include "bemcontact/bem/analysis.hpp"
 #include "bemcontact/io/input/problem_file.hpp"
+#include "bemcontact/plasticity/cell_meshes.hpp"
 #include "bemcontact/plasticity/elastoplastic_region.hpp"
 #include "bemcontact/reference/lame.hpp"
 #include "bemcontact/reference/plastic_cylinder.hpp"
@@ -19,24 +20,18 @@ namespace {
 const Material steel{200000.0, 0.3};
 const plasticity::J2Hardening perfect{250.0, 0.0, 0.0};
 
-// Cells over a <= r <= rc, 0 <= theta <= pi/2: an n_r x n_t grid of quadrilaterals, or of
-// two triangles each.
+// Cells over a <= r <= rc, 0 <= theta <= pi/2: n_r x n_t quadrilaterals, or two triangles
+// each.
 std::vector<plasticity::Cell> sector_cells(double a, double rc, int n_r, int n_t, bool quadrilaterals = false) {
-  std::vector<plasticity::Cell> cells;
-  const auto at = [&](int i, int j) {
-    const double r = a + (rc - a) * i / n_r, t = 0.5 * std::numbers::pi * j / n_t;
-    return Vec2(r * std::cos(t), r * std::sin(t));
-  };
-  for (int i = 0; i < n_r; ++i)
-    for (int j = 0; j < n_t; ++j) {
-      if (quadrilaterals) {
-        cells.push_back({{at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)}});
-        continue;
-      }
-      cells.push_back({{at(i, j), at(i + 1, j), at(i + 1, j + 1)}});
-      cells.push_back({{at(i, j), at(i + 1, j + 1), at(i, j + 1)}});
-    }
-  return cells;
+  auto cells = plasticity::annular_sector_cells(Vec2::Zero(), a, rc, 0.0, 0.5 * std::numbers::pi, n_r, n_t);
+  if (quadrilaterals) return cells;
+  std::vector<plasticity::Cell> triangles;
+  for (const auto& cell : cells) {
+    const auto& v = cell.vertices;
+    triangles.push_back({{v[0], v[1], v[2]}});
+    triangles.push_back({{v[0], v[2], v[3]}});
+  }
+  return triangles;
 }
 
 }  // namespace

@@ -1,0 +1,127 @@
+// Elastoplastic regions (plasticity/elastoplastic_region.hpp) against an independent
+// computation: the thick tube in plane strain under internal pressure
+// (examples/thick_ring_plane_strain.toml, a = 1, b = 2), cells over a <= r <= 1.6 on the
+// inner arc's 32 angles, loaded in steps of 0.1 of the first-yield pressure p_y to 1.5 p_y
+// and unloaded, against the one-dimensional finite-element tube of
+// reference/plastic_cylinder.hpp (400 elements).
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include "bemcontact/bem/analysis.hpp"
+#include "bemcontact/plasticity/cell_meshes.hpp"
+#include "bemcontact/plasticity/elastoplastic_region.hpp"
+#include "bemcontact/reference/plastic_cylinder.hpp"
+#include "bemcontact/validation/case_groups.hpp"
+#include "bemcontact/validation/case_support.hpp"
+
+namespace bemcontact::validation {
+namespace {
+
+constexpr double kInner = 1.0, kOuter = 2.0, kCellsTo = 1.6;
+
+struct TubeErrors {
+  double plastic_displacement = 0.0;  // the bore's displacement beyond the elastic response, at 1.5 p_y
+  double residual_displacement = 0.0;  // the bore's after unloading
+  double mean_hoop = 0.0;              // the cells' hoop stress at 1.5 p_y, mean |error| / Y
+  double plastic_radius = 0.0;         // the outermost plastic cell's outer radius
+  int newton_iterations = 0, held_cells = 0;
+};
+
+TubeErrors run_tube(const bem::ProblemDefinition& problem, const geometry::BoundaryMesh& mesh,
+                    const plasticity::J2Hardening& hardening, int rings,
+                    const std::vector<double>& pressures,
+                    const std::vector<reference::PlasticCylinderState>& reference) {
+  const Index bore = node_at(mesh, Vec2(kInner * std::sqrt(0.5), kInner * std::sqrt(0.5)));
+  plasticity::ElastoplasticRegion region(
+      mesh, problem.body, problem.analysis, hardening,
+      plasticity::annular_sector_cells(Vec2::Zero(), kInner, kCellsTo, 0.0, 0.5 * std::numbers::pi, rings, 32));
+  const Vec2 radial = mesh.nodes[static_cast<std::size_t>(bore)].position.normalized();
+  TubeErrors out;
+  double elastic = 0.0;
+  const std::size_t peak = pressures.size() - 2;  // 1.5 p_y, before the unloading
+  for (std::size_t k = 0; k < pressures.size(); ++k) {
+    const auto report = region.advance(pressures[k]);
+    out.newton_iterations = std::max(out.newton_iterations, report.newton_iterations);
+    out.held_cells += report.held_cells;
+    const double ur = region.boundary_solution().displacement[static_cast<std::size_t>(bore)].dot(radial);
+    if (k == 0) elastic = ur;
+    if (k == peak) {
+      const double scale = pressures[k] / pressures[0];
+      out.plastic_displacement = (ur - scale * elastic) /
+                                     (reference[k].inner_displacement - scale * reference[0].inner_displacement) - 1.0;
+      const auto& ref = reference[k];
+      for (std::size_t e = 0; e < region.cells().size(); ++e) {
+        const Vec2 x = region.cells()[e].centroid();
+        const double r = x.norm(), c = x.x() / r, s = x.y() / r;
+        const auto& S = region.cell_stress()[e];
+        const double hoop = S[0] * s * s + S[1] * c * c - 2.0 * plasticity::component12(S) * s * c;
+        std::size_t q = 0;  // the reference's nearest Gauss point
+        for (std::size_t g = 0; g < ref.radii.size(); ++g)
+          if (std::abs(ref.radii[g] - r) < std::abs(ref.radii[q] - r)) q = g;
+        out.mean_hoop += std::abs(hoop - ref.stress[q][1]) / hardening.yield_stress /
+                         static_cast<double>(region.cells().size());
+        if (region.states()[e].equivalent_plastic_strain > 0.0)
+          for (const Vec2& v : region.cells()[e].vertices) out.plastic_radius = std::max(out.plastic_radius, v.norm());
+      }
+    }
+    if (k + 1 == pressures.size()) out.residual_displacement = ur / reference[k].inner_displacement - 1.0;
+  }
+  return out;
+}
+
+std::vector<Record> run_plastic_cylinder(const Context& context) {
+  // The pressure p = 1: the increments' amplitudes are the pressures.
+  auto file = io::read_problem_file(context.examples_dir + "/thick_ring_plane_strain.toml", {{"p", 1.0}});
+  auto& problem = file.problem;
+  for (auto& piece : problem.body.pieces)
+    if (piece.name == "AB" || piece.name == "CD") piece.elements = 64;  // the cells' centroids 2 elements away
+  const auto mesh = bem::mesh_body(problem);
+  const Material& material = problem.body.material;
+  std::vector<Record> records;
+  const std::vector<std::pair<double, std::vector<int>>> variants{{0.0, {6, 12, 24}}, {0.01, {12}}, {0.05, {12}}};
+  for (const auto& [hardening_share, levels] : variants) {
+    const plasticity::J2Hardening hardening{250.0, hardening_share * material.young_modulus, 0.0};
+    const double py = reference::first_yield_pressure(kInner, kOuter, material, hardening.yield_stress);
+    std::vector<double> pressures{0.5 * py};
+    for (int k = 9; k <= 15; ++k) pressures.push_back(0.1 * k * py);
+    pressures.push_back(0.0);
+    const auto reference = reference::plastic_thick_cylinder(kInner, kOuter, material, hardening, pressures, 400);
+    const double c_reference = reference[pressures.size() - 2].plastic_radius;
+    double previous = 0.0;
+    for (const int rings : levels) {
+      const std::size_t first = records.size();
+      const TubeErrors e = run_tube(problem, mesh, hardening, rings, pressures, reference);
+      const double cell = (kCellsTo - kInner) / rings;
+      records.push_back(compare_scaled("plastic_bore_displacement", e.plastic_displacement, 0.0, 1.0,
+                                       rings <= 6 ? 0.06 : rings <= 12 ? 0.03 : 0.015));
+      records.push_back(compare_scaled("residual_bore_displacement", e.residual_displacement, 0.0, 1.0,
+                                       rings <= 6 ? 0.06 : rings <= 12 ? 0.03 : 0.015));
+      records.push_back(compare_scaled("mean_hoop_stress_error_over_Y", e.mean_hoop, 0.0, 1.0,
+                                       rings <= 6 ? 0.006 : rings <= 12 ? 0.004 : 0.003));
+      // The plastic zone ends within a cell of the reference's radius.
+      records.push_back(compare_scaled("plastic_radius", e.plastic_radius, c_reference, cell, 1.0));
+      records.push_back(compare_scaled("cells_held_on_the_surface", e.held_cells, 0.0, 1.0, 0.0));
+      records.push_back(report_value("largest_newton_iterations", e.newton_iterations));
+      if (previous > 0.0)
+        records.push_back(report_value("plastic_displacement_order",
+                                       std::log(previous / std::abs(e.plastic_displacement)) / std::log(2.0)));
+      previous = std::abs(e.plastic_displacement);
+      tag(records, first, "plastic-cylinder",
+          {{"hardening_over_E", std::to_string(hardening_share)}, {"rings", std::to_string(rings)}});
+    }
+  }
+  return records;
+}
+
+}  // namespace
+
+std::vector<Case> plasticity_cases() {
+  return {{"plastic-cylinder", "Conclusion (perspective); Hill 1950",
+           "elastoplastic thick tube in plane strain, perfectly plastic and hardening, loading and unloading, against "
+           "a 1D finite-element reference",
+           run_plastic_cylinder}};
+}
+
+}  // namespace bemcontact::validation
