@@ -17,6 +17,10 @@ set(BEMCONTACT_KERNELS_SOURCES
   src/kernels/halfspace_ring.cpp
   src/kernels/kelvin2d.cpp
   src/kernels/ring_integrals.cpp)
+set(BEMCONTACT_PLASTICITY_SOURCES
+  src/plasticity/cell_meshes.cpp
+  src/plasticity/initial_stress.cpp
+  src/plasticity/j2_material.cpp)
 set(BEMCONTACT_OPERATORS_SOURCES
   src/operators/bordered_lu.cpp
   src/operators/dense_lu.cpp
@@ -49,17 +53,13 @@ set(BEMCONTACT_BEM_SOURCES
   src/bem/analysis.cpp
   src/bem/assembly.cpp
   src/bem/boundary_system.cpp
+  src/bem/elastoplastic_region.cpp
   src/bem/compressed_system.cpp
   src/bem/factored_body.cpp
   src/bem/postprocess.cpp
   src/bem/probe.cpp
   src/bem/resultants.cpp
   src/bem/rigid_modes.cpp)
-set(BEMCONTACT_PLASTICITY_SOURCES
-  src/plasticity/cell_meshes.cpp
-  src/plasticity/elastoplastic_region.cpp
-  src/plasticity/initial_stress.cpp
-  src/plasticity/j2_material.cpp)
 set(BEMCONTACT_DD_SOURCES
   src/dd/balancing.cpp
   src/dd/decomposition.cpp
@@ -134,7 +134,7 @@ set(BEMCONTACT_VALIDATION_SOURCES
 set(BEMCONTACT_PARALLEL_SOURCES
   src/parallel/session.cpp)
 
-set(BEMCONTACT_LIBRARY_LAYERS CORE QUADRATURE GEOMETRY KERNELS OPERATORS REFERENCE INTEGRATION BEM PLASTICITY DD CONTACT IO DRIVER)
+set(BEMCONTACT_LIBRARY_LAYERS CORE QUADRATURE GEOMETRY KERNELS PLASTICITY OPERATORS REFERENCE INTEGRATION BEM DD CONTACT IO DRIVER)
 
 function(bemcontact_check_source_lists)
   file(GLOB_RECURSE present RELATIVE ${PROJECT_SOURCE_DIR} CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/*.cpp)

@@ -1,4 +1,4 @@
-// Elastoplastic regions (plasticity/elastoplastic_region.hpp) against an independent
+// Elastoplastic regions (bem/elastoplastic_region.hpp) against an independent
 // computation: the thick tube in plane strain under internal pressure
 // (examples/thick_ring_plane_strain.toml, a = 1, b = 2), cells over a <= r <= 1.6 on the
 // inner arc's 32 angles, loaded in steps of 0.1 of the first-yield pressure p_y to 1.5 p_y
@@ -11,7 +11,7 @@
 
 #include "bemcontact/bem/analysis.hpp"
 #include "bemcontact/plasticity/cell_meshes.hpp"
-#include "bemcontact/plasticity/elastoplastic_region.hpp"
+#include "bemcontact/bem/elastoplastic_region.hpp"
 #include "bemcontact/reference/plastic_cylinder.hpp"
 #include "bemcontact/validation/case_groups.hpp"
 #include "bemcontact/validation/case_support.hpp"
@@ -34,7 +34,7 @@ TubeErrors run_tube(const bem::ProblemDefinition& problem, const geometry::Bound
                     const std::vector<double>& pressures,
                     const std::vector<reference::PlasticCylinderState>& reference) {
   const Index bore = node_at(mesh, Vec2(kInner * std::sqrt(0.5), kInner * std::sqrt(0.5)));
-  plasticity::ElastoplasticRegion region(
+  bem::ElastoplasticRegion region(
       mesh, problem.body, problem.analysis, hardening,
       plasticity::annular_sector_cells(Vec2::Zero(), kInner, kCellsTo, 0.0, 0.5 * std::numbers::pi, rings, 32));
   const Vec2 radial = mesh.nodes[static_cast<std::size_t>(bore)].position.normalized();

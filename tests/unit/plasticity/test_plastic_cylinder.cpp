@@ -1,6 +1,6 @@
 // The thick cylinder in plane strain under internal pressure, elastic then plastic: the
 // one-dimensional reference (reference/plastic_cylinder.hpp) against Lame and the limit
-// pressure, and the elastoplastic region (plasticity/elastoplastic_region.hpp) against it,
+// pressure, and the elastoplastic region (bem/elastoplastic_region.hpp) against it,
 // converging under cell refinement, with its unloading.
 #include <gtest/gtest.h>
 
@@ -10,7 +10,7 @@
 #include "bemcontact/bem/analysis.hpp"
 #include "bemcontact/io/input/problem_file.hpp"
 #include "bemcontact/plasticity/cell_meshes.hpp"
-#include "bemcontact/plasticity/elastoplastic_region.hpp"
+#include "bemcontact/bem/elastoplastic_region.hpp"
 #include "bemcontact/reference/lame.hpp"
 #include "bemcontact/reference/plastic_cylinder.hpp"
 
@@ -86,7 +86,7 @@ TEST(PlasticCylinder, RegionConvergesToTheReference) {
   // Measured: 6.9 / 3.3 / 3.3 % at 6 rings of cells, 3.6 / 1.3 / 1.3 % at 12 (first order).
   const std::vector<double> bounds6{0.0, 0.08, 0.04, 0.04}, bounds12{0.0, 0.04, 0.015, 0.015};
   for (const int n_r : {6, 12}) {
-    plasticity::ElastoplasticRegion region(mesh, problem.body, problem.analysis, perfect, sector_cells(a, rc, n_r, 32));
+    bem::ElastoplasticRegion region(mesh, problem.body, problem.analysis, perfect, sector_cells(a, rc, n_r, 32));
     for (std::size_t k = 0; k < pressures.size(); ++k) {
       const auto report = region.advance(pressures[k]);
       EXPECT_LE(report.newton_iterations, 6);
@@ -143,7 +143,7 @@ TEST(PlasticCylinder, QuadrilateralCellsConvergeInSteps) {
     }
     double previous_displacement = 1.0, previous_hoop = 1.0;
     for (const int n_r : {4, 8}) {
-      plasticity::ElastoplasticRegion region(mesh, problem.body, problem.analysis, hardening,
+      bem::ElastoplasticRegion region(mesh, problem.body, problem.analysis, hardening,
                                              sector_cells(a, rc, n_r, 32, true));
       double elastic = 0.0, ur = 0.0;
       for (const double p : pressures) {

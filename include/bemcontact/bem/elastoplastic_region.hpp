@@ -34,7 +34,7 @@ namespace bemcontact::operators {
 class DenseLU;
 }
 
-namespace bemcontact::plasticity {
+namespace bemcontact::bem {
 
 struct IncrementReport {
   double amplitude = 0.0;
@@ -53,8 +53,8 @@ class ElastoplasticRegion {
  public:
   // Throws Error for a body that is not plane strain, has symmetry lines or a bad
   // hardening (the reader checks them first), SolverError for a singular system.
-  ElastoplasticRegion(const geometry::BoundaryMesh& mesh, const bem::BodyDefinition& body, AnalysisType type,
-                      const J2Hardening& hardening, std::vector<Cell> cells);
+  ElastoplasticRegion(const geometry::BoundaryMesh& mesh, const BodyDefinition& body, AnalysisType type,
+                      const plasticity::J2Hardening& hardening, std::vector<plasticity::Cell> cells);
   ElastoplasticRegion(ElastoplasticRegion&&) noexcept;
   ~ElastoplasticRegion();
 
@@ -63,15 +63,15 @@ class ElastoplasticRegion {
   // increment, the step cut it tried and the cell where it fails after 6 cuts.
   IncrementReport advance(double amplitude, int max_iterations = 30, double tolerance = 1e-10);
 
-  const std::vector<Cell>& cells() const { return cells_; }
-  const std::vector<J2State>& states() const { return states_; }
+  const std::vector<plasticity::Cell>& cells() const { return cells_; }
+  const std::vector<plasticity::J2State>& states() const { return states_; }
   // The stress of each cell (s33 included), and the boundary solution, at the last
   // increment's end.
-  const std::vector<Mandel>& cell_stress() const { return stress_; }
-  bem::BoundarySolution boundary_solution() const;
+  const std::vector<plasticity::Mandel>& cell_stress() const { return stress_; }
+  BoundarySolution boundary_solution() const;
 
  private:
-  InitialStress initial_stress(const Mandel& plastic_strain) const;
+  plasticity::InitialStress initial_stress(const plasticity::Mandel& plastic_strain) const;
   struct Evaluation;
   Evaluation evaluate(const Vector& E, double amplitude, const std::vector<char>& held) const;
   bool solve_increment(double amplitude, int max_iterations, double tolerance, IncrementReport& report,
@@ -79,18 +79,18 @@ class ElastoplasticRegion {
 
   geometry::BoundaryMesh mesh_;
   Material material_;
-  J2Hardening hardening_;
-  std::vector<Cell> cells_;
-  std::vector<bem::NodeCondition> conditions_;
-  std::vector<bem::ConstraintEquation> constraints_;
+  plasticity::J2Hardening hardening_;
+  std::vector<plasticity::Cell> cells_;
+  std::vector<NodeCondition> conditions_;
+  std::vector<ConstraintEquation> constraints_;
   Matrix boundary_rhs_;   // [b | B]: the load at amplitude 1 and the cells' domain term
   Matrix boundary_unknowns_;  // A^-1 [b | B]
   Vector load_stress_;    // s: C E per unit amplitude (3 per cell, tensor components 11, 22, 12)
   Matrix cell_operator_;  // K: C E per unit initial stress component of each cell
-  std::vector<J2State> states_;
-  std::vector<Mandel> stress_;
+  std::vector<plasticity::J2State> states_;
+  std::vector<plasticity::Mandel> stress_;
   Vector strain_;         // E of the last increment
   double amplitude_ = 0.0;
 };
 
-}  // namespace bemcontact::plasticity
+}  // namespace bemcontact::bem

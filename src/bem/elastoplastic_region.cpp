@@ -1,4 +1,4 @@
-#include "bemcontact/plasticity/elastoplastic_region.hpp"
+#include "bemcontact/bem/elastoplastic_region.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -10,7 +10,21 @@
 #include "bemcontact/integration/plane_element.hpp"
 #include "bemcontact/operators/dense_lu.hpp"
 
-namespace bemcontact::plasticity {
+namespace bemcontact::bem {
+
+using plasticity::Cell;
+using plasticity::component12;
+using plasticity::elastic_stiffness;
+using plasticity::J2Hardening;
+using plasticity::j2_update;
+using plasticity::mandel;
+using plasticity::InitialStress;
+using plasticity::J2State;
+using plasticity::J2Update;
+using plasticity::Mandel;
+using plasticity::MandelMatrix;
+using plasticity::Matrix33;
+
 namespace {
 
 const double kSqrt2 = std::sqrt(2.0);
@@ -30,10 +44,10 @@ Matrix33 plane_strain_stiffness(const Material& material) {
 Mandel strain_of(const Eigen::Vector3d& E) { return mandel(E[0], E[1], 0.0, E[2]); }
 
 // Nodal values (u, t), 4N, of the boundary unknowns y with the conditions' values scaled.
-Vector boundary_values(const Vector& y, std::vector<bem::NodeCondition> conditions,
-                       const std::vector<bem::ConstraintEquation>& constraints, double scale) {
+Vector boundary_values(const Vector& y, std::vector<NodeCondition> conditions,
+                       const std::vector<ConstraintEquation>& constraints, double scale) {
   for (auto& c : conditions) c.value = {scale * c.value[0], scale * c.value[1]};
-  const bem::BoundarySolution s = bem::recover_boundary_values(y, conditions, constraints);
+  const BoundarySolution s = recover_boundary_values(y, conditions, constraints);
   const Index n = static_cast<Index>(s.displacement.size());
   Vector out(4 * n);
   for (Index i = 0; i < n; ++i) {
@@ -48,7 +62,7 @@ Vector boundary_values(const Vector& y, std::vector<bem::NodeCondition> conditio
 ElastoplasticRegion::ElastoplasticRegion(ElastoplasticRegion&&) noexcept = default;
 ElastoplasticRegion::~ElastoplasticRegion() = default;
 
-ElastoplasticRegion::ElastoplasticRegion(const geometry::BoundaryMesh& mesh, const bem::BodyDefinition& body,
+ElastoplasticRegion::ElastoplasticRegion(const geometry::BoundaryMesh& mesh, const BodyDefinition& body,
                                          AnalysisType type, const J2Hardening& hardening, std::vector<Cell> cells)
     : mesh_(mesh), material_(body.material), hardening_(hardening), cells_(std::move(cells)) {
   if (type != AnalysisType::plane_strain)
@@ -58,12 +72,12 @@ ElastoplasticRegion::ElastoplasticRegion(const geometry::BoundaryMesh& mesh, con
                                  "(its cells would need their images); draw the roller lines instead");
   if (!(hardening_.yield_stress > 0.0) || hardening_.isotropic < 0.0 || hardening_.kinematic < 0.0)
     throw Error("body '" + body.name + "': the yield stress must be > 0 and the hardening moduli >= 0");
-  conditions_ = bem::resolve_node_conditions(mesh_, body, type);
-  constraints_ = bem::resolve_point_constraints(mesh_, body, conditions_);
-  const bem::ElementIntegrator integrator(type, material_);
+  conditions_ = resolve_node_conditions(mesh_, body, type);
+  constraints_ = resolve_point_constraints(mesh_, body, conditions_);
+  const ElementIntegrator integrator(type, material_);
   const auto kelvin = kernels::KelvinPlane::from(type, material_);
-  auto matrices = bem::assemble_influence_matrices(mesh_, integrator);
-  auto system = bem::build_boundary_system(matrices, conditions_, constraints_);
+  auto matrices = assemble_influence_matrices(mesh_, integrator);
+  auto system = build_boundary_system(matrices, conditions_, constraints_);
   const Index n = mesh_.node_count(), rows = system.b.size(), m = static_cast<Index>(cells_.size());
   // [b | B]: the cells' domain term at the collocation nodes (the boundary equation's rows).
   boundary_rhs_ = Matrix::Zero(rows, 1 + 3 * m);
@@ -267,15 +281,15 @@ IncrementReport ElastoplasticRegion::advance(double amplitude, int max_iteration
   return report;
 }
 
-bem::BoundarySolution ElastoplasticRegion::boundary_solution() const {
+BoundarySolution ElastoplasticRegion::boundary_solution() const {
   const Index m = static_cast<Index>(cells_.size());
   Vector coefficients(1 + 3 * m);
   coefficients[0] = amplitude_;
   for (Index e = 0; e < m; ++e)
     coefficients.segment<3>(1 + 3 * e) = initial_stress(states_[static_cast<std::size_t>(e)].plastic_strain);
-  std::vector<bem::NodeCondition> conditions = conditions_;
+  std::vector<NodeCondition> conditions = conditions_;
   for (auto& c : conditions) c.value = {amplitude_ * c.value[0], amplitude_ * c.value[1]};
-  return bem::recover_boundary_values(boundary_unknowns_ * coefficients, conditions, constraints_);
+  return recover_boundary_values(boundary_unknowns_ * coefficients, conditions, constraints_);
 }
 
-}  // namespace bemcontact::plasticity
+}  // namespace bemcontact::bem
