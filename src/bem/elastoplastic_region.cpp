@@ -18,6 +18,7 @@ using plasticity::elastic_stiffness;
 using plasticity::J2Hardening;
 using plasticity::j2_update;
 using plasticity::mandel;
+using plasticity::plane_strain_stiffness;
 using plasticity::InitialStress;
 using plasticity::J2State;
 using plasticity::J2Update;
@@ -29,16 +30,6 @@ namespace {
 
 const double kSqrt2 = std::sqrt(2.0);
 
-// Plane-strain C on the in-plane tensor components (11, 22, 12).
-Matrix33 plane_strain_stiffness(const Material& material) {
-  const double G = material.shear_modulus(), nu = material.poisson_ratio;
-  const double lambda = 2.0 * G * nu / (1.0 - 2.0 * nu);
-  Matrix33 C;
-  C << lambda + 2 * G, lambda, 0.0,  //
-      lambda, lambda + 2 * G, 0.0,   //
-      0.0, 0.0, 2 * G;
-  return C;
-}
 
 // The 3D strain (Mandel) of the in-plane tensor components, eps_33 = 0.
 Mandel strain_of(const Eigen::Vector3d& E) { return mandel(E[0], E[1], 0.0, E[2]); }

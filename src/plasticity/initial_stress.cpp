@@ -60,7 +60,29 @@ Eigen::Matrix<double, 2, 3> traction_of_components(const Vec2& n) {
   return t;
 }
 
+// Calls add(y, w, t) at the quadrature points of the cell's edges, t the traction sigma0 n
+// there per unit component of sigma0 (n the edge's outward normal).
+template <class Add>
+void for_each_cell_point(const Cell& cell, const Vec2& x, Add&& add) {
+  for (std::size_t k = 0; k < cell.vertices.size(); ++k) {
+    const Vec2& a = cell.vertices[k];
+    const Vec2& b = cell.vertices[(k + 1) % cell.vertices.size()];
+    const Eigen::Matrix<double, 2, 3> traction = traction_of_components(outward_normal(a, b));
+    for_each_edge_point(a, b, x, [&](const Vec2& y, double w) { add(y, w, traction); });
+  }
+}
+
 }  // namespace
+
+Matrix33 plane_strain_stiffness(const Material& material) {
+  const double G = material.shear_modulus(), nu = material.poisson_ratio;
+  const double lambda = 2.0 * G * nu / (1.0 - 2.0 * nu);
+  Matrix33 C;
+  C << lambda + 2 * G, lambda, 0.0,  //
+      lambda, lambda + 2 * G, 0.0,   //
+      0.0, 0.0, 2 * G;
+  return C;
+}
 
 double Cell::area() const {
   double twice = 0.0;  // the shoelace formula
@@ -98,36 +120,26 @@ Vec2 Cell::centroid() const {
 
 Matrix23 cell_displacement_influence(const kernels::KelvinPlane& kernel, const Vec2& x, const Cell& cell) {
   Matrix23 out = Matrix23::Zero();
-  for (std::size_t k = 0; k < cell.vertices.size(); ++k) {
-    const Vec2& a = cell.vertices[k];
-    const Vec2& b = cell.vertices[(k + 1) % cell.vertices.size()];
-    const Eigen::Matrix<double, 2, 3> traction = traction_of_components(outward_normal(a, b));
-    for_each_edge_point(a, b, x, [&](const Vec2& y, double w) {
-      // u_k(x) += U(x, y)(k, i) p_i(y)
-      out += w * kernels::kelvin_displacement(kernel, x, y) * traction;
-    });
-  }
+  for_each_cell_point(cell, x, [&](const Vec2& y, double w, const Eigen::Matrix<double, 2, 3>& traction) {
+    // u_k(x) += U(x, y)(k, i) p_i(y)
+    out += w * kernels::kelvin_displacement(kernel, x, y) * traction;
+  });
   return out;
 }
 
 Matrix33 cell_stress_influence(const kernels::KelvinPlane& kernel, const Vec2& x, const Cell& cell) {
   Matrix33 out = Matrix33::Zero();
-  for (std::size_t k = 0; k < cell.vertices.size(); ++k) {
-    const Vec2& a = cell.vertices[k];
-    const Vec2& b = cell.vertices[(k + 1) % cell.vertices.size()];
-    const Eigen::Matrix<double, 2, 3> traction = traction_of_components(outward_normal(a, b));
-    for_each_edge_point(a, b, x, [&](const Vec2& y, double w) {
-      // sigma_ij(x) += D(x, y)[k](i, j) p_k(y)
-      const kernels::StressKernel D = kernels::kelvin_stress_from_traction(kernel, x, y);
-      for (int component = 0; component < 3; ++component)
-        for (int c = 0; c < 2; ++c) {
-          const double p = w * traction(c, component);
-          out(0, component) += D[c](0, 0) * p;
-          out(1, component) += D[c](1, 1) * p;
-          out(2, component) += D[c](0, 1) * p;
-        }
-    });
-  }
+  for_each_cell_point(cell, x, [&](const Vec2& y, double w, const Eigen::Matrix<double, 2, 3>& traction) {
+    // sigma_ij(x) += D(x, y)[k](i, j) p_k(y)
+    const kernels::StressKernel D = kernels::kelvin_stress_from_traction(kernel, x, y);
+    for (int component = 0; component < 3; ++component)
+      for (int c = 0; c < 2; ++c) {
+        const double p = w * traction(c, component);
+        out(0, component) += D[c](0, 0) * p;
+        out(1, component) += D[c](1, 1) * p;
+        out(2, component) += D[c](0, 1) * p;
+      }
+  });
   return out;
 }
 

@@ -9,6 +9,21 @@
 
 namespace bemcontact::reference {
 
+double PlasticCylinderState::mean_hoop_error(const std::vector<Vec2>& points,
+                                             const std::vector<plasticity::Mandel>& stress, double scale) const {
+  double sum = 0.0;
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    const double r = points[k].norm(), c = points[k].x() / r, s = points[k].y() / r;
+    const auto& S = stress[k];
+    const double hoop = S[0] * s * s + S[1] * c * c - 2.0 * plasticity::component12(S) * s * c;
+    std::size_t q = 0;  // the nearest Gauss point
+    for (std::size_t g = 0; g < radii.size(); ++g)
+      if (std::abs(radii[g] - r) < std::abs(radii[q] - r)) q = g;
+    sum += std::abs(hoop - this->stress[q][1]);
+  }
+  return points.empty() ? 0.0 : sum / scale / static_cast<double>(points.size());
+}
+
 double first_yield_pressure(double a, double b, const Material& material, double yield_stress) {
   // Per unit pressure: A = a^2 / (b^2 - a^2), s_rr = -1, s_tt = A (1 + b^2 / a^2), s_zz = 2 nu A.
   const double A = a * a / (b * b - a * a);

@@ -51,17 +51,10 @@ TubeErrors run_tube(const bem::ProblemDefinition& problem, const geometry::Bound
       const double scale = pressures[k] / pressures[0];
       out.plastic_displacement = (ur - scale * elastic) /
                                      (reference[k].inner_displacement - scale * reference[0].inner_displacement) - 1.0;
-      const auto& ref = reference[k];
+      std::vector<Vec2> centroids;
+      for (const auto& cell : region.cells()) centroids.push_back(cell.centroid());
+      out.mean_hoop = reference[k].mean_hoop_error(centroids, region.cell_stress(), hardening.yield_stress);
       for (std::size_t e = 0; e < region.cells().size(); ++e) {
-        const Vec2 x = region.cells()[e].centroid();
-        const double r = x.norm(), c = x.x() / r, s = x.y() / r;
-        const auto& S = region.cell_stress()[e];
-        const double hoop = S[0] * s * s + S[1] * c * c - 2.0 * plasticity::component12(S) * s * c;
-        std::size_t q = 0;  // the reference's nearest Gauss point
-        for (std::size_t g = 0; g < ref.radii.size(); ++g)
-          if (std::abs(ref.radii[g] - r) < std::abs(ref.radii[q] - r)) q = g;
-        out.mean_hoop += std::abs(hoop - ref.stress[q][1]) / hardening.yield_stress /
-                         static_cast<double>(region.cells().size());
         if (region.states()[e].equivalent_plastic_strain > 0.0)
           for (const Vec2& v : region.cells()[e].vertices) out.plastic_radius = std::max(out.plastic_radius, v.norm());
       }

@@ -22,6 +22,10 @@ struct PlasticCylinderState {
   std::vector<double> radii;    // the Gauss points
   std::vector<plasticity::Mandel> stress;  // (rr, tt, zz, 0) at them
   std::vector<double> equivalent_plastic_strain;
+  // The mean over `points` of |hoop stress of `stress` (Cartesian, Mandel) - the hoop stress
+  // at the nearest Gauss point|, over `scale`: a computed field's error.
+  double mean_hoop_error(const std::vector<Vec2>& points, const std::vector<plasticity::Mandel>& stress,
+                         double scale) const;
 };
 
 // The states at each pressure of `pressures` (a history: loading and unloading), on
