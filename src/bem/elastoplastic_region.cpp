@@ -203,14 +203,33 @@ bool ElastoplasticRegion::solve_increment(double amplitude, int max_iterations, 
       failure = message.str();
       return false;
     }
-    // J = I - C^-1 K diag(d sigma0 / d E).
-    Matrix J = cell_operator_;
-    for (Index e = 0; e < m; ++e) J.middleCols<3>(3 * e) = J.middleCols<3>(3 * e) * current.slope[static_cast<std::size_t>(e)];
-    for (Index c = 0; c < m; ++c) J.middleRows<3>(3 * c) = -compliance * J.middleRows<3>(3 * c);
-    J += Matrix::Identity(3 * m, 3 * m);
-    const operators::DenseLU lu(std::move(J), "the elastoplastic Newton system");
-    Matrix step = -current.F;
-    lu.solve_in_place(step);
+    // J = I - C^-1 K diag(d sigma0 / d E). An elastic cell's slope is 0: its columns are
+    // the identity's, so the plastic cells' block is solved alone and the elastic cells'
+    // steps follow, dE_Q = -F_Q - J_QP dE_P.
+    std::vector<Index> plastic;
+    for (Index e = 0; e < m; ++e)
+      if (!current.slope[static_cast<std::size_t>(e)].isZero(0.0)) plastic.push_back(e);
+    const Index p = static_cast<Index>(plastic.size());
+    Matrix coupling(3 * m, 3 * p);  // the plastic cells' columns of J - I
+    for (Index j = 0; j < p; ++j) {
+      const Index e = plastic[static_cast<std::size_t>(j)];
+      coupling.middleCols<3>(3 * j) = cell_operator_.middleCols<3>(3 * e) * current.slope[static_cast<std::size_t>(e)];
+    }
+    for (Index c = 0; c < m; ++c) coupling.middleRows<3>(3 * c) = -compliance * coupling.middleRows<3>(3 * c);
+    Matrix J(3 * p, 3 * p);
+    Matrix step_plastic(3 * p, 1);
+    for (Index i = 0; i < p; ++i) {
+      J.middleRows<3>(3 * i) = coupling.middleRows<3>(3 * plastic[static_cast<std::size_t>(i)]);
+      step_plastic.middleRows<3>(3 * i) = -current.F.segment<3>(3 * plastic[static_cast<std::size_t>(i)]);
+    }
+    J += Matrix::Identity(3 * p, 3 * p);
+    if (p > 0) {
+      const operators::DenseLU lu(std::move(J), "the elastoplastic Newton system");
+      lu.solve_in_place(step_plastic);
+    }
+    Matrix step = -current.F - coupling * step_plastic;
+    for (Index i = 0; i < p; ++i)
+      step.middleRows<3>(3 * plastic[static_cast<std::size_t>(i)]) = step_plastic.middleRows<3>(3 * i);
     double fraction = 1.0;
     Evaluation next = evaluate(E + step.col(0), amplitude, held);
     constexpr int kHalvings = 10;

@@ -65,6 +65,13 @@ TubeErrors run_tube(const bem::ProblemDefinition& problem, const geometry::Bound
 }
 
 std::vector<Record> run_plastic_cylinder(const Context& context) {
+  // The region is dense only (no compressed domain operator yet): under --operator
+  // compressed the case would repeat itself.
+  if (context.operator_kind == bem::OperatorKind::compressed) {
+    std::vector<Record> records{report_value("skipped_dense_only", 1.0)};
+    tag(records, 0, "plastic-cylinder", {});
+    return records;
+  }
   // The pressure p = 1: the increments' amplitudes are the pressures.
   auto file = io::read_problem_file(context.examples_dir + "/thick_ring_plane_strain.toml", {{"p", 1.0}});
   auto& problem = file.problem;
@@ -73,7 +80,8 @@ std::vector<Record> run_plastic_cylinder(const Context& context) {
   const auto mesh = bem::mesh_body(problem);
   const Material& material = problem.body.material;
   std::vector<Record> records;
-  const std::vector<std::pair<double, std::vector<int>>> variants{{0.0, {6, 12, 24}}, {0.01, {12}}, {0.05, {12}}};
+  // 24 rings (768 cells) take 9 s more: measured -0.80 % and 0.15 % of Y (docs/plasticity.md).
+  const std::vector<std::pair<double, std::vector<int>>> variants{{0.0, {6, 12}}, {0.01, {6}}, {0.05, {6}}};
   for (const auto& [hardening_share, levels] : variants) {
     const plasticity::J2Hardening hardening{250.0, hardening_share * material.young_modulus, 0.0};
     const double py = reference::first_yield_pressure(kInner, kOuter, material, hardening.yield_stress);
