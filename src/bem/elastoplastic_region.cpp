@@ -103,10 +103,26 @@ ElastoplasticRegion::ElastoplasticRegion(const geometry::BoundaryMesh& mesh, con
   const Matrix through_boundary = somigliana * values;
   load_stress_ = through_boundary.col(0);
   cell_operator_ = through_boundary.rightCols(3 * m);
-  for (Index c = 0; c < m; ++c)
-    for (const auto& [x, weight] : cells_[static_cast<std::size_t>(c)].mean_points())
-      for (Index e = 0; e < m; ++e)
-        cell_operator_.block<3, 3>(3 * c, 3 * e) += weight * cell_stress_influence(kelvin, x, cells_[static_cast<std::size_t>(e)]);
+  // A cell far from cell e (centroids more than kFarCells sizes apart) takes the field at its
+  // centroid for its mean: the difference is of order (size / distance)^2 of a small term.
+  std::vector<double> size(static_cast<std::size_t>(m));
+  for (Index e = 0; e < m; ++e) size[static_cast<std::size_t>(e)] = std::sqrt(std::abs(cells_[static_cast<std::size_t>(e)].area()));
+  constexpr double kFarCells = 6.0;
+  for (Index c = 0; c < m; ++c) {
+    const Cell& cell = cells_[static_cast<std::size_t>(c)];
+    const auto points = cell.mean_points();
+    const Vec2 centroid = cell.centroid();
+    for (Index e = 0; e < m; ++e) {
+      const Cell& source = cells_[static_cast<std::size_t>(e)];
+      auto block = cell_operator_.block<3, 3>(3 * c, 3 * e);
+      if ((source.centroid() - centroid).norm() >
+          kFarCells * (size[static_cast<std::size_t>(c)] + size[static_cast<std::size_t>(e)])) {
+        block += cell_stress_influence(kelvin, centroid, source);
+        continue;
+      }
+      for (const auto& [x, weight] : points) block += weight * cell_stress_influence(kelvin, x, source);
+    }
+  }
   states_.assign(static_cast<std::size_t>(m), J2State{});
   stress_.assign(static_cast<std::size_t>(m), Mandel::Zero());
   strain_ = Vector::Zero(3 * m);
