@@ -3,11 +3,29 @@
 #include <cmath>
 #include <string>
 
-#include <Eigen/Dense>
+#include <Eigen/Core>
 
 #include "bemcontact/core/error.hpp"
 
 namespace bemcontact::reference {
+namespace {
+
+// Thomas's algorithm (the stiffness of a tube that holds is diagonally dominant enough).
+Eigen::VectorXd solve_tridiagonal(const Eigen::VectorXd& lower, Eigen::VectorXd diagonal, const Eigen::VectorXd& upper,
+                                  Eigen::VectorXd rhs) {
+  const Eigen::Index n = diagonal.size();
+  for (Eigen::Index i = 1; i < n; ++i) {
+    const double factor = lower[i] / diagonal[i - 1];
+    diagonal[i] -= factor * upper[i - 1];
+    rhs[i] -= factor * rhs[i - 1];
+  }
+  Eigen::VectorXd x(n);
+  x[n - 1] = rhs[n - 1] / diagonal[n - 1];
+  for (Eigen::Index i = n - 2; i >= 0; --i) x[i] = (rhs[i] - upper[i] * x[i + 1]) / diagonal[i];
+  return x;
+}
+
+}  // namespace
 
 double PlasticCylinderState::mean_hoop_error(const std::vector<Vec2>& points,
                                              const std::vector<plasticity::Mandel>& stress, double scale) const {
@@ -50,7 +68,9 @@ std::vector<PlasticCylinderState> plastic_thick_cylinder(double a, double b, con
   for (const double p : pressures) {
     std::vector<plasticity::J2Update> updates(states.size());
     for (int iteration = 0;; ++iteration) {
-      Eigen::MatrixXd K = Eigen::MatrixXd::Zero(nodes, nodes);
+      // The tangent stiffness is tridiagonal (linear elements in r): its three diagonals.
+      Eigen::VectorXd lower = Eigen::VectorXd::Zero(nodes), diagonal = Eigen::VectorXd::Zero(nodes),
+                      upper = Eigen::VectorXd::Zero(nodes);
       Eigen::VectorXd residual = Eigen::VectorXd::Zero(nodes);
       residual[0] = -p * a;  // the pressure's work on u(a), per radian: internal - external
       for (int e = 0; e < elements; ++e) {
@@ -68,7 +88,8 @@ std::vector<PlasticCylinderState> plastic_thick_cylinder(double a, double b, con
                                          plasticity::mandel(strain[0], strain[1], 0.0, 0.0));
           const Eigen::Vector2d sigma(update.stress[0], update.stress[1]);
           residual.segment<2>(e) += w * B.transpose() * sigma;
-          K.block<2, 2>(e, e) += w * B.transpose() * update.tangent.topLeftCorner<2, 2>() * B;
+          const Eigen::Matrix2d k = w * B.transpose() * update.tangent.topLeftCorner<2, 2>() * B;
+          diagonal[e] += k(0, 0), diagonal[e + 1] += k(1, 1), upper[e] += k(0, 1), lower[e + 1] += k(1, 0);
         }
       }
       const double scale = (std::abs(p) + hardening.yield_stress) * a;  // force per radian
@@ -76,7 +97,7 @@ std::vector<PlasticCylinderState> plastic_thick_cylinder(double a, double b, con
       if (iteration == 50)
         throw SolverError("plastic_thick_cylinder: no convergence at pressure " + std::to_string(p) +
                           " (beyond the limit pressure?)");
-      u -= K.partialPivLu().solve(residual);
+      u -= solve_tridiagonal(lower, diagonal, upper, residual);
     }
     for (std::size_t k = 0; k < states.size(); ++k) states[k] = updates[k].state;
     PlasticCylinderState s;

@@ -109,10 +109,10 @@ TEST(PlasticCylinder, RegionConvergesToTheReference) {
   }
 }
 
-// Perfectly plastic, loaded in steps of 0.1 of the first-yield pressure to 1.5 of it: every
+// Perfectly plastic, loaded in steps of 0.2 of the first-yield pressure to 1.5 of it: every
 // step converges with no cell held on the surface, and the bore's displacement beyond the
 // elastic response and the mean error of the cells' hoop stress fall as the cells are
-// refined (measured, 4 -> 8 rings: 6.5 -> 2.8 % and 0.65 -> 0.32 % of Y). Hardening:
+// refined (measured, 4 -> 8 rings: 6.6 -> 2.9 % and 0.65 -> 0.32 % of Y). Hardening:
 // validate plastic-cylinder.
 TEST(PlasticCylinder, QuadrilateralCellsConvergeInSteps) {
   auto file = io::read_problem_file(std::string(BEMCONTACT_EXAMPLES_DIR) + "/thick_ring_plane_strain.toml", {{"p", 1.0}});
@@ -124,7 +124,7 @@ TEST(PlasticCylinder, QuadrilateralCellsConvergeInSteps) {
   const double a = 1.0, b = 2.0, rc = 1.6;
   const double py = reference::first_yield_pressure(a, b, steel, hardening.yield_stress);
   std::vector<double> pressures{0.5 * py};
-  for (int k = 9; k <= 15; ++k) pressures.push_back(0.1 * k * py);
+  for (int k = 9; k <= 15; k += 2) pressures.push_back(0.1 * k * py);
   const auto ref = reference::plastic_thick_cylinder(a, b, steel, hardening, pressures, 400);
   const auto& last = ref.back();
   std::size_t bore = 0;
