@@ -1,0 +1,66 @@
+// The elastoplastic region (bem/elastoplastic_region.hpp) over its cell count: the thick
+// tube of examples/thick_ring_plane_strain.toml (32 elements on each arc, 64 on each
+// straight side), perfectly plastic, quadrilateral cells over 1 <= r <= 1.6 on the arc's 32
+// angles in range(0) rings (32 range(0) cells), loaded to 0.5, 0.9, 1.1, 1.3 and 1.5 times
+// the first-yield pressure and unloaded.
+// Counters: cells, the set-up's seconds (boundary system, the cells' domain terms, the cell
+// operator), the increments' seconds, Newton iterations, and the peak resident memory (MB).
+#include <benchmark/benchmark.h>
+
+#include <chrono>
+#include <numbers>
+
+#include <sys/resource.h>
+
+#include "bemcontact/bem/analysis.hpp"
+#include "bemcontact/bem/elastoplastic_region.hpp"
+#include "bemcontact/io/input/problem_file.hpp"
+#include "bemcontact/plasticity/cell_meshes.hpp"
+#include "bemcontact/reference/plastic_cylinder.hpp"
+
+namespace {
+
+using namespace bemcontact;
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+void BM_ElastoplasticTube(benchmark::State& state) {
+  auto problem = io::read_problem_file(std::string(BEMCONTACT_EXAMPLES_DIR) + "/thick_ring_plane_strain.toml",
+                                       {{"p", 1.0}}).problem;
+  for (auto& piece : problem.body.pieces)
+    if (piece.name == "AB" || piece.name == "CD") piece.elements = 64;
+  const auto mesh = bem::mesh_body(problem);
+  const plasticity::J2Hardening perfect{250.0, 0.0, 0.0};
+  const double py = reference::first_yield_pressure(1.0, 2.0, problem.body.material, perfect.yield_stress);
+  const auto rings = static_cast<int>(state.range(0));
+  double setup = 0.0, increments = 0.0;
+  int iterations = 0;
+  std::size_t cells = 0;
+  for (auto _ : state) {
+    auto start = Clock::now();
+    bem::ElastoplasticRegion region(
+        mesh, problem.body, problem.analysis, perfect,
+        plasticity::annular_sector_cells(Vec2::Zero(), 1.0, 1.6, 0.0, 0.5 * std::numbers::pi, rings, 32));
+    setup = seconds_since(start);
+    start = Clock::now();
+    iterations = 0;
+    for (const double factor : {0.5, 0.9, 1.1, 1.3, 1.5, 0.0}) iterations += region.advance(factor * py).newton_iterations;
+    increments = seconds_since(start);
+    cells = region.cells().size();
+    benchmark::DoNotOptimize(region.cell_stress());
+  }
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  state.counters["cells"] = static_cast<double>(cells);
+  state.counters["setup_seconds"] = setup;
+  state.counters["increment_seconds"] = increments;
+  state.counters["newton_iterations"] = iterations;
+  state.counters["peak_MB"] = static_cast<double>(usage.ru_maxrss) / 1024.0;
+}
+
+}  // namespace
+
+BENCHMARK(BM_ElastoplasticTube)->Arg(4)->Arg(8)->Arg(16)->Arg(32)->Arg(64)->Unit(benchmark::kMillisecond)->Iterations(1);
+
+BENCHMARK_MAIN();
