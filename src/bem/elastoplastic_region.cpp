@@ -1,6 +1,7 @@
 #include "bemcontact/bem/elastoplastic_region.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <sstream>
 
@@ -14,16 +15,14 @@ namespace bemcontact::bem {
 
 using plasticity::Cell;
 using plasticity::component12;
-using plasticity::elastic_stiffness;
 using plasticity::J2Hardening;
 using plasticity::j2_update;
 using plasticity::mandel;
-using plasticity::plane_strain_stiffness;
+using plasticity::in_plane_stiffness;
 using plasticity::InitialStress;
 using plasticity::J2State;
 using plasticity::J2Update;
 using plasticity::Mandel;
-using plasticity::MandelMatrix;
 using plasticity::Matrix33;
 
 namespace {
@@ -55,9 +54,9 @@ ElastoplasticRegion::~ElastoplasticRegion() = default;
 
 ElastoplasticRegion::ElastoplasticRegion(const geometry::BoundaryMesh& mesh, const BodyDefinition& body,
                                          AnalysisType type, const J2Hardening& hardening, std::vector<Cell> cells)
-    : mesh_(mesh), material_(body.material), hardening_(hardening), cells_(std::move(cells)) {
-  if (type != AnalysisType::plane_strain)
-    throw Error("body '" + body.name + "': elastoplastic regions are plane strain for now");
+    : mesh_(mesh), type_(type), material_(body.material), hardening_(hardening), cells_(std::move(cells)) {
+  if (type == AnalysisType::axisymmetric)
+    throw Error("body '" + body.name + "': elastoplastic regions are plane (strain or stress) for now");
   if (!mesh_.images.empty())
     throw Error("body '" + body.name + "': an elastoplastic region cannot have symmetry lines yet "
                                  "(its cells would need their images); draw the roller lines instead");
@@ -126,9 +125,15 @@ ElastoplasticRegion::ElastoplasticRegion(const geometry::BoundaryMesh& mesh, con
   states_.assign(static_cast<std::size_t>(m), J2State{});
   stress_.assign(static_cast<std::size_t>(m), Mandel::Zero());
   strain_ = Vector::Zero(3 * m);
+  thickness_strain_.assign(static_cast<std::size_t>(m), 0.0);
 }
 
 InitialStress ElastoplasticRegion::initial_stress(const Mandel& plastic_strain) const {
+  // sigma0 = C eps_p in the in-plane equations: plane strain's 3D C with eps_p33 in the trace;
+  // plane stress's reduced C of the in-plane eps_p (eps_p33 only moves eps_33).
+  if (type_ == AnalysisType::plane_stress)
+    return in_plane_stiffness(type_, material_) *
+           Eigen::Vector3d(plastic_strain[0], plastic_strain[1], component12(plastic_strain));
   const double G = material_.shear_modulus(), nu = material_.poisson_ratio;
   const double lambda = 2.0 * G * nu / (1.0 - 2.0 * nu);
   const double trace = plastic_strain.head<3>().sum();
@@ -149,25 +154,34 @@ struct ElastoplasticRegion::Evaluation {
 ElastoplasticRegion::Evaluation ElastoplasticRegion::evaluate(const Vector& E, double amplitude,
                                                               const std::vector<char>& held) const {
   const Index m = static_cast<Index>(cells_.size());
-  const Matrix33 compliance = plane_strain_stiffness(material_).inverse();
-  const MandelMatrix elastic_compliance = elastic_stiffness(material_).inverse();
-  // d sigma0 / d eps_p (3 x 4, Mandel columns) and d eps (Mandel) / d E (tensor 11, 22, 12).
-  Eigen::Matrix<double, 3, 4> initial_stress_map;
-  for (int k = 0; k < 4; ++k) initial_stress_map.col(k) = initial_stress(Mandel::Unit(k));
-  Eigen::Matrix<double, 4, 3> strain_map = Eigen::Matrix<double, 4, 3>::Zero();
-  strain_map(0, 0) = strain_map(1, 1) = 1.0;
-  strain_map(3, 2) = kSqrt2;
+  const Matrix33 C = in_plane_stiffness(type_, material_);
+  const Matrix33 compliance = C.inverse();
+  // The in-plane stress and its tangent on tensor components (11, 22, 12) from the Mandel
+  // update: sigma_12 = m_3 / sqrt2, and m_3 = sqrt2 E_12 in the strain.
+  const std::array<int, 3> rows{0, 1, 3};
+  const Eigen::Vector3d out_scale(1.0, 1.0, 1.0 / kSqrt2), in_scale(1.0, 1.0, kSqrt2);
   Evaluation out;
   out.updates.resize(static_cast<std::size_t>(m));
   out.slope.resize(static_cast<std::size_t>(m));
   Vector sigma0(3 * m);
   for (Index e = 0; e < m; ++e) {
-    auto& update = out.updates[static_cast<std::size_t>(e)];
-    update = j2_update(material_, hardening_, states_[static_cast<std::size_t>(e)], strain_of(E.segment<3>(3 * e)),
-                       held[static_cast<std::size_t>(e)] != 0);
-    sigma0.segment<3>(3 * e) = initial_stress(update.state.plastic_strain);
-    const MandelMatrix plastic_slope = MandelMatrix::Identity() - elastic_compliance * update.tangent;
-    out.slope[static_cast<std::size_t>(e)] = initial_stress_map * plastic_slope * strain_map;
+    const auto k = static_cast<std::size_t>(e);
+    auto& update = out.updates[k];
+    const Eigen::Vector3d strain = E.segment<3>(3 * e);
+    update = type_ == AnalysisType::plane_stress
+                 ? plasticity::j2_update_plane_stress(material_, hardening_, states_[k],
+                                                      mandel(strain[0], strain[1], thickness_strain_[k], strain[2]),
+                                                      1e-12, held[k] != 0)
+                 : j2_update(material_, hardening_, states_[k], strain_of(strain), held[k] != 0);
+    Eigen::Vector3d stress;
+    Matrix33 tangent;
+    for (int i = 0; i < 3; ++i) {
+      stress[i] = out_scale[i] * update.stress[rows[i]];
+      for (int j = 0; j < 3; ++j) tangent(i, j) = out_scale[i] * update.tangent(rows[i], rows[j]) * in_scale[j];
+    }
+    // sigma = C E - sigma0: the initial stress the update leaves, and its slope.
+    sigma0.segment<3>(3 * e) = C * strain - stress;
+    out.slope[k] = C - tangent;
   }
   const Vector target = amplitude * load_stress_ + cell_operator_ * sigma0;  // C E as the cells' fields give it
   out.F.resize(3 * m);
@@ -183,7 +197,7 @@ ElastoplasticRegion::Evaluation ElastoplasticRegion::evaluate(const Vector& E, d
 bool ElastoplasticRegion::solve_increment(double amplitude, int max_iterations, double tolerance,
                                           IncrementReport& report, std::string& failure) {
   const Index m = static_cast<Index>(cells_.size());
-  const Matrix33 compliance = plane_strain_stiffness(material_).inverse();
+  const Matrix33 compliance = in_plane_stiffness(type_, material_).inverse();
   // The elastic predictor: the new load with the plastic strains of the last increment.
   Vector E(3 * m);
   {
@@ -268,6 +282,8 @@ bool ElastoplasticRegion::solve_increment(double amplitude, int max_iterations, 
     states_[static_cast<std::size_t>(e)] = update.state;
     stress_[static_cast<std::size_t>(e)] = update.stress;
   }
+  for (Index e = 0; e < m; ++e)
+    thickness_strain_[static_cast<std::size_t>(e)] = current.updates[static_cast<std::size_t>(e)].strain[2];
   strain_ = E;
   amplitude_ = amplitude;
   return true;

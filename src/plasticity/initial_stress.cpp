@@ -83,9 +83,10 @@ void for_each_cell_point(const Cell& cell, const Vec2& x, Add&& add) {
 
 }  // namespace
 
-Matrix33 plane_strain_stiffness(const Material& material) {
+Matrix33 in_plane_stiffness(AnalysisType type, const Material& material) {
   const double G = material.shear_modulus(), nu = material.poisson_ratio;
-  const double lambda = 2.0 * G * nu / (1.0 - 2.0 * nu);
+  // lambda of plane strain; plane stress's reduced 2 G nu / (1 - nu).
+  const double lambda = type == AnalysisType::plane_stress ? 2.0 * G * nu / (1.0 - nu) : 2.0 * G * nu / (1.0 - 2.0 * nu);
   Matrix33 C;
   C << lambda + 2 * G, lambda, 0.0,  //
       lambda, lambda + 2 * G, 0.0,   //

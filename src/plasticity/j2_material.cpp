@@ -1,6 +1,7 @@
 #include "bemcontact/plasticity/j2_material.hpp"
 
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "bemcontact/core/error.hpp"
@@ -74,14 +75,21 @@ J2Update j2_update(const Material& material, const J2Hardening& hardening, const
 }
 
 J2Update j2_update_plane_stress(const Material& material, const J2Hardening& hardening, const J2State& previous,
-                                const Mandel& strain, double tolerance) {
+                                const Mandel& strain, double tolerance, bool hold_on_surface) {
   Mandel e = strain;
   J2Update out;
   const double scale = hardening.yield_stress + material.young_modulus * strain.cwiseAbs().maxCoeff();
-  constexpr int kMaxIterations = 50;
+  // sigma_33 grows with eps_33 at a slope between 0 (perfect plasticity along the flow) and
+  // the elastic one: Newton, kept inside the bracket of the root found so far (bisection
+  // when it leaves it), and the elastic slope's step (short of the root) until the root is
+  // bracketed or where the tangent vanishes.
+  const double elastic_slope = elastic_stiffness(material)(2, 2);
+  double below = -std::numeric_limits<double>::infinity(), above = std::numeric_limits<double>::infinity();
+  constexpr int kMaxIterations = 100;
   for (int iteration = 0; iteration < kMaxIterations; ++iteration) {
-    out = j2_update(material, hardening, previous, e);
-    if (std::abs(out.stress[2]) <= tolerance * scale) {
+    out = j2_update(material, hardening, previous, e, hold_on_surface);
+    const double s33 = out.stress[2];
+    if (std::abs(s33) <= tolerance * scale) {
       // sigma_33 = 0 for any in-plane increment: condense the 33 row.
       const MandelMatrix C = out.tangent;
       for (int a = 0; a < 4; ++a)
@@ -89,7 +97,12 @@ J2Update j2_update_plane_stress(const Material& material, const J2Hardening& har
           out.tangent(a, b) = (a == 2 || b == 2) ? 0.0 : C(a, b) - C(a, 2) * C(2, b) / C(2, 2);
       return out;
     }
-    e[2] -= out.stress[2] / out.tangent(2, 2);
+    (s33 > 0.0 ? above : below) = e[2];
+    const double slope = out.tangent(2, 2);
+    double next = slope > 1e-9 * elastic_slope ? e[2] - s33 / slope : std::numeric_limits<double>::quiet_NaN();
+    if (!(next > below && next < above))
+      next = std::isfinite(below) && std::isfinite(above) ? 0.5 * (below + above) : e[2] - s33 / elastic_slope;
+    e[2] = next;
   }
   throw SolverError("plane-stress return mapping: sigma_33 did not vanish in " + std::to_string(kMaxIterations) +
                         " Newton iterations on eps_33 (left " + std::to_string(out.stress[2]) + ")",

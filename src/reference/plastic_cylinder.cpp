@@ -42,16 +42,18 @@ double PlasticCylinderState::mean_hoop_error(const std::vector<Vec2>& points,
   return points.empty() ? 0.0 : sum / scale / static_cast<double>(points.size());
 }
 
-double first_yield_pressure(double a, double b, const Material& material, double yield_stress) {
+double first_yield_pressure(double a, double b, const Material& material, double yield_stress, AnalysisType type) {
   // Per unit pressure: A = a^2 / (b^2 - a^2), s_rr = -1, s_tt = A (1 + b^2 / a^2), s_zz = 2 nu A.
   const double A = a * a / (b * b - a * a);
-  const plasticity::Mandel unit(-1.0, A * (1.0 + b * b / (a * a)), 2.0 * material.poisson_ratio * A, 0.0);
+  const double zz = type == AnalysisType::plane_stress ? 0.0 : 2.0 * material.poisson_ratio * A;
+  const plasticity::Mandel unit(-1.0, A * (1.0 + b * b / (a * a)), zz, 0.0);
   return yield_stress / plasticity::von_mises(unit);
 }
 
 std::vector<PlasticCylinderState> plastic_thick_cylinder(double a, double b, const Material& material,
                                                          const plasticity::J2Hardening& hardening,
-                                                         const std::vector<double>& pressures, int elements) {
+                                                         const std::vector<double>& pressures, int elements,
+                                                         AnalysisType type) {
   // Nodes graded toward a (where it yields first): element lengths growing by 1 %.
   std::vector<double> r{a};
   const double growth = 1.01;
@@ -63,7 +65,17 @@ std::vector<PlasticCylinderState> plastic_thick_cylinder(double a, double b, con
   const int nodes = elements + 1;
   const double g = 1.0 / std::sqrt(3.0);
   std::vector<plasticity::J2State> states(2 * static_cast<std::size_t>(elements));
+  std::vector<double> axial(states.size(), 0.0);  // plane stress: eps_zz at each Gauss point
   Eigen::VectorXd u = Eigen::VectorXd::Zero(nodes);
+  // The elastic (rr, tt) stiffness: each increment's first step is elastic (from a state on
+  // the yield surface the perfectly plastic tangent would send an unloading step astray).
+  Eigen::Matrix2d elastic;
+  {
+    const plasticity::MandelMatrix C = plasticity::elastic_stiffness(material);
+    for (int i = 0; i < 2; ++i)
+      for (int j = 0; j < 2; ++j)
+        elastic(i, j) = type == AnalysisType::plane_stress ? C(i, j) - C(i, 2) * C(2, j) / C(2, 2) : C(i, j);
+  }
   std::vector<PlasticCylinderState> out;
   for (const double p : pressures) {
     std::vector<plasticity::J2Update> updates(states.size());
@@ -84,11 +96,16 @@ std::vector<PlasticCylinderState> plastic_thick_cylinder(double a, double b, con
           B.row(1) = N.transpose() / rq;
           const Eigen::Vector2d strain = B * u.segment<2>(e);
           auto& update = updates[2 * static_cast<std::size_t>(e) + q];
-          update = plasticity::j2_update(material, hardening, states[2 * static_cast<std::size_t>(e) + q],
-                                         plasticity::mandel(strain[0], strain[1], 0.0, 0.0));
+          const std::size_t point = 2 * static_cast<std::size_t>(e) + q;
+          update = type == AnalysisType::plane_stress
+                       ? plasticity::j2_update_plane_stress(material, hardening, states[point],
+                                                            plasticity::mandel(strain[0], strain[1], axial[point], 0.0))
+                       : plasticity::j2_update(material, hardening, states[point],
+                                               plasticity::mandel(strain[0], strain[1], 0.0, 0.0));
           const Eigen::Vector2d sigma(update.stress[0], update.stress[1]);
           residual.segment<2>(e) += w * B.transpose() * sigma;
-          const Eigen::Matrix2d k = w * B.transpose() * update.tangent.topLeftCorner<2, 2>() * B;
+          const Eigen::Matrix2d tangent = iteration == 0 ? elastic : Eigen::Matrix2d(update.tangent.topLeftCorner<2, 2>());
+          const Eigen::Matrix2d k = w * B.transpose() * tangent * B;
           diagonal[e] += k(0, 0), diagonal[e + 1] += k(1, 1), upper[e] += k(0, 1), lower[e + 1] += k(1, 0);
         }
       }
@@ -99,7 +116,7 @@ std::vector<PlasticCylinderState> plastic_thick_cylinder(double a, double b, con
                           " (beyond the limit pressure?)");
       u -= solve_tridiagonal(lower, diagonal, upper, residual);
     }
-    for (std::size_t k = 0; k < states.size(); ++k) states[k] = updates[k].state;
+    for (std::size_t k = 0; k < states.size(); ++k) states[k] = updates[k].state, axial[k] = updates[k].strain[2];
     PlasticCylinderState s;
     s.pressure = p;
     s.inner_displacement = u[0];

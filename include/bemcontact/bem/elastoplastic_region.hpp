@@ -78,6 +78,7 @@ class ElastoplasticRegion {
                        std::string& failure);
 
   geometry::BoundaryMesh mesh_;
+  AnalysisType type_;
   Material material_;
   plasticity::J2Hardening hardening_;
   std::vector<plasticity::Cell> cells_;
@@ -90,6 +91,7 @@ class ElastoplasticRegion {
   std::vector<plasticity::J2State> states_;
   std::vector<plasticity::Mandel> stress_;
   Vector strain_;         // E of the last increment
+  std::vector<double> thickness_strain_;  // plane stress: each cell's eps_33 of the last increment
   double amplitude_ = 0.0;
 };
 

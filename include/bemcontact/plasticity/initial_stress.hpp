@@ -37,8 +37,9 @@ using InitialStress = Eigen::Vector3d;
 using Matrix23 = Eigen::Matrix<double, 2, 3>;
 using Matrix33 = Eigen::Matrix3d;
 
-// Plane-strain C on the in-plane tensor components (11, 22, 12): C eps of an in-plane strain.
-Matrix33 plane_strain_stiffness(const Material& material);
+// The in-plane C on the tensor components (11, 22, 12): plane strain (eps_33 = 0) or plane
+// stress (sigma_33 = 0, the reduced stiffness); C eps of an in-plane strain.
+Matrix33 in_plane_stiffness(AnalysisType type, const Material& material);
 
 // The displacement at x (2 components) per unit initial stress component of the cell
 // (columns 11, 22, 12). x may lie on an edge (a collocation node of the boundary).

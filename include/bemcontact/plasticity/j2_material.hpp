@@ -71,7 +71,7 @@ J2Update j2_update(const Material& material, const J2Hardening& hardening, const
 // in-plane one (its 33 row and column zero). Throws SolverError when the Newton on eps_33
 // does not converge.
 J2Update j2_update_plane_stress(const Material& material, const J2Hardening& hardening, const J2State& previous,
-                                const Mandel& strain, double tolerance = 1e-12);
+                                const Mandel& strain, double tolerance = 1e-12, bool hold_on_surface = false);
 
 // The von Mises stress sqrt(3/2) |dev sigma|.
 double von_mises(const Mandel& stress);

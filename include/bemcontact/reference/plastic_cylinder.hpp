@@ -1,6 +1,6 @@
 #pragma once
-// A thick cylinder a <= r <= b in plane strain (eps_zz = 0) under internal pressure, of a
-// J2 material (plasticity/j2_material.hpp), by an independent one-dimensional computation:
+// A thick cylinder a <= r <= b in plane strain (eps_zz = 0), or a thick disc in plane stress
+// (sigma_zz = 0), under internal pressure, of a J2 material (plasticity/j2_material.hpp), by an independent one-dimensional computation:
 // linear finite elements in r (eps_rr = du/dr, eps_tt = u/r), two Gauss points each, Newton
 // with the material's consistent tangent at every pressure of a history. The reference of
 // validate plastic-cylinder: its only common part with the boundary element solution is the
@@ -33,9 +33,12 @@ struct PlasticCylinderState {
 // pressure reached).
 std::vector<PlasticCylinderState> plastic_thick_cylinder(double a, double b, const Material& material,
                                                          const plasticity::J2Hardening& hardening,
-                                                         const std::vector<double>& pressures, int elements);
+                                                         const std::vector<double>& pressures, int elements,
+                                                         AnalysisType type = AnalysisType::plane_strain);
 
-// The pressure of first yield at r = a (Lame's stresses, s_zz = 2 nu A, von Mises = Y).
-double first_yield_pressure(double a, double b, const Material& material, double yield_stress);
+// The pressure of first yield at r = a (Lame's stresses, s_zz = 2 nu A in plane strain, 0 in
+// plane stress; von Mises = Y).
+double first_yield_pressure(double a, double b, const Material& material, double yield_stress,
+                            AnalysisType type = AnalysisType::plane_strain);
 
 }  // namespace bemcontact::reference

@@ -160,4 +160,56 @@ TEST(PlasticCylinder, QuadrilateralCellsConvergeInSteps) {
   }
 }
 
+// A thick disc in plane stress (sigma_zz = 0; the material's plane-stress return mapping,
+// the kernels' nu / (1 + nu)), loaded in steps to 1.5 times its first-yield pressure and
+// unloaded: no cell held, and the bore's displacement beyond the elastic response and the
+// cells' hoop stress approach the plane-stress reference as the cells are refined.
+TEST(PlasticCylinder, PlaneStressDiscConverges) {
+  auto file = io::read_problem_file(std::string(BEMCONTACT_EXAMPLES_DIR) + "/thick_ring_plane_strain.toml", {{"p", 1.0}});
+  auto& problem = file.problem;
+  problem.analysis = AnalysisType::plane_stress;
+  for (auto& piece : problem.body.pieces)
+    if (piece.name == "AB" || piece.name == "CD") piece.elements = 64;
+  const auto mesh = bem::mesh_body(problem);
+  const double a = 1.0, b = 2.0, rc = 1.6;
+  const double py = reference::first_yield_pressure(a, b, steel, perfect.yield_stress, AnalysisType::plane_stress);
+  std::vector<double> pressures{0.5 * py};
+  for (int k = 9; k <= 15; k += 2) pressures.push_back(0.1 * k * py);
+  pressures.push_back(0.0);
+  const auto ref = reference::plastic_thick_cylinder(a, b, steel, perfect, pressures, 400, AnalysisType::plane_stress);
+  const std::size_t peak = pressures.size() - 2;
+  std::size_t bore = 0;
+  for (std::size_t i = 0; i < mesh.nodes.size(); ++i) {
+    const Vec2& x = mesh.nodes[i].position;
+    if (std::abs(x.norm() - a) < 1e-9 && std::abs(x.x() - x.y()) < 1e-9) bore = i;
+  }
+  double previous_displacement = 1.0, previous_hoop = 1.0;
+  for (const int n_r : {4, 8}) {
+    bem::ElastoplasticRegion region(mesh, problem.body, problem.analysis, perfect, sector_cells(a, rc, n_r, 32));
+    double elastic = 0.0, at_peak = 0.0, hoop_error = 0.0;
+    for (std::size_t k = 0; k < pressures.size(); ++k) {
+      const auto report = region.advance(pressures[k]);
+      EXPECT_EQ(report.held_cells, 0);
+      const Vec2& x = mesh.nodes[bore].position;
+      const double ur = region.boundary_solution().displacement[bore].dot(x / x.norm());
+      if (k == 0) elastic = ur;
+      if (k != peak) continue;
+      at_peak = ur;
+      std::vector<Vec2> centroids;
+      for (const auto& cell : region.cells()) centroids.push_back(cell.centroid());
+      hoop_error = ref[k].mean_hoop_error(centroids, region.cell_stress(), perfect.yield_stress);
+      for (const auto& stress : region.cell_stress()) EXPECT_NEAR(stress[2], 0.0, 1e-9 * perfect.yield_stress);
+    }
+    const double scale = pressures[peak] / pressures[0];
+    const double displacement_error = std::abs((at_peak - scale * elastic) /
+                                               (ref[peak].inner_displacement - scale * ref[0].inner_displacement) - 1.0);
+    EXPECT_LT(displacement_error, n_r == 4 ? 0.09 : 0.042) << n_r;  // measured 8.0, 3.8 %
+    EXPECT_LT(hoop_error, n_r == 4 ? 0.0075 : 0.0035) << n_r;         // measured 0.65, 0.30 % of Y
+    EXPECT_LT(displacement_error, 0.6 * previous_displacement) << n_r;
+    EXPECT_LT(hoop_error, 0.6 * previous_hoop) << n_r;
+    previous_displacement = displacement_error;
+    previous_hoop = hoop_error;
+  }
+}
+
 }  // namespace bemcontact
