@@ -33,10 +33,15 @@ const double kSqrt2 = std::sqrt(2.0);
 // The 3D strain (Mandel) of the in-plane tensor components, eps_33 = 0.
 Mandel strain_of(const Eigen::Vector3d& E) { return mandel(E[0], E[1], 0.0, E[2]); }
 
-// Nodal values (u, t), 4N, of the boundary unknowns y with the conditions' values scaled.
-Vector boundary_values(const Vector& y, std::vector<NodeCondition> conditions,
-                       const std::vector<ConstraintEquation>& constraints, double scale) {
+// The conditions with their prescribed values times `scale`.
+std::vector<NodeCondition> scaled(std::vector<NodeCondition> conditions, double scale) {
   for (auto& c : conditions) c.value = {scale * c.value[0], scale * c.value[1]};
+  return conditions;
+}
+
+// Nodal values (u, t), 4N, of the boundary unknowns y.
+Vector boundary_values(const Vector& y, const std::vector<NodeCondition>& conditions,
+                       const std::vector<ConstraintEquation>& constraints) {
   const BoundarySolution s = recover_boundary_values(y, conditions, constraints);
   const Index n = static_cast<Index>(s.displacement.size());
   Vector out(4 * n);
@@ -45,6 +50,52 @@ Vector boundary_values(const Vector& y, std::vector<NodeCondition> conditions,
     out.segment<2>(2 * n + 2 * i) = s.traction[static_cast<std::size_t>(i)];
   }
   return out;
+}
+
+// Somigliana's C E averaged over each cell (its mean points) as a map of the nodal (u, t):
+// sigma = int D t - int S u (I.14); 3 rows per cell (11, 22, 12).
+Matrix mean_somigliana_rows(const geometry::BoundaryMesh& mesh, const kernels::KelvinPlane& kelvin,
+                            const std::vector<Cell>& cells) {
+  const Index n = mesh.node_count(), m = static_cast<Index>(cells.size());
+  Matrix rows = Matrix::Zero(3 * m, 4 * n);
+  for (Index c = 0; c < m; ++c)
+    for (const auto& [x, weight] : cells[static_cast<std::size_t>(c)].mean_points())
+      for (const auto& element : mesh.elements) {
+        const auto s = integration::integrate_plane_element_stress(kelvin, x, element);
+        for (int a = 0; a < element.node_count; ++a)
+          for (int k = 0; k < 2; ++k) {
+            const Index u = 2 * element.nodes[a] + k, t = 2 * n + u;
+            const Mat2 D = weight * s.D[a][k];
+            const Mat2 S = weight * s.S[a][k];
+            rows(3 * c, t) += D(0, 0), rows(3 * c + 1, t) += D(1, 1);
+            rows(3 * c + 2, t) += 0.5 * (D(0, 1) + D(1, 0));
+            rows(3 * c, u) -= S(0, 0), rows(3 * c + 1, u) -= S(1, 1);
+            rows(3 * c + 2, u) -= 0.5 * (S(0, 1) + S(1, 0));
+          }
+      }
+  return rows;
+}
+
+// Adds the cells' direct fields to K: C E averaged over cell c per unit initial stress of
+// cell e. A cell far from cell e (centroids more than kFarCells sizes apart) takes the field
+// at its centroid for its mean: the difference is of order (size / distance)^2 of a small term.
+void add_cell_fields(const kernels::KelvinPlane& kelvin, const std::vector<Cell>& cells, Matrix& K) {
+  constexpr double kFarCells = 6.0;
+  const std::size_t m = cells.size();
+  std::vector<Vec2> centroid(m);
+  std::vector<double> size(m);
+  for (std::size_t e = 0; e < m; ++e) centroid[e] = cells[e].centroid(), size[e] = std::sqrt(std::abs(cells[e].area()));
+  for (std::size_t c = 0; c < m; ++c) {
+    const auto points = cells[c].mean_points();
+    for (std::size_t e = 0; e < m; ++e) {
+      auto block = K.block<3, 3>(3 * static_cast<Index>(c), 3 * static_cast<Index>(e));
+      if ((centroid[e] - centroid[c]).norm() > kFarCells * (size[c] + size[e])) {
+        block += cell_stress_influence(kelvin, centroid[c], cells[e]);
+        continue;
+      }
+      for (const auto& [x, weight] : points) block += weight * cell_stress_influence(kelvin, x, cells[e]);
+    }
+  }
 }
 
 }  // namespace
@@ -79,52 +130,18 @@ ElastoplasticRegion::ElastoplasticRegion(const geometry::BoundaryMesh& mesh, con
   const operators::DenseLU lu(std::move(system.A), "the boundary element system of body '" + body.name + "'");
   boundary_unknowns_ = boundary_rhs_;
   lu.solve_in_place(boundary_unknowns_);
-  // Somigliana's C E, the cells' means, from the nodal (u, t): sigma = int D t - int S u (I.14).
-  Matrix somigliana = Matrix::Zero(3 * m, 4 * n);
-  for (Index c = 0; c < m; ++c)
-    for (const auto& [x, weight] : cells_[static_cast<std::size_t>(c)].mean_points())
-      for (const auto& element : mesh_.elements) {
-        const auto s = integration::integrate_plane_element_stress(kelvin, x, element);
-        for (int a = 0; a < element.node_count; ++a)
-          for (int k = 0; k < 2; ++k) {
-            const Index u = 2 * element.nodes[a] + k, t = 2 * n + u;
-            const Mat2 D = weight * s.D[a][k];
-            const Mat2 S = weight * s.S[a][k];
-            somigliana(3 * c, t) += D(0, 0), somigliana(3 * c + 1, t) += D(1, 1);
-            somigliana(3 * c + 2, t) += 0.5 * (D(0, 1) + D(1, 0));
-            somigliana(3 * c, u) -= S(0, 0), somigliana(3 * c + 1, u) -= S(1, 1);
-            somigliana(3 * c + 2, u) -= 0.5 * (S(0, 1) + S(1, 0));
-          }
-      }
+  // C E = a s + K sigma0: through the boundary (Somigliana's means of the solved (u, t)),
+  // then the cells' own fields.
+  const std::vector<NodeCondition> unloaded = scaled(conditions_, 0.0);
   Matrix values(4 * n, 1 + 3 * m);
   for (Index j = 0; j < 1 + 3 * m; ++j)
-    values.col(j) = boundary_values(boundary_unknowns_.col(j), conditions_, constraints_, j == 0 ? 1.0 : 0.0);
-  const Matrix through_boundary = somigliana * values;
+    values.col(j) = boundary_values(boundary_unknowns_.col(j), j == 0 ? conditions_ : unloaded, constraints_);
+  const Matrix through_boundary = mean_somigliana_rows(mesh_, kelvin, cells_) * values;
   load_stress_ = through_boundary.col(0);
   cell_operator_ = through_boundary.rightCols(3 * m);
-  // A cell far from cell e (centroids more than kFarCells sizes apart) takes the field at its
-  // centroid for its mean: the difference is of order (size / distance)^2 of a small term.
-  std::vector<double> size(static_cast<std::size_t>(m));
-  for (Index e = 0; e < m; ++e) size[static_cast<std::size_t>(e)] = std::sqrt(std::abs(cells_[static_cast<std::size_t>(e)].area()));
-  constexpr double kFarCells = 6.0;
-  for (Index c = 0; c < m; ++c) {
-    const Cell& cell = cells_[static_cast<std::size_t>(c)];
-    const auto points = cell.mean_points();
-    const Vec2 centroid = cell.centroid();
-    for (Index e = 0; e < m; ++e) {
-      const Cell& source = cells_[static_cast<std::size_t>(e)];
-      auto block = cell_operator_.block<3, 3>(3 * c, 3 * e);
-      if ((source.centroid() - centroid).norm() >
-          kFarCells * (size[static_cast<std::size_t>(c)] + size[static_cast<std::size_t>(e)])) {
-        block += cell_stress_influence(kelvin, centroid, source);
-        continue;
-      }
-      for (const auto& [x, weight] : points) block += weight * cell_stress_influence(kelvin, x, source);
-    }
-  }
+  add_cell_fields(kelvin, cells_, cell_operator_);
   states_.assign(static_cast<std::size_t>(m), J2State{});
   stress_.assign(static_cast<std::size_t>(m), Mandel::Zero());
-  strain_ = Vector::Zero(3 * m);
   thickness_strain_.assign(static_cast<std::size_t>(m), 0.0);
 }
 
@@ -281,10 +298,8 @@ bool ElastoplasticRegion::solve_increment(double amplitude, int max_iterations, 
     }
     states_[static_cast<std::size_t>(e)] = update.state;
     stress_[static_cast<std::size_t>(e)] = update.stress;
+    thickness_strain_[static_cast<std::size_t>(e)] = update.strain[2];
   }
-  for (Index e = 0; e < m; ++e)
-    thickness_strain_[static_cast<std::size_t>(e)] = current.updates[static_cast<std::size_t>(e)].strain[2];
-  strain_ = E;
   amplitude_ = amplitude;
   return true;
 }
@@ -329,9 +344,7 @@ BoundarySolution ElastoplasticRegion::boundary_solution() const {
   coefficients[0] = amplitude_;
   for (Index e = 0; e < m; ++e)
     coefficients.segment<3>(1 + 3 * e) = initial_stress(states_[static_cast<std::size_t>(e)].plastic_strain);
-  std::vector<NodeCondition> conditions = conditions_;
-  for (auto& c : conditions) c.value = {amplitude_ * c.value[0], amplitude_ * c.value[1]};
-  return recover_boundary_values(boundary_unknowns_ * coefficients, conditions, constraints_);
+  return recover_boundary_values(boundary_unknowns_ * coefficients, scaled(conditions_, amplitude_), constraints_);
 }
 
 }  // namespace bemcontact::bem

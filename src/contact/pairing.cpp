@@ -250,10 +250,11 @@ std::vector<double> node_weights(const geometry::BoundaryMesh& mesh, const std::
 }
 
 std::vector<Index> zone_nodes(const geometry::BoundaryMesh& mesh, const std::vector<int>& pieces) {
+  // A node two joined pieces share ends the one and starts the next.
   std::vector<Index> nodes;
   for (const int piece : pieces)
     for (const Index node : mesh.piece_nodes[static_cast<std::size_t>(piece)])
-      if (std::find(nodes.begin(), nodes.end(), node) == nodes.end()) nodes.push_back(node);
+      if (nodes.empty() || nodes.back() != node) nodes.push_back(node);
   return nodes;
 }
 

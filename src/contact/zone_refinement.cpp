@@ -134,8 +134,9 @@ ZoneAssessment assess_zone(const ContactProblem& declared, const ContactProblem&
   const bool elastic2 = !interface.side2.whole_contour() && !current.bodies.at(interface.side2.body).rigid;
   ZoneAssessment out;
   out.pass.pairs = static_cast<int>(result.pairs.size());
+  const SideChain side2(elastic2 ? side_pieces(current, interface.side2) : std::vector<const geometry::BoundaryPiece*>{});
   out.pass.elements1 = side1.elements();
-  if (elastic2) out.pass.elements2 = SideChain(side_pieces(current, interface.side2)).elements();
+  if (elastic2) out.pass.elements2 = side2.elements();
   const ZoneFound zone = find_zone(side1, result);
   out.pass.width = zone.width;
   out.pass.edge_spacing = zone.edge_spacing();
@@ -155,7 +156,6 @@ ZoneAssessment assess_zone(const ContactProblem& declared, const ContactProblem&
       side1.split(geometry::zone_breakpoints(length1, from, to, element, kGrowth, declared1.coarsest_element()));
   if (elastic2) {
     // Side 2's stretch: what side 1's faces (nearest points), as fine.
-    const SideChain side2(side_pieces(current, interface.side2));
     const double a = side2.arc_length_at(side1.point_at(std::max(from, 0.0)));
     const double b = side2.arc_length_at(side1.point_at(std::min(to, length1)));
     const SideChain declared2(side_pieces(declared, interface.side2));

@@ -90,7 +90,6 @@ class ElastoplasticRegion {
   Matrix cell_operator_;  // K: C E per unit initial stress component of each cell
   std::vector<plasticity::J2State> states_;
   std::vector<plasticity::Mandel> stress_;
-  Vector strain_;         // E of the last increment
   std::vector<double> thickness_strain_;  // plane stress: each cell's eps_33 of the last increment
   double amplitude_ = 0.0;
 };
