@@ -20,7 +20,8 @@ set(BEMCONTACT_KERNELS_SOURCES
 set(BEMCONTACT_PLASTICITY_SOURCES
   src/plasticity/cell_meshes.cpp
   src/plasticity/initial_stress.cpp
-  src/plasticity/j2_material.cpp)
+  src/plasticity/j2_material.cpp
+  src/plasticity/region_cells.cpp)
 set(BEMCONTACT_OPERATORS_SOURCES
   src/operators/bordered_lu.cpp
   src/operators/dense_lu.cpp
