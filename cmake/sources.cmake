@@ -54,6 +54,7 @@ set(BEMCONTACT_BEM_SOURCES
   src/bem/analysis.cpp
   src/bem/assembly.cpp
   src/bem/boundary_system.cpp
+  src/bem/elastoplastic_analysis.cpp
   src/bem/elastoplastic_region.cpp
   src/bem/compressed_system.cpp
   src/bem/factored_body.cpp
@@ -110,6 +111,7 @@ set(BEMCONTACT_IO_SOURCES
   src/io/output/decomposition_writer.cpp
   src/io/output/json_writer.cpp
   src/io/output/output_directory.cpp
+  src/io/output/plasticity_writer.cpp
   src/io/output/probe_writer.cpp
   src/io/output/results_writer.cpp
   src/io/output/run_summary.cpp

@@ -17,24 +17,6 @@
 #include "bemcontact/operators/dense_lu.hpp"
 
 namespace bemcontact::bem {
-namespace {
-
-class PhaseClock {
- public:
-  explicit PhaseClock(PhaseTimings& timings) : timings_(timings) {}
-  void lap(const std::string& phase) {
-    const auto now = std::chrono::steady_clock::now();
-    timings_.add(phase, std::chrono::duration<double>(now - start_).count());
-    start_ = now;
-  }
-
- private:
-  PhaseTimings& timings_;
-  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
-};
-
-}  // namespace
-
 geometry::MeshOptions effective_mesh_options(const ProblemDefinition& problem) {
   geometry::MeshOptions options = problem.mesh;
   options.skip_axis_pieces = problem.analysis == AnalysisType::axisymmetric;

@@ -52,7 +52,8 @@ bool stress_is_finite(const StressTensor& s) {
 
 std::vector<StressTensor> boundary_stresses(const geometry::BoundaryMesh& mesh, AnalysisType type,
                                             const Material& material,
-                                            const BoundarySolution& solution) {
+                                            const BoundarySolution& solution,
+                                            const std::vector<plasticity::Mandel>* plastic_strain) {
   const Index n = mesh.node_count();
   // Tangential strain e_ss = s . du/ds at each node, from the quadratic through the node
   // and its neighbours on the same piece (one-sided at the ends of a piece): second order
@@ -111,6 +112,22 @@ std::vector<StressTensor> boundary_stresses(const geometry::BoundaryMesh& mesh, 
       const double a = E * e_ss + nu * s_nn, b = E * e_tt + nu * s_nn;
       s_ss = (a + nu * b) / (1.0 - nu * nu);
       s33 = (b + nu * a) / (1.0 - nu * nu);
+    } else if (plastic_strain) {
+      // Hooke's law on the elastic strain eps - eps_p [SimoHughes1998, ch. 2]: the tangential
+      // and out-of-plane plastic strains taken off, sigma_nn given.
+      const auto& ep = (*plastic_strain)[static_cast<std::size_t>(i)];
+      const Vec2 t = q.col(1);
+      const double ep12 = plasticity::component12(ep);
+      const double ee_ss = e_ss - (t.x() * t.x() * ep[0] + t.y() * t.y() * ep[1] + 2.0 * t.x() * t.y() * ep12);
+      if (type == AnalysisType::plane_stress) {
+        s_ss = nu * s_nn + E * ee_ss;
+      } else {
+        const double lambda = 2.0 * mu * nu / (1.0 - 2.0 * nu), ee_33 = -ep[2];
+        const double ee_nn = (s_nn - lambda * (ee_ss + ee_33)) / (lambda + 2.0 * mu);
+        const double trace = ee_nn + ee_ss + ee_33;
+        s_ss = lambda * trace + 2.0 * mu * ee_ss;
+        s33 = lambda * trace + 2.0 * mu * ee_33;
+      }
     } else {
       s_ss = (nu_kernel * s_nn + 2.0 * mu * e_ss) / (1.0 - nu_kernel);  // section I.6
     }
@@ -121,7 +138,9 @@ std::vector<StressTensor> boundary_stresses(const geometry::BoundaryMesh& mesh, 
     s.s11 = global(0, 0);
     s.s22 = global(1, 1);
     s.s12 = global(0, 1);
-    s.s33 = type == AnalysisType::axisymmetric ? s33 : out_of_plane_stress(type, material, s.s11, s.s22);
+    s.s33 = type == AnalysisType::axisymmetric || (plastic_strain && type == AnalysisType::plane_strain)
+                ? s33
+                : out_of_plane_stress(type, material, s.s11, s.s22);
   }
   for (Index i = 0; i < mesh.node_count(); ++i)
     if (!solution.displacement[i].allFinite() || !solution.traction[i].allFinite() || !stress_is_finite(stresses[i]))

@@ -1,6 +1,10 @@
 // The model and the problems of its two fast solvers (docs/model.md): each way from one to
 // the other, and the rule that picks the solver.
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
+
+#include "bemcontact/core/error.hpp"
 
 #include "bemcontact/contact/contact_problem.hpp"
 
@@ -42,6 +46,9 @@ ContactProblem model_of(const dd::DecompositionProblem& problem) {
 }
 
 SolverRoute route_of(const ContactProblem& model) {
+  for (const auto& body : model.bodies)
+    for (const auto& region : body.regions)
+      if (region.body.plasticity) return SolverRoute::elastoplastic;
   if (!holds_one_body_alone(model)) return SolverRoute::condensed;
   return model.bodies[0].regions.size() == 1 ? SolverRoute::direct : SolverRoute::decomposition;
 }
@@ -51,6 +58,7 @@ const char* to_string(SolverRoute route) {
     case SolverRoute::direct: return "direct";
     case SolverRoute::decomposition: return "decomposition";
     case SolverRoute::condensed: return "condensed";
+    case SolverRoute::elastoplastic: return "elastoplastic";
   }
   return "?";
 }
@@ -75,6 +83,45 @@ dd::DecompositionProblem decomposition_problem(const ContactProblem& model, cons
   problem.options = options;
   problem.part_word = region_word;
   return problem;
+}
+
+ElastoplasticHistory elastoplastic_history(const ContactProblem& model) {
+  if (route_of(model) != SolverRoute::elastoplastic) throw std::logic_error("elastoplastic_history: no yield stress");
+  const dd::Subdomain* plastic = nullptr;
+  for (const auto& body : model.bodies)
+    for (const auto& region : body.regions)
+      if (region.body.plasticity && !plastic) plastic = &region;
+  const bem::RegionPlasticity& plasticity = *plastic->body.plasticity;
+  const auto refuse = [&](const std::string& what) {
+    throw InputError(plasticity.where, "an elastoplastic region " + what +
+                                           " is not in the model yet (docs/plasticity.md, Limits)");
+  };
+  std::size_t regions = 0;
+  for (const auto& body : model.bodies) regions += body.rigid ? 1 : body.regions.size();
+  if (regions > 1) refuse("beside other regions or bodies (bonded or in contact)");
+  if (!model.contacts.empty()) refuse("in contact");
+  if (!model.forces.empty()) refuse("under a force load ([load])");
+  if (!model.boundary_amplitudes.empty()) refuse("with boundaries of their own amplitude");
+  if (model.analysis == AnalysisType::axisymmetric) refuse("in axisymmetry");
+  for (const auto& piece : plastic->body.pieces)
+    if (piece.symmetry) refuse("with a symmetry line ('" + piece.name + "'; draw the body whole, or hold the line by u_n = 0 and t_t = 0)");
+  if (model.operator_choice.kind == bem::OperatorKind::compressed) refuse("on compressed operators (dense only)");
+  if (!plastic->interior_points.empty()) refuse("with [interior] points (its stresses are in cells.csv)");
+
+  ElastoplasticHistory history;
+  static_cast<bem::ProblemHeader&>(history.problem) = model;
+  history.problem.body = plastic->body;
+  // The steps: equal ones, and every corner of the data amplitude (an unloading starts there).
+  const double end = model.end_time;
+  for (int k = 1; k <= model.increments; ++k) history.times.push_back(end * k / model.increments);
+  for (const double t : model.data_amplitude.corners())
+    if (t > 0.0 && t < end) history.times.push_back(t);
+  std::sort(history.times.begin(), history.times.end());
+  history.times.erase(std::unique(history.times.begin(), history.times.end(),
+                                  [end](double a, double b) { return b - a <= 1e-12 * end; }),
+                      history.times.end());
+  for (const double t : history.times) history.amplitudes.push_back(model.data_amplitude.at(t));
+  return history;
 }
 
 }  // namespace bemcontact::contact

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "bemcontact/bem/analysis.hpp"
+#include "bemcontact/bem/elastoplastic_analysis.hpp"
 #include "bemcontact/contact/contact_solver.hpp"
 #include "bemcontact/core/error.hpp"
 #include "bemcontact/dd/solver.hpp"
@@ -21,6 +22,7 @@
 #include "bemcontact/io/output/contact_writer.hpp"
 #include "bemcontact/io/output/decomposition_writer.hpp"
 #include "bemcontact/io/output/json_writer.hpp"
+#include "bemcontact/io/output/plasticity_writer.hpp"
 #include "bemcontact/io/output/results_writer.hpp"
 #include "bemcontact/io/output/run_summary.hpp"
 
@@ -366,6 +368,65 @@ RunOutput run_body(const io::ProblemInput& input, const bem::ProblemDefinition& 
   return output;
 }
 
+// One elastoplastic region under the history's steps (docs/plasticity.md).
+RunOutput run_elastoplastic(const io::ProblemInput& input, const contact::ElastoplasticHistory& history,
+                            std::string_view text, const std::string& file_name, const RunOptions& options,
+                            Clock::time_point started) {
+  const bem::ProblemDefinition& problem = history.problem;
+  RunOutput output;
+  check_read(problem, input, options, output);
+  const double read_seconds = seconds_since(started);
+  add_geometry_warnings(output.warnings, problem.body, "");
+  const auto result = bem::solve_elastoplastic_body(problem, history.times, history.amplitudes, options.progress);
+  add_mesh_warnings(output.warnings, result.mesh, "");
+  add_small_strain_warning(output.warnings, result.mesh, result.boundary, "");
+
+  const auto write_started = Clock::now();
+  const std::string prefix = file_prefix(input.model.bodies[0]);
+  add_file(output, options, {prefix + "boundary.csv", io::boundary_table(result.mesh, result.boundary)});
+  add_file(output, options, {prefix + "cells.csv", io::cells_table(result)});
+  add_file(output, options, {prefix + "steps.csv", io::elastoplastic_steps_table(result)});
+  if (input.vtk) {
+    output.files.add(prefix + "boundary.vtk", io::boundary_vtk(result.mesh, result.boundary, problem.title));
+    output.files.add(prefix + "cells.vtk", io::cells_vtk(result, problem.title));
+  }
+  json timings = {{"read", read_seconds}};
+  for (const auto& [phase, seconds] : result.timings.phases) timings[phase] = seconds;
+  timings["write"] = seconds_since(write_started);
+  timings["total"] = seconds_since(started);
+  auto summary = summary_envelope("elastoplastic", "run", text, file_name, problem.title, problem.analysis);
+  summary.parameters = input.parameters;
+  summary.options.update({{"mesh", io::mesh_options_json(problem.mesh)}});
+  summary.problem = io::problem_echo_json(problem, input.parameters, input.vtk);
+  summary.mesh = meshes_json({{problem.body.name, &result.mesh}});
+  const json plastic = io::elastoplastic_summary_json(result);
+  summary.results = {{"elastoplastic", plastic}};
+  summary.reactions[problem.body.name] = io::resultants_json(result.boundary.resultants, problem.analysis);
+  summary.timings = timings;
+  add_summary(summary, output);
+
+  std::string& report = output.report;
+  const auto& zone = plastic["plastic_zone"];
+  append(report, "%s\n", problem.title.c_str());
+  append(report, "  %s, %ld nodes, %zu cells (%.3g to %.3g)\n", to_string(problem.analysis),
+         static_cast<long>(result.mesh.node_count()), result.cells.size(), plastic["smallest_cell"].get<double>(),
+         plastic["largest_cell"].get<double>());
+  append(report, "  %zu steps: %d Newton iterations (at most %d in a step), %d cuts\n", result.steps.size(),
+         plastic["newton_iterations"].get<int>(), plastic["most_newton_iterations_in_a_step"].get<int>(),
+         plastic["cuts"].get<int>());
+  append(report, "  plastic zone: %d cells, area %.6g, largest equivalent plastic strain %.6g\n",
+         zone["yielded_cells"].get<int>(), zone["area"].get<double>(), zone["max_equivalent_plastic_strain"].get<double>());
+  report += io::reactions_text(result.boundary.resultants, problem.analysis, "");
+  append(report, "  time %.3f s (", timings["total"].get<double>());
+  bool first = true;
+  for (const auto& [phase, seconds] : result.timings.phases) {
+    append(report, "%s%s %.3f", first ? "" : ", ", phase.c_str(), seconds);
+    first = false;
+  }
+  report += ")\n";
+  return output;
+}
+
 }  // namespace
 
 RunOutput run_problem(std::string_view text, const std::string& file_name, const RunOptions& options) {
@@ -388,6 +449,9 @@ RunOutput run_problem(std::string_view text, const std::string& file_name, const
                                  text, file_name, options, started);
       break;
     case contact::SolverRoute::condensed: output = run_contact(input, text, file_name, options, started); break;
+    case contact::SolverRoute::elastoplastic:
+      output = run_elastoplastic(input, contact::elastoplastic_history(input.model), text, file_name, options, started);
+      break;
   }
   check_output_finite(output.files);
   return output;

@@ -9,6 +9,8 @@
 #include <vector>
 
 #include "bemcontact/geometry/mesh.hpp"
+#include "bemcontact/plasticity/j2_material.hpp"
+#include "bemcontact/plasticity/region_cells.hpp"
 
 namespace bemcontact::bem {
 
@@ -44,9 +46,20 @@ struct PointConstraint {
   SourceLocation where;
 };
 
+// An elastoplastic region (docs/plasticity.md): the J2 material's yield stress and
+// hardening ([material] yield_stress, hardening, kinematic_hardening) and the cells that
+// cover where it may yield ([cells]).
+struct RegionPlasticity {
+  plasticity::J2Hardening hardening;
+  plasticity::CellMeshOptions cells;
+  SourceLocation where;        // the yield stress's key, for messages
+  SourceLocation cells_where;  // the [cells] table
+};
+
 struct BodyDefinition {
   std::string name = "body";
   Material material;
+  std::optional<RegionPlasticity> plasticity;  // none: linear elastic
   std::vector<geometry::BoundaryPiece> pieces;
   std::vector<BoundaryCondition> conditions;  // one per piece
   std::vector<PointConstraint> constraints;

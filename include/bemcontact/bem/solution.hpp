@@ -1,6 +1,7 @@
 #pragma once
 // Results of a one-body solve: what the writers in io/ take.
 #include <array>
+#include <chrono>
 #include <string>
 #include <vector>
 
@@ -57,6 +58,21 @@ struct PhaseTimings {
     for (const auto& phase : phases) sum += phase.second;
     return sum;
   }
+};
+
+// Adds each phase's time to a PhaseTimings as it ends (lap: the time since the last lap).
+class PhaseClock {
+ public:
+  explicit PhaseClock(PhaseTimings& timings) : timings_(timings) {}
+  void lap(const std::string& phase) {
+    const auto now = std::chrono::steady_clock::now();
+    timings_.add(phase, std::chrono::duration<double>(now - start_).count());
+    start_ = now;
+  }
+
+ private:
+  PhaseTimings& timings_;
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
 
 struct SolveReport {

@@ -296,11 +296,12 @@ struct ContactProblem : bem::ProblemHeader {
 ContactProblem model_of(const bem::ProblemDefinition& problem);
 ContactProblem model_of(const dd::DecompositionProblem& problem);
 
-// Which solver a model takes (docs/model.md), from what it holds: one elastic body of one
-// region, with nothing but its own data (no contact, rigid body, force load, amplitude or
-// history): the direct solve; one such body of several regions: the thesis' iterative
-// decomposition (chapter IV); anything else: the condensed interface problem.
-enum class SolverRoute { direct, decomposition, condensed };
+// Which solver a model takes (docs/model.md), from what it holds: a region with a yield
+// stress: the incremental elastoplastic solve; one elastic body of one region, with nothing
+// but its own data (no contact, rigid body, force load, amplitude or history): the direct
+// solve; one such body of several regions: the thesis' iterative decomposition (chapter IV);
+// anything else: the condensed interface problem.
+enum class SolverRoute { direct, decomposition, condensed, elastoplastic };
 SolverRoute route_of(const ContactProblem& model);
 const char* to_string(SolverRoute route);
 
@@ -310,6 +311,17 @@ const char* to_string(SolverRoute route);
 bem::ProblemDefinition single_region_problem(const ContactProblem& model);
 dd::DecompositionProblem decomposition_problem(const ContactProblem& model, const dd::DecompositionOptions& options,
                                                const std::string& region_word);
+
+// A model of route elastoplastic as its region's problem and the load steps: the ends of
+// `increments` equal steps over the history with every corner of the data amplitude, and
+// the amplitude at each. InputError at the yield stress's key for what the elastoplastic
+// solve does not serve yet (docs/plasticity.md, Limits): other regions or bodies, contacts,
+// force loads, boundary amplitudes, axisymmetry, symmetry lines, interior points.
+struct ElastoplasticHistory {
+  bem::ProblemDefinition problem;
+  std::vector<double> times, amplitudes;
+};
+ElastoplasticHistory elastoplastic_history(const ContactProblem& model);
 
 // Two one-region elastic bodies named body1 and body2 and one contact between piece1 of
 // the first and piece2 of the second (pieces to be added by the caller when -1).

@@ -541,6 +541,74 @@ void read_gmsh_pieces(const TableReader& body, const FileContext& context, bem::
   }
 }
 
+namespace {
+
+// A list of points [[x, y], ...] (`count` of them when count > 0).
+std::vector<Vec2> read_point_list(const TableReader& table, std::string_view key, std::size_t count,
+                                  const std::string& form) {
+  const toml::node& node = table.require(key, form);
+  const toml::array* list = node.as_array();
+  if (!list || list->empty() || (count > 0 && list->size() != count))
+    table.fail(key, "must be " + form + ", found " + describe_node(node));
+  std::vector<Vec2> points;
+  for (const toml::node& point : *list) {
+    SourceLocation where = table.where(key);
+    if (line_of(point) > 0) where.line = line_of(point);
+    points.push_back(read_point(point, where, table.context()));
+  }
+  return points;
+}
+
+// [material] yield_stress, hardening, kinematic_hardening and the region's [cells]: an
+// elastoplastic region (docs/plasticity.md). Each needs the other.
+std::optional<bem::RegionPlasticity> read_plasticity(const TableReader& body, const TableReader& material,
+                                                     const FileContext& context) {
+  const toml::table* cells_table = body.optional_table("cells", "[cells]");
+  if (!material.has("yield_stress")) {
+    for (const char* key : {"hardening", "kinematic_hardening"})
+      if (material.has(key))
+        material.fail(key, "has no effect without yield_stress: give the yield stress (the region is then "
+                           "elastoplastic) or remove it");
+    if (cells_table)
+      body.fail("cells", "has no effect on a linear elastic region: give [material] yield_stress, or remove [cells]");
+    return std::nullopt;
+  }
+  if (!cells_table)
+    material.fail("yield_stress", "makes the region elastoplastic: it needs a [cells] table with the cells' size "
+                                  "(where it may yield; docs/plasticity.md)");
+  bem::RegionPlasticity plasticity;
+  plasticity.where = material.where("yield_stress");
+  plasticity.hardening.yield_stress = material.number("yield_stress");
+  plasticity.hardening.isotropic = material.optional_number("hardening").value_or(0.0);
+  plasticity.hardening.kinematic = material.optional_number("kinematic_hardening").value_or(0.0);
+
+  const TableReader cells(*cells_table, body.key_path("cells"), context, body.line());
+  cells.check_keys(schema::table("cells"));
+  plasticity.cells_where = cells.where();
+  auto& options = plasticity.cells;
+  options.size = cells.number("size");
+  if (cells.has("box")) {
+    const auto corners = read_point_list(cells, "box", 2, "[[x0, y0], [x1, y1]] (lower-left, upper-right)");
+    if (!(corners[1].x() > corners[0].x() && corners[1].y() > corners[0].y()))
+      cells.fail("box", "its second corner must lie above and right of the first (lower-left, upper-right)");
+    options.box = std::array<Vec2, 2>{corners[0], corners[1]};
+  }
+  if (cells.has("refine")) {
+    options.refine_points = read_point_list(cells, "refine", 0, "a list of points [[x, y], ...]");
+    if (!cells.has("refine_size")) cells.fail("refine", "needs refine_size, the cells' edge at the points");
+    options.refine_size = cells.number("refine_size");
+    if (options.refine_size > options.size)
+      cells.fail("refine_size", "must be at most size (" + format_number(options.size) + ")");
+    options.growth = cells.optional_number("growth").value_or(0.5);
+  } else {
+    for (const char* key : {"refine_size", "growth"})
+      if (cells.has(key)) cells.fail(key, "has no effect without refine (the points the cells are graded toward)");
+  }
+  return plasticity;
+}
+
+}  // namespace
+
 bem::BodyDefinition parse_body(const toml::table& table, const BodyContext& body_context) {
   const FileContext& context = *body_context.file;
   const TableReader body(table, body_context.path, context, body_context.fallback_line);
@@ -558,6 +626,7 @@ bem::BodyDefinition parse_body(const toml::table& table, const BodyContext& body
   material.check_keys(schema::table("material"));
   definition.material.young_modulus = material.number("E");
   definition.material.poisson_ratio = material.number("nu");
+  definition.plasticity = read_plasticity(body, material, context);
 
   // [vertices]
   Vertices vertices;

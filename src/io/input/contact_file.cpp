@@ -794,14 +794,20 @@ ContactFile parse_contact_problem(std::string_view text, const std::string& file
 // operator's keys of [solver] apply.
 void read_without_contacts(const TableReader& root, FileContext& context, contact::ContactProblem& problem) {
   // Bodies without contacts: each solved on its own (its bonds included).
+  // An elastoplastic region is solved in load steps: increments applies (10 by default).
+  bool plastic = false;
+  for (const auto& body : problem.bodies)
+    for (const auto& region : body.regions) plastic = plastic || region.body.plasticity.has_value();
+  if (plastic) problem.increments = 10;
   if (const toml::table* table = root.optional_table("solver", "[solver]")) {
     // Only the operator applies: the other keys set the contact solver.
     const TableReader solver(*table, "solver", context, root.line());
     for (const auto& key : schema::table("contact.solver").names())
-      if (key != "operator" && key != "accuracy" && solver.has(key))
+      if (key != "operator" && key != "accuracy" && !(plastic && key == "increments") && solver.has(key))
         solver.fail(key, "'" + key + "' sets the contact solver; without [[contact]] tables it has no effect");
     solver.check_keys(schema::table("contact.solver"));
     problem.operator_choice = read_operator_keys(solver);
+    problem.increments = solver.integer_or("increments", problem.increments);
   }
   read_force_loads(root, context, problem);
 }

@@ -98,6 +98,8 @@ std::vector<Key> body_keys() {
       of(Type::string, "geometry", "none",
          "a Gmsh .geo or .msh file (relative to the problem file) whose physical curves are the boundary pieces "
          "(docs/gmsh.md)"),
+      of(Type::table, "cells", "none (required with yield_stress)",
+         "where the region may yield: its cells ([cells], docs/plasticity.md)"),
   };
 }
 
@@ -206,7 +208,7 @@ std::vector<Key> zone_keys() {
 std::vector<Key> contact_solver_keys() {
   return joined({
       {
-          integer("increments", "16 with friction, 1 without",
+          integer("increments", "16 with friction, 10 with an elastoplastic region, 1 otherwise",
                   "load steps over the history (the initial step count when adaptive)", between(1, 100000, false, false),
                   "over the limit of 100000 (each increment is a contact solve)"),
           choice("algorithm", {"newton", "thesis"}, "newton",
@@ -243,7 +245,23 @@ std::vector<Table> build_tables() {
                         of(Type::table, "solver", "defaults", "the operator ([solver])")}})});
   t.push_back({"material", "[material]", "the [material] table",
                {number("E", "required", "Young's modulus", above(0)),
-                number("nu", "required", "Poisson's ratio", between(-1, 0.5, true, true))}});
+                number("nu", "required", "Poisson's ratio", between(-1, 0.5, true, true)),
+                number("yield_stress", "none (linear elastic)",
+                       "Y: the von Mises yield stress in uniaxial tension; the region is elastoplastic "
+                       "(docs/plasticity.md) and needs [cells]", above(0)),
+                number("hardening", "0 (perfectly plastic)",
+                       "H_iso: the yield stress grows by H_iso per unit equivalent plastic strain", at_least(0)),
+                number("kinematic_hardening", "0",
+                       "H_kin: the back stress grows by H_kin per unit plastic strain (Prager-Ziegler; uniaxial)",
+                       at_least(0))}});
+  t.push_back({"cells", "[cells]", "the [cells] table",
+               {number("size", "required", "the cells' edge away from the refinement points", above(0)),
+                of(Type::points, "box", "the whole region",
+                   "[[x0, y0], [x1, y1]]: the cells fill the region's part in this rectangle (lower-left, upper-right)"),
+                of(Type::points, "refine", "none", "[[x, y], ...]: points the cells are graded toward"),
+                number("refine_size", "required with refine", "the cells' edge at the refinement points", above(0)),
+                number("growth", "0.5", "with refine: the cells' edge grows by this per unit distance from the points",
+                       above(0))}});
   t.push_back({"boundary", "[[boundary]]", "each [[boundary]] table", joined({piece_keys(), condition_keys()})});
   t.push_back({"tabulated", "a table of values", "a table of values",
                {of(Type::points, "table", "required",

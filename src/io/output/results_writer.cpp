@@ -419,6 +419,32 @@ std::string mesh_vtk(const geometry::BoundaryMesh& mesh, std::string_view title)
   return std::move(out).str();
 }
 
+std::string polygons_vtk(std::string_view title, const std::vector<std::vector<Vec2>>& polygons,
+                         const std::vector<std::pair<std::string, std::vector<double>>>& scalars,
+                         const std::vector<bem::StressTensor>& stress) {
+  Text out;
+  vtk_header(out, title);
+  std::vector<Vec2> points;
+  std::vector<std::vector<Index>> cells;
+  for (const auto& polygon : polygons) {
+    cells.emplace_back();
+    for (const Vec2& p : polygon) {
+      cells.back().push_back(static_cast<Index>(points.size()));
+      points.push_back(p);
+    }
+  }
+  vtk_points(out, points);
+  vtk_cells(out, "POLYGONS", cells);
+  out << "CELL_DATA " << static_cast<Index>(polygons.size()) << '\n';
+  for (const auto& [name, values] : scalars) {
+    require_size(values.size(), polygons.size(), "a polygon scalar");
+    vtk_scalars(out, name.c_str(), "double", values);
+  }
+  require_size(stress.size(), polygons.size(), "the polygons' stress");
+  vtk_stress(out, stress);
+  return std::move(out).str();
+}
+
 std::string interior_vtk(const bem::InteriorSolution& solution, std::string_view title) {
   check_interior(solution);
   Text out;

@@ -59,6 +59,10 @@ std::string point_cloud_vtp(const std::vector<Vec2>& points,
                             const std::vector<std::pair<std::string, std::vector<Vec2>>>& vectors);
 std::string time_series_pvd(const std::vector<std::pair<double, std::string>>& time_and_file);
 std::string interior_vtk(const bem::InteriorSolution& solution, std::string_view title);
+// Polygons (each its own points) with cell data: `scalars`, then the stresses (as interior.vtk).
+std::string polygons_vtk(std::string_view title, const std::vector<std::vector<Vec2>>& polygons,
+                         const std::vector<std::pair<std::string, std::vector<double>>>& scalars,
+                         const std::vector<bem::StressTensor>& stress);
 
 // The node sequences the VTK lines follow: per contour, the nodes of its elements in
 // order, shared nodes once; a contour without gaps ends with its first node again.

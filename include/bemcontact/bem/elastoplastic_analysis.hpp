@@ -1,0 +1,54 @@
+#pragma once
+// A body of one elastoplastic region under a load history (docs/plasticity.md): the cells
+// made from the region's [cells] (plasticity/region_cells.hpp), the region solved step by
+// step (bem/elastoplastic_region.hpp), and at each step's end the boundary values, the
+// boundary stresses with the cells' plastic strain, and the resultants.
+#include <vector>
+
+#include "bemcontact/bem/elastoplastic_region.hpp"
+#include "bemcontact/bem/problem.hpp"
+#include "bemcontact/bem/progress.hpp"
+#include "bemcontact/bem/solution.hpp"
+
+namespace bemcontact::bem {
+
+struct ElastoplasticStep {
+  double time = 0.0, amplitude = 0.0;
+  IncrementReport report;
+  int yielded_cells = 0;  // cells with plastic strain so far
+  double max_equivalent_plastic_strain = 0.0;
+  std::vector<BoundaryResultant> resultants;
+  std::vector<Vec2> mean_displacement;  // per boundary: the mean of its nodes' displacements
+};
+
+struct ElastoplasticResult {
+  geometry::BoundaryMesh mesh;
+  std::vector<plasticity::Cell> cells;
+  std::vector<ElastoplasticStep> steps;
+  // At the last step's end (after unloading: the residual stresses and the permanent set).
+  BoundarySolution boundary;
+  std::vector<plasticity::J2State> states;
+  std::vector<plasticity::Mandel> cell_stress;
+  PhaseTimings timings;
+};
+
+// The closed polygons the boundary elements draw, one per contour (arcs of quadratic
+// elements as chords of an eighth of the element).
+std::vector<plasticity::RegionLoop> region_loops(const geometry::BoundaryMesh& mesh);
+
+// The stress at each boundary node from its traction, the tangential strain of the
+// displacement and the plastic strain of the cell the node borders (none: elastic), with
+// Hooke's law on the elastic part in the local frame (n, s) (boundary_stresses without
+// plastic strain).
+std::vector<StressTensor> elastoplastic_boundary_stresses(const geometry::BoundaryMesh& mesh, AnalysisType type,
+                                                          const Material& material, const BoundarySolution& solution,
+                                                          const std::vector<plasticity::Cell>& cells,
+                                                          const std::vector<plasticity::J2State>& states);
+
+// InputError at the [cells] table when its cells cannot be made; SolverError (from the
+// region) when an increment fails after its cuts.
+ElastoplasticResult solve_elastoplastic_body(const ProblemDefinition& problem, const std::vector<double>& times,
+                                             const std::vector<double>& amplitudes,
+                                             const ProgressCallback& progress = {});
+
+}  // namespace bemcontact::bem
