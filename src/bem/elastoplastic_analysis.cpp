@@ -12,15 +12,6 @@ namespace bemcontact::bem {
 
 namespace {
 
-bool inside_convex(const plasticity::Cell& cell, const Vec2& p) {
-  const auto& v = cell.vertices;
-  for (std::size_t k = 0; k < v.size(); ++k) {
-    const Vec2 a = v[(k + 1) % v.size()] - v[k], b = p - v[k];
-    if (a.x() * b.y() - a.y() * b.x() < 0.0) return false;
-  }
-  return true;
-}
-
 // The plastic strain of the cell each node borders: the cell holding a point just inside
 // the boundary from the node (zero where no cell does).
 std::vector<plasticity::Mandel> nodal_plastic_strain(const geometry::BoundaryMesh& mesh,
@@ -31,7 +22,7 @@ std::vector<plasticity::Mandel> nodal_plastic_strain(const geometry::BoundaryMes
   for (std::size_t i = 0; i < mesh.nodes.size(); ++i) {
     const Vec2 probe = mesh.nodes[i].position - inset * mesh.nodes[i].normal;
     for (std::size_t c = 0; c < cells.size(); ++c)
-      if (inside_convex(cells[c], probe)) {
+      if (cells[c].contains(probe)) {
         out[i] = states[c].plastic_strain;
         break;
       }

@@ -104,13 +104,66 @@ double Cell::area() const {
   return 0.5 * twice;
 }
 
+namespace {
+
+double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
+
+bool in_triangle(const Vec2& p, const Vec2& a, const Vec2& b, const Vec2& c) {
+  return cross(b - a, p - a) >= 0.0 && cross(c - b, p - b) >= 0.0 && cross(a - c, p - c) >= 0.0;
+}
+
+}  // namespace
+
+bool Cell::convex() const {
+  const std::size_t n = vertices.size();
+  for (std::size_t k = 0; k < n; ++k)
+    if (cross(vertices[k] - vertices[(k + n - 1) % n], vertices[(k + 1) % n] - vertices[k]) < 0.0) return false;
+  return true;
+}
+
+std::vector<std::array<Vec2, 3>> Cell::triangles() const {
+  std::vector<std::array<Vec2, 3>> out;
+  if (convex()) {  // the fan from vertex 0
+    for (std::size_t k = 1; k + 1 < vertices.size(); ++k) out.push_back({vertices[0], vertices[k], vertices[k + 1]});
+    return out;
+  }
+  // Ear clipping: a convex vertex whose triangle holds no other vertex is cut off.
+  std::vector<Vec2> polygon = vertices;
+  while (polygon.size() > 3) {
+    const std::size_t n = polygon.size();
+    bool clipped = false;
+    for (std::size_t k = 0; k < n && !clipped; ++k) {
+      const Vec2 &a = polygon[(k + n - 1) % n], &b = polygon[k], &c = polygon[(k + 1) % n];
+      if (cross(b - a, c - b) <= 0.0) continue;
+      bool empty = true;
+      for (std::size_t j = 0; j < n && empty; ++j)
+        if (j != k && j != (k + 1) % n && j != (k + n - 1) % n && in_triangle(polygon[j], a, b, c)) empty = false;
+      if (!empty) continue;
+      out.push_back({a, b, c});
+      polygon.erase(polygon.begin() + static_cast<std::ptrdiff_t>(k));
+      clipped = true;
+    }
+    if (!clipped) return {};
+  }
+  out.push_back({polygon[0], polygon[1], polygon[2]});
+  return out;
+}
+
+bool Cell::contains(const Vec2& p) const {
+  bool inside = false;  // the even-odd rule
+  for (std::size_t k = 0, n = vertices.size(); k < n; ++k) {
+    const Vec2 &a = vertices[k], &b = vertices[(k + 1) % n];
+    if ((a.y() > p.y()) != (b.y() > p.y()) && p.x() < a.x() + (p.y() - a.y()) / (b.y() - a.y()) * (b.x() - a.x()))
+      inside = !inside;
+  }
+  return inside;
+}
+
 std::vector<std::pair<Vec2, double>> Cell::mean_points() const {
   std::vector<std::pair<Vec2, double>> out;
   const double total = area();
-  for (std::size_t k = 1; k + 1 < vertices.size(); ++k) {  // the fan of triangles from vertex 0
-    const Vec2 &a = vertices[0], &b = vertices[k], &c = vertices[k + 1];
-    const Vec2 u = b - a, v = c - a;
-    const double share = 0.5 * (u.x() * v.y() - u.y() * v.x()) / total / 3.0;
+  for (const auto& [a, b, c] : triangles()) {
+    const double share = 0.5 * cross(b - a, c - a) / total / 3.0;
     out.emplace_back((4.0 * a + b + c) / 6.0, share);
     out.emplace_back((a + 4.0 * b + c) / 6.0, share);
     out.emplace_back((a + b + 4.0 * c) / 6.0, share);

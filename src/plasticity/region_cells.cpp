@@ -116,12 +116,6 @@ std::vector<Vec2> cleaned(std::vector<Vec2> polygon, double eps) {
   return polygon;
 }
 
-bool is_convex(const std::vector<Vec2>& polygon) {
-  for (std::size_t k = 0, n = polygon.size(); k < n; ++k)
-    if (cross(polygon[k] - polygon[(k + n - 1) % n], polygon[(k + 1) % n] - polygon[k]) < 0.0) return false;
-  return true;
-}
-
 // How many times the region's boundary enters the leaf: the runs of the clipped polygon's
 // edges that do not lie on the leaf's sides. More than one: the leaf holds several pieces of
 // the region (or one joined through the leaf's side), which one polygon cannot carry.
@@ -137,33 +131,6 @@ int boundary_entries(const std::vector<Vec2>& polygon, const Rect& r, double eps
   int entries = 0;
   for (std::size_t k = 0; k < n; ++k) entries += !on_side(k) && on_side((k + n - 1) % n);
   return entries;
-}
-
-bool in_triangle(const Vec2& p, const Vec2& a, const Vec2& b, const Vec2& c) {
-  return cross(b - a, p - a) >= 0.0 && cross(c - b, p - b) >= 0.0 && cross(a - c, p - c) >= 0.0;
-}
-
-// Ear clipping of a simple counterclockwise polygon; empty when no ear is found.
-std::vector<Cell> triangles_of(std::vector<Vec2> polygon) {
-  std::vector<Cell> out;
-  while (polygon.size() > 3) {
-    const std::size_t n = polygon.size();
-    bool clipped = false;
-    for (std::size_t k = 0; k < n && !clipped; ++k) {
-      const Vec2 &a = polygon[(k + n - 1) % n], &b = polygon[k], &c = polygon[(k + 1) % n];
-      if (cross(b - a, c - b) <= 0.0) continue;
-      bool empty = true;
-      for (std::size_t j = 0; j < n && empty; ++j)
-        if (j != k && j != (k + 1) % n && j != (k + n - 1) % n && in_triangle(polygon[j], a, b, c)) empty = false;
-      if (!empty) continue;
-      out.push_back(Cell{{a, b, c}});
-      polygon.erase(polygon.begin() + static_cast<std::ptrdiff_t>(k));
-      clipped = true;
-    }
-    if (!clipped) return {};
-  }
-  out.push_back(Cell{polygon});
-  return out;
 }
 
 }  // namespace
@@ -245,14 +212,10 @@ std::vector<Cell> region_cells(const std::vector<RegionLoop>& loops, const CellM
     if (boundary_entries(part, r, eps) > 1)
       throw Error("the region's boundary enters the cell at " + point_text(r.centre()) +
                   " more than once (a slot or a tooth narrower than the cells): give a smaller size there");
-    if (is_convex(part)) {
-      cells.push_back(Cell{std::move(part)});
-      continue;
-    }
-    auto triangles = triangles_of(part);
-    if (triangles.empty())
-      throw Error("the cell at " + point_text(r.centre()) + " could not be cut into convex parts: give a smaller size");
-    for (auto& t : triangles) cells.push_back(std::move(t));
+    Cell cell{std::move(part)};
+    if (cell.triangles().empty())
+      throw Error("the cell at " + point_text(r.centre()) + " is not a simple polygon: give a smaller size there");
+    cells.push_back(std::move(cell));
   }
   if (cells.empty()) throw Error("no cell lies inside the region (is the box outside it?)");
   return cells;

@@ -84,7 +84,7 @@ void add_tube_from_file(const Context& context, std::vector<Record>& records) {
   std::size_t peak = 0;
   for (std::size_t k = 0; k < pressures.size(); ++k)
     if (pressures[k] > pressures[peak]) peak = k;
-  double previous = 0.0;
+  double previous = 0.0, previous_hoop = 0.0;
   for (const double size : {0.16, 0.08}) {
     const std::size_t first = records.size();
     body.plasticity->cells.size = size;
@@ -103,9 +103,33 @@ void add_tube_from_file(const Context& context, std::vector<Record>& records) {
     std::vector<Vec2> centroids;
     for (const auto& cell : result.cells) centroids.push_back(cell.centroid());
     const double hoop = reference.back().mean_hoop_error(centroids, result.cell_stress, hardening.yield_stress);
-    records.push_back(compare_scaled("plastic_bore_displacement", plastic, 0.0, 1.0, size > 0.1 ? 0.08 : 0.04));
-    records.push_back(compare_scaled("residual_bore_displacement", residual, 0.0, 1.0, size > 0.1 ? 0.08 : 0.04));
+    // Cells of 0.16 are two across the plastic zone (c - a = 0.33): a first-order error of
+    // about a quarter of a cell over c - a; the pair's ratio is checked below.
+    records.push_back(compare_scaled("plastic_bore_displacement", plastic, 0.0, 1.0, size > 0.1 ? 0.10 : 0.04));
+    records.push_back(compare_scaled("residual_bore_displacement", residual, 0.0, 1.0, size > 0.1 ? 0.10 : 0.04));
     records.push_back(compare_scaled("mean_residual_hoop_stress_error_over_Y", hoop, 0.0, 1.0, size > 0.1 ? 0.02 : 0.01));
+    // The bore's residual hoop stress from the boundary stresses with the plastic strain of
+    // the cells the nodes border (away from the rollers' corners): first order in the cell
+    // size, as the cells' constant plastic strain against its steep rise at the bore.
+    double bore_hoop = 0.0;
+    int nodes = 0;
+    for (const Index i : result.mesh.piece_nodes[inner]) {
+      const Vec2 x = result.mesh.nodes[static_cast<std::size_t>(i)].position;
+      const double angle = std::atan2(x.y(), x.x());
+      if (angle < 0.3 || angle > 1.27) continue;
+      const Vec2 t(-std::sin(angle), std::cos(angle));
+      const auto& stress = result.boundary.stress[static_cast<std::size_t>(i)];
+      bore_hoop += t.x() * t.x() * stress.s11 + t.y() * t.y() * stress.s22 + 2 * t.x() * t.y() * stress.s12;
+      ++nodes;
+    }
+    bore_hoop /= nodes;
+    const double hoop_reference = reference.back().stress.front()[1];  // (rr, tt, zz) at the bore's Gauss point
+    records.push_back(compare_scaled("residual_bore_hoop_stress", bore_hoop, hoop_reference, hardening.yield_stress,
+                                     size > 0.1 ? 0.12 : 0.04));
+    if (previous_hoop > 0.0)
+      records.push_back(compare_scaled("bore_hoop_error_ratio_on_halving",
+                                       std::abs(bore_hoop - hoop_reference) / previous_hoop, 0.0, 1.0, 0.5));
+    previous_hoop = std::abs(bore_hoop - hoop_reference);
     // Cut cells are irregular: a few at the plastic front may cycle and be held on the yield
     // surface. Their negative plastic increment (the complementarity's violation) must stay
     // below 5 % of the largest plastic strain, under the discretisation error of this size.

@@ -21,14 +21,19 @@
 
 namespace bemcontact::plasticity {
 
-// A polygonal cell (a triangle or a quadrilateral), its vertices counterclockwise.
+// A polygonal cell: a simple polygon, its vertices counterclockwise, no vertex where the
+// boundary runs straight on (convex or not: its field is the integral over its edges).
 struct Cell {
   std::vector<Vec2> vertices;
   Vec2 centroid() const;  // of the area
   double area() const;
+  bool convex() const;
+  // Triangles that tile the cell: the fan from vertex 0 when convex, else ear clipping
+  // (empty when no ear is found: not a simple polygon).
+  std::vector<std::array<Vec2, 3>> triangles() const;
+  bool contains(const Vec2& point) const;  // strictly inside (the even-odd rule)
   // Points strictly inside the cell and weights summing to 1 for its mean of a field:
-  // three per triangle (degree 2: the barycentric 2/3, 1/6, 1/6 points), a quadrilateral
-  // as two triangles.
+  // three per triangle of triangles() (degree 2: the barycentric 2/3, 1/6, 1/6 points).
   std::vector<std::pair<Vec2, double>> mean_points() const;
 };
 

@@ -5,9 +5,10 @@
 // (Sutherland-Hodgman against the leaf). The cells need not match each other node for
 // node: each carries its own constant initial stress and its field is the integral over its
 // own edges (plasticity/initial_stress.hpp), so hanging vertices are harmless. They must
-// tile the polygon the boundary elements' chords draw, with no overlap, and be convex
-// (their mean points are a fan from a vertex): a leaf that the cut leaves concave (a
-// re-entrant corner inside it) is split into triangles.
+// tile the polygon the boundary elements' chords draw, with no overlap. A leaf the cut
+// leaves concave (a concave arc or a re-entrant corner through it) stays one cell: its
+// field is still its edges' integral, and its mean points come from its ear triangles
+// (splitting it into those triangles made slivers whose mean strains scattered by 5 Y/E).
 #include <array>
 #include <optional>
 #include <string>
