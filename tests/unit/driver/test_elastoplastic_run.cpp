@@ -11,6 +11,7 @@
 
 #include "bemcontact/core/error.hpp"
 #include "bemcontact/driver/run.hpp"
+#include "bemcontact/plasticity/j2_material.hpp"
 #include "support/example_text.hpp"
 
 namespace bemcontact::driver {
@@ -79,6 +80,99 @@ TEST(ElastoplasticRun, WritesTheCellsStepsAndResidualState) {
   EXPECT_GT(inner_u1.back(), 0.0);
   const auto& reaction = column(steps, "AB_f2").numbers;
   EXPECT_LT(std::abs(reaction.back()), 1e-3 * std::abs(*std::min_element(reaction.begin(), reaction.end())));
+}
+
+// One material point of the pressed block in plane strain: eps_22 prescribed in the same 10
+// steps, eps_11 found by Newton with sigma_11 = 0 (eps_33 = 0): the block's state without the
+// boundary elements and cells.
+plasticity::Mandel pressed_point_stress(const Material& material, const plasticity::J2Hardening& hardening,
+                                        double strain, int steps) {
+  plasticity::J2State state;
+  double e11 = 0.0;
+  plasticity::J2Update update;
+  for (int k = 1; k <= steps; ++k) {
+    const double e22 = strain * k / steps;
+    for (int iteration = 0; iteration < 50; ++iteration) {
+      update = plasticity::j2_update(material, hardening, state, plasticity::mandel(e11, e22, 0.0, 0.0));
+      if (std::abs(update.stress[0]) < 1e-12 * hardening.yield_stress) break;
+      e11 -= update.stress[0] / update.tangent(0, 0);
+    }
+    state = update.state;
+  }
+  return update.stress;
+}
+
+// A block pressed between smooth platens (free on one side, cells over all of it): the state is
+// uniform, so piecewise-constant plastic strain is exact. Plane strain, perfectly plastic,
+// against one material point under the same steps (sigma_yy tends to -2Y/sqrt3 and sigma_zz
+// to sigma_yy / 2 as the flow goes on); plane stress with linear isotropic hardening H:
+// uniaxial, sigma = -(Y + E H / (E + H) (eps - Y/E)) [SimoHughes1998, ch. 1].
+TEST(ElastoplasticRun, PressedBlockMeetsTheClosedForms) {
+  const std::string block = R"(title = "pressed block"
+analysis = "ANALYSIS"
+[[body]]
+name = "block"
+[body.material]
+E = 200000.0
+nu = 0.3
+yield_stress = 250.0
+hardening = HARDENING
+[body.cells]
+size = 0.25
+[[body.boundary]]
+name = "bottom"
+from = [0.0, 0.0]
+to = [1.0, 0.0]
+elements = 8
+u2 = 0.0
+t1 = 0.0
+[[body.boundary]]
+name = "right"
+from = [1.0, 0.0]
+to = [1.0, 1.0]
+elements = 8
+[[body.boundary]]
+name = "top"
+from = [1.0, 1.0]
+to = [0.0, 1.0]
+elements = 8
+u2 = -0.01
+t1 = 0.0
+[[body.boundary]]
+name = "left"
+from = [0.0, 1.0]
+to = [0.0, 0.0]
+elements = 8
+u1 = 0.0
+t2 = 0.0
+[solver]
+increments = 10
+)";
+  RunOptions options;
+  options.keep_tables = true;
+  const double Y = 250.0, E = 200000.0, strain = 0.01;
+  {
+    const auto output = run_problem(replaced(replaced(block, "ANALYSIS", "plane_strain"), "HARDENING", "0.0"),
+                                    "block.toml", options);
+    const auto& cells = output.tables.at("block_cells.csv");
+    const auto point = pressed_point_stress({E, 0.3}, {Y, 0.0, 0.0}, -strain, 10);
+    EXPECT_NEAR(point[1], -2.0 * Y / std::sqrt(3.0), 1e-3 * Y);  // nearly levelled at 8 Y/E
+    for (std::size_t k = 0; k < 16; ++k) {
+      EXPECT_NEAR(column(cells, "s22").numbers[k], point[1], 1e-7 * Y);
+      EXPECT_NEAR(column(cells, "s33").numbers[k], point[2], 1e-7 * Y);
+      EXPECT_NEAR(column(cells, "s11").numbers[k], 0.0, 1e-7 * Y);
+    }
+    // The platen's force per unit width: the same stress (the boundary's quadrature).
+    EXPECT_NEAR(column(output.tables.at("block_steps.csv"), "top_f2").numbers.back(), point[1], 1e-6 * Y);
+  }
+  {
+    const double H = E / 10.0;
+    const auto output = run_problem(replaced(replaced(block, "ANALYSIS", "plane_stress"), "HARDENING", "20000.0"),
+                                    "block.toml", options);
+    const auto& cells = output.tables.at("block_cells.csv");
+    const double expected = -(Y + E * H / (E + H) * (strain - Y / E));
+    for (std::size_t k = 0; k < 16; ++k) EXPECT_NEAR(column(cells, "s22").numbers[k], expected, 1e-6 * Y);
+  }
 }
 
 TEST(ElastoplasticRun, RefusesWhatItDoesNotServe) {
