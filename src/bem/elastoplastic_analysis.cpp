@@ -32,17 +32,24 @@ std::vector<plasticity::Mandel> nodal_plastic_strain(const geometry::BoundaryMes
 
 }  // namespace
 
-std::vector<plasticity::RegionLoop> region_loops(const geometry::BoundaryMesh& mesh) {
+std::vector<plasticity::RegionLoop> region_loops(const geometry::BoundaryMesh& mesh,
+                                                const std::vector<geometry::BoundaryPiece>& pieces) {
   std::vector<plasticity::RegionLoop> loops;
   for (const auto& contour : mesh.contours) {
     plasticity::RegionLoop loop;
     loop.hole = contour.is_hole;
-    for (const int piece : contour.pieces)
-      for (const Index e : mesh.piece_elements[static_cast<std::size_t>(piece)]) {
+    for (const int piece : contour.pieces) {
+      const auto p = static_cast<std::size_t>(piece);
+      if (mesh.piece_skipped[p]) {  // a symmetry line or the axis: straight, no elements
+        loop.points.push_back(pieces[p].start);
+        continue;
+      }
+      for (const Index e : mesh.piece_elements[p]) {
         const auto& element = mesh.elements[static_cast<std::size_t>(e)];
         const int chords = element.arc ? 8 : 1;
         for (int k = 0; k < chords; ++k) loop.points.push_back(element.point(static_cast<double>(k) / chords));
       }
+    }
     loops.push_back(std::move(loop));
   }
   return loops;
@@ -65,7 +72,7 @@ ElastoplasticResult solve_elastoplastic_body(const ProblemDefinition& problem, c
   PhaseClock clock(result.timings);
   result.mesh = mesh_body(problem);
   try {
-    result.cells = plasticity::region_cells(region_loops(result.mesh), plasticity.cells);
+    result.cells = plasticity::region_cells(region_loops(result.mesh, body.pieces), plasticity.cells);
   } catch (const InputError&) {
     throw;
   } catch (const Error& e) {

@@ -103,8 +103,6 @@ ElastoplasticHistory elastoplastic_history(const ContactProblem& model) {
   if (!model.forces.empty()) refuse("under a force load ([load])");
   if (!model.boundary_amplitudes.empty()) refuse("with boundaries of their own amplitude");
   if (model.analysis == AnalysisType::axisymmetric) refuse("in axisymmetry");
-  for (const auto& piece : plastic->body.pieces)
-    if (piece.symmetry) refuse("with a symmetry line ('" + piece.name + "'; draw the body whole, or hold the line by u_n = 0 and t_t = 0)");
   if (model.operator_choice.kind == bem::OperatorKind::compressed) refuse("on compressed operators (dense only)");
   if (!plastic->interior_points.empty()) refuse("with [interior] points (its stresses are in cells.csv)");
 

@@ -1,5 +1,7 @@
 #include "bemcontact/plasticity/initial_stress.hpp"
 
+#include <optional>
+
 #include <algorithm>
 #include <cmath>
 
@@ -123,6 +125,7 @@ bool Cell::convex() const {
 
 std::vector<std::array<Vec2, 3>> Cell::triangles() const {
   std::vector<std::array<Vec2, 3>> out;
+  if (vertices.size() == 3) return {{vertices[0], vertices[1], vertices[2]}};
   if (convex()) {  // the fan from vertex 0
     for (std::size_t k = 1; k + 1 < vertices.size(); ++k) out.push_back({vertices[0], vertices[k], vertices[k + 1]});
     return out;
@@ -159,14 +162,49 @@ bool Cell::contains(const Vec2& p) const {
   return inside;
 }
 
-std::vector<std::pair<Vec2, double>> Cell::mean_points() const {
+std::optional<std::array<Vec2, 2>> Cell::rectangle() const {
+  if (vertices.size() != 4) return std::nullopt;
+  Vec2 lo = vertices[0], hi = vertices[0];
+  for (const Vec2& v : vertices) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
+  // Within round-off of the corners (a cut leaf's corners come from the boundary's points).
+  const double tolerance = 1e-9 * (hi - lo).norm();
+  for (const Vec2& v : vertices)
+    if ((std::abs(v.x() - lo.x()) > tolerance && std::abs(v.x() - hi.x()) > tolerance) ||
+        (std::abs(v.y() - lo.y()) > tolerance && std::abs(v.y() - hi.y()) > tolerance))
+      return std::nullopt;
+  if (!(std::abs(area() - (hi - lo).prod()) <= 1e-8 * (hi - lo).prod())) return std::nullopt;
+  return std::array<Vec2, 2>{lo, hi};
+}
+
+std::vector<std::pair<Vec2, double>> Cell::mean_points(int refinement) const {
   std::vector<std::pair<Vec2, double>> out;
+  // An axis-aligned rectangle (a quadtree leaf): the n x n Gauss rule, n = 2 refinement,
+  // symmetric, so a mirrored cell has the mirrored points.
+  if (const auto box = rectangle()) {
+    const auto& rule = quadrature::gauss_legendre(2 * refinement);
+    const Vec2 centre = 0.5 * ((*box)[0] + (*box)[1]), half = 0.5 * ((*box)[1] - (*box)[0]);
+    for (int i = 0; i < rule.size(); ++i)
+      for (int j = 0; j < rule.size(); ++j)
+        out.emplace_back(centre + Vec2(rule.nodes[i] * half.x(), rule.nodes[j] * half.y()),
+                         0.25 * rule.weights[i] * rule.weights[j]);
+    return out;
+  }
+  // Each triangle split into refinement^2 similar ones, three points each.
   const double total = area();
   for (const auto& [a, b, c] : triangles()) {
-    const double share = 0.5 * cross(b - a, c - a) / total / 3.0;
-    out.emplace_back((4.0 * a + b + c) / 6.0, share);
-    out.emplace_back((a + 4.0 * b + c) / 6.0, share);
-    out.emplace_back((a + b + 4.0 * c) / 6.0, share);
+    const Vec2 u = (b - a) / refinement, v = (c - a) / refinement;
+    const double share = 0.5 * cross(u, v) / total / 3.0;
+    for (int i = 0; i < refinement; ++i)
+      for (int j = 0; i + j < refinement; ++j)
+        for (const bool flipped : {false, true}) {
+          if (flipped && i + j + 1 >= refinement) continue;
+          const Vec2 p = a + static_cast<double>(i) * u + static_cast<double>(j) * v;
+          const Vec2 q = flipped ? Vec2(p + u + v) : p;  // the flipped one: (p + u + v) - u, - v
+          const Vec2 e1 = flipped ? Vec2(-v) : u, e2 = flipped ? Vec2(-u) : v;
+          out.emplace_back(q + (e1 + e2) / 6.0, share);
+          out.emplace_back(q + (4.0 * e1 + e2) / 6.0, share);
+          out.emplace_back(q + (e1 + 4.0 * e2) / 6.0, share);
+        }
   }
   return out;
 }

@@ -33,8 +33,10 @@ struct ElastoplasticResult {
 };
 
 // The closed polygons the boundary elements draw, one per contour (arcs of quadratic
-// elements as chords of an eighth of the element).
-std::vector<plasticity::RegionLoop> region_loops(const geometry::BoundaryMesh& mesh);
+// elements as chords of an eighth of the element; symmetry lines and the axis, which carry
+// no elements, as their straight pieces).
+std::vector<plasticity::RegionLoop> region_loops(const geometry::BoundaryMesh& mesh,
+                                                const std::vector<geometry::BoundaryPiece>& pieces);
 
 // The stress at each boundary node from its traction, the tangential strain of the
 // displacement and the plastic strain of the cell the node borders (none: elastic), with

@@ -51,7 +51,7 @@ struct IncrementReport {
 
 class ElastoplasticRegion {
  public:
-  // Throws Error for a body that is not plane strain, has symmetry lines or a bad
+  // Throws Error for an axisymmetric body or a bad
   // hardening (the reader checks them first), SolverError for a singular system.
   ElastoplasticRegion(const geometry::BoundaryMesh& mesh, const BodyDefinition& body, AnalysisType type,
                       const plasticity::J2Hardening& hardening, std::vector<plasticity::Cell> cells);

@@ -14,6 +14,7 @@
 // points. The edge integrals are graded toward the point of the edge nearest to x (the
 // logarithm of U on an edge through x, the 1/r of D near one).
 #include <array>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -28,13 +29,18 @@ struct Cell {
   Vec2 centroid() const;  // of the area
   double area() const;
   bool convex() const;
-  // Triangles that tile the cell: the fan from vertex 0 when convex, else ear clipping
-  // (empty when no ear is found: not a simple polygon).
+  // Triangles that tile the cell: the fan from vertex 0 when convex, else ear
+  // clipping (empty when no ear is found: not a simple polygon).
   std::vector<std::array<Vec2, 3>> triangles() const;
   bool contains(const Vec2& point) const;  // strictly inside (the even-odd rule)
-  // Points strictly inside the cell and weights summing to 1 for its mean of a field:
-  // three per triangle of triangles() (degree 2: the barycentric 2/3, 1/6, 1/6 points).
-  std::vector<std::pair<Vec2, double>> mean_points() const;
+  // The lower-left and upper-right corners of an axis-aligned rectangle (a quadtree
+  // leaf, whichever vertex comes first), none for any other cell.
+  std::optional<std::array<Vec2, 2>> rectangle() const;
+  // Points strictly inside the cell and weights summing to 1 for its mean of a field: the
+  // n x n Gauss points of an axis-aligned rectangle (n = 2 refinement), else each triangle
+  // of triangles() split into refinement^2 similar ones with three points each (degree 2:
+  // the barycentric 2/3, 1/6, 1/6 points).
+  std::vector<std::pair<Vec2, double>> mean_points(int refinement = 1) const;
 };
 
 // In-plane initial stress components (11, 22, 12).
