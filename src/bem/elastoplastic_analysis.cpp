@@ -71,6 +71,12 @@ ElastoplasticResult solve_elastoplastic_body(const ProblemDefinition& problem, c
   ElastoplasticResult result;
   PhaseClock clock(result.timings);
   result.mesh = mesh_body(problem);
+  auto selection = select_interior_points(result.mesh, problem.interior_points);
+  if (!selection.listed_outside.empty()) {
+    const auto& p = *selection.listed_outside.front();
+    throw InputError(p.where.file.empty() ? SourceLocation{problem.source_file, 0, "interior.points"} : p.where,
+                     "point " + point_text(p.position) + " is not inside the body");
+  }
   try {
     result.cells = plasticity::region_cells(region_loops(result.mesh, body.pieces), plasticity.cells);
   } catch (const InputError&) {
@@ -111,6 +117,12 @@ ElastoplasticResult solve_elastoplastic_body(const ProblemDefinition& problem, c
   result.states = region.states();
   result.cell_stress = region.cell_stress();
   clock.lap("load steps");
+  if (!problem.interior_points.empty()) {
+    const ElementIntegrator integrator(problem.analysis, body.material);
+    result.interior = interior_values(result.mesh, integrator, result.boundary, std::move(selection), progress,
+                                      [&](const Vec2& x, Vec2& u, StressTensor& s) { region.add_cell_fields_at(x, u, s); });
+    clock.lap("interior points");
+  }
   return result;
 }
 

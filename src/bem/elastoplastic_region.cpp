@@ -411,4 +411,40 @@ BoundarySolution ElastoplasticRegion::boundary_solution() const {
   return recover_boundary_values(boundary_unknowns_ * coefficients, scaled(conditions_, amplitude_), constraints_);
 }
 
+void ElastoplasticRegion::add_cell_fields_at(const Vec2& point, Vec2& u, StressTensor& stress) const {
+  const auto kelvin = kernels::KelvinPlane::from(type_, material_);
+  std::vector<std::vector<CellImage>> sources;
+  for (const auto& cell : cells_) sources.push_back(cell_and_images(cell, mesh_.images));
+  // Off every edge: the fields' edge integrals are singular on them.
+  const auto on_an_edge = [&](const Vec2& x) {
+    const double tolerance = 1e-10 * mesh_.scale;
+    for (const auto& images : sources)
+      for (const auto& source : images) {
+        const auto& v = source.cell.vertices;
+        for (std::size_t k = 0; k < v.size(); ++k) {
+          const Vec2 a = v[k], b = v[(k + 1) % v.size()];
+          const double f = std::clamp((x - a).dot(b - a) / (b - a).squaredNorm(), 0.0, 1.0);
+          if ((x - (a + f * (b - a))).norm() <= tolerance) return true;
+        }
+      }
+    return false;
+  };
+  Vec2 x = point;
+  if (on_an_edge(x)) x += 1e-8 * mesh_.scale * Vec2(1.0, 1.0).normalized();
+  Eigen::Vector3d c_eps = Eigen::Vector3d::Zero();
+  double plastic33 = 0.0;
+  for (std::size_t e = 0; e < cells_.size(); ++e) {
+    const InitialStress sigma0 = initial_stress(states_[e].plastic_strain);
+    if (sigma0.isZero(0.0)) continue;
+    for (const auto& source : sources[e]) {
+      u += cell_displacement_influence(kelvin, x, source.cell) * (source.stress_map * sigma0);
+      c_eps += cell_stress_influence(kelvin, x, source.cell) * (source.stress_map * sigma0);
+    }
+    if (cells_[e].contains(x)) c_eps -= sigma0, plastic33 = states_[e].plastic_strain[2];
+  }
+  stress.s11 += c_eps[0], stress.s22 += c_eps[1], stress.s12 += c_eps[2];
+  if (type_ == AnalysisType::plane_strain)
+    stress.s33 += material_.poisson_ratio * (c_eps[0] + c_eps[1]) - material_.young_modulus * plastic33;
+}
+
 }  // namespace bemcontact::bem

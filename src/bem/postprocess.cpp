@@ -359,7 +359,14 @@ StressTensor somigliana_stress(const geometry::BoundaryMesh& mesh, const Element
 
 InteriorSolution interior_values(const geometry::BoundaryMesh& mesh, const ElementIntegrator& integrator,
                                  const BoundarySolution& solution, const std::vector<Vec2>& points,
-                                 const ProgressCallback& progress) {
+                                 const ProgressCallback& progress, const DomainTerm& domain_term) {
+  // Somigliana's displacement and stress at y, with the domain term.
+  const auto values_at = [&](const Vec2& y, Vec2* u, StressTensor& s) {
+    Vec2 displacement = u ? somigliana_displacement(mesh, integrator, solution, y) : Vec2::Zero();
+    s = somigliana_stress(mesh, integrator, solution, y);
+    if (domain_term) domain_term(y, displacement, s);
+    if (u) *u = displacement;
+  };
   InteriorSolution result;
   result.points = points;
   const Index m = static_cast<Index>(points.size());
@@ -374,18 +381,20 @@ InteriorSolution interior_values(const geometry::BoundaryMesh& mesh, const Eleme
     if (errors.failed()) continue;
     errors.run([&] {
     const Vec2& x = points[k];
-    result.displacement[k] = somigliana_displacement(mesh, integrator, solution, x);
     const auto projection = project_on_boundary(mesh, x);
     const auto& element = mesh.elements[projection.element];
     const double safe_distance = 0.5 * element.length;
     if (projection.distance >= safe_distance || solution.stress.empty()) {
-      result.stress[k] = somigliana_stress(mesh, integrator, solution, x);
+      values_at(x, &result.displacement[k], result.stress[k]);
     } else {
+      StressTensor ignored;
+      values_at(x, &result.displacement[k], ignored);
       // Between the boundary stress at the projection and the Somigliana stress at the
       // safe distance along the inward normal.
       const Vec2 foot = element.start + projection.fraction * (element.end - element.start);
       const Vec2 inside = foot - safe_distance * element.normal;
-      const StressTensor far = somigliana_stress(mesh, integrator, solution, inside);
+      StressTensor far;
+      values_at(inside, nullptr, far);
       StressTensor near;
       for (int a = 0; a < element.node_count; ++a) {
         const double w = element.shape(a, projection.fraction);
@@ -438,8 +447,8 @@ InteriorSelection select_interior_points(const geometry::BoundaryMesh& mesh, con
 
 InteriorSolution interior_values(const geometry::BoundaryMesh& mesh, const ElementIntegrator& integrator,
                                  const BoundarySolution& solution, InteriorSelection selection,
-                                 const ProgressCallback& progress) {
-  auto result = interior_values(mesh, integrator, solution, selection.inside, progress);
+                                 const ProgressCallback& progress, const DomainTerm& domain_term) {
+  auto result = interior_values(mesh, integrator, solution, selection.inside, progress, domain_term);
   result.grid_index = std::move(selection.grid_index);
   result.dropped_points = std::move(selection.dropped);
   return result;

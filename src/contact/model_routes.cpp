@@ -104,11 +104,11 @@ ElastoplasticHistory elastoplastic_history(const ContactProblem& model) {
   if (!model.boundary_amplitudes.empty()) refuse("with boundaries of their own amplitude");
   if (model.analysis == AnalysisType::axisymmetric) refuse("in axisymmetry");
   if (model.operator_choice.kind == bem::OperatorKind::compressed) refuse("on compressed operators (dense only)");
-  if (!plastic->interior_points.empty()) refuse("with [interior] points (its stresses are in cells.csv)");
 
   ElastoplasticHistory history;
   static_cast<bem::ProblemHeader&>(history.problem) = model;
   history.problem.body = plastic->body;
+  history.problem.interior_points = plastic->interior_points;
   // The steps: equal ones, and every corner of the data amplitude (an unloading starts there).
   const double end = model.end_time;
   for (int k = 1; k <= model.increments; ++k) history.times.push_back(end * k / model.increments);

@@ -386,9 +386,13 @@ RunOutput run_elastoplastic(const io::ProblemInput& input, const contact::Elasto
   add_file(output, options, {prefix + "boundary.csv", io::boundary_table(result.mesh, result.boundary)});
   add_file(output, options, {prefix + "cells.csv", io::cells_table(result)});
   add_file(output, options, {prefix + "steps.csv", io::elastoplastic_steps_table(result)});
+  if (!result.interior.points.empty())
+    add_file(output, options, {prefix + "interior.csv", io::interior_table(result.interior)});
   if (input.vtk) {
     output.files.add(prefix + "boundary.vtk", io::boundary_vtk(result.mesh, result.boundary, problem.title));
     output.files.add(prefix + "cells.vtk", io::cells_vtk(result, problem.title));
+    if (!result.interior.points.empty())
+      output.files.add(prefix + "interior.vtk", io::interior_vtk(result.interior, problem.title));
   }
   json timings = {{"read", read_seconds}};
   for (const auto& [phase, seconds] : result.timings.phases) timings[phase] = seconds;

@@ -15,6 +15,7 @@
 #include "bemcontact/io/input/problem_file.hpp"
 #include "bemcontact/io/input/problem_reader.hpp"
 #include "bemcontact/io/input/problem_text.hpp"
+#include "bemcontact/io/text_format.hpp"
 #include "bemcontact/plasticity/cell_meshes.hpp"
 #include "bemcontact/bem/elastoplastic_region.hpp"
 #include "bemcontact/reference/plastic_cylinder.hpp"
@@ -84,6 +85,10 @@ void add_tube_from_file(const Context& context, std::vector<Record>& records) {
   std::size_t peak = 0;
   for (std::size_t k = 0; k < pressures.size(); ++k)
     if (pressures[k] > pressures[peak]) peak = k;
+  // Interior points on the 45 degree ray: in the plastic zone (c = 1.33) and beyond it.
+  const std::vector<double> interior_radii{1.15, 1.25, 1.6, 1.85};
+  for (const double r : interior_radii)
+    history.problem.interior_points.push_back(bem::InteriorPoint{r * Vec2(1.0, 1.0).normalized(), false, {}});
   double previous = 0.0, previous_hoop = 0.0;
   for (const double size : {0.16, 0.08}) {
     const std::size_t first = records.size();
@@ -126,6 +131,17 @@ void add_tube_from_file(const Context& context, std::vector<Record>& records) {
     const double hoop_reference = reference.back().stress.front()[1];  // (rr, tt, zz) at the bore's Gauss point
     records.push_back(compare_scaled("residual_bore_hoop_stress", bore_hoop, hoop_reference, hardening.yield_stress,
                                      size > 0.1 ? 0.12 : 0.04));
+    // The residual hoop stress at the interior points: Somigliana's with the cells' fields.
+    for (std::size_t k = 0; k < interior_radii.size(); ++k) {
+      const auto& stress = result.interior.stress[k];
+      const double hoop = 0.5 * (stress.s11 + stress.s22) - stress.s12;  // at 45 degrees: t = (-1, 1)/sqrt2
+      const auto& states = reference.back();
+      std::size_t nearest = 0;
+      for (std::size_t g = 0; g < states.radii.size(); ++g)
+        if (std::abs(states.radii[g] - interior_radii[k]) < std::abs(states.radii[nearest] - interior_radii[k])) nearest = g;
+      records.push_back(compare_scaled("residual_hoop_stress_at_r=" + io::format_number(interior_radii[k]), hoop,
+                                       states.stress[nearest][1], hardening.yield_stress, size > 0.1 ? 0.03 : 0.012));
+    }
     if (previous_hoop > 0.0)
       records.push_back(compare_scaled("bore_hoop_error_ratio_on_halving",
                                        std::abs(bore_hoop - hoop_reference) / previous_hoop, 0.0, 1.0, 0.5));

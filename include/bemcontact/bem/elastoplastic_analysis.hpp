@@ -29,6 +29,7 @@ struct ElastoplasticResult {
   BoundarySolution boundary;
   std::vector<plasticity::J2State> states;
   std::vector<plasticity::Mandel> cell_stress;
+  InteriorSolution interior;  // the [interior] points at the last step's end
   PhaseTimings timings;
 };
 

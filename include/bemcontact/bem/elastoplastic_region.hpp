@@ -69,6 +69,13 @@ class ElastoplasticRegion {
   // increment's end.
   const std::vector<plasticity::Mandel>& cell_stress() const { return stress_; }
   BoundarySolution boundary_solution() const;
+  // The cells' part of the displacement and stress at a point of the body, at the last
+  // increment's end, added to `u` and `stress` (Somigliana's of the boundary values):
+  // their initial stresses' fields (images included), minus the initial stress of the
+  // cell holding the point (sigma = C eps - sigma0), and s33 with the plastic strain
+  // (plane strain: nu (s11 + s22) - E eps_p33). A point on a cell's edge, where the field
+  // jumps, takes the value 1e-8 of the body's size up and to the right of it.
+  void add_cell_fields_at(const Vec2& point, Vec2& u, StressTensor& stress) const;
 
  private:
   plasticity::InitialStress initial_stress(const plasticity::Mandel& plastic_strain) const;

@@ -1,6 +1,7 @@
 #pragma once
 // Post-processing of a solved body: stress tensor at boundary nodes (section I.6),
 // displacements and stresses at interior points (I.11, I.14), von Mises (section II.6).
+#include <functional>
 #include <vector>
 
 #include "bemcontact/bem/assembly.hpp"
@@ -52,6 +53,10 @@ StressTensor stress_at_vertex(const geometry::BoundaryMesh& mesh, Index vertex,
 StressTensor stress_at_vertex(const geometry::BoundaryMesh& mesh, const BodyDefinition& body, AnalysisType type,
                               Index vertex, const std::vector<StressTensor>& nodal);
 
+// A field added to Somigliana's wherever it is evaluated (an elastoplastic region's cells:
+// their initial stresses' displacement and stress at x).
+using DomainTerm = std::function<void(const Vec2& x, Vec2& displacement, StressTensor& stress)>;
+
 // Somigliana displacement and stress at interior points. Points closer to the boundary
 // than half the local element length take the stress interpolated along the normal
 // between the boundary stress and the value half an element inside, which keeps the
@@ -59,7 +64,7 @@ StressTensor stress_at_vertex(const geometry::BoundaryMesh& mesh, const BodyDefi
 // piecewise-linear density would lose accuracy.
 InteriorSolution interior_values(const geometry::BoundaryMesh& mesh, const ElementIntegrator& integrator,
                                  const BoundarySolution& solution, const std::vector<Vec2>& points,
-                                 const ProgressCallback& progress = {});
+                                 const ProgressCallback& progress = {}, const DomainTerm& domain_term = {});
 
 // The points of `points` inside the body (with their grid indices) and the grid points
 // outside it; listed points outside are returned for the caller to report.
@@ -71,10 +76,11 @@ struct InteriorSelection {
 };
 InteriorSelection select_interior_points(const geometry::BoundaryMesh& mesh, const std::vector<InteriorPoint>& points);
 
-// interior_values at the selected points, with the grid indices and dropped points set.
+// interior_values at the selected points, with the grid indices and dropped points set, and
+// a domain term if given.
 InteriorSolution interior_values(const geometry::BoundaryMesh& mesh, const ElementIntegrator& integrator,
                                  const BoundarySolution& solution, InteriorSelection selection,
-                                 const ProgressCallback& progress = {});
+                                 const ProgressCallback& progress = {}, const DomainTerm& domain_term = {});
 
 // Plane or axisymmetric Somigliana stress at one interior point, without the
 // near-boundary treatment (exposed for tests).

@@ -289,8 +289,8 @@ TEST(ElastoplasticRun, RefusesWhatItDoesNotServe) {
          "in axisymmetry");
   expect(input_error(replaced(tube, "increments = 8", "increments = 8\noperator = \"compressed\"")), "yield_stress",
          "compressed");
-  expect(input_error(replaced(tube, "[history]", "[body.interior]\npoints = [[1.5, 0.5]]\n[history]")), "yield_stress",
-         "[interior]");
+  expect(input_error(replaced(tube, "[history]", "[body.interior]\npoints = [[0.5, 0.5]]\n[history]")), "interior",
+         "not inside the body");
   // A linear elastic region with cells: the cells would do nothing.
   expect(input_error(replaced(tube, "yield_stress = \"Y\"", "")), "cells", "linear elastic");
 }
