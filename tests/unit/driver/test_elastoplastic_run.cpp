@@ -289,7 +289,7 @@ TEST(ElastoplasticRun, RefusesWhatItDoesNotServe) {
          "in axisymmetry");
   expect(input_error(replaced(tube, "increments = 8", "increments = 8\noperator = \"compressed\"")), "yield_stress",
          "compressed");
-  expect(input_error(replaced(tube, "[history]", "[body.interior]\npoints = [[0.5, 0.5]]\n[history]")), "interior",
+  expect(input_error(replaced(tube, "[body.interior]", "[body.interior]\npoints = [[0.5, 0.5]]")), "interior",
          "not inside the body");
   // A linear elastic region with cells: the cells would do nothing.
   expect(input_error(replaced(tube, "yield_stress = \"Y\"", "")), "cells", "linear elastic");
