@@ -10,7 +10,9 @@ it is unchanged), von Mises and principal stresses on each interior grid, contac
 and shear per contact (with the closed form when the run names one; against the angle
 about the centre of curvature for a conformal contact), load-history curves with the Q -
 delta loop of a tangential force load, as computed and without the bulk compliance; for a
-contact that wears, its scar's evolution over the load cycles (wear_<contact>).
+contact that wears, its scar's evolution over the load cycles (wear_<contact>); for an
+elastoplastic run, the plastic zone, the cells' von Mises stress and the load-displacement
+curve with its unloading branch (plasticity).
 """
 import argparse
 import hashlib
@@ -413,6 +415,83 @@ def wear_figure(result, name, title, path=None):
     return _finish(fig, path)
 
 
+def vtk_polygons(vtk_text):
+    """The polygons of a legacy VTK POLYDATA file (cells.vtk): a list of (k, 2) arrays."""
+    words = vtk_text.split()
+    at = words.index("POINTS")
+    count = int(words[at + 1])
+    points = np.array(words[at + 3:at + 3 + 3 * count], float).reshape(count, 3)[:, :2]
+    at = words.index("POLYGONS")
+    polygons, k = [], at + 3
+    for _ in range(int(words[at + 1])):
+        n = int(words[k])
+        polygons.append(points[np.array(words[k + 1:k + 1 + n], int)])
+        k += 1 + n
+    return polygons
+
+
+def loaded_boundary(steps, names):
+    """The boundary whose force does the most work over the steps (the largest range of
+    f . u: a roller's reaction, normal to its motion, does none), and the unit direction of
+    its largest force: the load-displacement curve is that force and the mean displacement
+    along it. None when no boundary works."""
+    best, most = None, 0.0
+    for name in names:
+        f = np.stack([steps[f"{name}_f1"], steps[f"{name}_f2"]], axis=1)
+        u = np.stack([steps[f"{name}_u1"], steps[f"{name}_u2"]], axis=1)
+        work = np.ptp(np.concatenate([[0.0], np.sum(f * u, axis=1)]))
+        if work > most:
+            peak = f[np.argmax(np.linalg.norm(f, axis=1))]
+            best, most = (name, peak / np.linalg.norm(peak)), work
+    return best
+
+
+def plasticity_figure(result, stem, title, path=None):
+    """An elastoplastic run (<stem>cells.csv, steps.csv; docs/plasticity.md): the cells
+    coloured by the equivalent plastic strain and by the von Mises stress at the end of the
+    history (after unloading: the residual stresses), and the force against the
+    mean displacement of the boundary whose force works most (loaded_boundary), with its
+    unloading branch."""
+    cells = result.table(_file(stem, "cells.csv"))
+    steps = result.table(_file(stem, "steps.csv"))
+    fig, axes = plt.subplots(1, 3, figsize=(16, 5))
+    vtk = _file(stem, "cells.vtk")
+    polygons = vtk_polygons(result.text(vtk)) if vtk in result.names() else None
+    for ax, column, label, cmap in ((axes[0], "equivalent_plastic_strain", "equivalent plastic strain", "magma_r"),
+                                    (axes[1], "von_mises", "von Mises stress", "viridis")):
+        values = cells[column]
+        if polygons is not None:
+            from matplotlib.collections import PolyCollection
+            collection = PolyCollection(polygons, array=values, cmap=cmap, edgecolors="0.7", linewidths=0.2)
+            ax.add_collection(collection)
+            ax.autoscale_view()
+            fig.colorbar(collection, ax=ax, shrink=0.8)
+        else:
+            drawn = ax.scatter(cells["x"], cells["y"], c=values, cmap=cmap, s=8)
+            fig.colorbar(drawn, ax=ax, shrink=0.8)
+        if column == "equivalent_plastic_strain" and np.any(values > 0.0):
+            yielded = values > 0.0
+            ax.plot(cells["x"][yielded], cells["y"][yielded], ".", color="k", ms=1.5)
+        ax.set_aspect("equal")
+        ax.set_title(f"{label} of the cells at the end ({int(np.sum(cells['equivalent_plastic_strain'] > 0))} "
+                     "yielded: dots)" if column == "equivalent_plastic_strain" else f"{label} of the cells at the end",
+                     fontsize=9)
+    names = [c[:-3] for c in steps.columns if c.endswith("_u1")]
+    loaded = loaded_boundary(steps, names)
+    curve = axes[2]
+    if loaded is not None:
+        name, direction = loaded
+        f = np.concatenate([[0.0], steps[f"{name}_f1"] * direction[0] + steps[f"{name}_f2"] * direction[1]])
+        u = np.concatenate([[0.0], steps[f"{name}_u1"] * direction[0] + steps[f"{name}_u2"] * direction[1]])
+        curve.plot(u, f, ".-", ms=4)
+        curve.set_xlabel(f"mean displacement of boundary '{name}' along ({direction[0]:.3g}, {direction[1]:.3g})")
+        curve.set_ylabel(f"its force along that direction")
+    curve.set_title("load against displacement (loading and unloading)", fontsize=9)
+    curve.axhline(0.0, color="0.6", lw=0.5)
+    fig.suptitle(title, fontsize=10)
+    return _finish(fig, path)
+
+
 def _load_folder(folder):
     if not (folder / "summary.json").is_file():
         raise SystemExit(f"bemcontact plot: {folder} is not an output folder of bemcontact (no summary.json)")
@@ -448,6 +527,8 @@ def figures(source, out_dir=None, fmt="png"):
                   file=sys.stderr)
         for stem in _stems(result, "interior.csv"):
             written.append(interior_figure(result, stem, title, out / f"{_file(stem, 'interior')}.{fmt}"))
+        for stem in _stems(result, "cells.csv"):
+            written.append(plasticity_figure(result, stem, title, out / f"{_file(stem, 'plasticity')}.{fmt}"))
         contacts = result.contact_names()
         reference = summary.get("results", {}).get("contact", {}).get("reference")
         law = summary.get("options", {}).get("law", {})

@@ -256,3 +256,32 @@ def test_wear_figure_draws_the_scar_over_the_cycles(tmp_path):
     # A folder without wear files gets no wear figure.
     plain = _wear_folder(tmp_path / "plain", wear=False)
     assert [p.name for p in plot.figures(plain)] == ["contact_contact.png"]
+
+
+def test_plasticity_figure_draws_the_plastic_zone_and_the_load_curve(examples, binary, tmp_path):
+    run_dir = tmp_path / "run"
+    text = (examples / "plastic_tube.toml").read_text().replace("size = 0.08", "size = 0.16")
+    problem = tmp_path / "tube.toml"
+    problem.write_text(text.replace("increments = 20", "increments = 8"))
+    bc.run(problem, output=run_dir)
+    command = subprocess.run([binary, "plot", str(run_dir)], capture_output=True, text=True)
+    assert command.returncode == 0, command.stderr
+    assert (run_dir / "figures" / "tube_plasticity.png").read_bytes()[:8] == PNG_SIGNATURE
+    result = plot._load_folder(run_dir)
+    fig = plot.plasticity_figure(result, "tube", "tube")
+    zone = _axes_titled(fig, "equivalent plastic strain")
+    polygons = plot.vtk_polygons((run_dir / "tube_cells.vtk").read_text())
+    cells = _csv_column(run_dir / "tube_cells.csv", "equivalent_plastic_strain")
+    assert len(polygons) == len(cells)
+    # The yielded cells' dots are the cells with plastic strain, at their centroids.
+    dots = zone.lines[0].get_xydata()
+    assert len(dots) == int(np.sum(cells > 0.0)) > 0
+    # The curve: the bore's force against its mean displacement along the force (the
+    # rollers' reactions do no work), from 0 up to 1.5 p_y and back to 0.
+    curve_axes = _axes_titled(fig, "load against displacement")
+    assert "'inner'" in curve_axes.get_xlabel()
+    curve = curve_axes.lines[0].get_xydata()
+    f1 = _csv_column(run_dir / "tube_steps.csv", "inner_f1")
+    f2 = _csv_column(run_dir / "tube_steps.csv", "inner_f2")
+    np.testing.assert_allclose(curve[1:, 1], np.hypot(f1, f2) * np.sign(f1), rtol=1e-9, atol=1e-12)
+    assert curve[0, 0] == 0.0 and curve[-1, 0] > 0.0  # a permanent expansion
