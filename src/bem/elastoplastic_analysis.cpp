@@ -1,6 +1,7 @@
 #include "bemcontact/bem/elastoplastic_analysis.hpp"
 
 #include <algorithm>
+#include <optional>
 #include <string>
 
 #include "bemcontact/bem/analysis.hpp"
@@ -28,6 +29,44 @@ std::vector<plasticity::Mandel> nodal_plastic_strain(const geometry::BoundaryMes
       }
   }
   return out;
+}
+
+// A yielded cell on a side of the cells' box where the body goes on beyond it: the first
+// such point, or none.
+std::optional<Vec2> zone_at_box_side(const std::vector<plasticity::Cell>& cells,
+                                     const std::vector<plasticity::J2State>& states,
+                                     const plasticity::CellMeshOptions& options,
+                                     const std::vector<plasticity::RegionLoop>& loops, double scale) {
+  if (!options.box) return std::nullopt;
+  const auto& [lo, hi] = *options.box;
+  const double tolerance = 1e-9 * scale, step = 1e-6 * scale;
+  const auto inside = [&](const Vec2& p) {
+    bool in = false;  // the even-odd rule over every loop
+    for (const auto& loop : loops)
+      for (std::size_t k = 0, n = loop.points.size(); k < n; ++k) {
+        const Vec2 &a = loop.points[k], &b = loop.points[(k + 1) % n];
+        if ((a.y() > p.y()) != (b.y() > p.y()) && p.x() < a.x() + (p.y() - a.y()) / (b.y() - a.y()) * (b.x() - a.x()))
+          in = !in;
+      }
+    return in;
+  };
+  for (std::size_t c = 0; c < cells.size(); ++c) {
+    if (!(states[c].equivalent_plastic_strain > 0.0)) continue;
+    const auto& v = cells[c].vertices;
+    for (std::size_t k = 0; k < v.size(); ++k) {
+      const Vec2 middle = 0.5 * (v[k] + v[(k + 1) % v.size()]);
+      for (int axis = 0; axis < 2; ++axis)
+        for (const double side : {-1.0, 1.0}) {
+          const double bound = side < 0 ? lo[axis] : hi[axis];
+          const Vec2 a = v[k], b = v[(k + 1) % v.size()];
+          if (std::abs(a[axis] - bound) > tolerance || std::abs(b[axis] - bound) > tolerance) continue;
+          Vec2 beyond = middle;
+          beyond[axis] += side * step;
+          if (inside(beyond)) return middle;
+        }
+    }
+  }
+  return std::nullopt;
 }
 
 }  // namespace
@@ -77,8 +116,9 @@ ElastoplasticResult solve_elastoplastic_body(const ProblemDefinition& problem, c
     throw InputError(p.where.file.empty() ? SourceLocation{problem.source_file, 0, "interior.points"} : p.where,
                      "point " + point_text(p.position) + " is not inside the body");
   }
+  const auto loops = region_loops(result.mesh, body.pieces);
   try {
-    result.cells = plasticity::region_cells(region_loops(result.mesh, body.pieces), plasticity.cells);
+    result.cells = plasticity::region_cells(loops, plasticity.cells);
   } catch (const InputError&) {
     throw;
   } catch (const Error& e) {
@@ -117,6 +157,10 @@ ElastoplasticResult solve_elastoplastic_body(const ProblemDefinition& problem, c
   result.states = region.states();
   result.cell_stress = region.cell_stress();
   clock.lap("load steps");
+  if (const auto at = zone_at_box_side(result.cells, result.states, plasticity.cells, loops, result.mesh.scale))
+    result.warnings.push_back(plasticity.cells_where.describe() + ": the plastic zone reaches the side of the cells' box at " +
+                              point_text(*at) + ", where the body goes on: the material beyond the box stays elastic "
+                              "and the answer is too stiff; enlarge the box");
   if (!problem.interior_points.empty()) {
     const ElementIntegrator integrator(problem.analysis, body.material);
     result.interior = interior_values(result.mesh, integrator, result.boundary, std::move(selection), progress,

@@ -378,6 +378,7 @@ RunOutput run_elastoplastic(const io::ProblemInput& input, const contact::Elasto
   const double read_seconds = seconds_since(started);
   add_geometry_warnings(output.warnings, problem.body, "");
   const auto result = bem::solve_elastoplastic_body(problem, history.times, history.amplitudes, options.progress);
+  output.warnings.insert(output.warnings.end(), result.warnings.begin(), result.warnings.end());
   add_mesh_warnings(output.warnings, result.mesh, "");
   add_small_strain_warning(output.warnings, result.mesh, result.boundary, "");
 

@@ -3,6 +3,7 @@
 // made from the region's [cells] (plasticity/region_cells.hpp), the region solved step by
 // step (bem/elastoplastic_region.hpp), and at each step's end the boundary values, the
 // boundary stresses with the cells' plastic strain, and the resultants.
+#include <string>
 #include <vector>
 
 #include "bemcontact/bem/elastoplastic_region.hpp"
@@ -30,6 +31,9 @@ struct ElastoplasticResult {
   std::vector<plasticity::J2State> states;
   std::vector<plasticity::Mandel> cell_stress;
   InteriorSolution interior;  // the [interior] points at the last step's end
+  // Where the answer may be wrong without an error: the plastic zone reaching the side of
+  // the cells' box inside the body (the material beyond stays elastic).
+  std::vector<std::string> warnings;
   PhaseTimings timings;
 };
 

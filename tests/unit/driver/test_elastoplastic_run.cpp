@@ -264,6 +264,25 @@ elements = 10
   EXPECT_GT(yielded, 5);
 }
 
+// The plastic zone reaching the side of the cells' box inside the body is a warning naming
+// [cells] (the answer is too stiff there); a box side on the body's boundary is not.
+TEST(ElastoplasticRun, WarnsWhenThePlasticZoneReachesTheBox) {
+  const auto warnings = [](const std::string& text) {
+    const auto output = run_problem(text, "tube.toml", {});
+    std::string all;
+    for (const auto& w : output.warnings) all += w + "\n";
+    return all;
+  };
+  const std::string tube = coarse_tube();
+  // The zone (to r = 1.33 along the bore) crosses x = 1.2 near y = 0.5.
+  const std::string narrow = warnings(replaced(tube, "size = 0.16", "size = 0.16\nbox = [[0.0, 0.0], [1.2, 2.0]]"));
+  EXPECT_NE(narrow.find("tube.toml:"), std::string::npos) << narrow;
+  EXPECT_NE(narrow.find("plastic zone reaches the side of the cells' box"), std::string::npos) << narrow;
+  // A box around the whole tube: its sides lie on the rollers or outside the body.
+  const std::string wide = warnings(replaced(tube, "size = 0.16", "size = 0.16\nbox = [[0.0, 0.0], [2.0, 2.0]]"));
+  EXPECT_EQ(wide.find("plastic zone"), std::string::npos) << wide;
+}
+
 TEST(ElastoplasticRun, RefusesWhatItDoesNotServe) {
   const std::string tube = coarse_tube();
   const auto expect = [](const std::string& message, const std::string& key, const std::string& what) {
