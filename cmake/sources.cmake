@@ -21,7 +21,8 @@ set(BEMCONTACT_PLASTICITY_SOURCES
   src/plasticity/cell_meshes.cpp
   src/plasticity/initial_stress.cpp
   src/plasticity/j2_material.cpp
-  src/plasticity/region_cells.cpp)
+  src/plasticity/region_cells.cpp
+  src/plasticity/ring_initial_stress.cpp)
 set(BEMCONTACT_OPERATORS_SOURCES
   src/operators/bordered_lu.cpp
   src/operators/dense_lu.cpp
