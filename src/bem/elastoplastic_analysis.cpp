@@ -8,6 +8,7 @@
 #include "bemcontact/bem/postprocess.hpp"
 #include "bemcontact/bem/resultants.hpp"
 #include "bemcontact/core/error.hpp"
+#include "bemcontact/core/limits.hpp"
 
 namespace bemcontact::bem {
 
@@ -102,8 +103,16 @@ std::vector<StressTensor> elastoplastic_boundary_stresses(const geometry::Bounda
   return boundary_stresses(mesh, type, material, solution, &plastic);
 }
 
+double elastoplastic_region_bytes(Index cells, Index nodes) {
+  const double unknowns = 3.0 * static_cast<double>(cells), values = 4.0 * static_cast<double>(nodes);
+  // K and the Newton system's coupling and matrix (4 (3m)^2); [b | B], A^-1 [b | B], the
+  // nodal values, Somigliana's rows (about 3 x 4n x 3m).
+  return 8.0 * (4.0 * unknowns * unknowns + 3.0 * values * unknowns);
+}
+
 ElastoplasticResult solve_elastoplastic_body(const ProblemDefinition& problem, const std::vector<double>& times,
-                                             const std::vector<double>& amplitudes, const ProgressCallback& progress) {
+                                             const std::vector<double>& amplitudes, const ProgressCallback& progress,
+                                             double memory_limit_bytes) {
   const BodyDefinition& body = problem.body;
   if (!body.plasticity) throw std::logic_error("solve_elastoplastic_body: the body has no yield stress");
   const RegionPlasticity& plasticity = *body.plasticity;
@@ -124,6 +133,13 @@ ElastoplasticResult solve_elastoplastic_body(const ProblemDefinition& problem, c
   } catch (const Error& e) {
     throw InputError(plasticity.cells_where, e.what());
   }
+  const double bytes = elastoplastic_region_bytes(static_cast<Index>(result.cells.size()), result.mesh.node_count());
+  if (memory_limit_bytes > 0.0 && bytes > memory_limit_bytes)
+    throw InputError(plasticity.cells_where,
+                     std::to_string(result.cells.size()) + " cells would take about " + format_bytes(bytes) +
+                         " of dense matrices, over the limit of " + format_bytes(memory_limit_bytes) +
+                         ": give larger cells or a box around where the body may yield, or raise the limit with "
+                         "--max-memory (GB) on a larger machine");
   clock.lap("mesh and cells");
 
   ElastoplasticRegion region(result.mesh, body, problem.analysis, plasticity.hardening, result.cells);

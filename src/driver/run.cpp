@@ -377,7 +377,8 @@ RunOutput run_elastoplastic(const io::ProblemInput& input, const contact::Elasto
   check_read(problem, input, options, output);
   const double read_seconds = seconds_since(started);
   add_geometry_warnings(output.warnings, problem.body, "");
-  const auto result = bem::solve_elastoplastic_body(problem, history.times, history.amplitudes, options.progress);
+  const auto result = bem::solve_elastoplastic_body(problem, history.times, history.amplitudes, options.progress,
+                                                    options.limits.memory_limit_bytes());
   output.warnings.insert(output.warnings.end(), result.warnings.begin(), result.warnings.end());
   add_mesh_warnings(output.warnings, result.mesh, "");
   add_small_strain_warning(output.warnings, result.mesh, result.boundary, "");

@@ -52,10 +52,16 @@ std::vector<StressTensor> elastoplastic_boundary_stresses(const geometry::Bounda
                                                           const std::vector<plasticity::Cell>& cells,
                                                           const std::vector<plasticity::J2State>& states);
 
-// InputError at the [cells] table when its cells cannot be made; SolverError (from the
-// region) when an increment fails after its cuts.
+// The dense matrices' bytes of an elastoplastic region of `cells` cells and `nodes` nodes:
+// the cell operator, the boundary's [b | B] and its solution, Somigliana's means, and the
+// Newton system at worst (every cell plastic).
+double elastoplastic_region_bytes(Index cells, Index nodes);
+
+// InputError at the [cells] table when its cells cannot be made, or when they would take
+// more than `memory_limit_bytes` (0: no limit; before anything large is allocated);
+// SolverError (from the region) when an increment fails after its cuts.
 ElastoplasticResult solve_elastoplastic_body(const ProblemDefinition& problem, const std::vector<double>& times,
                                              const std::vector<double>& amplitudes,
-                                             const ProgressCallback& progress = {});
+                                             const ProgressCallback& progress = {}, double memory_limit_bytes = 0.0);
 
 }  // namespace bemcontact::bem

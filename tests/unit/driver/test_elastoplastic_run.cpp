@@ -310,6 +310,17 @@ TEST(ElastoplasticRun, RefusesWhatItDoesNotServe) {
          "compressed");
   expect(input_error(replaced(tube, "[body.interior]", "[body.interior]\npoints = [[0.5, 0.5]]")), "interior",
          "not inside the body");
+  // Too many cells for the memory limit: refused before the dense set-up, naming [cells].
+  {
+    RunOptions small;
+    small.limits.max_memory_bytes = 3e6;  // above the boundary system (1.5 MB), below the 114 cells (7 MB)
+    try {
+      run_problem(tube, "tube.toml", small);
+      ADD_FAILURE() << "no memory refusal";
+    } catch (const InputError& error) {
+      expect(error.what(), "cells", "of dense matrices, over the limit");
+    }
+  }
   // A linear elastic region with cells: the cells would do nothing.
   expect(input_error(replaced(tube, "yield_stress = \"Y\"", "")), "cells", "linear elastic");
 }
