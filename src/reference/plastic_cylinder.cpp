@@ -50,10 +50,21 @@ double first_yield_pressure(double a, double b, const Material& material, double
   return yield_stress / plasticity::von_mises(unit);
 }
 
-std::vector<PlasticCylinderState> plastic_thick_cylinder(double a, double b, const Material& material,
-                                                         const plasticity::J2Hardening& hardening,
-                                                         const std::vector<double>& pressures, int elements,
-                                                         AnalysisType type) {
+namespace {
+
+enum class Shell { cylinder, sphere };
+
+// The thick cylinder (plane strain or plane stress) or sphere: linear elements in r, two
+// Gauss points each; strains (rr, tt, third) with the third eps_zz = 0 (plane strain), found
+// with sigma_zz = 0 (plane stress), or eps_pp = eps_tt = u / r (sphere); the virtual work per
+// radian (cylinder) or steradian (sphere): int sigma : delta eps r^k dr = p a^k delta u(a),
+// k = 1 or 2.
+std::vector<PlasticCylinderState> plastic_thick_shell(Shell shell, double a, double b, const Material& material,
+                                                      const plasticity::J2Hardening& hardening,
+                                                      const std::vector<double>& pressures, int elements,
+                                                      AnalysisType type) {
+  const bool sphere = shell == Shell::sphere, plane_stress = !sphere && type == AnalysisType::plane_stress;
+  const int power = sphere ? 2 : 1;
   // Nodes graded toward a (where it yields first): element lengths growing by 1 %.
   std::vector<double> r{a};
   const double growth = 1.01;
@@ -67,14 +78,15 @@ std::vector<PlasticCylinderState> plastic_thick_cylinder(double a, double b, con
   std::vector<plasticity::J2State> states(2 * static_cast<std::size_t>(elements));
   std::vector<double> axial(states.size(), 0.0);  // plane stress: eps_zz at each Gauss point
   Eigen::VectorXd u = Eigen::VectorXd::Zero(nodes);
-  // The elastic (rr, tt) stiffness: each increment's first step is elastic (from a state on
-  // the yield surface the perfectly plastic tangent would send an unloading step astray).
-  Eigen::Matrix2d elastic;
-  {
-    const plasticity::MandelMatrix C = plasticity::elastic_stiffness(material);
+  // The elastic (rr, tt, third) stiffness: each increment's first step is elastic (from a
+  // state on the yield surface the perfectly plastic tangent would send an unloading step
+  // astray). Plane stress condenses sigma_zz = 0 out.
+  Eigen::Matrix3d elastic = plasticity::elastic_stiffness(material).topLeftCorner<3, 3>();
+  if (plane_stress) {
+    const Eigen::Matrix3d C = elastic;
+    elastic.setZero();
     for (int i = 0; i < 2; ++i)
-      for (int j = 0; j < 2; ++j)
-        elastic(i, j) = type == AnalysisType::plane_stress ? C(i, j) - C(i, 2) * C(2, j) / C(2, 2) : C(i, j);
+      for (int j = 0; j < 2; ++j) elastic(i, j) = C(i, j) - C(i, 2) * C(2, j) / C(2, 2);
   }
   std::vector<PlasticCylinderState> out;
   for (const double p : pressures) {
@@ -84,36 +96,37 @@ std::vector<PlasticCylinderState> plastic_thick_cylinder(double a, double b, con
       Eigen::VectorXd lower = Eigen::VectorXd::Zero(nodes), diagonal = Eigen::VectorXd::Zero(nodes),
                       upper = Eigen::VectorXd::Zero(nodes);
       Eigen::VectorXd residual = Eigen::VectorXd::Zero(nodes);
-      residual[0] = -p * a;  // the pressure's work on u(a), per radian: internal - external
+      residual[0] = -p * std::pow(a, power);  // the pressure's work on u(a): internal - external
       for (int e = 0; e < elements; ++e) {
         const double r0 = r[e], r1 = r[e + 1], L = r1 - r0;
         for (int q = 0; q < 2; ++q) {
           const double xi = 0.5 * (1.0 + (q == 0 ? -g : g));
-          const double rq = r0 + xi * L, w = 0.5 * L * rq;
+          const double rq = r0 + xi * L, w = 0.5 * L * std::pow(rq, power);
           const Eigen::Vector2d N(1.0 - xi, xi), dN(-1.0 / L, 1.0 / L);
-          Eigen::Matrix2d B;  // rows: eps_rr, eps_tt; columns: the element's two nodes
+          Eigen::Matrix<double, 3, 2> B = Eigen::Matrix<double, 3, 2>::Zero();  // rows rr, tt, third
           B.row(0) = dN.transpose();
           B.row(1) = N.transpose() / rq;
-          const Eigen::Vector2d strain = B * u.segment<2>(e);
+          if (sphere) B.row(2) = B.row(1);
+          const Eigen::Vector3d strain = B * u.segment<2>(e);
           auto& update = updates[2 * static_cast<std::size_t>(e) + q];
           const std::size_t point = 2 * static_cast<std::size_t>(e) + q;
-          update = type == AnalysisType::plane_stress
+          update = plane_stress
                        ? plasticity::j2_update_plane_stress(material, hardening, states[point],
                                                             plasticity::mandel(strain[0], strain[1], axial[point], 0.0))
                        : plasticity::j2_update(material, hardening, states[point],
-                                               plasticity::mandel(strain[0], strain[1], 0.0, 0.0));
-          const Eigen::Vector2d sigma(update.stress[0], update.stress[1]);
+                                               plasticity::mandel(strain[0], strain[1], strain[2], 0.0));
+          const Eigen::Vector3d sigma(update.stress[0], update.stress[1], update.stress[2]);
           residual.segment<2>(e) += w * B.transpose() * sigma;
-          const Eigen::Matrix2d tangent = iteration == 0 ? elastic : Eigen::Matrix2d(update.tangent.topLeftCorner<2, 2>());
+          const Eigen::Matrix3d tangent = iteration == 0 ? elastic : Eigen::Matrix3d(update.tangent.topLeftCorner<3, 3>());
           const Eigen::Matrix2d k = w * B.transpose() * tangent * B;
           diagonal[e] += k(0, 0), diagonal[e + 1] += k(1, 1), upper[e] += k(0, 1), lower[e + 1] += k(1, 0);
         }
       }
-      const double scale = (std::abs(p) + hardening.yield_stress) * a;  // force per radian
+      const double scale = (std::abs(p) + hardening.yield_stress) * std::pow(a, power);
       if (residual.cwiseAbs().maxCoeff() <= 1e-11 * scale) break;
       if (iteration == 50)
-        throw SolverError("plastic_thick_cylinder: no convergence at pressure " + std::to_string(p) +
-                          " (beyond the limit pressure?)");
+        throw SolverError(std::string(sphere ? "plastic_thick_sphere" : "plastic_thick_cylinder") +
+                          ": no convergence at pressure " + std::to_string(p) + " (beyond the limit pressure?)");
       u -= solve_tridiagonal(lower, diagonal, upper, residual);
     }
     for (std::size_t k = 0; k < states.size(); ++k) states[k] = updates[k].state, axial[k] = updates[k].strain[2];
@@ -135,6 +148,31 @@ std::vector<PlasticCylinderState> plastic_thick_cylinder(double a, double b, con
     out.push_back(std::move(s));
   }
   return out;
+}
+
+}  // namespace
+
+std::vector<PlasticCylinderState> plastic_thick_cylinder(double a, double b, const Material& material,
+                                                         const plasticity::J2Hardening& hardening,
+                                                         const std::vector<double>& pressures, int elements,
+                                                         AnalysisType type) {
+  return plastic_thick_shell(Shell::cylinder, a, b, material, hardening, pressures, elements, type);
+}
+
+std::vector<PlasticCylinderState> plastic_thick_sphere(double a, double b, const Material& material,
+                                                       const plasticity::J2Hardening& hardening,
+                                                       const std::vector<double>& pressures, int elements) {
+  return plastic_thick_shell(Shell::sphere, a, b, material, hardening, pressures, elements, AnalysisType::axisymmetric);
+}
+
+double sphere_first_yield_pressure(double a, double b, double yield_stress) {
+  // Lame's sphere at r = a, per unit pressure: s_tt - s_rr = (3/2) b^3 / (b^3 - a^3), the von
+  // Mises stress (s_pp = s_tt).
+  return yield_stress * 2.0 * (b * b * b - a * a * a) / (3.0 * b * b * b);
+}
+
+double sphere_plastic_pressure(double a, double b, double c, double yield_stress) {
+  return 2.0 * yield_stress * std::log(c / a) + 2.0 * yield_stress / 3.0 * (1.0 - c * c * c / (b * b * b));
 }
 
 }  // namespace bemcontact::reference

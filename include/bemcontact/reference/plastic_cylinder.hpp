@@ -41,4 +41,17 @@ std::vector<PlasticCylinderState> plastic_thick_cylinder(double a, double b, con
 double first_yield_pressure(double a, double b, const Material& material, double yield_stress,
                             AnalysisType type = AnalysisType::plane_strain);
 
+// The thick sphere a <= r <= b under internal pressure, the same way (eps_tt = eps_pp = u/r,
+// the virtual work weighted by r^2): the reference of validate plastic-sphere. The state's
+// stress is (rr, tt, pp, 0).
+std::vector<PlasticCylinderState> plastic_thick_sphere(double a, double b, const Material& material,
+                                                       const plasticity::J2Hardening& hardening,
+                                                       const std::vector<double>& pressures, int elements);
+
+// The sphere's first-yield pressure (Lame: s_tt - s_rr = (3/2) p b^3 / (b^3 - a^3) at r = a
+// [Hill1950, ch. V]), and, elastic-perfectly plastic, the pressure at which the plastic zone
+// reaches r = c, p = 2Y ln(c/a) + (2Y/3)(1 - c^3/b^3) [Hill1950, ch. V].
+double sphere_first_yield_pressure(double a, double b, double yield_stress);
+double sphere_plastic_pressure(double a, double b, double c, double yield_stress);
+
 }  // namespace bemcontact::reference

@@ -69,6 +69,35 @@ TEST(PlasticCylinder, ReferenceIsLameBelowYieldAndLevelsAtTheLimitPressure) {
 //    cell yields again);
 //  - the cells that yielded lie inside the reference's plastic radius plus a cell;
 //  - Newton takes at most 6 iterations per increment and holds no cell on the surface.
+// The sphere's reference (a = 1, b = 2, perfectly plastic): Lame's displacement below first
+// yield, and beyond it Hill's solution [Hill1950, ch. V]: the plastic radius c where
+// p = 2Y ln(c/a) + (2Y/3)(1 - c^3/b^3), s_rr = -p + 2Y ln(r/a) and s_tt = s_rr + Y inside it.
+TEST(PlasticCylinder, SphereReferenceIsHillsSolution) {
+  const double a = 1.0, b = 2.0, Y = perfect.yield_stress;
+  const double py = reference::sphere_first_yield_pressure(a, b, Y);
+  const double c = 1.4, p = reference::sphere_plastic_pressure(a, b, c, Y);
+  ASSERT_GT(p, py);
+  const auto states = reference::plastic_thick_sphere(a, b, steel, perfect, {0.5 * py, 0.99 * py, 1.01 * py, p}, 400);
+  // Lame: u(a) = p a^3 / (E (b^3 - a^3)) [(1 - 2 nu) a + (1 + nu) b^3 / (2 a^2)].
+  const double lame = 0.5 * py * a * a * a / (steel.young_modulus * (b * b * b - a * a * a)) *
+                      ((1 - 2 * steel.poisson_ratio) * a + (1 + steel.poisson_ratio) * b * b * b / (2 * a * a));
+  EXPECT_NEAR(states[0].inner_displacement, lame, 1e-5 * lame);
+  EXPECT_EQ(states[1].plastic_radius, a);  // no Gauss point yielded
+  EXPECT_GT(states[2].plastic_radius, a);
+  const auto& s = states[3];
+  EXPECT_NEAR(s.plastic_radius, c, 0.01);  // within the graded mesh's element there (about 0.004)
+  // Per element (the mean of its two Gauss points: linear elements' plastic strain, nearly
+  // isochoric, alternates by 0.2 % of Y between them).
+  for (std::size_t g = 0; g + 1 < s.radii.size(); g += 2) {
+    const double r = 0.5 * (s.radii[g] + s.radii[g + 1]);
+    if (r > c - 0.02) continue;
+    const double rr = 0.5 * (s.stress[g][0] + s.stress[g + 1][0]), tt = 0.5 * (s.stress[g][1] + s.stress[g + 1][1]);
+    EXPECT_NEAR(rr, -p + 2 * Y * std::log(r / a), 2e-3 * Y) << r;
+    EXPECT_NEAR(tt - rr, Y, 2e-3 * Y) << r;
+    EXPECT_NEAR(s.stress[g][2], s.stress[g][1], 1e-9 * Y) << r;
+  }
+}
+
 TEST(PlasticCylinder, RegionConvergesToTheReference) {
   auto file = io::read_problem_file(std::string(BEMCONTACT_EXAMPLES_DIR) + "/thick_ring_plane_strain.toml", {{"p", 1.0}});
   const auto& problem = file.problem;
