@@ -9,7 +9,9 @@
 #include "bemcontact/bem/assembly.hpp"
 #include "bemcontact/bem/boundary_system.hpp"
 #include "bemcontact/core/error.hpp"
+#include "bemcontact/integration/axisymmetric_element.hpp"
 #include "bemcontact/integration/plane_element.hpp"
+#include "bemcontact/plasticity/ring_initial_stress.hpp"
 #include "bemcontact/operators/dense_lu.hpp"
 
 namespace bemcontact::bem {
@@ -20,7 +22,6 @@ using plasticity::J2Hardening;
 using plasticity::j2_update;
 using plasticity::mandel;
 using plasticity::in_plane_stiffness;
-using plasticity::InitialStress;
 using plasticity::J2State;
 using plasticity::J2Update;
 using plasticity::Mandel;
@@ -31,8 +32,54 @@ namespace {
 const double kSqrt2 = std::sqrt(2.0);
 
 
-// The 3D strain (Mandel) of the in-plane tensor components, eps_33 = 0.
-Mandel strain_of(const Eigen::Vector3d& E) { return mandel(E[0], E[1], 0.0, E[2]); }
+// The cells' kernels and components: plane (11, 22, 12) or axisymmetric (rr, zz, rz, tt),
+// the tensor components of a cell's strain, stress and initial stress.
+struct CellKernels {
+  AnalysisType type;
+  Material material;
+  kernels::KelvinPlane plane;
+  kernels::KelvinAxisymmetric ring;
+  integration::AxisymmetricKelvin axi;
+  int d = 3;
+
+  CellKernels(AnalysisType t, const Material& m)
+      : type(t), material(m),
+        plane(kernels::KelvinPlane::from(t == AnalysisType::axisymmetric ? AnalysisType::plane_strain : t, m)),
+        ring{m.shear_modulus(), m.poisson_ratio}, axi(integration::AxisymmetricKelvin::from(m)),
+        d(t == AnalysisType::axisymmetric ? 4 : 3) {}
+  bool axisymmetric() const { return d == 4; }
+
+  // The displacement at x per unit initial stress component of the cell (2 x d).
+  Matrix displacement(const Vec2& x, const Cell& cell) const {
+    if (axisymmetric()) return plasticity::ring_cell_displacement_influence(ring, x, cell);
+    return plasticity::cell_displacement_influence(plane, x, cell);
+  }
+  // C eps at x per unit initial stress component of the cell (d x d).
+  Matrix stress(const Vec2& x, const Cell& cell) const {
+    if (axisymmetric()) return plasticity::ring_cell_stress_influence(ring, x, cell);
+    return plasticity::cell_stress_influence(plane, x, cell);
+  }
+  // C on the components: plane strain's or plane stress's in-plane one, or the 3D one on
+  // (rr, zz, rz, tt).
+  Matrix stiffness() const {
+    if (!axisymmetric()) return plasticity::in_plane_stiffness(type, material);
+    const double G = material.shear_modulus(), nu = material.poisson_ratio;
+    const double lambda = 2.0 * G * nu / (1.0 - 2.0 * nu);
+    Matrix C = Matrix::Zero(4, 4);
+    for (const int i : {0, 1, 3})
+      for (const int j : {0, 1, 3}) C(i, j) = lambda + (i == j ? 2.0 * G : 0.0);
+    C(2, 2) = 2.0 * G;
+    return C;
+  }
+  // The Mandel vector (11, 22, 33, sqrt2 12) of a cell's strain (plane: eps_33 given).
+  Mandel strain_of(const Vector& E, double eps33 = 0.0) const {
+    return axisymmetric() ? mandel(E[0], E[1], E[3], E[2]) : mandel(E[0], E[1], eps33, E[2]);
+  }
+  // The Mandel row of each component (its third, 12 or rz, is sqrt2 times the tensor's).
+  std::vector<int> mandel_rows() const {
+    return axisymmetric() ? std::vector<int>{0, 1, 3, 2} : std::vector<int>{0, 1, 3};
+  }
+};
 
 // The conditions with their prescribed values times `scale`.
 std::vector<NodeCondition> scaled(std::vector<NodeCondition> conditions, double scale) {
@@ -75,26 +122,39 @@ std::vector<MeanPoints> cell_mean_points(const geometry::BoundaryMesh& mesh, con
 
 // Somigliana's C E averaged over each cell (its mean points) as a map of the nodal (u, t):
 // sigma = int D t - int S u (I.14), the elements' images across symmetry lines included
-// (their nodal values S times the element's); 3 rows per cell (11, 22, 12).
-Matrix mean_somigliana_rows(const geometry::BoundaryMesh& mesh, const kernels::KelvinPlane& kelvin,
+// (their nodal values S times the element's); d rows per cell (11, 22, 12, and tt in
+// axisymmetry). Each cell's rows by one thread: deterministic for any thread count.
+Matrix mean_somigliana_rows(const geometry::BoundaryMesh& mesh, const CellKernels& kernels,
                             const std::vector<MeanPoints>& means) {
-  const Index n = mesh.node_count(), m = static_cast<Index>(means.size());
-  Matrix rows = Matrix::Zero(3 * m, 4 * n);
+  const Index n = mesh.node_count(), m = static_cast<Index>(means.size()), d = kernels.d;
+  Matrix rows = Matrix::Zero(d * m, 4 * n);
   const auto add = [&](Index c, double weight, const geometry::BoundaryElement& element, const Mat2& S,
                        const Vec2& x) {
-    const auto s = integration::integrate_plane_element_stress(kelvin, x, element);
+    integration::ElementStressInfluence s;
+    integration::AxisymmetricStressInfluence ring;
+    if (kernels.axisymmetric()) {
+      ring = integration::integrate_axisymmetric_element_stress(kernels.axi, x, element);
+      s = ring.in_plane;
+    } else {
+      s = integration::integrate_plane_element_stress(kernels.plane, x, element);
+    }
     for (int a = 0; a < element.node_count; ++a)
       for (int l = 0; l < 2; ++l) {  // the node's own component l, S(k, l) of it in the image's component k
         Mat2 D = Mat2::Zero(), Sk = Mat2::Zero();
-        for (int k = 0; k < 2; ++k) D += S(k, l) * s.D[a][k], Sk += S(k, l) * s.S[a][k];
-        D *= weight, Sk *= weight;
+        double hoop_D = 0.0, hoop_S = 0.0;
+        for (int k = 0; k < 2; ++k) {
+          D += S(k, l) * s.D[a][k], Sk += S(k, l) * s.S[a][k];
+          hoop_D += S(k, l) * ring.hoop_D[a][k], hoop_S += S(k, l) * ring.hoop_S[a][k];
+        }
         const Index u = 2 * element.nodes[a] + l, t = 2 * n + u;
-        rows(3 * c, t) += D(0, 0), rows(3 * c + 1, t) += D(1, 1);
-        rows(3 * c + 2, t) += 0.5 * (D(0, 1) + D(1, 0));
-        rows(3 * c, u) -= Sk(0, 0), rows(3 * c + 1, u) -= Sk(1, 1);
-        rows(3 * c + 2, u) -= 0.5 * (Sk(0, 1) + Sk(1, 0));
+        rows(d * c, t) += weight * D(0, 0), rows(d * c + 1, t) += weight * D(1, 1);
+        rows(d * c + 2, t) += weight * 0.5 * (D(0, 1) + D(1, 0));
+        rows(d * c, u) -= weight * Sk(0, 0), rows(d * c + 1, u) -= weight * Sk(1, 1);
+        rows(d * c + 2, u) -= weight * 0.5 * (Sk(0, 1) + Sk(1, 0));
+        if (kernels.axisymmetric()) rows(d * c + 3, t) += weight * hoop_D, rows(d * c + 3, u) -= weight * hoop_S;
       }
   };
+#pragma omp parallel for schedule(dynamic, 1)
   for (Index c = 0; c < m; ++c)
     for (const auto& [x, weight] : means[static_cast<std::size_t>(c)])
       for (const auto& element : mesh.elements) {
@@ -105,15 +165,15 @@ Matrix mean_somigliana_rows(const geometry::BoundaryMesh& mesh, const kernels::K
 }
 
 // A cell and its images across the symmetry lines, each with the map of the cell's initial
-// stress components (11, 22, 12) to its own: sigma0' = S sigma0 S^T.
+// stress components to its own: sigma0' = S sigma0 S^T (the hoop component unchanged).
 struct CellImage {
   Cell cell;
-  Matrix33 stress_map;
+  Matrix stress_map;
 };
-std::vector<CellImage> cell_and_images(const Cell& cell, const std::vector<geometry::ImageMap>& images) {
-  std::vector<CellImage> out{{cell, Matrix33::Identity()}};
+std::vector<CellImage> cell_and_images(const Cell& cell, const std::vector<geometry::ImageMap>& images, int d) {
+  std::vector<CellImage> out{{cell, Matrix::Identity(d, d)}};
   for (const auto& image : images) {
-    CellImage mirrored;
+    CellImage mirrored{{}, Matrix::Identity(d, d)};
     for (const Vec2& v : cell.vertices) mirrored.cell.vertices.push_back(image.apply(v));
     if (image.reverses()) std::reverse(mirrored.cell.vertices.begin(), mirrored.cell.vertices.end());
     const Mat2& S = image.matrix;
@@ -122,7 +182,7 @@ std::vector<CellImage> cell_and_images(const Cell& cell, const std::vector<geome
       if (j < 2) unit(j, j) = 1.0;
       else unit(0, 1) = unit(1, 0) = 1.0;
       const Mat2 mapped = S * unit * S.transpose();
-      mirrored.stress_map.col(j) = Eigen::Vector3d(mapped(0, 0), mapped(1, 1), mapped(0, 1));
+      mirrored.stress_map.block(0, j, 3, 1) = Eigen::Vector3d(mapped(0, 0), mapped(1, 1), mapped(0, 1));
     }
     out.push_back(std::move(mirrored));
   }
@@ -132,28 +192,29 @@ std::vector<CellImage> cell_and_images(const Cell& cell, const std::vector<geome
 // Adds the cells' direct fields (and their images') to K: C E averaged over cell c per unit
 // initial stress of cell e. A cell far from cell e (centroids more than kFarCells sizes
 // apart) takes the field at its centroid for its mean: the difference is of order
-// (size / distance)^2 of a small term.
-void add_cell_fields(const kernels::KelvinPlane& kelvin, const std::vector<Cell>& cells,
-                     const std::vector<MeanPoints>& means, const std::vector<geometry::ImageMap>& images, Matrix& K) {
+// (size / distance)^2 of a small term. Each row block by one thread: deterministic for any
+// thread count.
+void add_cell_fields(const CellKernels& kernels, const std::vector<Cell>& cells, const std::vector<MeanPoints>& means,
+                     const std::vector<geometry::ImageMap>& images, Matrix& K) {
   constexpr double kFarCells = 6.25;  // not a lattice distance of equal cells (12.5 sizes): no tie on a grid
   const std::size_t m = cells.size();
+  const Index d = kernels.d;
   std::vector<Vec2> centroid(m);
   std::vector<double> size(m);
   for (std::size_t e = 0; e < m; ++e) centroid[e] = cells[e].centroid(), size[e] = std::sqrt(std::abs(cells[e].area()));
   std::vector<std::vector<CellImage>> sources(m);
-  for (std::size_t e = 0; e < m; ++e) sources[e] = cell_and_images(cells[e], images);
+  for (std::size_t e = 0; e < m; ++e) sources[e] = cell_and_images(cells[e], images, kernels.d);
+#pragma omp parallel for schedule(dynamic, 1)
   for (std::size_t c = 0; c < m; ++c) {
     const auto& points = means[c];
     for (std::size_t e = 0; e < m; ++e) {
-      auto block = K.block<3, 3>(3 * static_cast<Index>(c), 3 * static_cast<Index>(e));
+      auto block = K.block(d * static_cast<Index>(c), d * static_cast<Index>(e), d, d);
       for (const auto& source : sources[e]) {
-        const Vec2 source_centroid = source.cell.centroid();
-        if ((source_centroid - centroid[c]).norm() > kFarCells * (size[c] + size[e])) {
-          block += cell_stress_influence(kelvin, centroid[c], source.cell) * source.stress_map;
+        if ((source.cell.centroid() - centroid[c]).norm() > kFarCells * (size[c] + size[e])) {
+          block += kernels.stress(centroid[c], source.cell) * source.stress_map;
           continue;
         }
-        for (const auto& [x, weight] : points)
-          block += weight * cell_stress_influence(kelvin, x, source.cell) * source.stress_map;
+        for (const auto& [x, weight] : points) block += weight * kernels.stress(x, source.cell) * source.stress_map;
       }
     }
   }
@@ -166,28 +227,29 @@ ElastoplasticRegion::~ElastoplasticRegion() = default;
 
 ElastoplasticRegion::ElastoplasticRegion(const geometry::BoundaryMesh& mesh, const BodyDefinition& body,
                                          AnalysisType type, const J2Hardening& hardening, std::vector<Cell> cells)
-    : mesh_(mesh), type_(type), material_(body.material), hardening_(hardening), cells_(std::move(cells)) {
-  if (type == AnalysisType::axisymmetric)
-    throw Error("body '" + body.name + "': elastoplastic regions are plane (strain or stress) for now");
+    : mesh_(mesh), type_(type), material_(body.material), hardening_(hardening), cells_(std::move(cells)),
+      components_(type == AnalysisType::axisymmetric ? 4 : 3) {
   if (!(hardening_.yield_stress > 0.0) || hardening_.isotropic < 0.0 || hardening_.kinematic < 0.0)
     throw Error("body '" + body.name + "': the yield stress must be > 0 and the hardening moduli >= 0");
   conditions_ = resolve_node_conditions(mesh_, body, type);
   constraints_ = resolve_point_constraints(mesh_, body, conditions_);
   const ElementIntegrator integrator(type, material_);
-  const auto kelvin = kernels::KelvinPlane::from(type, material_);
+  const CellKernels kernels(type, material_);
+  const Index d = components_;
   auto matrices = assemble_influence_matrices(mesh_, integrator);
   auto system = build_boundary_system(matrices, conditions_, constraints_);
   const Index n = mesh_.node_count(), rows = system.b.size(), m = static_cast<Index>(cells_.size());
-  // [b | B]: the cells' domain term at the collocation nodes (the boundary equation's rows).
-  boundary_rhs_ = Matrix::Zero(rows, 1 + 3 * m);
+  // [b | B]: the cells' domain term at the collocation nodes (the boundary equation's rows),
+  // each cell's columns by one thread.
+  boundary_rhs_ = Matrix::Zero(rows, 1 + d * m);
   boundary_rhs_.col(0) = system.b;
+#pragma omp parallel for schedule(dynamic, 1)
   for (Index e = 0; e < m; ++e) {
-    const auto sources = cell_and_images(cells_[static_cast<std::size_t>(e)], mesh_.images);
+    const auto sources = cell_and_images(cells_[static_cast<std::size_t>(e)], mesh_.images, kernels.d);
     for (Index i = 0; i < n; ++i) {
-      auto block = boundary_rhs_.block<2, 3>(2 * i, 1 + 3 * e);
+      auto block = boundary_rhs_.block(2 * i, 1 + d * e, 2, d);
       for (const auto& source : sources)
-        block += cell_displacement_influence(kelvin, mesh_.nodes[static_cast<std::size_t>(i)].position, source.cell) *
-                 source.stress_map;
+        block += kernels.displacement(mesh_.nodes[static_cast<std::size_t>(i)].position, source.cell) * source.stress_map;
     }
   }
   const operators::DenseLU lu(std::move(system.A), "the boundary element system of body '" + body.name + "'");
@@ -196,37 +258,42 @@ ElastoplasticRegion::ElastoplasticRegion(const geometry::BoundaryMesh& mesh, con
   // C E = a s + K sigma0: through the boundary (Somigliana's means of the solved (u, t)),
   // then the cells' own fields.
   const std::vector<NodeCondition> unloaded = scaled(conditions_, 0.0);
-  Matrix values(4 * n, 1 + 3 * m);
-  for (Index j = 0; j < 1 + 3 * m; ++j)
+  Matrix values(4 * n, 1 + d * m);
+  for (Index j = 0; j < 1 + d * m; ++j)
     values.col(j) = boundary_values(boundary_unknowns_.col(j), j == 0 ? conditions_ : unloaded, constraints_);
   const auto means = cell_mean_points(mesh_, cells_);
-  const Matrix through_boundary = mean_somigliana_rows(mesh_, kelvin, means) * values;
+  const Matrix through_boundary = mean_somigliana_rows(mesh_, kernels, means) * values;
   load_stress_ = through_boundary.col(0);
-  cell_operator_ = through_boundary.rightCols(3 * m);
-  add_cell_fields(kelvin, cells_, means, mesh_.images, cell_operator_);
+  cell_operator_ = through_boundary.rightCols(d * m);
+  add_cell_fields(kernels, cells_, means, mesh_.images, cell_operator_);
   states_.assign(static_cast<std::size_t>(m), J2State{});
   stress_.assign(static_cast<std::size_t>(m), Mandel::Zero());
   thickness_strain_.assign(static_cast<std::size_t>(m), 0.0);
 }
 
-InitialStress ElastoplasticRegion::initial_stress(const Mandel& plastic_strain) const {
-  // sigma0 = C eps_p in the in-plane equations: plane strain's 3D C with eps_p33 in the trace;
-  // plane stress's reduced C of the in-plane eps_p (eps_p33 only moves eps_33).
+Vector ElastoplasticRegion::initial_stress(const Mandel& plastic_strain) const {
+  // sigma0 = C eps_p on the cell's components: plane strain's and axisymmetry's 3D C with
+  // eps_p33 (eps_p tt) in the trace; plane stress's reduced C of the in-plane eps_p (eps_p33
+  // only moves eps_33).
   if (type_ == AnalysisType::plane_stress)
     return in_plane_stiffness(type_, material_) *
            Eigen::Vector3d(plastic_strain[0], plastic_strain[1], component12(plastic_strain));
   const double G = material_.shear_modulus(), nu = material_.poisson_ratio;
   const double lambda = 2.0 * G * nu / (1.0 - 2.0 * nu);
   const double trace = plastic_strain.head<3>().sum();
-  return InitialStress(lambda * trace + 2 * G * plastic_strain[0], lambda * trace + 2 * G * plastic_strain[1],
-                       2 * G * component12(plastic_strain));
+  Vector sigma0(components_);
+  sigma0[0] = lambda * trace + 2 * G * plastic_strain[0];
+  sigma0[1] = lambda * trace + 2 * G * plastic_strain[1];
+  sigma0[2] = 2 * G * component12(plastic_strain);
+  if (components_ == 4) sigma0[3] = lambda * trace + 2 * G * plastic_strain[2];
+  return sigma0;
 }
 
 // The residual F(E) of an increment to `amplitude`, with each cell's update and
 // d sigma0 / d E (the Newton system's blocks).
 struct ElastoplasticRegion::Evaluation {
   std::vector<J2Update> updates;
-  std::vector<Matrix33> slope;
+  std::vector<Matrix> slope;
   Vector F;
   double norm = 0.0;  // max |F| / (Y / E)
   Index worst = 0;    // the cell where it is largest
@@ -234,41 +301,44 @@ struct ElastoplasticRegion::Evaluation {
 
 ElastoplasticRegion::Evaluation ElastoplasticRegion::evaluate(const Vector& E, double amplitude,
                                                               const std::vector<char>& held) const {
-  const Index m = static_cast<Index>(cells_.size());
-  const Matrix33 C = in_plane_stiffness(type_, material_);
-  const Matrix33 compliance = C.inverse();
-  // The in-plane stress and its tangent on tensor components (11, 22, 12) from the Mandel
-  // update: sigma_12 = m_3 / sqrt2, and m_3 = sqrt2 E_12 in the strain.
-  const std::array<int, 3> rows{0, 1, 3};
-  const Eigen::Vector3d out_scale(1.0, 1.0, 1.0 / kSqrt2), in_scale(1.0, 1.0, kSqrt2);
+  const Index m = static_cast<Index>(cells_.size()), d = components_;
+  const CellKernels kernels(type_, material_);
+  const Matrix C = kernels.stiffness();
+  const Matrix compliance = C.inverse();
+  // The stress and its tangent on the tensor components from the Mandel update:
+  // sigma_12 = m_3 / sqrt2, and m_3 = sqrt2 E_12 in the strain.
+  const std::vector<int> rows = kernels.mandel_rows();
+  Vector out_scale = Vector::Ones(d), in_scale = Vector::Ones(d);
+  out_scale[2] = 1.0 / kSqrt2, in_scale[2] = kSqrt2;  // the 12 (rz) component is third
   Evaluation out;
   out.updates.resize(static_cast<std::size_t>(m));
   out.slope.resize(static_cast<std::size_t>(m));
-  Vector sigma0(3 * m);
+  Vector sigma0(d * m);
   for (Index e = 0; e < m; ++e) {
     const auto k = static_cast<std::size_t>(e);
     auto& update = out.updates[k];
-    const Eigen::Vector3d strain = E.segment<3>(3 * e);
+    const Vector strain = E.segment(d * e, d);
     update = type_ == AnalysisType::plane_stress
                  ? plasticity::j2_update_plane_stress(material_, hardening_, states_[k],
-                                                      mandel(strain[0], strain[1], thickness_strain_[k], strain[2]),
-                                                      1e-12, held[k] != 0)
-                 : j2_update(material_, hardening_, states_[k], strain_of(strain), held[k] != 0);
-    Eigen::Vector3d stress;
-    Matrix33 tangent;
-    for (int i = 0; i < 3; ++i) {
-      stress[i] = out_scale[i] * update.stress[rows[i]];
-      for (int j = 0; j < 3; ++j) tangent(i, j) = out_scale[i] * update.tangent(rows[i], rows[j]) * in_scale[j];
+                                                      kernels.strain_of(strain, thickness_strain_[k]), 1e-12,
+                                                      held[k] != 0)
+                 : j2_update(material_, hardening_, states_[k], kernels.strain_of(strain), held[k] != 0);
+    Vector stress(d);
+    Matrix tangent(d, d);
+    for (Index i = 0; i < d; ++i) {
+      stress[i] = out_scale[i] * update.stress[rows[static_cast<std::size_t>(i)]];
+      for (Index j = 0; j < d; ++j)
+        tangent(i, j) = out_scale[i] * update.tangent(rows[static_cast<std::size_t>(i)], rows[static_cast<std::size_t>(j)]) * in_scale[j];
     }
     // sigma = C E - sigma0: the initial stress the update leaves, and its slope.
-    sigma0.segment<3>(3 * e) = C * strain - stress;
+    sigma0.segment(d * e, d) = C * strain - stress;
     out.slope[k] = C - tangent;
   }
   const Vector target = amplitude * load_stress_ + cell_operator_ * sigma0;  // C E as the cells' fields give it
-  out.F.resize(3 * m);
-  for (Index e = 0; e < m; ++e) out.F.segment<3>(3 * e) = E.segment<3>(3 * e) - compliance * target.segment<3>(3 * e);
+  out.F.resize(d * m);
+  for (Index e = 0; e < m; ++e) out.F.segment(d * e, d) = E.segment(d * e, d) - compliance * target.segment(d * e, d);
   out.norm = m > 0 ? out.F.cwiseAbs().maxCoeff(&out.worst) / (hardening_.yield_stress / material_.young_modulus) : 0.0;
-  out.worst /= 3;
+  out.worst /= d;
   return out;
 }
 
@@ -278,14 +348,15 @@ ElastoplasticRegion::Evaluation ElastoplasticRegion::evaluate(const Vector& E, d
 bool ElastoplasticRegion::solve_increment(double amplitude, int max_iterations, double tolerance,
                                           IncrementReport& report, std::string& failure) {
   const Index m = static_cast<Index>(cells_.size());
-  const Matrix33 compliance = in_plane_stiffness(type_, material_).inverse();
+  const Index d = components_;
+  const Matrix compliance = CellKernels(type_, material_).stiffness().inverse();
   // The elastic predictor: the new load with the plastic strains of the last increment.
-  Vector E(3 * m);
+  Vector E(d * m);
   {
-    Vector sigma0(3 * m);
-    for (Index e = 0; e < m; ++e) sigma0.segment<3>(3 * e) = initial_stress(states_[static_cast<std::size_t>(e)].plastic_strain);
+    Vector sigma0(d * m);
+    for (Index e = 0; e < m; ++e) sigma0.segment(d * e, d) = initial_stress(states_[static_cast<std::size_t>(e)].plastic_strain);
     const Vector target = amplitude * load_stress_ + cell_operator_ * sigma0;
-    for (Index e = 0; e < m; ++e) E.segment<3>(3 * e) = compliance * target.segment<3>(3 * e);
+    for (Index e = 0; e < m; ++e) E.segment(d * e, d) = compliance * target.segment(d * e, d);
   }
   // Cells that cycled between elastic and plastic are held on the yield surface (j2_update).
   std::vector<char> held(static_cast<std::size_t>(m), 0);
@@ -321,26 +392,26 @@ bool ElastoplasticRegion::solve_increment(double amplitude, int max_iterations, 
     for (Index e = 0; e < m; ++e)
       if (!current.slope[static_cast<std::size_t>(e)].isZero(0.0)) plastic.push_back(e);
     const Index p = static_cast<Index>(plastic.size());
-    Matrix coupling(3 * m, 3 * p);  // the plastic cells' columns of J - I
+    Matrix coupling(d * m, d * p);  // the plastic cells' columns of J - I
     for (Index j = 0; j < p; ++j) {
       const Index e = plastic[static_cast<std::size_t>(j)];
-      coupling.middleCols<3>(3 * j) = cell_operator_.middleCols<3>(3 * e) * current.slope[static_cast<std::size_t>(e)];
+      coupling.middleCols(d * j, d) = cell_operator_.middleCols(d * e, d) * current.slope[static_cast<std::size_t>(e)];
     }
-    for (Index c = 0; c < m; ++c) coupling.middleRows<3>(3 * c) = -compliance * coupling.middleRows<3>(3 * c);
-    Matrix J(3 * p, 3 * p);
-    Matrix step_plastic(3 * p, 1);
+    for (Index c = 0; c < m; ++c) coupling.middleRows(d * c, d) = -compliance * coupling.middleRows(d * c, d);
+    Matrix J(d * p, d * p);
+    Matrix step_plastic(d * p, 1);
     for (Index i = 0; i < p; ++i) {
-      J.middleRows<3>(3 * i) = coupling.middleRows<3>(3 * plastic[static_cast<std::size_t>(i)]);
-      step_plastic.middleRows<3>(3 * i) = -current.F.segment<3>(3 * plastic[static_cast<std::size_t>(i)]);
+      J.middleRows(d * i, d) = coupling.middleRows(d * plastic[static_cast<std::size_t>(i)], d);
+      step_plastic.middleRows(d * i, d) = -current.F.segment(d * plastic[static_cast<std::size_t>(i)], d);
     }
-    J += Matrix::Identity(3 * p, 3 * p);
+    J += Matrix::Identity(d * p, d * p);
     if (p > 0) {
       const operators::DenseLU lu(std::move(J), "the elastoplastic Newton system");
       lu.solve_in_place(step_plastic);
     }
     Matrix step = -current.F - coupling * step_plastic;
     for (Index i = 0; i < p; ++i)
-      step.middleRows<3>(3 * plastic[static_cast<std::size_t>(i)]) = step_plastic.middleRows<3>(3 * i);
+      step.middleRows(d * plastic[static_cast<std::size_t>(i)], d) = step_plastic.middleRows(d * i, d);
     double fraction = 1.0;
     Evaluation next = evaluate(E + step.col(0), amplitude, held);
     constexpr int kHalvings = 10;
@@ -404,17 +475,18 @@ IncrementReport ElastoplasticRegion::advance(double amplitude, int max_iteration
 
 BoundarySolution ElastoplasticRegion::boundary_solution() const {
   const Index m = static_cast<Index>(cells_.size());
-  Vector coefficients(1 + 3 * m);
+  const Index d = components_;
+  Vector coefficients(1 + d * m);
   coefficients[0] = amplitude_;
   for (Index e = 0; e < m; ++e)
-    coefficients.segment<3>(1 + 3 * e) = initial_stress(states_[static_cast<std::size_t>(e)].plastic_strain);
+    coefficients.segment(1 + d * e, d) = initial_stress(states_[static_cast<std::size_t>(e)].plastic_strain);
   return recover_boundary_values(boundary_unknowns_ * coefficients, scaled(conditions_, amplitude_), constraints_);
 }
 
 void ElastoplasticRegion::add_cell_fields_at(const Vec2& point, Vec2& u, StressTensor& stress) const {
-  const auto kelvin = kernels::KelvinPlane::from(type_, material_);
+  const CellKernels kernels(type_, material_);
   std::vector<std::vector<CellImage>> sources;
-  for (const auto& cell : cells_) sources.push_back(cell_and_images(cell, mesh_.images));
+  for (const auto& cell : cells_) sources.push_back(cell_and_images(cell, mesh_.images, kernels.d));
   // Off every edge: the fields' edge integrals are singular on them.
   const auto on_an_edge = [&](const Vec2& x) {
     const double tolerance = 1e-10 * mesh_.scale;
@@ -431,19 +503,21 @@ void ElastoplasticRegion::add_cell_fields_at(const Vec2& point, Vec2& u, StressT
   };
   Vec2 x = point;
   if (on_an_edge(x)) x += 1e-8 * mesh_.scale * Vec2(1.0, 1.0).normalized();
-  Eigen::Vector3d c_eps = Eigen::Vector3d::Zero();
+  Vector c_eps = Vector::Zero(kernels.d);
   double plastic33 = 0.0;
   for (std::size_t e = 0; e < cells_.size(); ++e) {
-    const InitialStress sigma0 = initial_stress(states_[e].plastic_strain);
+    const Vector sigma0 = initial_stress(states_[e].plastic_strain);
     if (sigma0.isZero(0.0)) continue;
     for (const auto& source : sources[e]) {
-      u += cell_displacement_influence(kelvin, x, source.cell) * (source.stress_map * sigma0);
-      c_eps += cell_stress_influence(kelvin, x, source.cell) * (source.stress_map * sigma0);
+      u += kernels.displacement(x, source.cell) * (source.stress_map * sigma0);
+      c_eps += kernels.stress(x, source.cell) * (source.stress_map * sigma0);
     }
     if (cells_[e].contains(x)) c_eps -= sigma0, plastic33 = states_[e].plastic_strain[2];
   }
   stress.s11 += c_eps[0], stress.s22 += c_eps[1], stress.s12 += c_eps[2];
-  if (type_ == AnalysisType::plane_strain)
+  if (kernels.axisymmetric())
+    stress.s33 += c_eps[3];  // the hoop stress, its own component
+  else if (type_ == AnalysisType::plane_strain)
     stress.s33 += material_.poisson_ratio * (c_eps[0] + c_eps[1]) - material_.young_modulus * plastic33;
 }
 

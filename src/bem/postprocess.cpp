@@ -99,7 +99,7 @@ std::vector<StressTensor> boundary_stresses(const geometry::BoundaryMesh& mesh, 
     const Mat2 q = local_frame(node.normal);
     const Vec2 p_local = q.transpose() * solution.traction[i];
     const double s_nn = p_local[0], s_ns = p_local[1];
-    const double e_ss = strain[i];
+    double e_ss = strain[i];
     double s_ss = 0.0, s33 = 0.0;
     if (type == AnalysisType::axisymmetric) {
       const double r = node.position.x();
@@ -109,6 +109,12 @@ std::vector<StressTensor> boundary_stresses(const geometry::BoundaryMesh& mesh, 
         e_tt = solution.displacement[i].x() / r;
       else  // on the axis u_r / r -> du_r/dr, which is e_ss where the surface is radial
         e_tt = e_ss * (std::abs(s_dir.x()) > 0.5 ? 1.0 : 0.0);
+      if (plastic_strain) {  // Hooke's law on eps - eps_p: the tangential and hoop plastic strains taken off
+        const auto& ep = (*plastic_strain)[static_cast<std::size_t>(i)];
+        e_tt -= ep[2];
+        const double ep12 = plasticity::component12(ep);
+        e_ss -= s_dir.x() * s_dir.x() * ep[0] + s_dir.y() * s_dir.y() * ep[1] + 2.0 * s_dir.x() * s_dir.y() * ep12;
+      }
       const double a = E * e_ss + nu * s_nn, b = E * e_tt + nu * s_nn;
       s_ss = (a + nu * b) / (1.0 - nu * nu);
       s33 = (b + nu * a) / (1.0 - nu * nu);

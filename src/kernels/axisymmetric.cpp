@@ -204,10 +204,13 @@ RingKernels ring_kernel_log_parts(const KelvinAxisymmetric& kelvin, const Vec2& 
 // x in the frame of theta = 0: X = r, Z = z, Y = theta. Out-of-plane factors come in pairs:
 // d_Y d_Y = r^2 sin^2, (e_i.e_Y) d_Y = r sin^2 (i = r), n_Y d_Y = n_r r sin^2,
 // (e_i.e_Y) n_Y = n_r sin^2 (i = r); mixed rY, zY components integrate to zero.
-RingStressKernels ring_stress_kernels(const KelvinAxisymmetric& kelvin, const Vec2& source,
-                                      const Vec2& field, const Vec2& normal) {
+namespace {
+
+// D always, S when asked (it needs the ring integrals one order higher).
+RingStressKernels stress_kernels(const KelvinAxisymmetric& kelvin, const Vec2& source, const Vec2& field,
+                                 const Vec2& normal, bool with_s) {
   const RingPair g(source, field);
-  const RingWeights W = weights(g, 3);
+  const RingWeights W = weights(g, with_s ? 3 : 2);
   const RingFactors f(g, normal);
   const double nu = kelvin.poisson_ratio;
   const double cd = 1.0 / (8.0 * pi * (1.0 - nu));
@@ -232,6 +235,7 @@ RingStressKernels ring_stress_kernels(const KelvinAxisymmetric& kelvin, const Ve
       const Poly<2> dadb = da * db;
       out.D[i][component] =
           cd * ((1.0 - 2.0 * nu) * W.at<1>(dja * db + djb * da - dab * dj) + 3.0 * W.at<2>(dj * dadb));
+      if (!with_s) continue;
       const Linear& na = f.n_source[a];
       const Linear& nb = f.n_source[b];
       out.S[i][component] =
@@ -247,6 +251,7 @@ RingStressKernels ring_stress_kernels(const KelvinAxisymmetric& kelvin, const Ve
     const Poly<2> ejY_nY = (i == 0 ? normal.x() : 0.0) * sin_squared;
     out.D[i][stress_tt] =
         cd * ((1.0 - 2.0 * nu) * W.at<1>(2.0 * ejY_dY - dj) + 3.0 * W.at<2>(dj * dY_dY));
+    if (!with_s) continue;
     out.S[i][stress_tt] =
         cs * (3.0 * W.at<2>(dn * ((1.0 - 2.0 * nu) * dj + 2.0 * nu * ejY_dY)) -
               15.0 * W.at<3>(dn * dY_dY * dj) + 6.0 * nu * W.at<2>(nY_dY * dj) +
@@ -254,6 +259,17 @@ RingStressKernels ring_stress_kernels(const KelvinAxisymmetric& kelvin, const Ve
               (1.0 - 4.0 * nu) * nj * W.at<1>(one));
   }
   return out;
+}
+
+}  // namespace
+
+RingStressKernels ring_stress_kernels(const KelvinAxisymmetric& kelvin, const Vec2& source, const Vec2& field,
+                                      const Vec2& normal) {
+  return stress_kernels(kelvin, source, field, normal, true);
+}
+
+RingStressKernel ring_stress_from_traction(const KelvinAxisymmetric& kelvin, const Vec2& source, const Vec2& field) {
+  return stress_kernels(kelvin, source, field, Vec2(1.0, 0.0), false).D;
 }
 
 }  // namespace bemcontact::kernels

@@ -17,7 +17,7 @@ namespace {
 constexpr int kApexPoints = 8;
 constexpr int kSidePoints = 16;
 constexpr int kFarPoints = 6;
-constexpr double kNearCells = 2.0;
+constexpr double kNearCells = 1.25;
 
 // The traction sigma0 n per unit component (rr, zz, rz, tt) on an edge of outward normal n.
 Matrix24 traction_of_components(const Vec2& n) {
@@ -110,10 +110,9 @@ Matrix24 ring_cell_displacement_influence(const kernels::KelvinAxisymmetric& ker
 
 Matrix44 ring_cell_stress_influence(const kernels::KelvinAxisymmetric& kernel, const Vec2& x, const Cell& cell) {
   Matrix44 out = Matrix44::Zero();
-  const Vec2 normal(1.0, 0.0);  // S is not used
   const Matrix24 body = body_force_of_components();
   const auto add = [&](const Vec2& y, double w, const Matrix24& load) {
-    const auto D = kernels::ring_stress_kernels(kernel, x, y, normal).D;  // [i][component]
+    const auto D = kernels::ring_stress_from_traction(kernel, x, y);  // [i][component]
     for (int component = 0; component < 4; ++component)
       for (int row = 0; row < 4; ++row)
         out(row, component) += w * (D[0][row] * load(0, component) + D[1][row] * load(1, component));

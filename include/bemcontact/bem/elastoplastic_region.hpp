@@ -1,5 +1,6 @@
 #pragma once
-// One elastoplastic region in plane strain: the boundary element system of its boundary,
+// One elastoplastic region (plane strain, plane stress or axisymmetric): the boundary element
+// system of its boundary,
 // the cells that cover where it may yield (plasticity/initial_stress.hpp) and the J2
 // material (plasticity/j2_material.hpp), solved increment by increment under a
 // proportional load (the body's own data times an amplitude, loading and unloading).
@@ -51,8 +52,8 @@ struct IncrementReport {
 
 class ElastoplasticRegion {
  public:
-  // Throws Error for an axisymmetric body or a bad
-  // hardening (the reader checks them first), SolverError for a singular system.
+  // Throws Error for a bad hardening (the reader checks it first), SolverError for a
+  // singular system.
   ElastoplasticRegion(const geometry::BoundaryMesh& mesh, const BodyDefinition& body, AnalysisType type,
                       const plasticity::J2Hardening& hardening, std::vector<plasticity::Cell> cells);
   ElastoplasticRegion(ElastoplasticRegion&&) noexcept;
@@ -78,7 +79,7 @@ class ElastoplasticRegion {
   void add_cell_fields_at(const Vec2& point, Vec2& u, StressTensor& stress) const;
 
  private:
-  plasticity::InitialStress initial_stress(const plasticity::Mandel& plastic_strain) const;
+  Vector initial_stress(const plasticity::Mandel& plastic_strain) const;
   struct Evaluation;
   Evaluation evaluate(const Vector& E, double amplitude, const std::vector<char>& held) const;
   bool solve_increment(double amplitude, int max_iterations, double tolerance, IncrementReport& report,
@@ -93,12 +94,13 @@ class ElastoplasticRegion {
   std::vector<ConstraintEquation> constraints_;
   Matrix boundary_rhs_;   // [b | B]: the load at amplitude 1 and the cells' domain term
   Matrix boundary_unknowns_;  // A^-1 [b | B]
-  Vector load_stress_;    // s: C E per unit amplitude (3 per cell, tensor components 11, 22, 12)
+  Vector load_stress_;    // s: C E per unit amplitude (components_ per cell: tensor components)
   Matrix cell_operator_;  // K: C E per unit initial stress component of each cell
   std::vector<plasticity::J2State> states_;
   std::vector<plasticity::Mandel> stress_;
   std::vector<double> thickness_strain_;  // plane stress: each cell's eps_33 of the last increment
   double amplitude_ = 0.0;
+  Index components_ = 3;  // per cell: 11, 22, 12 (plane) or rr, zz, rz, tt (axisymmetric)
 };
 
 }  // namespace bemcontact::bem

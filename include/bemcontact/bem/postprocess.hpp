@@ -15,8 +15,8 @@ namespace bemcontact::bem {
 // Stress at each boundary node from its traction (sigma n = p) and the tangential strain
 // of the interpolated displacement, with Hooke's law written in the local frame (n, s):
 //   sigma_ss = (nu' sigma_nn + 2 mu eps_ss) / (1 - nu')   (plane; nu' = kernel Poisson ratio)
-// and in axisymmetry with the hoop strain u_r / r as well. With `plastic_strain` (per node,
-// plane problems: an elastoplastic region's cells), Hooke's law acts on eps - eps_p.
+// and in axisymmetry with the hoop strain u_r / r as well. With `plastic_strain` (per node:
+// an elastoplastic region's cells), Hooke's law acts on eps - eps_p.
 std::vector<StressTensor> boundary_stresses(const geometry::BoundaryMesh& mesh, AnalysisType type,
                                             const Material& material,
                                             const BoundarySolution& solution,

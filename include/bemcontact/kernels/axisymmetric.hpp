@@ -77,5 +77,7 @@ struct RingStressKernels {
 // Requires field != source.
 RingStressKernels ring_stress_kernels(const KelvinAxisymmetric& kelvin, const Vec2& source,
                                       const Vec2& field, const Vec2& normal);
+// D alone (the stress at x of a ring load at y): the ring integrals one order lower.
+RingStressKernel ring_stress_from_traction(const KelvinAxisymmetric& kelvin, const Vec2& source, const Vec2& field);
 
 }  // namespace bemcontact::kernels
