@@ -102,7 +102,6 @@ ElastoplasticHistory elastoplastic_history(const ContactProblem& model) {
   if (!model.contacts.empty()) refuse("in contact");
   if (!model.forces.empty()) refuse("under a force load ([load])");
   if (!model.boundary_amplitudes.empty()) refuse("with boundaries of their own amplitude");
-  if (model.analysis == AnalysisType::axisymmetric) refuse("in axisymmetry");
   if (model.operator_choice.kind == bem::OperatorKind::compressed) refuse("on compressed operators (dense only)");
 
   ElastoplasticHistory history;

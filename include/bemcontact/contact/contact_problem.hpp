@@ -316,7 +316,7 @@ dd::DecompositionProblem decomposition_problem(const ContactProblem& model, cons
 // `increments` equal steps over the history with every corner of the data amplitude, and
 // the amplitude at each. InputError at the yield stress's key for what the elastoplastic
 // solve does not serve yet (docs/plasticity.md, Limits): other regions or bodies, contacts,
-// force loads, boundary amplitudes, axisymmetry, compressed operators.
+// force loads, boundary amplitudes, compressed operators.
 struct ElastoplasticHistory {
   bem::ProblemDefinition problem;
   std::vector<double> times, amplitudes;

@@ -303,9 +303,6 @@ TEST(ElastoplasticRun, RefusesWhatItDoesNotServe) {
          "refine_size", "at most size");
   expect(input_error(replaced(tube, "size = 0.16", "size = 0.16\nbox = [[5, 5], [6, 6]]")), "cells",
          "does not meet the region");
-  expect(input_error(replaced(replaced(tube, "analysis = \"plane_strain\"", "analysis = \"axisymmetric\""),
-                              "u1 = 0.0\nt2 = 0.0", "")), "yield_stress",
-         "in axisymmetry");
   expect(input_error(replaced(tube, "increments = 8", "increments = 8\noperator = \"compressed\"")), "yield_stress",
          "compressed");
   expect(input_error(replaced(tube, "[body.interior]", "[body.interior]\npoints = [[0.5, 0.5]]")), "interior",
