@@ -144,6 +144,17 @@ void append_transitions(std::string& report, const geometry::BoundaryMesh& mesh,
            t.name.c_str(), t.elements, t.elements_asked);
 }
 
+// "  time T s (phase t, phase t, ...)": a run's total and its phases.
+void append_times(std::string& report, double total, const bem::PhaseTimings& timings) {
+  append(report, "  time %.3f s (", total);
+  bool first = true;
+  for (const auto& [phase, seconds] : timings.phases) {
+    append(report, "%s%s %.3f", first ? "" : ", ", phase.c_str(), seconds);
+    first = false;
+  }
+  report += ")\n";
+}
+
 // Checks the resource limits of the problem a solver takes before anything is solved, and
 // starts the output with the reader's warnings.
 template <class Problem>
@@ -358,13 +369,7 @@ RunOutput run_body(const io::ProblemInput& input, const bem::ProblemDefinition& 
   if (!result.interior.points.empty())
     append(report, "  %zu interior points (%zu outside dropped), max von Mises = %.6g\n",
            result.interior.points.size(), result.interior.dropped_points.size(), interior_max_vm);
-  append(report, "  time %.3f s (", timings["total"].get<double>());
-  bool first = true;
-  for (const auto& [phase, seconds] : result.timings.phases) {
-    append(report, "%s%s %.3f", first ? "" : ", ", phase.c_str(), seconds);
-    first = false;
-  }
-  report += ")\n";
+  append_times(report, timings["total"].get<double>(), result.timings);
   return output;
 }
 
@@ -423,13 +428,7 @@ RunOutput run_elastoplastic(const io::ProblemInput& input, const contact::Elasto
   append(report, "  plastic zone: %d cells, area %.6g, largest equivalent plastic strain %.6g\n",
          zone["yielded_cells"].get<int>(), zone["area"].get<double>(), zone["max_equivalent_plastic_strain"].get<double>());
   report += io::reactions_text(result.boundary.resultants, problem.analysis, "");
-  append(report, "  time %.3f s (", timings["total"].get<double>());
-  bool first = true;
-  for (const auto& [phase, seconds] : result.timings.phases) {
-    append(report, "%s%s %.3f", first ? "" : ", ", phase.c_str(), seconds);
-    first = false;
-  }
-  report += ")\n";
+  append_times(report, timings["total"].get<double>(), result.timings);
   return output;
 }
 

@@ -70,6 +70,25 @@ TubeErrors run_tube(const bem::ProblemDefinition& problem, const geometry::Bound
   return out;
 }
 
+// The radial displacement of boundary 'inner' (a bore, where it is uniform) at each step of
+// an elastoplastic run: its nodes' mean displacement along their mean radial direction.
+std::size_t piece_named(const geometry::BoundaryMesh& mesh, const std::string& name) {
+  std::size_t piece = 0;
+  while (mesh.piece_names.at(piece) != name) ++piece;
+  return piece;
+}
+
+std::vector<double> bore_displacements(const bem::ElastoplasticResult& result) {
+  const std::size_t inner = piece_named(result.mesh, "inner");
+  Vec2 radial = Vec2::Zero();
+  for (const Index i : result.mesh.piece_nodes[inner])
+    radial += result.mesh.nodes[static_cast<std::size_t>(i)].position.normalized();
+  radial /= static_cast<double>(result.mesh.piece_nodes[inner].size());
+  std::vector<double> out;
+  for (const auto& step : result.steps) out.push_back(step.mean_displacement[inner].dot(radial) / radial.squaredNorm());
+  return out;
+}
+
 // examples/plastic_tube.toml as a user runs it: the cells made from [cells] size (the
 // whole quarter tube, cut by its arcs), the steps from [history], at two cell sizes.
 void add_tube_from_file(const Context& context, std::vector<Record>& records) {
@@ -95,13 +114,8 @@ void add_tube_from_file(const Context& context, std::vector<Record>& records) {
     const std::size_t first = records.size();
     body.plasticity->cells.size = size;
     const auto result = bem::solve_elastoplastic_body(history.problem, history.times, history.amplitudes);
-    // The bore's radial displacement from its nodes' mean (u_r is uniform on it).
-    std::size_t inner = 0;
-    while (result.mesh.piece_names[inner] != "inner") ++inner;
-    Vec2 radial = Vec2::Zero();
-    for (const Index i : result.mesh.piece_nodes[inner]) radial += result.mesh.nodes[static_cast<std::size_t>(i)].position.normalized();
-    radial /= static_cast<double>(result.mesh.piece_nodes[inner].size());
-    const auto bore = [&](std::size_t k) { return result.steps[k].mean_displacement[inner].dot(radial) / radial.squaredNorm(); };
+    const auto bore_steps = bore_displacements(result);
+    const auto bore = [&](std::size_t k) { return bore_steps[k]; };
     const double scale = pressures[peak] / pressures[0];
     const double plastic = (bore(peak) - scale * bore(0)) /
                                (reference[peak].inner_displacement - scale * reference[0].inner_displacement) - 1.0;
@@ -119,7 +133,7 @@ void add_tube_from_file(const Context& context, std::vector<Record>& records) {
     // size, as the cells' constant plastic strain against its steep rise at the bore.
     double bore_hoop = 0.0;
     int nodes = 0;
-    for (const Index i : result.mesh.piece_nodes[inner]) {
+    for (const Index i : result.mesh.piece_nodes[piece_named(result.mesh, "inner")]) {
       const Vec2 x = result.mesh.nodes[static_cast<std::size_t>(i)].position;
       const double angle = std::atan2(x.y(), x.x());
       if (angle < 0.3 || angle > 1.27) continue;
@@ -200,15 +214,8 @@ std::vector<Record> run_plastic_sphere(const Context& context) {
     const std::size_t first = records.size();
     body.plasticity->cells.size = size;
     const auto result = bem::solve_elastoplastic_body(history.problem, history.times, history.amplitudes);
-    std::size_t inner = 0;
-    while (result.mesh.piece_names[inner] != "inner") ++inner;
-    Vec2 radial = Vec2::Zero();
-    for (const Index i : result.mesh.piece_nodes[inner])
-      radial += result.mesh.nodes[static_cast<std::size_t>(i)].position.normalized();
-    radial /= static_cast<double>(result.mesh.piece_nodes[inner].size());
-    const auto bore = [&](std::size_t k) {
-      return result.steps[k].mean_displacement[inner].dot(radial) / radial.squaredNorm();
-    };
+    const auto bore_steps = bore_displacements(result);
+    const auto bore = [&](std::size_t k) { return bore_steps[k]; };
     const double scale = pressures[peak] / pressures[0];
     const double plastic = (bore(peak) - scale * bore(0)) /
                                (reference[peak].inner_displacement - scale * reference[0].inner_displacement) - 1.0;
