@@ -89,6 +89,23 @@ std::vector<double> bore_displacements(const bem::ElastoplasticResult& result) {
   return out;
 }
 
+// The bore's displacement beyond the elastic response at the peak pressure (the first step
+// elastic, scaled), and after unloading, each relative to the reference's minus 1.
+struct BoreErrors {
+  double plastic = 0.0, residual = 0.0;
+};
+BoreErrors bore_errors(const bem::ElastoplasticResult& result, const std::vector<double>& pressures,
+                       const std::vector<reference::PlasticCylinderState>& reference) {
+  const auto bore = bore_displacements(result);
+  std::size_t peak = 0;
+  for (std::size_t k = 0; k < pressures.size(); ++k)
+    if (pressures[k] > pressures[peak]) peak = k;
+  const double scale = pressures[peak] / pressures[0];
+  return {(bore[peak] - scale * bore[0]) /
+                  (reference[peak].inner_displacement - scale * reference[0].inner_displacement) - 1.0,
+          bore.back() / reference.back().inner_displacement - 1.0};
+}
+
 // examples/plastic_tube.toml as a user runs it: the cells made from [cells] size (the
 // whole quarter tube, cut by its arcs), the steps from [history], at two cell sizes.
 void add_tube_from_file(const Context& context, std::vector<Record>& records) {
@@ -101,9 +118,6 @@ void add_tube_from_file(const Context& context, std::vector<Record>& records) {
   std::vector<double> pressures;
   for (const double amplitude : history.amplitudes) pressures.push_back(amplitude * py);
   const auto reference = reference::plastic_thick_cylinder(kInner, kOuter, body.material, hardening, pressures, 400);
-  std::size_t peak = 0;
-  for (std::size_t k = 0; k < pressures.size(); ++k)
-    if (pressures[k] > pressures[peak]) peak = k;
   // Interior points on the 45 degree ray: in the plastic zone (c = 1.33) and beyond it.
   const std::vector<double> interior_radii{1.15, 1.25, 1.6, 1.85};
   history.problem.interior_points.clear();  // the example's grid: not these checks'
@@ -114,12 +128,7 @@ void add_tube_from_file(const Context& context, std::vector<Record>& records) {
     const std::size_t first = records.size();
     body.plasticity->cells.size = size;
     const auto result = bem::solve_elastoplastic_body(history.problem, history.times, history.amplitudes);
-    const auto bore_steps = bore_displacements(result);
-    const auto bore = [&](std::size_t k) { return bore_steps[k]; };
-    const double scale = pressures[peak] / pressures[0];
-    const double plastic = (bore(peak) - scale * bore(0)) /
-                               (reference[peak].inner_displacement - scale * reference[0].inner_displacement) - 1.0;
-    const double residual = bore(pressures.size() - 1) / reference.back().inner_displacement - 1.0;
+    const auto [plastic, residual] = bore_errors(result, pressures, reference);
     std::vector<Vec2> centroids;
     for (const auto& cell : result.cells) centroids.push_back(cell.centroid());
     const double hoop = reference.back().mean_hoop_error(centroids, result.cell_stress, hardening.yield_stress);
@@ -206,20 +215,12 @@ std::vector<Record> run_plastic_sphere(const Context& context) {
   std::vector<double> pressures;
   for (const double amplitude : history.amplitudes) pressures.push_back(amplitude * peak_pressure);
   const auto reference = reference::plastic_thick_sphere(a, b, body.material, hardening, pressures, 400);
-  std::size_t peak = 0;
-  for (std::size_t k = 0; k < pressures.size(); ++k)
-    if (pressures[k] > pressures[peak]) peak = k;
   double previous = 0.0;
   for (const double size : {0.25, 0.125}) {
     const std::size_t first = records.size();
     body.plasticity->cells.size = size;
     const auto result = bem::solve_elastoplastic_body(history.problem, history.times, history.amplitudes);
-    const auto bore_steps = bore_displacements(result);
-    const auto bore = [&](std::size_t k) { return bore_steps[k]; };
-    const double scale = pressures[peak] / pressures[0];
-    const double plastic = (bore(peak) - scale * bore(0)) /
-                               (reference[peak].inner_displacement - scale * reference[0].inner_displacement) - 1.0;
-    const double residual = bore(pressures.size() - 1) / reference.back().inner_displacement - 1.0;
+    const auto [plastic, residual] = bore_errors(result, pressures, reference);
     double hoop = 0.0, plastic_radius = a;
     for (std::size_t e = 0; e < result.cells.size(); ++e) {
       const double r = result.cells[e].centroid().norm();
