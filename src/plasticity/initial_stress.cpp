@@ -11,12 +11,6 @@
 namespace bemcontact::plasticity {
 namespace {
 
-// The outward normal of the edge from a to b of a counterclockwise cell.
-Vec2 outward_normal(const Vec2& a, const Vec2& b) {
-  const Vec2 d = (b - a).normalized();
-  return Vec2(d.y(), -d.x());
-}
-
 // The traction sigma0 n per unit component (11, 22, 12) of sigma0.
 Eigen::Matrix<double, 2, 3> traction_of_components(const Vec2& n) {
   Eigen::Matrix<double, 2, 3> t;
@@ -32,7 +26,7 @@ void for_each_cell_point(const Cell& cell, const Vec2& x, Add&& add) {
   for (std::size_t k = 0; k < cell.vertices.size(); ++k) {
     const Vec2& a = cell.vertices[k];
     const Vec2& b = cell.vertices[(k + 1) % cell.vertices.size()];
-    const Eigen::Matrix<double, 2, 3> traction = traction_of_components(outward_normal(a, b));
+    const Eigen::Matrix<double, 2, 3> traction = traction_of_components(edge_outward_normal(a, b));
     for_each_edge_point(a, b, x, [&](const Vec2& y, double w) { add(y, w, traction); });
   }
 }
@@ -61,8 +55,6 @@ double Cell::area() const {
 }
 
 namespace {
-
-double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
 
 bool in_triangle(const Vec2& p, const Vec2& a, const Vec2& b, const Vec2& c) {
   return cross(b - a, p - a) >= 0.0 && cross(c - b, p - b) >= 0.0 && cross(a - c, p - c) >= 0.0;

@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "bemcontact/core/error.hpp"
+#include "bemcontact/plasticity/edge_quadrature.hpp"
 
 namespace bemcontact::plasticity {
 
@@ -18,13 +19,6 @@ struct Rect {
   double longer_side() const { return std::max(hi.x() - lo.x(), hi.y() - lo.y()); }
 };
 
-double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
-
-std::string point_text(const Vec2& p) {
-  char text[64];
-  std::snprintf(text, sizeof text, "(%.6g, %.6g)", p.x(), p.y());
-  return text;
-}
 
 double signed_area(const std::vector<Vec2>& polygon) {
   double twice = 0.0;

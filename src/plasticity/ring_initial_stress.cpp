@@ -20,7 +20,7 @@ constexpr int kFarPoints = 6;
 constexpr double kNearCells = 1.25;
 
 // The traction sigma0 n per unit component (rr, zz, rz, tt) on an edge of outward normal n.
-Matrix24 traction_of_components(const Vec2& n) {
+Matrix24 ring_traction_of_components(const Vec2& n) {
   Matrix24 t;
   t << n.x(), 0.0, n.y(), 0.0,  //
       0.0, n.y(), n.x(), 0.0;
@@ -74,12 +74,6 @@ void for_each_area_point(const Cell& cell, const Vec2& x, Add&& add) {
   for (const auto& [a, b, c] : cell.triangles()) for_each_triangle_point(a, b, c, whole, kFarPoints, kFarPoints, add);
 }
 
-// The outward normal of the edge from a to b of a counterclockwise cell.
-Vec2 outward_normal(const Vec2& a, const Vec2& b) {
-  const Vec2 d = (b - a).normalized();
-  return Vec2(d.y(), -d.x());
-}
-
 // Calls edge(y, w, t) at the edges' points (w with the ring's weight r, t = sigma0 n per
 // unit component) and area(y, w) at the area's points.
 template <class Edge, class Area>
@@ -87,7 +81,7 @@ void for_each_ring_point(const Cell& cell, const Vec2& x, Edge&& edge, Area&& ar
   const auto& v = cell.vertices;
   for (std::size_t k = 0; k < v.size(); ++k) {
     const Vec2 &a = v[k], &b = v[(k + 1) % v.size()];
-    const Matrix24 traction = traction_of_components(outward_normal(a, b));
+    const Matrix24 traction = ring_traction_of_components(edge_outward_normal(a, b));
     for_each_edge_point(a, b, x, [&](const Vec2& y, double w) { edge(y, w * y.x(), traction); });
   }
   for_each_area_point(cell, x, area);

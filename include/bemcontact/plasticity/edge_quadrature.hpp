@@ -1,7 +1,8 @@
 #pragma once
 // Quadrature along a cell's edge graded toward the point of the edge nearest to x: the
 // logarithm of U when x lies on the edge (a collocation node), the 1/r of D near it
-// (plasticity/initial_stress.hpp and ring_initial_stress.hpp).
+// (plasticity/initial_stress.hpp and ring_initial_stress.hpp); and the cells' small
+// geometric helpers.
 #include <algorithm>
 #include <cmath>
 
@@ -9,6 +10,15 @@
 #include "bemcontact/quadrature/gauss_legendre.hpp"
 
 namespace bemcontact::plasticity {
+
+// The z component of a x b.
+inline double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
+
+// The outward normal of the edge from a to b of a counterclockwise cell.
+inline Vec2 edge_outward_normal(const Vec2& a, const Vec2& b) {
+  const Vec2 d = (b - a).normalized();
+  return Vec2(d.y(), -d.x());
+}
 
 // Calls add(y, w) at the quadrature points of the segment [a, b], graded toward the point
 // of the segment nearest to x.
