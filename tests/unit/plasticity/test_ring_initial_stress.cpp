@@ -14,22 +14,22 @@
 namespace bemcontact::plasticity {
 namespace {
 
-const double G = 1000.0, nu = 0.3;
-const kernels::KelvinAxisymmetric kernel{G, nu};
+const double kRingShear = 1000.0, kRingPoisson = 0.3;
+const kernels::KelvinAxisymmetric ring_kernel{kRingShear, kRingPoisson};
 
 using Vec3 = Eigen::Vector3d;
 using Mat3 = Eigen::Matrix3d;
 
-Mat3 kelvin3(const Vec3& x, const Vec3& y) {
+Mat3 ring_test_kelvin3(const Vec3& x, const Vec3& y) {
   const Vec3 d = y - x;
   const double rho = d.norm();
   const Vec3 e = d / rho;
-  return ((3.0 - 4.0 * nu) * Mat3::Identity() + e * e.transpose()) / (16.0 * std::numbers::pi * G * (1.0 - nu) * rho);
+  return ((3.0 - 4.0 * kRingPoisson) * Mat3::Identity() + e * e.transpose()) / (16.0 * std::numbers::pi * kRingShear * (1.0 - kRingPoisson) * rho);
 }
 
 // u(x) = int_V d U3_kj / d y_l sigma0_jl dV over the ring of a rectangular meridian cell:
 // Gauss in (r, z), the trapezoid rule in theta, central differences in y.
-Matrix24 volume_integral(const Vec2& x2, const Vec2& lo, const Vec2& hi) {
+Matrix24 ring_volume_integral(const Vec2& x2, const Vec2& lo, const Vec2& hi) {
   const Vec3 x(x2.x(), 0.0, x2.y());
   const auto& rule = quadrature::gauss_legendre(16);
   const int angles = 256;
@@ -52,7 +52,7 @@ Matrix24 volume_integral(const Vec2& x2, const Vec2& lo, const Vec2& hi) {
         for (int l = 0; l < 3; ++l) {
           Vec3 step = Vec3::Zero();
           step[l] = h;
-          dU[l] = (kelvin3(x, y + step) - kelvin3(x, y - step)) / (2 * h);
+          dU[l] = (ring_test_kelvin3(x, y + step) - ring_test_kelvin3(x, y - step)) / (2 * h);
         }
         for (int c = 0; c < 4; ++c) {
           Vec3 u = Vec3::Zero();
@@ -65,14 +65,14 @@ Matrix24 volume_integral(const Vec2& x2, const Vec2& lo, const Vec2& hi) {
   return out;
 }
 
-Cell rectangle(const Vec2& lo, const Vec2& hi) { return Cell{{lo, {hi.x(), lo.y()}, hi, {lo.x(), hi.y()}}}; }
+Cell ring_rectangle(const Vec2& lo, const Vec2& hi) { return Cell{{lo, {hi.x(), lo.y()}, hi, {lo.x(), hi.y()}}}; }
 
 TEST(RingInitialStress, EdgeAndAreaFormEqualTheVolumeIntegral) {
   for (const auto& [lo, hi] : {std::pair{Vec2(1.0, 0.0), Vec2(1.3, 0.4)}, std::pair{Vec2(0.0, 0.0), Vec2(0.3, 0.2)}}) {
-    const Cell cell = rectangle(lo, hi);
+    const Cell cell = ring_rectangle(lo, hi);
     for (const Vec2& x : {Vec2(0.7, 0.9), Vec2(1.6, -0.3), Vec2(0.0, 0.8), Vec2(0.5, 0.3)}) {
-      const Matrix24 edge_form = ring_cell_displacement_influence(kernel, x, cell);
-      const Matrix24 reference = volume_integral(x, lo, hi);
+      const Matrix24 edge_form = ring_cell_displacement_influence(ring_kernel, x, cell);
+      const Matrix24 reference = ring_volume_integral(x, lo, hi);
       // Measured: 7e-8 at worst (x near the cell on the axis); the reference's own error is
       // below 1e-9.
       EXPECT_LT((edge_form - reference).norm(), 2e-7 * reference.norm()) << "x = " << x.transpose() << "\n"
@@ -82,22 +82,22 @@ TEST(RingInitialStress, EdgeAndAreaFormEqualTheVolumeIntegral) {
 }
 
 // C of the cylindrical strain (rr, zz, rz, tt) with the tensor rz component.
-Matrix44 stiffness() {
-  const double lambda = 2.0 * G * nu / (1.0 - 2.0 * nu);
+Matrix44 ring_stiffness() {
+  const double lambda = 2.0 * kRingShear * kRingPoisson / (1.0 - 2.0 * kRingPoisson);
   Matrix44 C = Matrix44::Zero();
   for (const int i : {0, 1, 3})
-    for (const int j : {0, 1, 3}) C(i, j) = lambda + (i == j ? 2.0 * G : 0.0);
-  C(2, 2) = 2.0 * G;
+    for (const int j : {0, 1, 3}) C(i, j) = lambda + (i == j ? 2.0 * kRingShear : 0.0);
+  C(2, 2) = 2.0 * kRingShear;
   return C;
 }
 
 TEST(RingInitialStress, StressIsTheDerivativeOfTheDisplacement) {
-  const Cell cell = rectangle(Vec2(0.0, 0.0), Vec2(0.4, 0.3));
-  const Cell off_axis = rectangle(Vec2(1.0, 0.2), Vec2(1.2, 0.5));
+  const Cell cell = ring_rectangle(Vec2(0.0, 0.0), Vec2(0.4, 0.3));
+  const Cell off_axis = ring_rectangle(Vec2(1.0, 0.2), Vec2(1.2, 0.5));
   const double h = 1e-5;
   for (const auto& [c, x] : {std::pair{&cell, Vec2(0.6, 0.5)}, std::pair{&cell, Vec2(0.25, 0.1)},
                              std::pair{&off_axis, Vec2(1.13, 0.27)}, std::pair{&off_axis, Vec2(0.5, 0.35)}}) {
-    const auto u = [&](const Vec2& p) { return ring_cell_displacement_influence(kernel, p, *c); };
+    const auto u = [&](const Vec2& p) { return ring_cell_displacement_influence(ring_kernel, p, *c); };
     const Matrix24 du_dr = (u(x + Vec2(h, 0)) - u(x - Vec2(h, 0))) / (2 * h);
     const Matrix24 du_dz = (u(x + Vec2(0, h)) - u(x - Vec2(0, h))) / (2 * h);
     const Matrix24 ux = u(x);
@@ -106,8 +106,8 @@ TEST(RingInitialStress, StressIsTheDerivativeOfTheDisplacement) {
     strain.row(1) = du_dz.row(1);
     strain.row(2) = 0.5 * (du_dz.row(0) + du_dr.row(1));
     strain.row(3) = ux.row(0) / x.x();
-    const Matrix44 expected = stiffness() * strain;
-    const Matrix44 computed = ring_cell_stress_influence(kernel, x, *c);
+    const Matrix44 expected = ring_stiffness() * strain;
+    const Matrix44 computed = ring_cell_stress_influence(ring_kernel, x, *c);
     // Measured: 4e-7 at worst (inside the cell on the axis), central differences included.
     EXPECT_LT((computed - expected).norm(), 2e-6 * expected.norm()) << "x = " << x.transpose() << "\n"
                                                                     << computed << "\n" << expected;
