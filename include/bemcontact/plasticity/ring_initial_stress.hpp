@@ -21,8 +21,6 @@
 
 namespace bemcontact::plasticity {
 
-// Cylindrical initial stress components (rr, zz, rz, tt).
-using RingInitialStress = Eigen::Vector4d;
 using Matrix24 = Eigen::Matrix<double, 2, 4>;
 using Matrix44 = Eigen::Matrix4d;
 
