@@ -110,6 +110,38 @@ double elastoplastic_region_bytes(Index cells, Index nodes) {
   return 8.0 * (4.0 * unknowns * unknowns + 3.0 * values * unknowns);
 }
 
+std::vector<plasticity::Cell> region_cells_of(const geometry::BoundaryMesh& mesh, const BodyDefinition& body,
+                                              double memory_limit_bytes) {
+  const RegionPlasticity& plasticity = *body.plasticity;
+  std::vector<plasticity::Cell> cells;
+  try {
+    cells = plasticity::region_cells(region_loops(mesh, body.pieces), plasticity.cells);
+  } catch (const InputError&) {
+    throw;
+  } catch (const Error& e) {
+    throw InputError(plasticity.cells_where, e.what());
+  }
+  const double bytes = elastoplastic_region_bytes(static_cast<Index>(cells.size()), mesh.node_count());
+  if (memory_limit_bytes > 0.0 && bytes > memory_limit_bytes)
+    throw InputError(plasticity.cells_where,
+                     std::to_string(cells.size()) + " cells would take about " + format_bytes(bytes) +
+                         " of dense matrices, over the limit of " + format_bytes(memory_limit_bytes) +
+                         ": give larger cells or a box around where the body may yield, or raise the limit with "
+                         "--max-memory (GB) on a larger machine");
+  return cells;
+}
+
+std::optional<std::string> plastic_zone_box_warning(const geometry::BoundaryMesh& mesh, const BodyDefinition& body,
+                                                    const std::vector<plasticity::Cell>& cells,
+                                                    const std::vector<plasticity::J2State>& states) {
+  const RegionPlasticity& plasticity = *body.plasticity;
+  const auto at = zone_at_box_side(cells, states, plasticity.cells, region_loops(mesh, body.pieces), mesh.scale);
+  if (!at) return std::nullopt;
+  return plasticity.cells_where.describe() + ": the plastic zone reaches the side of the cells' box at " +
+         point_text(*at) + ", where the body goes on: the material beyond the box stays elastic and the answer is "
+         "too stiff; enlarge the box";
+}
+
 ElastoplasticResult solve_elastoplastic_body(const ProblemDefinition& problem, const std::vector<double>& times,
                                              const std::vector<double>& amplitudes, const ProgressCallback& progress,
                                              double memory_limit_bytes) {
@@ -125,21 +157,7 @@ ElastoplasticResult solve_elastoplastic_body(const ProblemDefinition& problem, c
     throw InputError(p.where.file.empty() ? SourceLocation{problem.source_file, 0, "interior.points"} : p.where,
                      "point " + point_text(p.position) + " is not inside the body");
   }
-  const auto loops = region_loops(result.mesh, body.pieces);
-  try {
-    result.cells = plasticity::region_cells(loops, plasticity.cells);
-  } catch (const InputError&) {
-    throw;
-  } catch (const Error& e) {
-    throw InputError(plasticity.cells_where, e.what());
-  }
-  const double bytes = elastoplastic_region_bytes(static_cast<Index>(result.cells.size()), result.mesh.node_count());
-  if (memory_limit_bytes > 0.0 && bytes > memory_limit_bytes)
-    throw InputError(plasticity.cells_where,
-                     std::to_string(result.cells.size()) + " cells would take about " + format_bytes(bytes) +
-                         " of dense matrices, over the limit of " + format_bytes(memory_limit_bytes) +
-                         ": give larger cells or a box around where the body may yield, or raise the limit with "
-                         "--max-memory (GB) on a larger machine");
+  result.cells = region_cells_of(result.mesh, body, memory_limit_bytes);
   clock.lap("mesh and cells");
 
   ElastoplasticRegion region(result.mesh, body, problem.analysis, plasticity.hardening, result.cells);
@@ -173,10 +191,8 @@ ElastoplasticResult solve_elastoplastic_body(const ProblemDefinition& problem, c
   result.states = region.states();
   result.cell_stress = region.cell_stress();
   clock.lap("load steps");
-  if (const auto at = zone_at_box_side(result.cells, result.states, plasticity.cells, loops, result.mesh.scale))
-    result.warnings.push_back(plasticity.cells_where.describe() + ": the plastic zone reaches the side of the cells' box at " +
-                              point_text(*at) + ", where the body goes on: the material beyond the box stays elastic "
-                              "and the answer is too stiff; enlarge the box");
+  if (auto warning = plastic_zone_box_warning(result.mesh, body, result.cells, result.states))
+    result.warnings.push_back(std::move(*warning));
   if (!problem.interior_points.empty()) {
     const ElementIntegrator integrator(problem.analysis, body.material);
     result.interior = interior_values(result.mesh, integrator, result.boundary, std::move(selection), progress,

@@ -226,12 +226,23 @@ ElastoplasticRegion::ElastoplasticRegion(ElastoplasticRegion&&) noexcept = defau
 ElastoplasticRegion::~ElastoplasticRegion() = default;
 
 ElastoplasticRegion::ElastoplasticRegion(const geometry::BoundaryMesh& mesh, const BodyDefinition& body,
-                                         AnalysisType type, const J2Hardening& hardening, std::vector<Cell> cells)
+                                         AnalysisType type, const J2Hardening& hardening, std::vector<Cell> cells,
+                                         std::vector<Index> surface_nodes)
     : mesh_(mesh), type_(type), material_(body.material), hardening_(hardening), cells_(std::move(cells)),
+      surface_nodes_(std::move(surface_nodes)), surface_dofs_(2 * static_cast<Index>(surface_nodes_.size())),
       components_(type == AnalysisType::axisymmetric ? 4 : 3) {
   if (!(hardening_.yield_stress > 0.0) || hardening_.isotropic < 0.0 || hardening_.kinematic < 0.0)
     throw Error("body '" + body.name + "': the yield stress must be > 0 and the hardening moduli >= 0");
   conditions_ = resolve_node_conditions(mesh_, body, type);
+  // The surface nodes carry tractions in global components (u_r = 0 kept on the axis), as
+  // FactoredBody's variable nodes do.
+  for (const Index node : surface_nodes_) {
+    if (node < 0 || node >= mesh_.node_count()) throw Error("ElastoplasticRegion: surface node out of range");
+    NodeCondition& c = conditions_[static_cast<std::size_t>(node)];
+    const bool on_axis = c.on_axis;
+    c = NodeCondition{};
+    if (on_axis) c.on_axis = true, c.kind[0] = ConditionKind::displacement;
+  }
   constraints_ = resolve_point_constraints(mesh_, body, conditions_);
   const ElementIntegrator integrator(type, material_);
   const CellKernels kernels(type, material_);
@@ -239,15 +250,24 @@ ElastoplasticRegion::ElastoplasticRegion(const geometry::BoundaryMesh& mesh, con
   auto matrices = assemble_influence_matrices(mesh_, integrator);
   auto system = build_boundary_system(matrices, conditions_, constraints_);
   const Index n = mesh_.node_count(), rows = system.b.size(), m = static_cast<Index>(cells_.size());
-  // [b | B]: the cells' domain term at the collocation nodes (the boundary equation's rows),
-  // each cell's columns by one thread.
-  boundary_rhs_ = Matrix::Zero(rows, 1 + d * m);
+  const Index k2 = surface_dofs_, first_cell = 1 + k2;
+  // [b | T | B]: a unit traction at each surface dof, G's column (the matrices are in the
+  // nodes' frames, the surface nodes' global); the cells' domain term at the collocation
+  // nodes (the boundary equation's rows), each cell's columns by one thread.
+  boundary_rhs_ = Matrix::Zero(rows, first_cell + d * m);
   boundary_rhs_.col(0) = system.b;
+  for (Index j = 0; j < k2; ++j) {
+    const Index node = surface_nodes_[static_cast<std::size_t>(j / 2)];
+    if (conditions_[static_cast<std::size_t>(node)].on_axis && j % 2 == 0) continue;  // p_r = 0 on the axis
+    boundary_rhs_.block(0, 1 + j, 2 * n, 1) = matrices.G.col(2 * node + j % 2);
+    for (Index i = 0; i < n; ++i)
+      if (conditions_[static_cast<std::size_t>(i)].on_axis) boundary_rhs_(2 * i, 1 + j) = 0.0;
+  }
 #pragma omp parallel for schedule(dynamic, 1)
   for (Index e = 0; e < m; ++e) {
     const auto sources = cell_and_images(cells_[static_cast<std::size_t>(e)], mesh_.images, kernels.d);
     for (Index i = 0; i < n; ++i) {
-      auto block = boundary_rhs_.block(2 * i, 1 + d * e, 2, d);
+      auto block = boundary_rhs_.block(2 * i, first_cell + d * e, 2, d);
       for (const auto& source : sources)
         block += kernels.displacement(mesh_.nodes[static_cast<std::size_t>(i)].position, source.cell) * source.stress_map;
     }
@@ -258,14 +278,22 @@ ElastoplasticRegion::ElastoplasticRegion(const geometry::BoundaryMesh& mesh, con
   // C E = a s + K sigma0: through the boundary (Somigliana's means of the solved (u, t)),
   // then the cells' own fields.
   const std::vector<NodeCondition> unloaded = scaled(conditions_, 0.0);
-  Matrix values(4 * n, 1 + d * m);
-  for (Index j = 0; j < 1 + d * m; ++j)
+  Matrix values(4 * n, first_cell + d * m);
+  for (Index j = 0; j < first_cell + d * m; ++j)
     values.col(j) = boundary_values(boundary_unknowns_.col(j), j == 0 ? conditions_ : unloaded, constraints_);
+  for (Index j = 0; j < k2; ++j)  // the unit datum itself
+    if (boundary_rhs_.col(1 + j).size() > 0 && !boundary_rhs_.col(1 + j).isZero(0.0))
+      values(2 * n + 2 * surface_nodes_[static_cast<std::size_t>(j / 2)] + j % 2, 1 + j) = 1.0;
   const auto means = cell_mean_points(mesh_, cells_);
   const Matrix through_boundary = mean_somigliana_rows(mesh_, kernels, means) * values;
   load_stress_ = through_boundary.col(0);
+  traction_stress_ = through_boundary.middleCols(1, k2);
   cell_operator_ = through_boundary.rightCols(d * m);
   add_cell_fields(kernels, cells_, means, mesh_.images, cell_operator_);
+  surface_displacement_.resize(k2, d * m);
+  for (Index j = 0; j < k2; ++j)
+    surface_displacement_.row(j) = values.block(2 * surface_nodes_[static_cast<std::size_t>(j / 2)] + j % 2, first_cell, 1, d * m);
+  surface_traction_ = Vector::Zero(k2);
   states_.assign(static_cast<std::size_t>(m), J2State{});
   stress_.assign(static_cast<std::size_t>(m), Mandel::Zero());
   thickness_strain_.assign(static_cast<std::size_t>(m), 0.0);
@@ -289,17 +317,35 @@ Vector ElastoplasticRegion::initial_stress(const Mandel& plastic_strain) const {
   return sigma0;
 }
 
-// The residual F(E) of an increment to `amplitude`, with each cell's update and
-// d sigma0 / d E (the Newton system's blocks).
+Vector ElastoplasticRegion::initial_stresses() const {
+  const Index d = components_;
+  Vector sigma0(d * static_cast<Index>(cells_.size()));
+  for (std::size_t e = 0; e < cells_.size(); ++e)
+    sigma0.segment(d * static_cast<Index>(e), d) = initial_stress(states_[e].plastic_strain);
+  return sigma0;
+}
+
+ElastoplasticState ElastoplasticRegion::state() const {
+  return {states_, stress_, thickness_strain_, surface_traction_, amplitude_};
+}
+
+void ElastoplasticRegion::restore(const ElastoplasticState& state) {
+  states_ = state.states, stress_ = state.stress, thickness_strain_ = state.thickness_strain;
+  surface_traction_ = state.surface_traction, amplitude_ = state.amplitude;
+}
+
+// The residual F(E) of an increment to `amplitude` with the surface tractions `traction`,
+// with each cell's update, its initial stress and d sigma0 / d E (the Newton system's blocks).
 struct ElastoplasticRegion::Evaluation {
   std::vector<J2Update> updates;
   std::vector<Matrix> slope;
+  Vector sigma0;
   Vector F;
   double norm = 0.0;  // max |F| / (Y / E)
   Index worst = 0;    // the cell where it is largest
 };
 
-ElastoplasticRegion::Evaluation ElastoplasticRegion::evaluate(const Vector& E, double amplitude,
+ElastoplasticRegion::Evaluation ElastoplasticRegion::evaluate(const Vector& E, double amplitude, const Vector& traction,
                                                               const std::vector<char>& held) const {
   const Index m = static_cast<Index>(cells_.size()), d = components_;
   const CellKernels kernels(type_, material_);
@@ -334,7 +380,9 @@ ElastoplasticRegion::Evaluation ElastoplasticRegion::evaluate(const Vector& E, d
     sigma0.segment(d * e, d) = C * strain - stress;
     out.slope[k] = C - tangent;
   }
-  const Vector target = amplitude * load_stress_ + cell_operator_ * sigma0;  // C E as the cells' fields give it
+  // C E as the boundary's and the cells' fields give it.
+  const Vector target = amplitude * load_stress_ + traction_stress_ * traction + cell_operator_ * sigma0;
+  out.sigma0 = sigma0;
   out.F.resize(d * m);
   for (Index e = 0; e < m; ++e) out.F.segment(d * e, d) = E.segment(d * e, d) - compliance * target.segment(d * e, d);
   out.norm = m > 0 ? out.F.cwiseAbs().maxCoeff(&out.worst) / (hardening_.yield_stress / material_.young_modulus) : 0.0;
@@ -343,29 +391,35 @@ ElastoplasticRegion::Evaluation ElastoplasticRegion::evaluate(const Vector& E, d
 }
 
 // Newton from the elastic predictor, with a backtracking line search on |F| (the radial
-// return's kinks make full steps cycle near the elastic-plastic boundary). Commits the
-// state when it converges; false otherwise (`failure` says where).
+// return's kinks make full steps cycle near the elastic-plastic boundary). With a contact,
+// each iteration solves it on the linearised plastic response (Newton's step in the
+// tractions), and the increment ends when F and the tractions' change both vanish.
+// Commits the state when it converges; false otherwise (`failure` says where).
 bool ElastoplasticRegion::solve_increment(double amplitude, int max_iterations, double tolerance,
-                                          IncrementReport& report, std::string& failure) {
+                                          IncrementReport& report, std::string& failure,
+                                          const SurfaceContact* contact) {
   const Index m = static_cast<Index>(cells_.size());
   const Index d = components_;
   const Matrix compliance = CellKernels(type_, material_).stiffness().inverse();
+  Vector traction = surface_traction_;
   // The elastic predictor: the new load with the plastic strains of the last increment.
   Vector E(d * m);
   {
-    Vector sigma0(d * m);
-    for (Index e = 0; e < m; ++e) sigma0.segment(d * e, d) = initial_stress(states_[static_cast<std::size_t>(e)].plastic_strain);
-    const Vector target = amplitude * load_stress_ + cell_operator_ * sigma0;
+    const Vector target = amplitude * load_stress_ + traction_stress_ * traction + cell_operator_ * initial_stresses();
     for (Index e = 0; e < m; ++e) E.segment(d * e, d) = compliance * target.segment(d * e, d);
   }
+  // C^-1 H: the strain per unit surface traction, through the boundary.
+  Matrix strain_per_traction(d * m, surface_dofs_);
+  for (Index e = 0; e < m; ++e)
+    strain_per_traction.middleRows(d * e, d) = compliance * traction_stress_.middleRows(d * e, d);
   // Cells that cycled between elastic and plastic are held on the yield surface (j2_update).
   std::vector<char> held(static_cast<std::size_t>(m), 0);
   std::vector<int> flips(static_cast<std::size_t>(m), 0);  // changes of state from iteration to iteration
   std::vector<char> last_state(static_cast<std::size_t>(m), 0);
-  Evaluation current = evaluate(E, amplitude, held);
+  Evaluation current = evaluate(E, amplitude, traction, held);
   for (int iteration = 0;; ++iteration) {
     report.residual = current.norm;
-    if (current.norm <= tolerance) break;
+    if (!contact && current.norm <= tolerance) break;
     // A cell that went back to the state it left is held (one change is the plastic zone
     // growing or an unloading; a return is a cycle).
     bool newly_held = false;
@@ -375,7 +429,7 @@ bool ElastoplasticRegion::solve_increment(double amplitude, int max_iterations, 
       if (iteration > 0 && state != last_state[k] && ++flips[k] >= 2 && !held[k]) held[k] = 1, newly_held = true;
       last_state[k] = state;
     }
-    if (newly_held) current = evaluate(E, amplitude, held);
+    if (newly_held) current = evaluate(E, amplitude, traction, held);
     if (iteration == max_iterations || !std::isfinite(current.norm)) {
       const Vec2 at = cells_[static_cast<std::size_t>(current.worst)].centroid();
       std::ostringstream message;
@@ -387,7 +441,7 @@ bool ElastoplasticRegion::solve_increment(double amplitude, int max_iterations, 
     }
     // J = I - C^-1 K diag(d sigma0 / d E). An elastic cell's slope is 0: its columns are
     // the identity's, so the plastic cells' block is solved alone and the elastic cells'
-    // steps follow, dE_Q = -F_Q - J_QP dE_P.
+    // steps follow, dE_Q = r_Q - J_QP dE_P, for the right-hand side r = -F (+ C^-1 H dt).
     std::vector<Index> plastic;
     for (Index e = 0; e < m; ++e)
       if (!current.slope[static_cast<std::size_t>(e)].isZero(0.0)) plastic.push_back(e);
@@ -399,25 +453,59 @@ bool ElastoplasticRegion::solve_increment(double amplitude, int max_iterations, 
     }
     for (Index c = 0; c < m; ++c) coupling.middleRows(d * c, d) = -compliance * coupling.middleRows(d * c, d);
     Matrix J(d * p, d * p);
-    Matrix step_plastic(d * p, 1);
+    const Index columns = 1 + (contact ? surface_dofs_ : 0);
+    Matrix plastic_rhs(d * p, columns);  // [-F | C^-1 H] on the plastic rows
     for (Index i = 0; i < p; ++i) {
-      J.middleRows(d * i, d) = coupling.middleRows(d * plastic[static_cast<std::size_t>(i)], d);
-      step_plastic.middleRows(d * i, d) = -current.F.segment(d * plastic[static_cast<std::size_t>(i)], d);
+      const Index e = plastic[static_cast<std::size_t>(i)];
+      J.middleRows(d * i, d) = coupling.middleRows(d * e, d);
+      plastic_rhs.block(d * i, 0, d, 1) = -current.F.segment(d * e, d);
+      if (contact) plastic_rhs.block(d * i, 1, d, surface_dofs_) = strain_per_traction.middleRows(d * e, d);
     }
     J += Matrix::Identity(d * p, d * p);
     if (p > 0) {
       const operators::DenseLU lu(std::move(J), "the elastoplastic Newton system");
-      lu.solve_in_place(step_plastic);
+      lu.solve_in_place(plastic_rhs);
     }
-    Matrix step = -current.F - coupling * step_plastic;
-    for (Index i = 0; i < p; ++i)
-      step.middleRows(d * plastic[static_cast<std::size_t>(i)], d) = step_plastic.middleRows(d * i, d);
+    Vector step_plastic = plastic_rhs.col(0);
+    Vector rhs = -current.F;
+    if (contact) {
+      // The cells' displacement of the surface as the step moves the tractions from t to t':
+      // G (sigma0 + S (a + Z (t' - t))), S = d sigma0 / d E of the plastic cells, a and Z
+      // the step's parts (the columns solved above).
+      Matrix GS(surface_dofs_, d * p);
+      for (Index j = 0; j < p; ++j) {
+        const Index e = plastic[static_cast<std::size_t>(j)];
+        GS.middleCols(d * j, d) = surface_displacement_.middleCols(d * e, d) * current.slope[static_cast<std::size_t>(e)];
+      }
+      const Matrix Z = plastic_rhs.rightCols(surface_dofs_);
+      const Matrix F = GS * Z;
+      const Vector u0 = surface_displacement_ * current.sigma0 + GS * (step_plastic - Z * traction);
+      Vector next = traction;
+      if (!(*contact)(u0, F, next, failure)) {
+        failure = "the contact on the linearised plastic response at Newton iteration " + std::to_string(iteration + 1) +
+                  ": " + failure;
+        return false;
+      }
+      const Vector change = next - traction;
+      const double scale = next.size() > 0 ? next.cwiseAbs().maxCoeff() : 0.0;
+      const double moved = change.size() > 0 ? change.cwiseAbs().maxCoeff() : 0.0;
+      // The tractions to 1e-7 of the largest: near a limit load the linearised contact is
+      // ill-conditioned (a perfectly plastic block at -2Y/sqrt3: its tractions wander by 3e-9
+      // from iteration to iteration while F stays at round-off).
+      if (current.norm <= tolerance && moved <= 1e-7 * scale) break;
+      step_plastic += Z * change;
+      rhs += strain_per_traction * change;
+      traction = next;
+      current = evaluate(E, amplitude, traction, held);  // the line search's reference
+    }
+    Matrix step = rhs - coupling * step_plastic;
+    for (Index i = 0; i < p; ++i) step.middleRows(d * plastic[static_cast<std::size_t>(i)], d) = step_plastic.segment(d * i, d);
     double fraction = 1.0;
-    Evaluation next = evaluate(E + step.col(0), amplitude, held);
+    Evaluation next = evaluate(E + step.col(0), amplitude, traction, held);
     constexpr int kHalvings = 10;
     for (int k = 0; k < kHalvings && !(next.F.norm() < (1.0 - 1e-4 * fraction) * current.F.norm()); ++k) {
       fraction *= 0.5;
-      next = evaluate(E + fraction * step.col(0), amplitude, held);
+      next = evaluate(E + fraction * step.col(0), amplitude, traction, held);
     }
     E += fraction * step.col(0);
     current = std::move(next);
@@ -435,8 +523,16 @@ bool ElastoplasticRegion::solve_increment(double amplitude, int max_iterations, 
     stress_[static_cast<std::size_t>(e)] = update.stress;
     thickness_strain_[static_cast<std::size_t>(e)] = update.strain[2];
   }
+  surface_traction_ = traction;
   amplitude_ = amplitude;
   return true;
+}
+
+bool ElastoplasticRegion::advance_in_contact(double amplitude, const SurfaceContact& contact, IncrementReport& report,
+                                             std::string& failure, int max_iterations, double tolerance) {
+  report = IncrementReport{};
+  report.amplitude = amplitude;
+  return solve_increment(amplitude, max_iterations, tolerance, report, failure, &contact);
 }
 
 IncrementReport ElastoplasticRegion::advance(double amplitude, int max_iterations, double tolerance) {
@@ -476,11 +572,15 @@ IncrementReport ElastoplasticRegion::advance(double amplitude, int max_iteration
 BoundarySolution ElastoplasticRegion::boundary_solution() const {
   const Index m = static_cast<Index>(cells_.size());
   const Index d = components_;
-  Vector coefficients(1 + d * m);
-  coefficients[0] = amplitude_;
-  for (Index e = 0; e < m; ++e)
-    coefficients.segment(1 + d * e, d) = initial_stress(states_[static_cast<std::size_t>(e)].plastic_strain);
-  return recover_boundary_values(boundary_unknowns_ * coefficients, scaled(conditions_, amplitude_), constraints_);
+  Vector coefficients(1 + surface_dofs_ + d * m);
+  coefficients << amplitude_, surface_traction_, initial_stresses();
+  BoundarySolution solution =
+      recover_boundary_values(boundary_unknowns_ * coefficients, scaled(conditions_, amplitude_), constraints_);
+  for (Index j = 0; j < surface_dofs_; ++j) {
+    const auto node = static_cast<std::size_t>(surface_nodes_[static_cast<std::size_t>(j / 2)]);
+    if (!(conditions_[node].on_axis && j % 2 == 0)) solution.traction[node][j % 2] = surface_traction_[j];
+  }
+  return solution;
 }
 
 void ElastoplasticRegion::add_cell_fields_at(const Vec2& point, Vec2& u, StressTensor& stress) const {

@@ -356,6 +356,8 @@ void ContactModel::assemble_jumps_and_loads(Build& build) {
   cp.pairs = n;
   build.W = Matrix::Zero(2 * n, nq);
   auto& W = build.W;
+  jump_map_.assign(regions.size(), Matrix());
+  for (std::size_t r = 0; r < regions.size(); ++r) jump_map_[r] = Matrix::Zero(2 * n, response[r].rows());
   cp.loads.push_back({problem.data_amplitude, Vector::Zero(2 * n), Vector::Zero(K)});
   for (const auto& amplitude : problem.boundary_amplitudes) cp.loads.push_back({amplitude, Vector::Zero(2 * n), Vector::Zero(K)});
   // Interferences: the overlap d - interference of each pair, as a jump +interference along
@@ -384,6 +386,8 @@ void ContactModel::assemble_jumps_and_loads(Build& build) {
       const Mat2 Qg = pairs_[first + i].frame();
       Matrix u = response[contact.region1].middleRows(o1 + 2 * i, 2);
       Matrix u0 = response0[contact.region1].middleRows(o1 + 2 * i, 2);  // 2 x groups
+      const Index row = 2 * (first + i);
+      jump_map_[contact.region1].block(row, o1 + 2 * i, 2, 2) += Qg;
       if (contact.mortar.size() > 0) {
         // The weighted jump (pairing.hpp, mortar).
         for (Index a = 0; a < contact.mortar.rows(); ++a) {
@@ -391,11 +395,13 @@ void ContactModel::assemble_jumps_and_loads(Build& build) {
           if (c == 0.0) continue;
           u -= c * response[contact.region2].middleRows(o2 + 2 * a, 2);
           u0 -= c * response0[contact.region2].middleRows(o2 + 2 * a, 2);
+          jump_map_[contact.region2].block(row, o2 + 2 * a, 2, 2) -= c * Qg;
         }
       } else if (contact.region2 >= 0) {
         for (int a = 0; a < pair.count2; ++a) {
           u -= pair.shape2[a] * response[contact.region2].middleRows(o2 + 2 * pair.zone2[a], 2);
           u0 -= pair.shape2[a] * response0[contact.region2].middleRows(o2 + 2 * pair.zone2[a], 2);
+          jump_map_[contact.region2].block(row, o2 + 2 * pair.zone2[a], 2, 2) -= pair.shape2[a] * Qg;
         }
       } else {
         // The rigid body translates by its force loads' approaches and its prescribed displacement.

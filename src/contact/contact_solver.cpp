@@ -1,4 +1,5 @@
 #include "bemcontact/contact/contact_solver.hpp"
+#include "bemcontact/contact/plastic_coupling.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -320,10 +321,12 @@ struct HistoryData {
   PairLaws laws;
   // The last Newton system's factors, reused while the active sets repeat (step_solvers.hpp).
   std::unique_ptr<NewtonSystemCache> newton_cache = std::make_unique<NewtonSystemCache>();
+  // An elastoplastic region in contact: it solves each step (plastic_coupling.hpp); null: none.
+  PlasticCoupling* coupling = nullptr;
 };
 
 HistoryData history_data(const CondensedProblem& condensed, const std::vector<ContactPair>& pairs,
-                         const ContactProblem& problem, const std::vector<Index>& groups) {
+                         const ContactProblem& problem, const std::vector<Index>& groups, PlasticCoupling* coupling) {
   std::vector<Index> all_groups = groups.size() > 1 ? groups : std::vector<Index>{0, condensed.pairs};
   PairLaws laws = pair_laws(problem, all_groups);
   if (all_groups.size() == problem.contacts.size() + 1)
@@ -331,7 +334,8 @@ HistoryData history_data(const CondensedProblem& condensed, const std::vector<Co
       if (problem.contacts[c].law.nonlocal_radius > 0.0)
         add_mollifier_rows(pairs, all_groups[c], all_groups[c + 1], problem.contacts[c].law.nonlocal_radius,
                            laws.mollifier);
-  return {condensed, pairs, problem, groups, std::move(all_groups), std::move(laws), std::make_unique<NewtonSystemCache>()};
+  return {condensed, pairs, problem, groups, std::move(all_groups), std::move(laws), std::make_unique<NewtonSystemCache>(),
+          coupling};
 }
 
 // What a history carries from step to step; copied to undo a cycle jump.
@@ -383,6 +387,7 @@ StepOutput solve_step(const HistoryData& data, const StepInput& previous, double
   input.state_start = previous.state_start;
   input.newton_cache = data.newton_cache.get();
   const SolverOptions& solver = data.problem.solver;
+  if (data.coupling) return data.coupling->solve_step(input, solver);
   return solver.algorithm == Algorithm::newton ? solve_step_newton(input, solver) : solve_step_thesis(input, solver);
 }
 
@@ -529,8 +534,12 @@ void advance(const HistoryData& data, double from, double to, double offset, con
   corners.insert(std::upper_bound(corners.begin(), corners.end(), to), to);
   const double base_step = end / problem.increments;
   const double min_step = end / problem.max_steps;
-  // Adaptive stepping matters for friction: frictionless contact does not depend on the path.
-  const bool adaptive = problem.adaptive && problem.has_friction();
+  // Adaptive stepping matters for friction and plasticity: frictionless elastic contact does
+  // not depend on the path.
+  const bool adaptive = problem.adaptive && (problem.has_friction() || data.coupling);
+  // An elastoplastic step that fails is redone in halves whether or not the steps adapt
+  // (as the elastoplastic route cuts its increments).
+  const bool halve_failures = adaptive || data.coupling;
   double t = from, dt = base_step;
   std::size_t corner = 0, planned = 0;
   int taken = 0;  // in this stretch (max_steps bounds each cycle)
@@ -548,7 +557,7 @@ void advance(const HistoryData& data, double from, double to, double offset, con
     add_iterations(run.totals, trial);
     double h = t_next - t;
     reject_runaway_motions(data, trial);
-    if (!trial.converged && adaptive && h > 2.0 * min_step) {
+    if (!trial.converged && halve_failures && h > 2.0 * min_step) {
       dt = 0.5 * h;  // a smaller step may converge
       continue;
     }
@@ -556,6 +565,8 @@ void advance(const HistoryData& data, double from, double to, double offset, con
     if (fall_back) {
       t_next = too_fast->first;
       trial = std::move(too_fast->second);
+      // The plastic state is the last solved step's: that step solved again.
+      if (data.coupling) trial = solve_step(data, run.previous, t_next);
       h = t_next - t;
       ++history.steps_past_state_limit;
     }
@@ -575,12 +586,13 @@ void advance(const HistoryData& data, double from, double to, double offset, con
     ++run.taken;
     ++taken;
     t = t_next;
+    if (data.coupling) data.coupling->accept(t + offset);
     run.state = trial_state;
     record_history_step(data, run, t, offset, hooks.report, history);
     run.step_ends.push_back(t);
     carry_over(run.step, run.previous);
     // Grow again after an accepted step.
-    if (adaptive && dt < base_step) dt = std::min(base_step, 2.0 * dt);
+    if (halve_failures && dt < base_step) dt = std::min(base_step, 2.0 * dt);
     check_step_budget(problem, taken, t);
     if (hooks.progress) hooks.progress("contact load steps", (t - from) / (to - from));
   }
@@ -716,11 +728,11 @@ void finish_history(const HistoryRun& run, const ContactSummary& totals, LoadHis
 LoadHistory solve_load_history(const CondensedProblem& condensed, const std::vector<ContactPair>& pairs,
                                const ContactProblem& problem, const bem::ProgressCallback& progress,
                                const std::vector<Index>& groups, const StepCheck& check_step,
-                               const MotionReport& report) {
+                               const MotionReport& report, PlasticCoupling* coupling) {
   check_history_options(problem);
   LoadHistory history;
   if (groups.size() > 1) history.contacts.resize(groups.size() - 1);
-  const HistoryData data = history_data(condensed, pairs, problem, groups);
+  const HistoryData data = history_data(condensed, pairs, problem, groups, coupling);
   const HistoryHooks hooks{check_step, report, progress};
   HistoryRun run = history_start(data);
   const LoadCycles& cycles = problem.cycles;
@@ -784,7 +796,7 @@ MotionReport free_motion_report(const ContactProblem& problem, const ContactMode
 // The load history on the model, its contacts' zones checked at every step; a failure says
 // which force loads pull the bodies apart.
 LoadHistory contact_history(const ContactProblem& problem, const ContactModel& model,
-                            const bem::ProgressCallback& progress) {
+                            const bem::ProgressCallback& progress, PlasticCoupling* coupling) {
   std::vector<Index> groups;
   for (std::size_t c = 0; c <= problem.contacts.size(); ++c) groups.push_back(model.pair_offset(c));
   const MotionReport report = free_motion_report(problem, model);
@@ -792,7 +804,8 @@ LoadHistory contact_history(const ContactProblem& problem, const ContactModel& m
     check_zones_not_clipped(model, state, step, time);
   };
   try {
-    return solve_load_history(model.condensed(), model.pairs(), problem, progress, groups, check_zones, report);
+    return solve_load_history(model.condensed(), model.pairs(), problem, progress, groups, check_zones, report,
+                              coupling);
   } catch (const SolverError& error) {
     throw SolverError(error.what() + pulling_loads_hint(model), error.failure());
   }
@@ -814,6 +827,7 @@ void take_history(const ContactProblem& problem, LoadHistory& history, ContactRe
 // Every region's mesh and final boundary solution, with stresses and resultants.
 void add_region_boundaries(const ContactProblem& problem, const ContactModel& model, const LoadHistory& history,
                            ContactResult& result) {
+  const int plastic = result.plastic ? result.plastic_region : -1;
   const auto& regions = model.prepared().regions;
   for (std::size_t r = 0; r < regions.size(); ++r) {
     const auto& region = regions[r];
@@ -822,7 +836,9 @@ void add_region_boundaries(const ContactProblem& problem, const ContactModel& mo
     result.body_names.push_back(body.regions.size() == 1 ? body.name : region.definition.name);
     result.region_labels.push_back(region.label);
     result.meshes.push_back(region.mesh);
-    auto boundary = model.region_solution(static_cast<int>(r), history.x, history.delta, problem.end_time);
+    auto boundary = static_cast<int>(r) == plastic
+                        ? result.plastic->boundary  // the cells' part included, stresses with their plastic strain
+                        : model.region_solution(static_cast<int>(r), history.x, history.delta, problem.end_time);
     if (boundary.stress.empty())
       boundary.stress = bem::boundary_stresses(region.mesh, problem.analysis, material, boundary);
     // Conditions as the user gave them (the platen's are the solver's own).
@@ -852,7 +868,7 @@ void add_step_boundaries(const ContactProblem& problem, const ContactModel& mode
 // The interior points of every region that lists some; false when none does.
 bool add_interior_values(const ContactProblem& problem, const ContactModel& model,
                          std::vector<bem::InteriorSelection>& selections, const bem::ProgressCallback& progress,
-                         ContactResult& result) {
+                         const PlasticCoupling* coupling, ContactResult& result) {
   const auto& regions = model.prepared().regions;
   bool any_interior = false;
   result.interior.resize(regions.size());
@@ -862,8 +878,11 @@ bool add_interior_values(const ContactProblem& problem, const ContactModel& mode
     if (points.empty()) continue;
     any_interior = true;
     const bem::ElementIntegrator integrator(problem.analysis, region.definition.material);
-    result.interior[r] =
-        bem::interior_values(result.meshes[r], integrator, result.boundary[r], std::move(selections[r]), progress);
+    bem::DomainTerm cells;
+    if (coupling && coupling->region() == static_cast<int>(r))
+      cells = [coupling](const Vec2& x, Vec2& u, bem::StressTensor& s) { coupling->add_cell_fields_at(x, u, s); };
+    result.interior[r] = bem::interior_values(result.meshes[r], integrator, result.boundary[r],
+                                              std::move(selections[r]), progress, cells);
   }
   return any_interior;
 }
@@ -887,13 +906,24 @@ ContactResult solve_on_meshes(const ContactProblem& problem, const bem::Progress
   std::vector<bem::InteriorSelection> selections = interior_selections(problem, model);
   result.unknowns = 2 * model.condensed().pairs + model.condensed().motions;
 
+  std::unique_ptr<PlasticCoupling> coupling;
+  if (const int r = plastic_region_in_contact(problem, model); r >= 0) {
+    start = Clock::now();
+    coupling = std::make_unique<PlasticCoupling>(problem, model, r);
+    result.timings.add("cells and their operators", seconds_since(start));
+  }
+
   start = Clock::now();
   for (const auto& body : model.free_motions().bodies)
     for (const Index mode : body.reported) result.free_motions.push_back({body.body, mode_direction(mode, problem.analysis)});
-  LoadHistory history = contact_history(problem, model, progress);
-  result.timings.add("contact iterations", seconds_since(start));
+  LoadHistory history = contact_history(problem, model, progress, coupling.get());
+  result.timings.add(coupling ? "elastoplastic contact steps" : "contact iterations", seconds_since(start));
   take_history(problem, history, result);
   if (finish_pass && !finish_pass(result)) return result;
+  if (coupling) {
+    result.plastic = coupling->result();
+    result.plastic_region = coupling->region();
+  }
 
   start = Clock::now();
   result.warnings = model.prepared().warnings;
@@ -901,7 +931,7 @@ ContactResult solve_on_meshes(const ContactProblem& problem, const bem::Progress
   add_step_boundaries(problem, model, history, result);
   result.timings.add("boundary stresses", seconds_since(start));
   start = Clock::now();
-  if (add_interior_values(problem, model, selections, progress, result))
+  if (add_interior_values(problem, model, selections, progress, coupling.get(), result))
     result.timings.add("interior points", seconds_since(start));
   return result;
 }

@@ -3,6 +3,7 @@
 // made from the region's [cells] (plasticity/region_cells.hpp), the region solved step by
 // step (bem/elastoplastic_region.hpp), and at each step's end the boundary values, the
 // boundary stresses with the cells' plastic strain, and the resultants.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -56,6 +57,18 @@ std::vector<StressTensor> elastoplastic_boundary_stresses(const geometry::Bounda
 // the cell operator, the boundary's [b | B] and its solution, Somigliana's means, and the
 // Newton system at worst (every cell plastic).
 double elastoplastic_region_bytes(Index cells, Index nodes);
+
+// The cells of an elastoplastic region from its [cells] (plasticity/region_cells.hpp).
+// InputError at the [cells] table when they cannot be made, or when their dense matrices
+// would take more than `memory_limit_bytes` (0: no limit).
+std::vector<plasticity::Cell> region_cells_of(const geometry::BoundaryMesh& mesh, const BodyDefinition& body,
+                                              double memory_limit_bytes);
+
+// The warning of a plastic zone that reaches a side of the cells' box where the body goes
+// on (the answer too stiff there); none otherwise.
+std::optional<std::string> plastic_zone_box_warning(const geometry::BoundaryMesh& mesh, const BodyDefinition& body,
+                                                    const std::vector<plasticity::Cell>& cells,
+                                                    const std::vector<plasticity::J2State>& states);
 
 // InputError at the [cells] table when its cells cannot be made, or when they would take
 // more than `memory_limit_bytes` (0: no limit; before anything large is allocated);

@@ -20,6 +20,7 @@
 // plastic cells beyond about 1.3 times the first-yield pressure (Newton cycled). The stress
 // of a cell is the material's at its mean strain (the plastic strain is cell-wise constant:
 // its error is of the order of the cell size where it varies).
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -50,12 +51,30 @@ struct IncrementReport {
   double held_increment = 0.0;
 };
 
+// A contact on the region's surface nodes (the constructor's `surface_nodes`): given the
+// displacement the cells add to those nodes as an affine map of the nodes' tractions t
+// (global components, 2 per node), u_cells = u0 + F t (the present linearisation of the
+// plastic response), it sets t to the tractions of its solution; false when it has none
+// (`failure` says why). The elastic response of the nodes is the contact's own.
+using SurfaceContact = std::function<bool(const Vector& u0, const Matrix& F, Vector& t, std::string& failure)>;
+
+// The state an increment changes, to take a trial increment back.
+struct ElastoplasticState {
+  std::vector<plasticity::J2State> states;
+  std::vector<plasticity::Mandel> stress;
+  std::vector<double> thickness_strain;
+  Vector surface_traction;
+  double amplitude = 0.0;
+};
+
 class ElastoplasticRegion {
  public:
   // Throws Error for a bad hardening (the reader checks it first), SolverError for a
-  // singular system.
+  // singular system. `surface_nodes` carry tractions set from outside (a contact), in
+  // place of the body's own conditions there.
   ElastoplasticRegion(const geometry::BoundaryMesh& mesh, const BodyDefinition& body, AnalysisType type,
-                      const plasticity::J2Hardening& hardening, std::vector<plasticity::Cell> cells);
+                      const plasticity::J2Hardening& hardening, std::vector<plasticity::Cell> cells,
+                      std::vector<Index> surface_nodes = {});
   ElastoplasticRegion(ElastoplasticRegion&&) noexcept;
   ~ElastoplasticRegion();
 
@@ -63,6 +82,14 @@ class ElastoplasticRegion {
   // cutting it in halves where Newton does not converge. Throws SolverError naming the
   // increment, the step cut it tried and the cell where it fails after 6 cuts.
   IncrementReport advance(double amplitude, int max_iterations = 30, double tolerance = 1e-10);
+  // The increment to `amplitude` with the surface nodes' tractions from `contact`, solved
+  // in each Newton iteration on the linearised plastic response (a Newton on the cells'
+  // strains and the tractions together), without cuts: false (and `failure`) when it does
+  // not converge, the state unchanged.
+  bool advance_in_contact(double amplitude, const SurfaceContact& contact, IncrementReport& report,
+                          std::string& failure, int max_iterations = 30, double tolerance = 1e-10);
+  ElastoplasticState state() const;
+  void restore(const ElastoplasticState& state);
 
   const std::vector<plasticity::Cell>& cells() const { return cells_; }
   const std::vector<plasticity::J2State>& states() const { return states_; }
@@ -80,10 +107,11 @@ class ElastoplasticRegion {
 
  private:
   Vector initial_stress(const plasticity::Mandel& plastic_strain) const;
+  Vector initial_stresses() const;  // of every cell, from the committed plastic strains
   struct Evaluation;
-  Evaluation evaluate(const Vector& E, double amplitude, const std::vector<char>& held) const;
+  Evaluation evaluate(const Vector& E, double amplitude, const Vector& traction, const std::vector<char>& held) const;
   bool solve_increment(double amplitude, int max_iterations, double tolerance, IncrementReport& report,
-                       std::string& failure);
+                       std::string& failure, const SurfaceContact* contact = nullptr);
 
   geometry::BoundaryMesh mesh_;
   AnalysisType type_;
@@ -92,10 +120,15 @@ class ElastoplasticRegion {
   std::vector<plasticity::Cell> cells_;
   std::vector<NodeCondition> conditions_;
   std::vector<ConstraintEquation> constraints_;
-  Matrix boundary_rhs_;   // [b | B]: the load at amplitude 1 and the cells' domain term
-  Matrix boundary_unknowns_;  // A^-1 [b | B]
+  std::vector<Index> surface_nodes_;
+  Index surface_dofs_ = 0;  // 2 per surface node
+  Matrix boundary_rhs_;   // [b | T | B]: the load at amplitude 1, unit surface tractions, the cells' domain term
+  Matrix boundary_unknowns_;  // A^-1 [b | T | B]
   Vector load_stress_;    // s: C E per unit amplitude (components_ per cell: tensor components)
+  Matrix traction_stress_;  // H: C E per unit surface traction
   Matrix cell_operator_;  // K: C E per unit initial stress component of each cell
+  Matrix surface_displacement_;  // G: the surface nodes' displacement per unit initial stress
+  Vector surface_traction_;      // the surface nodes' tractions at the last increment's end
   std::vector<plasticity::J2State> states_;
   std::vector<plasticity::Mandel> stress_;
   std::vector<double> thickness_strain_;  // plane stress: each cell's eps_33 of the last increment

@@ -102,6 +102,14 @@ class ContactModel {
   bem::BoundarySolution region_solution(int r, const Vector& x, const Vector& delta, double t) const;
   // Traction on side 1 at each pair in global components.
   Vec2 traction(Index pair, const Vector& x) const;
+  // Region r's data at its variable nodes (FactoredBody::variable_nodes, global components)
+  // as D_r q + d0_r of the contact unknowns q = (x, delta) and the load groups' amplitudes,
+  // and the pairs' jumps per unit displacement of those nodes (2N rows; w = sum_r of it times
+  // the region's complementary field): how a region's own further response (an
+  // elastoplastic region's cells: contact/plastic_coupling.hpp) enters the jumps.
+  const Matrix& data_map(int r) const { return data_map_[static_cast<std::size_t>(r)]; }
+  const Matrix& data_offset(int r) const { return data_offset_[static_cast<std::size_t>(r)]; }
+  const Matrix& jump_map(int r) const { return jump_map_[static_cast<std::size_t>(r)]; }
 
  private:
   // The condensation in the steps of docs/model.md, each filling the state it hands on.
@@ -123,6 +131,7 @@ class ContactModel {
   std::vector<std::unique_ptr<bem::FactoredBody>> factored_;
   std::vector<Matrix> data_map_;     // D_r
   std::vector<Matrix> data_offset_;  // d0_r per load group (columns)
+  std::vector<Matrix> jump_map_;     // per region: the jumps per unit complementary value at its variable nodes
 };
 
 }  // namespace bemcontact::contact

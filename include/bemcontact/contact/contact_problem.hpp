@@ -297,7 +297,8 @@ ContactProblem model_of(const bem::ProblemDefinition& problem);
 ContactProblem model_of(const dd::DecompositionProblem& problem);
 
 // Which solver a model takes (docs/model.md), from what it holds: a region with a yield
-// stress: the incremental elastoplastic solve; one elastic body of one region, with nothing
+// stress and no contact: the incremental elastoplastic solve (in contact, the condensed
+// problem steps it: plastic_coupling.hpp); one elastic body of one region, with nothing
 // but its own data (no contact, rigid body, force load, amplitude or history): the direct
 // solve; one such body of several regions: the thesis' iterative decomposition (chapter IV);
 // anything else: the condensed interface problem.
@@ -315,8 +316,7 @@ dd::DecompositionProblem decomposition_problem(const ContactProblem& model, cons
 // A model of route elastoplastic as its region's problem and the load steps: the ends of
 // `increments` equal steps over the history with every corner of the data amplitude, and
 // the amplitude at each. InputError at the yield stress's key for what the elastoplastic
-// solve does not serve yet (docs/plasticity.md, Limits): other regions or bodies, contacts,
-// force loads, boundary amplitudes, compressed operators.
+// solve does not serve yet (docs/plasticity.md, Limits): other regions or bodies, force loads, boundary amplitudes, compressed operators.
 struct ElastoplasticHistory {
   bem::ProblemDefinition problem;
   std::vector<double> times, amplitudes;

@@ -4,9 +4,11 @@
 // (and interior) solution of each body for stresses.
 #include <array>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "bemcontact/bem/elastoplastic_analysis.hpp"
 #include "bemcontact/bem/progress.hpp"
 #include "bemcontact/bem/solution.hpp"
 #include "bemcontact/contact/condensed.hpp"
@@ -166,6 +168,10 @@ struct ContactResult : ContactInterfaceResult {
   std::vector<std::string> warnings;    // from the pairing (PreparedContact::warnings)
   bem::PhaseTimings timings;
   Index unknowns = 0;  // condensed unknowns
+  // An elastoplastic region in contact (plastic_coupling.hpp): its index in `meshes`, its
+  // cells, states and steps; none for elastic bodies.
+  std::optional<bem::ElastoplasticResult> plastic;
+  int plastic_region = -1;
 };
 
 // The load history on a condensed problem, whatever model gave it (the BEM bodies, or
@@ -192,10 +198,12 @@ struct LoadHistory : ContactInterfaceResult {
 // `check_step` (when given) sees every step before it is accepted: its number, pseudo-time
 // and the pairs' states; it stops the history by throwing.
 using StepCheck = std::function<void(int step, double time, const std::vector<PairStatus>& state)>;
+// `coupling` (when given) solves each step with its elastoplastic region (plastic_coupling.hpp).
+class PlasticCoupling;
 LoadHistory solve_load_history(const CondensedProblem& condensed, const std::vector<ContactPair>& pairs,
                                const ContactProblem& problem, const bem::ProgressCallback& progress = {},
                                const std::vector<Index>& groups = {}, const StepCheck& check_step = {},
-                               const MotionReport& report = {});
+                               const MotionReport& report = {}, PlasticCoupling* coupling = nullptr);
 
 // Contacts with an adaptive zone (ZoneAdaptivity) are solved pass after pass on meshes
 // refined where they touch (zone_refinement.hpp), the result being the last pass's.

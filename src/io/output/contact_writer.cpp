@@ -12,6 +12,7 @@
 #include <limits>
 
 #include "bemcontact/io/output/json_writer.hpp"
+#include "bemcontact/io/output/plasticity_writer.hpp"
 #include "bemcontact/reference/hertz.hpp"
 #include "bemcontact/io/output/results_writer.hpp"
 
@@ -557,6 +558,12 @@ std::vector<OutputFile> contact_output_files(const contact::ContactProblem& prob
     }
     add("motions.csv", std::move(table));
   }
+  if (result.plastic) {  // the elastoplastic region's cells and steps (plasticity_writer.hpp)
+    const std::string stem = file_stem(result.body_names[static_cast<std::size_t>(result.plastic_region)]);
+    add(stem + "_cells.csv", cells_table(*result.plastic));
+    add(stem + "_plastic_steps.csv", elastoplastic_steps_table(*result.plastic));
+    if (vtk) add(stem + "_cells.vtk", cells_vtk(*result.plastic, problem.title));
+  }
   for (std::size_t r = 0; r < result.meshes.size(); ++r) {
     const std::string stem = file_stem(result.body_names[r]);
     add(stem + "_boundary.csv", boundary_table(result.meshes[r], result.boundary[r]));
@@ -627,6 +634,7 @@ void fill_contact_summary(RunSummary& summary, const contact::ContactProblem& pr
   nlohmann::json contacts = nlohmann::json::array();
   for (const auto& contact : result.contacts) contacts.push_back(interface_json(contact));
   summary.results["contacts"] = contacts;
+  if (result.plastic) summary.results["elastoplastic"] = elastoplastic_summary_json(*result.plastic);
 }
 
 std::vector<OutputFile> contact_mesh_files(const contact::ContactProblem& problem,

