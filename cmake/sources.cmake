@@ -80,6 +80,7 @@ set(BEMCONTACT_CONTACT_SOURCES
   src/contact/contact_summary.cpp
   src/contact/free_motions.cpp
   src/contact/halfspace_model.cpp
+  src/contact/indentation.cpp
   src/contact/newton_solver.cpp
   src/contact/plastic_coupling.cpp
   src/contact/nonlocal_friction.cpp
@@ -135,6 +136,7 @@ set(BEMCONTACT_VALIDATION_SOURCES
   src/validation/wavy_cases.cpp
   src/validation/compliance_cases.cpp
   src/validation/plasticity_cases.cpp
+  src/validation/plastic_contact_cases.cpp
   src/validation/wear_cases.cpp)
 set(BEMCONTACT_PARALLEL_SOURCES
   src/parallel/session.cpp)

@@ -559,6 +559,7 @@ void advance(const HistoryData& data, double from, double to, double offset, con
     reject_runaway_motions(data, trial);
     if (!trial.converged && halve_failures && h > 2.0 * min_step) {
       dt = 0.5 * h;  // a smaller step may converge
+      ++history.rejected_steps;
       continue;
     }
     const bool fall_back = !trial.converged && too_fast.has_value();

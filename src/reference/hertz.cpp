@@ -198,4 +198,20 @@ AxisMaxShear mcewen_max_shear_on_axis() {
   return golden_section_max(tau, 0.0, 4.0);
 }
 
+FirstYield hertz_sphere_first_yield(double poisson_ratio) {
+  const HertzPointContact unit{1.0, 1.0, 0.75};  // a = 1
+  const double p0 = unit.max_pressure();
+  const auto vm = [&](double zeta) { return unit.axis_stress(poisson_ratio, zeta).von_mises() / p0; };
+  const auto max = golden_section_max(vm, 0.0, 4.0);
+  return {max.depth_over_a, max.shear_over_p0};
+}
+
+FirstYield hertz_cylinder_first_yield(double poisson_ratio) {
+  const HertzLineContact unit{1.0, 1.0, 4.0 / pi};  // a = 1
+  const double p0 = unit.max_pressure();
+  const auto vm = [&](double zeta) { return unit.axis_stress(zeta, poisson_ratio).von_mises() / p0; };
+  const auto max = golden_section_max(vm, 0.0, 4.0);
+  return {max.depth_over_a, max.shear_over_p0};
+}
+
 }  // namespace bemcontact::reference

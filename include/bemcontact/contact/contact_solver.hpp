@@ -186,7 +186,7 @@ struct LoadHistory : ContactInterfaceResult {
   std::vector<StepRecord> records;      // per step
   std::vector<Vector> step_x, step_delta;  // per step when record_steps
   int steps_taken = 0;
-  int rejected_steps = 0;               // adaptive steps redone in halves
+  int rejected_steps = 0;               // steps redone in halves (adaptive, or an elastoplastic step that failed)
   int rejected_jumps = 0;               // cycle jumps undone (wear.hpp)
   // Steps taken although they changed more pairs than max_state_changes: their halves did
   // not converge.

@@ -92,4 +92,18 @@ struct HertzLineContact {
 // Maximum of tau = (s_xx - s_zz)/2 on the axis of the line contact: 0.30 p0 at z = 0.78 a.
 AxisMaxShear mcewen_max_shear_on_axis();
 
+// First yield under a frictionless Hertz contact (yield-onset): the largest von Mises
+// stress of the elastic field, on the axis for both contacts (checked off the axis on grids
+// with Huber's and McEwen's closed forms: it is the global maximum), its depth and the
+// peak pressure p0 = Y / (von Mises / p0) at which it reaches Y. For nu = 0.3: the sphere
+// 0.620 p0 at z = 0.481 a (p0 = 1.613 Y, [Johnson1985, 6.2] quotes 1.60 Y at 0.48 a); the
+// cylinder in plane strain (s_yy = nu (s_xx + s_zz)) 0.5575 p0 at z = 0.704 a (p0 = 1.794 Y).
+struct FirstYield {
+  double depth_over_a = 0.0;
+  double von_mises_over_p0 = 0.0;
+  double p0_over_yield() const { return 1.0 / von_mises_over_p0; }
+};
+FirstYield hertz_sphere_first_yield(double poisson_ratio);
+FirstYield hertz_cylinder_first_yield(double poisson_ratio);
+
 }  // namespace bemcontact::reference

@@ -13,4 +13,5 @@ std::vector<Case> rough_cases();          // src/validation/wavy_cases.cpp
 std::vector<Case> compliance_cases();     // src/validation/compliance_cases.cpp
 std::vector<Case> wear_cases();           // src/validation/wear_cases.cpp
 std::vector<Case> plasticity_cases();     // src/validation/plasticity_cases.cpp
+std::vector<Case> plastic_contact_cases();  // src/validation/plastic_contact_cases.cpp
 }  // namespace bemcontact::validation

@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <limits>
 
+#include "bemcontact/contact/indentation.hpp"
 #include "bemcontact/io/output/json_writer.hpp"
 #include "bemcontact/io/output/plasticity_writer.hpp"
 #include "bemcontact/reference/hertz.hpp"
@@ -469,7 +470,39 @@ std::string contact_report_text(const contact::ContactProblem& problem, const co
                   result.steps_past_state_limit == 1 ? "its" : "their");
     out += line;
   }
-  out += hertz_comparison(problem, s);
+  if (!result.plastic) {
+    out += hertz_comparison(problem, s);  // an elastic closed form
+    return out;
+  }
+  const auto& plastic = *result.plastic;
+  int iterations = 0, yielded = 0;
+  double kappa = 0.0;
+  for (const auto& step : plastic.steps) iterations += step.report.newton_iterations;
+  for (const auto& state : plastic.states) {
+    yielded += state.equivalent_plastic_strain > 0.0;
+    kappa = std::max(kappa, state.equivalent_plastic_strain);
+  }
+  std::snprintf(line, sizeof line,
+                "  elastoplastic %s: %zu cells, %d Newton iterations over the steps; %d cells yielded, largest "
+                "equivalent plastic strain %.4g\n",
+                result.region_labels[static_cast<std::size_t>(result.plastic_region)].c_str(), plastic.cells.size(),
+                iterations, yielded, kappa);
+  out += line;
+  if (const auto indentation = contact::indentation_report(problem, result)) {
+    const auto& r = *indentation;
+    std::snprintf(line, sizeof line,
+                  "  indentation: peak load %.6g at depth %.6g, contact radius %.6g (d/D = %.4g): Meyer hardness "
+                  "P/(pi a^2) = %.6g, HB = %.6g; dent depth after the last step %.6g\n",
+                  r.peak_load, r.peak_depth, r.contact_radius, 2.0 * r.contact_radius / r.ball_diameter, r.meyer,
+                  r.brinell, r.residual_depth);
+    out += line;
+    if (r.unloading_stiffness > 0.0) {
+      std::snprintf(line, sizeof line, "  initial unloading stiffness %.6g (elastic 2 E* a = %.6g: ratio %.4g)\n",
+                    r.unloading_stiffness, r.elastic_unloading_stiffness,
+                    r.unloading_stiffness / r.elastic_unloading_stiffness);
+      out += line;
+    }
+  }
   return out;
 }
 
@@ -558,6 +591,14 @@ std::vector<OutputFile> contact_output_files(const contact::ContactProblem& prob
     }
     add("motions.csv", std::move(table));
   }
+  if (const auto indentation = contact::indentation_report(problem, result)) {
+    constexpr auto c = CsvTable::compact;
+    CsvTable table({{"step", CsvTable::integer}, {"time", c}, {"depth", c}, {"load", c}});
+    for (std::size_t k = 0; k < indentation->times.size(); ++k)
+      table.row() << static_cast<double>(k + 1) << indentation->times[k] << indentation->depths[k]
+                  << indentation->loads[k];
+    add("indentation.csv", std::move(table));
+  }
   if (result.plastic) {  // the elastoplastic region's cells and steps (plasticity_writer.hpp)
     const std::string stem = file_stem(result.body_names[static_cast<std::size_t>(result.plastic_region)]);
     add(stem + "_cells.csv", cells_table(*result.plastic));
@@ -635,6 +676,20 @@ void fill_contact_summary(RunSummary& summary, const contact::ContactProblem& pr
   for (const auto& contact : result.contacts) contacts.push_back(interface_json(contact));
   summary.results["contacts"] = contacts;
   if (result.plastic) summary.results["elastoplastic"] = elastoplastic_summary_json(*result.plastic);
+  if (const auto indentation = contact::indentation_report(problem, result)) {
+    const auto& r = *indentation;
+    summary.results["indentation"] = {
+        {"ball_diameter", r.ball_diameter},
+        {"peak_load", r.peak_load},
+        {"peak_depth", r.peak_depth},
+        {"contact_radius", r.contact_radius},
+        {"impression_diameter", 2.0 * r.contact_radius},
+        {"meyer_hardness", r.meyer},
+        {"brinell_hardness", std::isfinite(r.brinell) ? nlohmann::json(r.brinell) : nlohmann::json(nullptr)},
+        {"unloading_stiffness", r.unloading_stiffness},
+        {"elastic_unloading_stiffness", r.elastic_unloading_stiffness},
+        {"residual_depth", r.residual_depth}};
+  }
 }
 
 std::vector<OutputFile> contact_mesh_files(const contact::ContactProblem& problem,

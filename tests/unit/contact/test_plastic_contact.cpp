@@ -134,5 +134,26 @@ TEST(PlasticContact, BallBelowFirstYieldIsTheElasticContact) {
   for (std::size_t i = 0; i < p.size(); ++i) EXPECT_NEAR(p[i], q[i], 1e-8 * peak) << i;
 }
 
+// What the coupling does not serve is refused at the region's yield_stress, with its line,
+// before any cell is made.
+TEST(PlasticContact, RefusesWhatTheCouplingDoesNotServe) {
+  const auto refusal = [](const std::string& text) {
+    try {
+      run_problem(text, "ball.toml", {});
+    } catch (const InputError& error) {
+      return std::string(error.what());
+    }
+    ADD_FAILURE() << "no input error";
+    return std::string();
+  };
+  const std::string ball = coarse_brinell(150.0);
+  const std::string recorded = refusal(replaced(ball, "increments = 2", "increments = 2\nrecord_steps = true"));
+  EXPECT_NE(recorded.find("ball.toml:"), std::string::npos) << recorded;
+  EXPECT_NE(recorded.find("yield_stress"), std::string::npos) << recorded;
+  EXPECT_NE(recorded.find("record_steps"), std::string::npos) << recorded;
+  const std::string compressed = refusal(replaced(ball, "increments = 2", "increments = 2\noperator = \"compressed\""));
+  EXPECT_NE(compressed.find("compressed operators"), std::string::npos) << compressed;
+}
+
 }  // namespace
 }  // namespace bemcontact::driver

@@ -192,6 +192,24 @@ TEST(ReferenceHertz, HuberMaximumShearOnTheAxis) {
   EXPECT_NEAR(s.von_mises() / unit.max_pressure(), 2 * al.shear_over_p0, 1e-12);
 }
 
+// First yield (yield-onset), against an independent Python computation of the whole fields
+// (Huber's and McEwen's closed forms on grids of 3001 x 3001 points refined by Nelder-Mead,
+// each checked against the Boussinesq / Flamant integrals over the Hertz pressure): the
+// maxima lie on the axis, sphere 0.6200 p0 at 0.4809 a, cylinder 0.5575 p0 at 0.7043 a
+// (nu = 0.3, 4 figures).
+TEST(ReferenceHertz, FirstYieldOfTheSphereAndTheCylinder) {
+  const auto sphere = ref::hertz_sphere_first_yield(0.3);
+  EXPECT_NEAR(sphere.von_mises_over_p0, 0.6200, 5e-5);
+  EXPECT_NEAR(sphere.depth_over_a, 0.4809, 5e-4);
+  EXPECT_NEAR(sphere.p0_over_yield(), 1.613, 5e-4);  // Johnson quotes 1.60 at 0.48 a
+  // On the sphere's axis sigma_rr = sigma_tt: von Mises is twice the largest shear.
+  EXPECT_NEAR(sphere.von_mises_over_p0, 2.0 * ref::huber_max_shear_on_axis(0.3).shear_over_p0, 1e-9);
+  const auto cylinder = ref::hertz_cylinder_first_yield(0.3);
+  EXPECT_NEAR(cylinder.von_mises_over_p0, 0.5575, 5e-5);
+  EXPECT_NEAR(cylinder.depth_over_a, 0.7043, 5e-4);
+  EXPECT_NEAR(cylinder.p0_over_yield(), 1.794, 5e-4);
+}
+
 // -------------------------------------------------------------------- Hertz line contact
 TEST(ReferenceHertzLine, HalfWidthPressureAndFlamantAxisStresses) {
   const Material m{210000.0, 0.3};
