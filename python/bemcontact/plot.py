@@ -12,7 +12,8 @@ about the centre of curvature for a conformal contact), load-history curves with
 delta loop of a tangential force load, as computed and without the bulk compliance; for a
 contact that wears, its scar's evolution over the load cycles (wear_<contact>); for an
 elastoplastic run, the plastic zone, the cells' von Mises stress and the load-displacement
-curve with its unloading branch (plasticity).
+curve with its unloading branch (plasticity), and for a ball indentation the load-depth
+curve and the dent left after unloading.
 """
 import argparse
 import hashlib
@@ -453,8 +454,13 @@ def plasticity_figure(result, stem, title, path=None):
     mean displacement of the boundary whose force works most (loaded_boundary), with its
     unloading branch."""
     cells = result.table(_file(stem, "cells.csv"))
-    steps = result.table(_file(stem, "steps.csv"))
-    fig, axes = plt.subplots(1, 3, figsize=(16, 5))
+    # A body alone writes <stem>steps.csv; one in contact <stem>plastic_steps.csv, and a
+    # ball indentation its load-depth curve (indentation.csv) and its dent.
+    names = result.names()
+    steps = result.table(_file(stem, "steps.csv") if _file(stem, "steps.csv") in names else
+                         _file(stem, "plastic_steps.csv"))
+    indentation = "indentation.csv" in names
+    fig, axes = plt.subplots(1, 4 if indentation else 3, figsize=(21 if indentation else 16, 5))
     vtk = _file(stem, "cells.vtk")
     polygons = vtk_polygons(result.text(vtk)) if vtk in result.names() else None
     for ax, column, label, cmap in ((axes[0], "equivalent_plastic_strain", "equivalent plastic strain", "magma_r"),
@@ -476,10 +482,25 @@ def plasticity_figure(result, stem, title, path=None):
         ax.set_title(f"{label} of the cells at the end ({int(np.sum(cells['equivalent_plastic_strain'] > 0))} "
                      "yielded: dots)" if column == "equivalent_plastic_strain" else f"{label} of the cells at the end",
                      fontsize=9)
-    names = [c[:-3] for c in steps.columns if c.endswith("_u1")]
-    loaded = loaded_boundary(steps, names)
+    boundaries = [c[:-3] for c in steps.columns if c.endswith("_u1")]
+    loaded = None if indentation else loaded_boundary(steps, boundaries)
     curve = axes[2]
-    if loaded is not None:
+    if indentation:
+        table = result.table("indentation.csv")
+        curve.plot(np.concatenate([[0.0], table["depth"]]), np.concatenate([[0.0], table["load"]]), ".-", ms=4)
+        curve.set_xlabel("depth of the ball")
+        curve.set_ylabel("load")
+        dent = axes[3]
+        boundary = result.table(_file(stem, "boundary.csv"))
+        top = boundary["ny"] > 0.5  # the surfaces facing up: the indented face
+        order = np.argsort(boundary["x"][top])
+        dent.plot(boundary["x"][top][order], (boundary["y"] + boundary["u2"])[top][order], ".-", ms=3)
+        rim = boundary["x"][top][order][np.argmax((boundary["y"] + boundary["u2"])[top][order])]
+        dent.set_xlim(0.0, max(3.0 * rim, 1e-300))  # the dent and its rim
+        dent.set_xlabel("r")
+        dent.set_ylabel("z + u_z")
+        dent.set_title("the surface after the last step (the dent)", fontsize=9)
+    elif loaded is not None:
         name, direction = loaded
         f = np.concatenate([[0.0], steps[f"{name}_f1"] * direction[0] + steps[f"{name}_f2"] * direction[1]])
         u = np.concatenate([[0.0], steps[f"{name}_u1"] * direction[0] + steps[f"{name}_u2"] * direction[1]])

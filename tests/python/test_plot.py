@@ -285,3 +285,25 @@ def test_plasticity_figure_draws_the_plastic_zone_and_the_load_curve(examples, b
     f2 = _csv_column(run_dir / "tube_steps.csv", "inner_f2")
     np.testing.assert_allclose(curve[1:, 1], np.hypot(f1, f2) * np.sign(f1), rtol=1e-9, atol=1e-12)
     assert curve[0, 0] == 0.0 and curve[-1, 0] > 0.0  # a permanent expansion
+
+
+def test_plasticity_figure_of_a_ball_indentation_draws_its_curve_and_dent(examples, binary, tmp_path):
+    run_dir = tmp_path / "run"
+    text = (examples / "brinell.toml").read_text().replace("cell = 0.16", "cell = 0.64")
+    problem = tmp_path / "brinell.toml"
+    problem.write_text(text.replace("increments = 20", "increments = 6"))
+    bc.run(problem, output=run_dir)
+    command = subprocess.run([binary, "plot", str(run_dir)], capture_output=True, text=True)
+    assert command.returncode == 0, command.stderr
+    assert (run_dir / "figures" / "block_plasticity.png").read_bytes()[:8] == PNG_SIGNATURE
+    fig = plot.plasticity_figure(plot._load_folder(run_dir), "block", "brinell")
+    # The load-depth curve is indentation.csv's, from the origin.
+    curve = _axes_titled(fig, "load against displacement").lines[0].get_xydata()
+    np.testing.assert_allclose(curve[1:, 0], _csv_column(run_dir / "indentation.csv", "depth"))
+    np.testing.assert_allclose(curve[1:, 1], _csv_column(run_dir / "indentation.csv", "load"))
+    # The dent: the surface's lowest point is on the axis, as deep as the report says.
+    dent = _axes_titled(fig, "the surface after the last step").lines[0].get_xydata()
+    summary = json.loads((run_dir / "summary.json").read_text())
+    assert dent[0, 0] == 0.0
+    assert dent[:, 1].min() == dent[0, 1] == -summary["results"]["indentation"]["residual_depth"]
+    plot.plt.close(fig)
