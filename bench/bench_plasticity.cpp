@@ -1,4 +1,4 @@
-// The elastoplastic region (bem/elastoplastic_region.hpp) over its cell count: the thick
+// The elastoplastic region (bem/elastoplastic_region.hpp) over its cell count. The thick
 // tube of examples/thick_ring_plane_strain.toml (32 elements on each arc, 64 on each
 // straight side), perfectly plastic, quadrilateral cells over 1 <= r <= 1.6 on the arc's 32
 // angles in range(0) rings (32 range(0) cells), loaded to 0.5, 0.9, 1.1, 1.3 and 1.5 times
@@ -14,6 +14,8 @@
 
 #include "bemcontact/bem/analysis.hpp"
 #include "bemcontact/bem/elastoplastic_region.hpp"
+#include "bemcontact/contact/contact_solver.hpp"
+#include "bemcontact/io/input/contact_file.hpp"
 #include "bemcontact/io/input/problem_file.hpp"
 #include "bemcontact/plasticity/cell_meshes.hpp"
 #include "bemcontact/reference/plastic_cylinder.hpp"
@@ -59,8 +61,39 @@ void BM_ElastoplasticTube(benchmark::State& state) {
   state.counters["peak_MB"] = static_cast<double>(usage.ru_maxrss) / 1024.0;
 }
 
+// The Brinell cycle of examples/brinell.toml (axisymmetric, rigid ball 0.06 in and out, 22
+// steps) at cell size 0.32 / range(0): the contact history with the elastoplastic region
+// (contact/plastic_coupling.hpp). Counters: cells, the cells' set-up and the steps' seconds
+// (the run's phases), Newton iterations, peak resident memory.
+void BM_BrinellCycle(benchmark::State& state) {
+  const double cell = 0.32 / static_cast<double>(state.range(0));
+  const auto file = io::read_contact_file(std::string(BEMCONTACT_EXAMPLES_DIR) + "/brinell.toml", {{"cell", cell}});
+  double setup = 0.0, steps = 0.0;
+  int iterations = 0;
+  std::size_t cells = 0;
+  for (auto _ : state) {
+    const auto result = contact::solve_contact(file.problem);
+    for (const auto& [phase, seconds] : result.timings.phases) {
+      if (phase == "cells and their operators") setup = seconds;
+      if (phase == "elastoplastic contact steps") steps = seconds;
+    }
+    iterations = 0;
+    for (const auto& step : result.plastic->steps) iterations += step.report.newton_iterations;
+    cells = result.plastic->cells.size();
+    benchmark::DoNotOptimize(result.summary);
+  }
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  state.counters["cells"] = static_cast<double>(cells);
+  state.counters["setup_seconds"] = setup;
+  state.counters["step_seconds"] = steps;
+  state.counters["newton_iterations"] = iterations;
+  state.counters["peak_MB"] = static_cast<double>(usage.ru_maxrss) / 1024.0;
+}
+
 }  // namespace
 
+BENCHMARK(BM_BrinellCycle)->Arg(1)->Arg(2)->Arg(4)->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK(BM_ElastoplasticTube)->Arg(4)->Arg(8)->Arg(16)->Arg(32)->Arg(64)->Unit(benchmark::kMillisecond)->Iterations(1);
 
 BENCHMARK_MAIN();

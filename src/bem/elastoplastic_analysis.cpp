@@ -103,15 +103,16 @@ std::vector<StressTensor> elastoplastic_boundary_stresses(const geometry::Bounda
   return boundary_stresses(mesh, type, material, solution, &plastic);
 }
 
-double elastoplastic_region_bytes(Index cells, Index nodes) {
-  const double unknowns = 3.0 * static_cast<double>(cells), values = 4.0 * static_cast<double>(nodes);
+double elastoplastic_region_bytes(Index cells, Index nodes, AnalysisType type) {
+  const double components = type == AnalysisType::axisymmetric ? 4.0 : 3.0;
+  const double unknowns = components * static_cast<double>(cells), values = 4.0 * static_cast<double>(nodes);
   // K and the Newton system's coupling and matrix (4 (3m)^2); [b | B], A^-1 [b | B], the
   // nodal values, Somigliana's rows (about 3 x 4n x 3m).
   return 8.0 * (4.0 * unknowns * unknowns + 3.0 * values * unknowns);
 }
 
 std::vector<plasticity::Cell> region_cells_of(const geometry::BoundaryMesh& mesh, const BodyDefinition& body,
-                                              double memory_limit_bytes) {
+                                              AnalysisType type, double memory_limit_bytes) {
   const RegionPlasticity& plasticity = *body.plasticity;
   std::vector<plasticity::Cell> cells;
   try {
@@ -121,7 +122,7 @@ std::vector<plasticity::Cell> region_cells_of(const geometry::BoundaryMesh& mesh
   } catch (const Error& e) {
     throw InputError(plasticity.cells_where, e.what());
   }
-  const double bytes = elastoplastic_region_bytes(static_cast<Index>(cells.size()), mesh.node_count());
+  const double bytes = elastoplastic_region_bytes(static_cast<Index>(cells.size()), mesh.node_count(), type);
   if (memory_limit_bytes > 0.0 && bytes > memory_limit_bytes)
     throw InputError(plasticity.cells_where,
                      std::to_string(cells.size()) + " cells would take about " + format_bytes(bytes) +
@@ -157,7 +158,7 @@ ElastoplasticResult solve_elastoplastic_body(const ProblemDefinition& problem, c
     throw InputError(p.where.file.empty() ? SourceLocation{problem.source_file, 0, "interior.points"} : p.where,
                      "point " + point_text(p.position) + " is not inside the body");
   }
-  result.cells = region_cells_of(result.mesh, body, memory_limit_bytes);
+  result.cells = region_cells_of(result.mesh, body, problem.analysis, memory_limit_bytes);
   clock.lap("mesh and cells");
 
   ElastoplasticRegion region(result.mesh, body, problem.analysis, plasticity.hardening, result.cells);

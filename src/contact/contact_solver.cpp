@@ -910,7 +910,7 @@ ContactResult solve_on_meshes(const ContactProblem& problem, const bem::Progress
   std::unique_ptr<PlasticCoupling> coupling;
   if (const int r = plastic_region_in_contact(problem, model); r >= 0) {
     start = Clock::now();
-    coupling = std::make_unique<PlasticCoupling>(problem, model, r);
+    coupling = std::make_unique<PlasticCoupling>(problem, model, r, problem.memory_limit_bytes);
     result.timings.add("cells and their operators", seconds_since(start));
   }
 
@@ -928,6 +928,8 @@ ContactResult solve_on_meshes(const ContactProblem& problem, const bem::Progress
 
   start = Clock::now();
   result.warnings = model.prepared().warnings;
+  if (result.plastic) result.warnings.insert(result.warnings.end(), result.plastic->warnings.begin(),
+                                             result.plastic->warnings.end());
   add_region_boundaries(problem, model, history, result);
   add_step_boundaries(problem, model, history, result);
   result.timings.add("boundary stresses", seconds_since(start));

@@ -42,7 +42,7 @@ PlasticCoupling::PlasticCoupling(const ContactProblem& problem, const ContactMod
   bem::PhaseClock clock(timings_);
   const auto& prepared = model.prepared().regions[static_cast<std::size_t>(region)];
   const auto& body = prepared.definition;
-  cells_ = bem::region_cells_of(prepared.mesh, body, memory_limit_bytes);
+  cells_ = bem::region_cells_of(prepared.mesh, body, problem.analysis, memory_limit_bytes);
   clock.lap("cells");
   std::vector<Index> surface;
   for (const auto& node : model.region(region).variable_nodes()) surface.push_back(node.node);

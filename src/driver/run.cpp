@@ -270,7 +270,9 @@ RunOutput run_contact(const io::ProblemInput& input, std::string_view text, cons
       add_geometry_warnings(output.warnings, region.body,
                             body.regions.size() == 1 ? "body '" + body.name + "'"
                                                      : "region '" + region.body.name + "' of body '" + body.name + "'");
-  const auto result = contact::solve_contact(problem, options.progress);
+  contact::ContactProblem limited = problem;
+  limited.memory_limit_bytes = options.limits.memory_limit_bytes();
+  const auto result = contact::solve_contact(limited, options.progress);
   output.warnings.insert(output.warnings.end(), result.warnings.begin(), result.warnings.end());
   for (std::size_t r = 0; r < result.meshes.size(); ++r) {
     add_mesh_warnings(output.warnings, result.meshes[r], result.region_labels[r]);

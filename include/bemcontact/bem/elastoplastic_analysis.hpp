@@ -55,14 +55,15 @@ std::vector<StressTensor> elastoplastic_boundary_stresses(const geometry::Bounda
 
 // The dense matrices' bytes of an elastoplastic region of `cells` cells and `nodes` nodes:
 // the cell operator, the boundary's [b | B] and its solution, Somigliana's means, and the
-// Newton system at worst (every cell plastic).
-double elastoplastic_region_bytes(Index cells, Index nodes);
+// Newton system at worst (every cell plastic); 3 components per cell in plane problems, 4 in
+// axisymmetry.
+double elastoplastic_region_bytes(Index cells, Index nodes, AnalysisType type);
 
 // The cells of an elastoplastic region from its [cells] (plasticity/region_cells.hpp).
 // InputError at the [cells] table when they cannot be made, or when their dense matrices
 // would take more than `memory_limit_bytes` (0: no limit).
 std::vector<plasticity::Cell> region_cells_of(const geometry::BoundaryMesh& mesh, const BodyDefinition& body,
-                                              double memory_limit_bytes);
+                                              AnalysisType type, double memory_limit_bytes);
 
 // The warning of a plastic zone that reaches a side of the cells' box where the body goes
 // on (the answer too stiff there); none otherwise.

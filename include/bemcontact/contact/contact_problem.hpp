@@ -245,6 +245,9 @@ struct ContactProblem : bem::ProblemHeader {
   int max_state_changes = 2;
   int max_steps = 4096;
   bool record_steps = false;
+  // The run's limit on dense matrices (--max-memory; 0: none): an elastoplastic region's
+  // cells beyond it are refused at [cells] before they are allocated.
+  double memory_limit_bytes = 0.0;
   SourceLocation record_steps_where;  // its key in the problem file, for the memory check
   std::vector<ForceLoad> forces;
   SolverOptions solver;

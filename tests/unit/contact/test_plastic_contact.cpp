@@ -134,6 +134,31 @@ TEST(PlasticContact, BallBelowFirstYieldIsTheElasticContact) {
   for (std::size_t i = 0; i < p.size(); ++i) EXPECT_NEAR(p[i], q[i], 1e-8 * peak) << i;
 }
 
+// The thesis' elastic ball on its support (examples/contact_hertz_sphere.toml), the support
+// (side 2: its nodes enter the jumps through the ball's pairs' shape functions) made
+// elastoplastic with a yield stress it never reaches: the pressures and the interior grid's
+// stresses (the cells' fields added) are those of the elastic support.
+TEST(PlasticContact, ElasticBallOnASupportThatStaysElasticIsTheElasticContact) {
+  RunOptions options;
+  options.keep_tables = true;
+  const std::string elastic_text = example_text("contact_hertz_sphere.toml");
+  const std::string plastic_text =
+      replaced(elastic_text, "E = 72000.0\nnu = 0.32\n",
+               "E = 72000.0\nnu = 0.32\nyield_stress = 1e9\n[body.cells]\nsize = 0.04\nbox = [[0.0, -0.16], [0.16, 0.0]]\n");
+  const auto elastic = run_problem(elastic_text, "hertz.toml", options);
+  const auto plastic = run_problem(plastic_text, "hertz.toml", options);
+  ASSERT_TRUE(plastic.tables.count("support_cells.csv"));
+  const auto& p = column(plastic.tables.at("contact.csv"), "p_n").numbers;
+  const auto& q = column(elastic.tables.at("contact.csv"), "p_n").numbers;
+  ASSERT_EQ(p.size(), q.size());
+  const double peak = -*std::min_element(q.begin(), q.end());
+  for (std::size_t i = 0; i < p.size(); ++i) EXPECT_NEAR(p[i], q[i], 1e-8 * peak) << i;
+  const auto& s = column(plastic.tables.at("support_interior.csv"), "von_mises").numbers;
+  const auto& t = column(elastic.tables.at("support_interior.csv"), "von_mises").numbers;
+  ASSERT_EQ(s.size(), t.size());
+  for (std::size_t i = 0; i < s.size(); ++i) EXPECT_NEAR(s[i], t[i], 1e-7 * peak) << i;
+}
+
 // What the coupling does not serve is refused at the region's yield_stress, with its line,
 // before any cell is made.
 TEST(PlasticContact, RefusesWhatTheCouplingDoesNotServe) {
@@ -153,6 +178,17 @@ TEST(PlasticContact, RefusesWhatTheCouplingDoesNotServe) {
   EXPECT_NE(recorded.find("record_steps"), std::string::npos) << recorded;
   const std::string compressed = refusal(replaced(ball, "increments = 2", "increments = 2\noperator = \"compressed\""));
   EXPECT_NE(compressed.find("compressed operators"), std::string::npos) << compressed;
+  // Cells beyond the memory limit: refused at [cells] before their matrices are made.
+  RunOptions small;
+  small.limits.max_memory_bytes = 2e6;  // above the boundary (164 unknowns), below the cells
+  try {
+    run_problem(replaced(ball, "cell = 0.64", "cell = 0.16"), "ball.toml", small);
+    ADD_FAILURE() << "no memory refusal";
+  } catch (const InputError& error) {
+    const std::string what = error.what();
+    EXPECT_NE(what.find("cells"), std::string::npos) << what;
+    EXPECT_NE(what.find("--max-memory"), std::string::npos) << what;
+  }
 }
 
 }  // namespace
