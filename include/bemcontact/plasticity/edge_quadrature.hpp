@@ -34,12 +34,15 @@ inline void for_each_edge_point(const Vec2& a, const Vec2& b, const Vec2& x, Add
   // error there is of order (1/8)^8 of its contribution).
   constexpr double kFarEdge = 4.0;
   constexpr int kFarPoints = 6;
+  // Beyond kDistantEdge lengths, kDistantPoints (error of order (1/16)^6).
+  constexpr double kDistantEdge = 8.0;
+  constexpr int kDistantPoints = 4;
   const Vec2 d = b - a;
   const double length = d.norm();
   const double nearest = std::clamp((x - a).dot(d) / (length * length), 0.0, 1.0) * length;
   const double distance = (a + d * (nearest / length) - x).norm();
   if (distance > kFarEdge * length) {  // a smooth integrand: one panel
-    const quadrature::Rule& rule = quadrature::gauss_legendre(kFarPoints);
+    const quadrature::Rule& rule = quadrature::gauss_legendre(distance > kDistantEdge * length ? kDistantPoints : kFarPoints);
     for (int g = 0; g < rule.size(); ++g) add(a + d * (0.5 * (1.0 + rule.nodes[g])), 0.5 * length * rule.weights[g]);
     return;
   }
