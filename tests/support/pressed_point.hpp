@@ -3,6 +3,7 @@
 // prescribed in equal steps, eps_11 found by Newton with sigma_11 = 0 (eps_33 = 0): the
 // block's uniform state without boundary elements or cells.
 #include <cmath>
+#include <string>
 
 #include "bemcontact/plasticity/j2_material.hpp"
 
@@ -23,6 +24,51 @@ inline plasticity::Mandel pressed_point_stress(const Material& material, const p
     state = update.state;
   }
   return update.stress;
+}
+
+// The block itself: a unit square (cells of 0.25) on a roller base, held at x = 0, its top
+// pressed 8 Y/E down in 10 steps; ANALYSIS and HARDENING to be replaced.
+inline std::string pressed_block_text() {
+  return R"(title = "pressed block"
+analysis = "ANALYSIS"
+[[body]]
+name = "block"
+[body.material]
+E = 200000.0
+nu = 0.3
+yield_stress = 250.0
+hardening = HARDENING
+[body.cells]
+size = 0.25
+[[body.boundary]]
+name = "bottom"
+from = [0.0, 0.0]
+to = [1.0, 0.0]
+elements = 8
+u2 = 0.0
+t1 = 0.0
+[[body.boundary]]
+name = "right"
+from = [1.0, 0.0]
+to = [1.0, 1.0]
+elements = 8
+[[body.boundary]]
+name = "top"
+from = [1.0, 1.0]
+to = [0.0, 1.0]
+elements = 8
+u2 = -0.01
+t1 = 0.0
+[[body.boundary]]
+name = "left"
+from = [0.0, 1.0]
+to = [0.0, 0.0]
+elements = 8
+u1 = 0.0
+t2 = 0.0
+[solver]
+increments = 10
+)";
 }
 
 }  // namespace bemcontact::test_support

@@ -90,46 +90,7 @@ TEST(ElastoplasticRun, WritesTheCellsStepsAndResidualState) {
 // to sigma_yy / 2 as the flow goes on); plane stress with linear isotropic hardening H:
 // uniaxial, sigma = -(Y + E H / (E + H) (eps - Y/E)) [SimoHughes1998, ch. 1].
 TEST(ElastoplasticRun, PressedBlockMeetsTheClosedForms) {
-  const std::string block = R"(title = "pressed block"
-analysis = "ANALYSIS"
-[[body]]
-name = "block"
-[body.material]
-E = 200000.0
-nu = 0.3
-yield_stress = 250.0
-hardening = HARDENING
-[body.cells]
-size = 0.25
-[[body.boundary]]
-name = "bottom"
-from = [0.0, 0.0]
-to = [1.0, 0.0]
-elements = 8
-u2 = 0.0
-t1 = 0.0
-[[body.boundary]]
-name = "right"
-from = [1.0, 0.0]
-to = [1.0, 1.0]
-elements = 8
-[[body.boundary]]
-name = "top"
-from = [1.0, 1.0]
-to = [0.0, 1.0]
-elements = 8
-u2 = -0.01
-t1 = 0.0
-[[body.boundary]]
-name = "left"
-from = [0.0, 1.0]
-to = [0.0, 0.0]
-elements = 8
-u1 = 0.0
-t2 = 0.0
-[solver]
-increments = 10
-)";
+  const std::string block = test_support::pressed_block_text();
   RunOptions options;
   options.keep_tables = true;
   const double Y = 250.0, E = 200000.0, strain = 0.01;
