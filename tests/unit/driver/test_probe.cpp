@@ -396,6 +396,23 @@ TEST(Probe, PointsOfALineInsideNoBodyAreLeftOutAndReported) {
     }
 }
 
+// Somigliana's identity of the boundary values would miss the cells' domain term: an
+// elastoplastic run is refused, alone (the tube) or in contact (the Brinell ball).
+TEST(Probe, RefusesElastoplasticRunsAloneOrInContact) {
+  const std::string tube =
+      replaced(replaced(example_text("plastic_tube.toml"), "size = 0.08", "size = 0.32"), "increments = 20",
+               "increments = 2");
+  std::string ball = replaced(example_text("brinell.toml"), "cell = 0.16", "cell = 0.64");
+  ball = replaced(replaced(ball, "end_time = 2.0", "end_time = 1.0"), "increments = 20", "increments = 2");
+  for (const auto& [text, name] : {std::pair{tube, "tube.toml"}, std::pair{ball, "brinell.toml"}}) {
+    const auto folder = run(text, name);
+    EXPECT_NE(input_error([&] { probe_run(folder.reader(), lines({{Vec2(0.1, -0.1), Vec2(0.2, -0.1), 2}}), {}); })
+                  .find("probe does not read elastoplastic runs"),
+              std::string::npos)
+        << name;
+  }
+}
+
 TEST(Probe, RefusesWhatIsNotAFinishedRun) {
   const auto folder = run(example_text("plate_tension.toml"), "plate_tension.toml");
   const auto request = lines({{Vec2(-0.5, 1.0), Vec2(0.5, 1.0), 3}});
