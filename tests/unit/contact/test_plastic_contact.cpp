@@ -80,26 +80,41 @@ std::string coarse_brinell(double yield_stress) {
   return replaced(text, "increments = 20", "increments = 2");
 }
 
-// Below first yield the cells carry no initial stress: the pressures are the elastic
-// contact's (the same file without yield_stress and cells) to the solvers' tolerance.
+// The same file without yield_stress and cells.
+std::string without_plasticity(const std::string& text) {
+  return replaced(replaced(text, "yield_stress = \"Y\"\n", ""),
+                  "[body.cells]\nsize = \"cell\"\nbox = [[0.0, -2.56], [2.56, 0.0]]\nrefine = [[0.0, 0.0]]\n"
+                  "refine_size = \"cell / 4\"\n",
+                  "");
+}
+
+// Below first yield the cells carry no initial stress: the pressures (and with friction the
+// shears, the law's path through the steps included) are the elastic contact's to the
+// solvers' tolerance.
 TEST(PlasticContact, BallBelowFirstYieldIsTheElasticContact) {
   RunOptions options;
   options.keep_tables = true;
-  const auto plastic = run_problem(coarse_brinell(1e9), "ball.toml", options);
-  std::string elastic_text = replaced(coarse_brinell(1e9), "yield_stress = \"Y\"\n", "");
-  elastic_text = replaced(elastic_text,
-                          "[body.cells]\nsize = \"cell\"\nbox = [[0.0, -2.56], [2.56, 0.0]]\nrefine = [[0.0, 0.0]]\n"
-                          "refine_size = \"cell / 4\"\n",
-                          "");
-  const auto elastic = run_problem(elastic_text, "ball.toml", options);
-  const auto summary = nlohmann::json::parse(plastic.files.files().back().content);
-  EXPECT_EQ(summary["results"]["elastoplastic"]["plastic_zone"]["yielded_cells"], 0);
-  const auto& p = column(plastic.tables.at("contact.csv"), "p_n").numbers;
-  const auto& q = column(elastic.tables.at("contact.csv"), "p_n").numbers;
-  ASSERT_EQ(p.size(), q.size());
-  const double peak = -*std::min_element(q.begin(), q.end());
-  EXPECT_GT(peak, 1000.0);
-  for (std::size_t i = 0; i < p.size(); ++i) EXPECT_NEAR(p[i], q[i], 1e-8 * peak) << i;
+  for (const bool friction : {false, true}) {
+    std::string text = coarse_brinell(1e9);
+    if (friction) text = replaced(text, "normal = \"body1\"\n", "normal = \"body1\"\nfriction = 0.3\n");
+    const auto plastic = run_problem(text, "ball.toml", options);
+    const auto elastic = run_problem(without_plasticity(text), "ball.toml", options);
+    const auto summary = nlohmann::json::parse(plastic.files.files().back().content);
+    EXPECT_EQ(summary["results"]["elastoplastic"]["plastic_zone"]["yielded_cells"], 0);
+    const auto& q = column(elastic.tables.at("contact.csv"), "p_n").numbers;
+    const double peak = -*std::min_element(q.begin(), q.end());
+    EXPECT_GT(peak, 1000.0);
+    for (const char* name : {"p_n", "p_t"}) {
+      const auto& p = column(plastic.tables.at("contact.csv"), name).numbers;
+      const auto& e = column(elastic.tables.at("contact.csv"), name).numbers;
+      ASSERT_EQ(p.size(), e.size());
+      for (std::size_t i = 0; i < p.size(); ++i) EXPECT_NEAR(p[i], e[i], 1e-8 * peak) << name << " " << i;
+    }
+    if (friction) {  // the shears are there to compare
+      const auto& t = column(elastic.tables.at("contact.csv"), "p_t").numbers;
+      EXPECT_GT(*std::max_element(t.begin(), t.end()) - *std::min_element(t.begin(), t.end()), 1e-3 * peak);
+    }
+  }
 }
 
 // The thesis' elastic ball on its support (examples/contact_hertz_sphere.toml), the support
