@@ -143,6 +143,28 @@ std::optional<std::string> plastic_zone_box_warning(const geometry::BoundaryMesh
          "too stiff; enlarge the box";
 }
 
+ElastoplasticStep record_elastoplastic_step(double time, const IncrementReport& report,
+                                            const ElastoplasticRegion& region, const geometry::BoundaryMesh& mesh,
+                                            const BodyDefinition& body, AnalysisType type, BoundarySolution& boundary) {
+  ElastoplasticStep step;
+  step.time = time;
+  step.amplitude = report.amplitude;
+  step.report = report;
+  for (const auto& state : region.states()) {
+    step.yielded_cells += state.equivalent_plastic_strain > 0.0;
+    step.max_equivalent_plastic_strain = std::max(step.max_equivalent_plastic_strain, state.equivalent_plastic_strain);
+  }
+  boundary = region.boundary_solution();
+  boundary.resultants = boundary_resultants(mesh, boundary, body, type);
+  step.resultants = boundary.resultants;
+  for (const auto& nodes : mesh.piece_nodes) {
+    Vec2 mean = Vec2::Zero();
+    for (const Index i : nodes) mean += boundary.displacement[static_cast<std::size_t>(i)];
+    step.mean_displacement.push_back(nodes.empty() ? mean : mean / static_cast<double>(nodes.size()));
+  }
+  return step;
+}
+
 ElastoplasticResult solve_elastoplastic_body(const ProblemDefinition& problem, const std::vector<double>& times,
                                              const std::vector<double>& amplitudes, const ProgressCallback& progress,
                                              double memory_limit_bytes) {
@@ -167,28 +189,14 @@ ElastoplasticResult solve_elastoplastic_body(const ProblemDefinition& problem, c
   PhaseProgress phase(progress, "load steps");
   phase.start();
   for (std::size_t k = 0; k < times.size(); ++k) {
-    ElastoplasticStep step;
-    step.time = times[k];
-    step.amplitude = amplitudes[k];
-    step.report = region.advance(amplitudes[k]);
-    for (const auto& state : region.states()) {
-      step.yielded_cells += state.equivalent_plastic_strain > 0.0;
-      step.max_equivalent_plastic_strain = std::max(step.max_equivalent_plastic_strain, state.equivalent_plastic_strain);
-    }
-    BoundarySolution boundary = region.boundary_solution();
-    boundary.stress = elastoplastic_boundary_stresses(result.mesh, problem.analysis, body.material, boundary,
-                                                      result.cells, region.states());
-    boundary.resultants = boundary_resultants(result.mesh, boundary, body, problem.analysis);
-    step.resultants = boundary.resultants;
-    for (const auto& nodes : result.mesh.piece_nodes) {
-      Vec2 mean = Vec2::Zero();
-      for (const Index i : nodes) mean += boundary.displacement[static_cast<std::size_t>(i)];
-      step.mean_displacement.push_back(nodes.empty() ? mean : mean / static_cast<double>(nodes.size()));
-    }
-    result.steps.push_back(std::move(step));
-    if (k + 1 == times.size()) result.boundary = std::move(boundary);
+    const IncrementReport report = region.advance(amplitudes[k]);
+    result.steps.push_back(record_elastoplastic_step(times[k], report, region, result.mesh, body, problem.analysis,
+                                                     result.boundary));
     phase.report(static_cast<double>(k + 1) / static_cast<double>(times.size()));
   }
+  // The last step's boundary stresses, with the plastic strain of the cells the nodes border.
+  result.boundary.stress = elastoplastic_boundary_stresses(result.mesh, problem.analysis, body.material,
+                                                           result.boundary, result.cells, region.states());
   result.states = region.states();
   result.cell_stress = region.cell_stress();
   clock.lap("load steps");

@@ -251,29 +251,32 @@ ElastoplasticRegion::ElastoplasticRegion(const geometry::BoundaryMesh& mesh, con
   auto system = build_boundary_system(matrices, conditions_, constraints_);
   const Index n = mesh_.node_count(), rows = system.b.size(), m = static_cast<Index>(cells_.size());
   const Index k2 = surface_dofs_, first_cell = 1 + k2;
+  // A surface dof carries its traction datum, but for the radial one on the axis (p_r = 0).
+  const auto carries_traction = [&](Index j) {
+    return !(conditions_[static_cast<std::size_t>(surface_nodes_[static_cast<std::size_t>(j / 2)])].on_axis &&
+             j % 2 == 0);
+  };
   // [b | T | B]: a unit traction at each surface dof, G's column (the matrices are in the
   // nodes' frames, the surface nodes' global); the cells' domain term at the collocation
-  // nodes (the boundary equation's rows), each cell's columns by one thread.
-  boundary_rhs_ = Matrix::Zero(rows, first_cell + d * m);
-  boundary_rhs_.col(0) = system.b;
+  // nodes (the boundary equation's rows), each cell's columns by one thread. Solved in place.
+  boundary_unknowns_ = Matrix::Zero(rows, first_cell + d * m);
+  boundary_unknowns_.col(0) = system.b;
   for (Index j = 0; j < k2; ++j) {
-    const Index node = surface_nodes_[static_cast<std::size_t>(j / 2)];
-    if (conditions_[static_cast<std::size_t>(node)].on_axis && j % 2 == 0) continue;  // p_r = 0 on the axis
-    boundary_rhs_.block(0, 1 + j, 2 * n, 1) = matrices.G.col(2 * node + j % 2);
+    if (!carries_traction(j)) continue;
+    boundary_unknowns_.block(0, 1 + j, 2 * n, 1) = matrices.G.col(2 * surface_nodes_[static_cast<std::size_t>(j / 2)] + j % 2);
     for (Index i = 0; i < n; ++i)
-      if (conditions_[static_cast<std::size_t>(i)].on_axis) boundary_rhs_(2 * i, 1 + j) = 0.0;
+      if (conditions_[static_cast<std::size_t>(i)].on_axis) boundary_unknowns_(2 * i, 1 + j) = 0.0;
   }
 #pragma omp parallel for schedule(dynamic, 1)
   for (Index e = 0; e < m; ++e) {
     const auto sources = cell_and_images(cells_[static_cast<std::size_t>(e)], mesh_.images, kernels.d);
     for (Index i = 0; i < n; ++i) {
-      auto block = boundary_rhs_.block(2 * i, first_cell + d * e, 2, d);
+      auto block = boundary_unknowns_.block(2 * i, first_cell + d * e, 2, d);
       for (const auto& source : sources)
         block += kernels.displacement(mesh_.nodes[static_cast<std::size_t>(i)].position, source.cell) * source.stress_map;
     }
   }
   const operators::DenseLU lu(std::move(system.A), "the boundary element system of body '" + body.name + "'");
-  boundary_unknowns_ = boundary_rhs_;
   lu.solve_in_place(boundary_unknowns_);
   // C E = a s + K sigma0: through the boundary (Somigliana's means of the solved (u, t)),
   // then the cells' own fields.
@@ -282,8 +285,7 @@ ElastoplasticRegion::ElastoplasticRegion(const geometry::BoundaryMesh& mesh, con
   for (Index j = 0; j < first_cell + d * m; ++j)
     values.col(j) = boundary_values(boundary_unknowns_.col(j), j == 0 ? conditions_ : unloaded, constraints_);
   for (Index j = 0; j < k2; ++j)  // the unit datum itself
-    if (boundary_rhs_.col(1 + j).size() > 0 && !boundary_rhs_.col(1 + j).isZero(0.0))
-      values(2 * n + 2 * surface_nodes_[static_cast<std::size_t>(j / 2)] + j % 2, 1 + j) = 1.0;
+    if (carries_traction(j)) values(2 * n + 2 * surface_nodes_[static_cast<std::size_t>(j / 2)] + j % 2, 1 + j) = 1.0;
   const auto means = cell_mean_points(mesh_, cells_);
   const Matrix through_boundary = mean_somigliana_rows(mesh_, kernels, means) * values;
   load_stress_ = through_boundary.col(0);

@@ -1,7 +1,5 @@
 #include "bemcontact/contact/plastic_coupling.hpp"
 
-#include <algorithm>
-
 #include "bemcontact/bem/resultants.hpp"
 #include "bemcontact/core/error.hpp"
 
@@ -100,22 +98,9 @@ StepOutput PlasticCoupling::solve_step(const StepInput& input, const SolverOptio
 void PlasticCoupling::accept(double time) {
   accepted_ = plastic_->state();
   const auto& prepared = model_.prepared().regions[static_cast<std::size_t>(region_)];
-  bem::ElastoplasticStep step;
-  step.time = time;
-  step.amplitude = accepted_.amplitude;
-  step.report = last_report_;
-  for (const auto& state : accepted_.states) {
-    step.yielded_cells += state.equivalent_plastic_strain > 0.0;
-    step.max_equivalent_plastic_strain = std::max(step.max_equivalent_plastic_strain, state.equivalent_plastic_strain);
-  }
-  const bem::BoundarySolution boundary = plastic_->boundary_solution();
-  step.resultants = bem::boundary_resultants(prepared.mesh, boundary, prepared.definition, problem_.analysis);
-  for (const auto& nodes : prepared.mesh.piece_nodes) {
-    Vec2 mean = Vec2::Zero();
-    for (const Index i : nodes) mean += boundary.displacement[static_cast<std::size_t>(i)];
-    step.mean_displacement.push_back(nodes.empty() ? mean : mean / static_cast<double>(nodes.size()));
-  }
-  steps_.push_back(std::move(step));
+  bem::BoundarySolution boundary;
+  steps_.push_back(bem::record_elastoplastic_step(time, last_report_, *plastic_, prepared.mesh, prepared.definition,
+                                                  problem_.analysis, boundary));
 }
 
 bem::ElastoplasticResult PlasticCoupling::result() const {

@@ -59,6 +59,13 @@ std::vector<StressTensor> elastoplastic_boundary_stresses(const geometry::Bounda
 // axisymmetry.
 double elastoplastic_region_bytes(Index cells, Index nodes, AnalysisType type);
 
+// The record of a step that has just ended in `region`: its report, the yielded cells and
+// the largest equivalent plastic strain, each boundary's resultant and mean displacement;
+// `boundary` receives the region's boundary solution with its resultants (no stresses).
+ElastoplasticStep record_elastoplastic_step(double time, const IncrementReport& report,
+                                            const ElastoplasticRegion& region, const geometry::BoundaryMesh& mesh,
+                                            const BodyDefinition& body, AnalysisType type, BoundarySolution& boundary);
+
 // The cells of an elastoplastic region from its [cells] (plasticity/region_cells.hpp).
 // InputError at the [cells] table when they cannot be made, or when their dense matrices
 // would take more than `memory_limit_bytes` (0: no limit).

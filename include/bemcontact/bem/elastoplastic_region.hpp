@@ -122,8 +122,8 @@ class ElastoplasticRegion {
   std::vector<ConstraintEquation> constraints_;
   std::vector<Index> surface_nodes_;
   Index surface_dofs_ = 0;  // 2 per surface node
-  Matrix boundary_rhs_;   // [b | T | B]: the load at amplitude 1, unit surface tractions, the cells' domain term
-  Matrix boundary_unknowns_;  // A^-1 [b | T | B]
+  // A^-1 [b | T | B]: the load at amplitude 1, unit surface tractions, the cells' domain term
+  Matrix boundary_unknowns_;
   Vector load_stress_;    // s: C E per unit amplitude (components_ per cell: tensor components)
   Matrix traction_stress_;  // H: C E per unit surface traction
   Matrix cell_operator_;  // K: C E per unit initial stress component of each cell

@@ -10,7 +10,6 @@
 // by the step solver of the contact's law (step_solvers.hpp), so that the contact laws stay
 // in their one place. The plastic state advances only when the history accepts the step.
 #include <memory>
-#include <optional>
 #include <vector>
 
 #include "bemcontact/bem/elastoplastic_analysis.hpp"
