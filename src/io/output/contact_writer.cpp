@@ -490,13 +490,17 @@ std::string contact_report_text(const contact::ContactProblem& problem, const co
   out += line;
   if (const auto indentation = contact::indentation_report(problem, result)) {
     const auto& r = *indentation;
-    char brinell[64] = "undefined (d >= D)";
-    if (std::isfinite(r.brinell)) std::snprintf(brinell, sizeof brinell, "%.6g", r.brinell);
     std::snprintf(line, sizeof line,
                   "  indentation: peak load %.6g at depth %.6g, contact radius %.6g (d/D = %.4g): Meyer hardness "
-                  "P/(pi a^2) = %.6g, HB = %s; dent depth after the last step %.6g\n",
-                  r.peak_load, r.peak_depth, r.contact_radius, 2.0 * r.contact_radius / r.ball_diameter, r.meyer,
-                  brinell, r.residual_depth);
+                  "P/(pi a^2) = %.6g, ",
+                  r.peak_load, r.peak_depth, r.contact_radius, 2.0 * r.contact_radius / r.ball_diameter, r.meyer);
+    out += line;
+    if (std::isfinite(r.brinell))
+      std::snprintf(line, sizeof line, "HB = %.6g", r.brinell);
+    else
+      std::snprintf(line, sizeof line, "HB undefined (d >= D)");
+    out += line;
+    std::snprintf(line, sizeof line, "; dent depth after the last step %.6g\n", r.residual_depth);
     out += line;
     if (r.unloading_stiffness > 0.0) {
       std::snprintf(line, sizeof line, "  initial unloading stiffness %.6g (elastic 2 E* a = %.6g: ratio %.4g)\n",
