@@ -127,6 +127,20 @@ int boundary_entries(const std::vector<Vec2>& polygon, const Rect& r, double eps
   return entries;
 }
 
+// A leaf's cell, or with `crossed` its fan of triangles about its vertices' mean: the
+// rectangle's diagonals for a whole leaf. A concave cut stays whole (its fan would leave it).
+void add_cell(std::vector<Cell>& cells, Cell cell, bool crossed) {
+  if (!crossed || !cell.convex()) {
+    cells.push_back(std::move(cell));
+    return;
+  }
+  Vec2 centre = Vec2::Zero();
+  for (const Vec2& v : cell.vertices) centre += v;
+  centre /= static_cast<double>(cell.vertices.size());
+  for (std::size_t k = 0, n = cell.vertices.size(); k < n; ++k)
+    cells.push_back(Cell{{cell.vertices[k], cell.vertices[(k + 1) % n], centre}});
+}
+
 }  // namespace
 
 std::vector<Cell> region_cells(const std::vector<RegionLoop>& loops, const CellMeshOptions& options) {
@@ -192,7 +206,7 @@ std::vector<Cell> region_cells(const std::vector<RegionLoop>& loops, const CellM
     }
     if (cutting.empty()) {
       if (inside_region(r.centre(), loops))
-        cells.push_back(Cell{{r.lo, Vec2(r.hi.x(), r.lo.y()), r.hi, Vec2(r.lo.x(), r.hi.y())}});
+        add_cell(cells, Cell{{r.lo, Vec2(r.hi.x(), r.lo.y()), r.hi, Vec2(r.lo.x(), r.hi.y())}}, options.crossed);
       continue;
     }
     if (cutting.size() > 1 || loops[static_cast<std::size_t>(cutting[0])].hole)
@@ -209,7 +223,7 @@ std::vector<Cell> region_cells(const std::vector<RegionLoop>& loops, const CellM
     Cell cell{std::move(part)};
     if (cell.triangles().empty())
       throw Error("the cell at " + point_text(r.centre()) + " is not a simple polygon: give a smaller size there");
-    cells.push_back(std::move(cell));
+    add_cell(cells, std::move(cell), options.crossed);
   }
   if (cells.empty()) throw Error("no cell lies inside the region (is the box outside it?)");
   return cells;

@@ -26,6 +26,12 @@ struct CellMeshOptions {
   std::vector<Vec2> refine_points;
   double refine_size = 0.0;
   double growth = 0.5;
+  // Each leaf cut by its diagonals into four triangles (a leaf the boundary cuts, if convex,
+  // fanned about its vertices' mean): cell edges at
+  // +-45 degrees everywhere, along which a band of constant plastic shear is compatible
+  // (the slip lines of a plane-strain limit load), as crossed-diagonal meshes of
+  // constant-strain finite elements avoid locking [NagtegaalParksRice1974].
+  bool crossed = false;
   Index max_cells = 50000;
 };
 

@@ -261,7 +261,9 @@ std::vector<Table> build_tables() {
                 of(Type::points, "refine", "none", "[[x, y], ...]: points the cells are graded toward"),
                 number("refine_size", "required with refine", "the cells' edge at the refinement points", above(0)),
                 number("growth", "0.5", "with refine: the cells' edge grows by this per unit distance from the points",
-                       above(0))}});
+                       above(0)),
+                choice("shape", {"rectangles", "crossed"}, "rectangles",
+                       "crossed: each rectangle cut by its diagonals into four triangles (docs/plasticity.md, Cells)")}});
   t.push_back({"boundary", "[[boundary]]", "each [[boundary]] table", joined({piece_keys(), condition_keys()})});
   t.push_back({"tabulated", "a table of values", "a table of values",
                {of(Type::points, "table", "required",

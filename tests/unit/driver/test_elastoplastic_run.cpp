@@ -107,6 +107,14 @@ TEST(ElastoplasticRun, PressedBlockMeetsTheClosedForms) {
     }
     // The platen's force per unit width: the same stress (the boundary's quadrature).
     EXPECT_NEAR(column(output.tables.at("block_steps.csv"), "top_f2").numbers.back(), point[1], 1e-6 * Y);
+    // Crossed cells (four triangles per square) hold the same uniform state.
+    const auto crossed = run_problem(replaced(replaced(replaced(block, "ANALYSIS", "plane_strain"), "HARDENING", "0.0"),
+                                              "size = 0.25", "size = 0.25\nshape = \"crossed\""),
+                                     "block.toml", options);
+    const auto& triangles = crossed.tables.at("block_cells.csv");
+    ASSERT_EQ(column(triangles, "s22").numbers.size(), 64u);
+    for (const double s22 : column(triangles, "s22").numbers) EXPECT_NEAR(s22, point[1], 1e-7 * Y);
+    for (const double s11 : column(triangles, "s11").numbers) EXPECT_NEAR(s11, 0.0, 1e-7 * Y);
   }
   {
     const double H = E / 10.0;

@@ -73,6 +73,34 @@ TEST(RegionCells, SquareIsAGrid) {
   expect_valid_cells(cells);
 }
 
+TEST(RegionCells, CrossedCellsAreFourTrianglesPerRectangle) {
+  const RegionLoop square{{{0, 0}, {1, 0}, {1, 1}, {0, 1}}};
+  CellMeshOptions options{0.25};
+  options.crossed = true;
+  const auto cells = region_cells({square}, options);
+  ASSERT_EQ(cells.size(), 64u);
+  EXPECT_NEAR(total_area(cells), 1.0, 1e-14);
+  expect_valid_cells(cells);
+  for (const auto& cell : cells) {
+    ASSERT_EQ(cell.vertices.size(), 3u);
+    EXPECT_NEAR(cell.area(), 0.25 * 0.25 / 4, 1e-15);
+    // two edges at +-45 degrees (the diagonals), one along an axis
+    int diagonal = 0;
+    for (std::size_t k = 0; k < 3; ++k) {
+      const Vec2 e = cell.vertices[(k + 1) % 3] - cell.vertices[k];
+      diagonal += std::abs(std::abs(e.x()) - std::abs(e.y())) < 1e-14;
+    }
+    EXPECT_EQ(diagonal, 2);
+  }
+  // Leaves the boundary cuts are fanned about their vertices' mean (a concave cut stays whole):
+  // the tube still tiles exactly.
+  const RegionLoop tube = quarter_tube();
+  options.size = 0.1;
+  const auto curved = region_cells({tube}, options);
+  EXPECT_NEAR(total_area(curved), polygon_area(tube.points), 1e-12);
+  expect_valid_cells(curved);
+}
+
 TEST(RegionCells, CurvedRegionIsTiledExactly) {
   const RegionLoop tube = quarter_tube();
   for (double size : {0.3, 0.1, 0.05}) {
