@@ -62,12 +62,14 @@ void BM_ElastoplasticTube(benchmark::State& state) {
 }
 
 // The Brinell cycle of examples/brinell.toml (axisymmetric, rigid ball 0.06 in and out, 22
-// steps) at cell size 0.32 / range(0): the contact history with the elastoplastic region
-// (contact/plastic_coupling.hpp). Counters: cells, the cells' set-up and the steps' seconds
-// (the run's phases), Newton iterations, peak resident memory.
+// steps) at cell size 0.32 / range(0), on rectangles (range(1) = 0) or crossed triangles
+// (1): the contact history with the elastoplastic region (contact/plastic_coupling.hpp).
+// Counters: cells, the cells' set-up and the steps' seconds (the run's phases), Newton
+// iterations, peak resident memory (of the process so far).
 void BM_BrinellCycle(benchmark::State& state) {
   const double cell = 0.32 / static_cast<double>(state.range(0));
-  const auto file = io::read_contact_file(std::string(BEMCONTACT_EXAMPLES_DIR) + "/brinell.toml", {{"cell", cell}});
+  auto file = io::read_contact_file(std::string(BEMCONTACT_EXAMPLES_DIR) + "/brinell.toml", {{"cell", cell}});
+  file.problem.bodies.front().regions.front().body.plasticity->cells.crossed = state.range(1) != 0;
   double setup = 0.0, steps = 0.0;
   int iterations = 0;
   std::size_t cells = 0;
@@ -93,7 +95,15 @@ void BM_BrinellCycle(benchmark::State& state) {
 
 }  // namespace
 
-BENCHMARK(BM_BrinellCycle)->Arg(1)->Arg(2)->Arg(4)->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(BM_BrinellCycle)
+    ->ArgNames({"refine", "crossed"})
+    ->Args({1, 0})
+    ->Args({2, 0})
+    ->Args({4, 0})
+    ->Args({1, 1})
+    ->Args({2, 1})
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
 BENCHMARK(BM_ElastoplasticTube)->Arg(4)->Arg(8)->Arg(16)->Arg(32)->Arg(64)->Unit(benchmark::kMillisecond)->Iterations(1);
 
 BENCHMARK_MAIN();
