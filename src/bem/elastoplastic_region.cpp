@@ -419,8 +419,19 @@ bool ElastoplasticRegion::solve_increment(double amplitude, int max_iterations, 
   std::vector<int> flips(static_cast<std::size_t>(m), 0);  // changes of state from iteration to iteration
   std::vector<char> last_state(static_cast<std::size_t>(m), 0);
   Evaluation current = evaluate(E, amplitude, traction, held);
+  // An increment whose residual has stalled (above the tolerance, 4 iterations running each
+  // less than 5 % below the last and not a jump: a new held cell or a contact update) is
+  // given up at once: its halves converge, and in the Brinell cycle every stall ran on to
+  // the iteration limit.
+  constexpr int kStalledIterations = 4;
+  int stalled_for = 0;
+  double last_norm = current.norm;
   for (int iteration = 0;; ++iteration) {
     report.residual = current.norm;
+    const bool slow = iteration > 0 && current.norm > tolerance && current.norm > 0.95 * last_norm &&
+                      current.norm < 1.5 * last_norm;
+    stalled_for = slow ? stalled_for + 1 : 0;
+    last_norm = current.norm;
     if (!contact && current.norm <= tolerance) break;
     // A cell that went back to the state it left is held (one change is the plastic zone
     // growing or an unloading; a return is a cycle).
@@ -432,10 +443,12 @@ bool ElastoplasticRegion::solve_increment(double amplitude, int max_iterations, 
       last_state[k] = state;
     }
     if (newly_held) current = evaluate(E, amplitude, traction, held);
-    if (iteration == max_iterations || !std::isfinite(current.norm)) {
+    const bool stalled = stalled_for >= kStalledIterations;
+    if (iteration == max_iterations || stalled || !std::isfinite(current.norm)) {
       const Vec2 at = cells_[static_cast<std::size_t>(current.worst)].centroid();
       std::ostringstream message;
-      message << "Newton on the cells' strains did not converge in " << iteration << " iterations (residual "
+      message << "Newton on the cells' strains did not converge in " << iteration
+              << (stalled ? " iterations (stalled: residual " : " iterations (residual ")
               << current.norm << " of Y/E, largest at cell " << current.worst << ", (" << at.x() << ", " << at.y()
               << "))";
       failure = message.str();
