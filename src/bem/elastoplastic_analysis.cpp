@@ -132,6 +132,17 @@ std::vector<plasticity::Cell> region_cells_of(const geometry::BoundaryMesh& mesh
   return cells;
 }
 
+BodyDefinition body_conforming_to_cells(const geometry::BoundaryMesh& mesh, const BodyDefinition& body,
+                                        AnalysisType type) {
+  if (!body.plasticity || !body.plasticity->nodes_at_cells) return body;
+  const auto cells = region_cells_of(mesh, body, type, 0.0);
+  std::vector<Vec2> vertices;
+  for (const auto& cell : cells) vertices.insert(vertices.end(), cell.vertices.begin(), cell.vertices.end());
+  BodyDefinition out = body;
+  out.pieces = geometry::pieces_with_nodes_at(mesh, body.pieces, vertices, 1e-9 * mesh.scale);
+  return out;
+}
+
 std::optional<std::string> plastic_zone_box_warning(const geometry::BoundaryMesh& mesh, const BodyDefinition& body,
                                                     const std::vector<plasticity::Cell>& cells,
                                                     const std::vector<plasticity::J2State>& states) {
@@ -179,6 +190,11 @@ ElastoplasticResult solve_elastoplastic_body(const ProblemDefinition& problem, c
     const auto& p = *selection.listed_outside.front();
     throw InputError(p.where.file.empty() ? SourceLocation{problem.source_file, 0, "interior.points"} : p.where,
                      "point " + point_text(p.position) + " is not inside the body");
+  }
+  if (plasticity.nodes_at_cells) {
+    ProblemDefinition conformed = problem;
+    conformed.body = body_conforming_to_cells(result.mesh, body, problem.analysis);
+    result.mesh = mesh_body(conformed);
   }
   result.cells = region_cells_of(result.mesh, body, problem.analysis, memory_limit_bytes);
   clock.lap("mesh and cells");

@@ -9,6 +9,7 @@
 
 #include "bemcontact/bem/analysis.hpp"
 #include "bemcontact/bem/assembly.hpp"
+#include "bemcontact/bem/elastoplastic_analysis.hpp"
 #include "bemcontact/core/error.hpp"
 #include "bemcontact/contact/zone_ends.hpp"
 #include "bemcontact/dd/interface.hpp"
@@ -191,6 +192,17 @@ void mesh_regions(const ContactProblem& problem, PreparedContact& prepared) {
     std::vector<geometry::BoundaryMesh> meshes;
     try {
       meshes = dd::mesh_subdomains(decomposition);
+      // An elastoplastic region's nodes where its cells meet its boundary: meshed again.
+      bool conformed = false;
+      for (std::size_t r = 0; r < meshes.size(); ++r) {
+        auto& region = decomposition.subdomains[r].body;
+        if (!region.plasticity || !region.plasticity->nodes_at_cells) continue;
+        const auto pieces = bem::body_conforming_to_cells(meshes[r], dd::subdomain_problem(decomposition, r).body,
+                                                          problem.analysis).pieces;
+        for (std::size_t p = 0; p < pieces.size(); ++p) region.pieces[p].breakpoints = pieces[p].breakpoints;
+        conformed = true;
+      }
+      if (conformed) meshes = dd::mesh_subdomains(decomposition);
     } catch (const GeometryError& error) {
       throw error.in_context("body '" + body.name + "'");
     }

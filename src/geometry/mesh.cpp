@@ -1,5 +1,6 @@
 #include "bemcontact/geometry/mesh.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -385,6 +386,55 @@ BoundaryMesh mesh_boundary(const std::vector<BoundaryPiece>& input_pieces, const
     }
   add_vertices(mesh, pieces, start_vertex);
   return mesh;
+}
+
+std::vector<BoundaryPiece> pieces_with_nodes_at(const BoundaryMesh& mesh, std::vector<BoundaryPiece> pieces,
+                                                const std::vector<Vec2>& points, double tolerance, double snap) {
+  for (std::size_t p = 0; p < pieces.size(); ++p) {
+    if (mesh.piece_skipped[p] || mesh.piece_elements[p].empty() || pieces[p].shape != PieceShape::line) continue;
+    BoundaryPiece& piece = pieces[p];
+    const double length = piece_length(piece);
+    const auto fraction_at = [&](const Vec2& x) { return arc_length_at(piece, x) / length; };
+    // The mesh's own end points, and the points on the piece's elements.
+    std::vector<double> ends{0.0};
+    std::vector<double> wanted;
+    for (const Index e : mesh.piece_elements[p]) {
+      const auto& element = mesh.elements[static_cast<std::size_t>(e)];
+      ends.push_back(fraction_at(element.end));
+      const Vec2 d = element.end - element.start;
+      for (const Vec2& x : points) {
+        const double f = std::clamp((x - element.start).dot(d) / d.squaredNorm(), 0.0, 1.0);
+        if ((x - (element.start + f * d)).norm() <= tolerance) wanted.push_back(fraction_at(x));
+      }
+    }
+    ends.back() = 1.0;
+    std::sort(wanted.begin(), wanted.end());
+    std::vector<char> moved(ends.size(), 0);
+    std::vector<double> placed;
+    for (const double w : wanted) {
+      // The element holding w, its length, and the nearer of its ends.
+      const std::size_t k = static_cast<std::size_t>(
+          std::clamp<std::ptrdiff_t>(std::upper_bound(ends.begin(), ends.end(), w) - ends.begin(), 1,
+                                     static_cast<std::ptrdiff_t>(ends.size()) - 1));
+      const double h = ends[k] - ends[k - 1];
+      const std::size_t nearer = w - ends[k - 1] < ends[k] - w ? k - 1 : k;
+      const double gap = std::abs(w - ends[nearer]);
+      if (gap <= 1e-9) continue;  // already an end point
+      const bool near_placed = std::any_of(placed.begin(), placed.end(), [&](double q) { return std::abs(q - w) < snap * h; });
+      if (near_placed) continue;
+      if (gap < snap * h) {
+        if (nearer == 0 || nearer + 1 == ends.size() || moved[nearer]) continue;
+        ends[nearer] = w;
+        moved[nearer] = 1;
+      } else {
+        ends.insert(ends.begin() + static_cast<std::ptrdiff_t>(k), w);
+        moved.insert(moved.begin() + static_cast<std::ptrdiff_t>(k), 1);
+      }
+      placed.push_back(w);
+    }
+    piece.breakpoints = ends;
+  }
+  return pieces;
 }
 
 std::vector<std::string> mesh_quality_warnings(const BoundaryMesh& mesh, double ratio) {

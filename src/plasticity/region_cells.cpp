@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <unordered_map>
 
 #include "bemcontact/core/error.hpp"
 #include "bemcontact/plasticity/edge_quadrature.hpp"
@@ -127,9 +128,50 @@ int boundary_entries(const std::vector<Vec2>& polygon, const Rect& r, double eps
   return entries;
 }
 
-// A leaf's cell, or with `crossed` its fan of triangles about its vertices' mean: the
-// rectangle's diagonals for a whole leaf. A concave cut stays whole (its fan would leave it).
-void add_cell(std::vector<Cell>& cells, Cell cell, bool crossed) {
+// The leaves' polygon vertices by square buckets of `width`, to find those lying on an edge.
+class VertexBuckets {
+ public:
+  VertexBuckets(const std::vector<Cell>& polygons, const Vec2& origin, double width) : origin_(origin), width_(width) {
+    for (const auto& polygon : polygons)
+      for (const Vec2& v : polygon.vertices) buckets_[key(bucket(v.x(), 0), bucket(v.y(), 1))].push_back(v);
+  }
+  // The vertices strictly inside the segment a-b (within eps of it), from a to b.
+  std::vector<Vec2> on_segment(const Vec2& a, const Vec2& b, double eps) const {
+    std::vector<Vec2> out;
+    const Vec2 d = b - a;
+    const double length = d.norm();
+    const long long i0 = bucket(std::min(a.x(), b.x()) - eps, 0), i1 = bucket(std::max(a.x(), b.x()) + eps, 0);
+    const long long j0 = bucket(std::min(a.y(), b.y()) - eps, 1), j1 = bucket(std::max(a.y(), b.y()) + eps, 1);
+    if ((i1 - i0 + 1) * (j1 - j0 + 1) > 4 * (static_cast<long long>(length / width_) + 4)) return out;  // not a leaf side
+    for (long long i = i0; i <= i1; ++i)
+      for (long long j = j0; j <= j1; ++j) {
+        const auto found = buckets_.find(key(i, j));
+        if (found == buckets_.end()) continue;
+        for (const Vec2& v : found->second) {
+          const double t = (v - a).dot(d) / (length * length);
+          if (t * length > eps && (1.0 - t) * length > eps && std::abs(cross(d, v - a)) <= eps * length &&
+              std::none_of(out.begin(), out.end(), [&](const Vec2& w) { return (w - v).norm() <= eps; }))
+            out.push_back(v);
+        }
+      }
+    std::sort(out.begin(), out.end(), [&](const Vec2& p, const Vec2& q) { return (p - a).dot(d) < (q - a).dot(d); });
+    return out;
+  }
+
+ private:
+  long long bucket(double x, int axis) const { return static_cast<long long>(std::floor((x - origin_[axis]) / width_)); }
+  static long long key(long long i, long long j) { return i * 4000037LL + j; }
+  Vec2 origin_;
+  double width_;
+  std::unordered_map<long long, std::vector<Vec2>> buckets_;
+};
+
+// A leaf's cell, or with `crossed` its fan of triangles about its own vertices' mean (the
+// rectangle's diagonals for a whole leaf), through the vertices of smaller neighbours that
+// lie on its sides: the triangles then meet vertex to vertex, so a continuous piecewise
+// linear displacement has a constant strain on each (a compatible plastic strain). A
+// concave cut stays whole (its fan would leave it).
+void add_cell(std::vector<Cell>& cells, Cell cell, bool crossed, const VertexBuckets& vertices, double eps) {
   if (!crossed || !cell.convex()) {
     cells.push_back(std::move(cell));
     return;
@@ -137,8 +179,12 @@ void add_cell(std::vector<Cell>& cells, Cell cell, bool crossed) {
   Vec2 centre = Vec2::Zero();
   for (const Vec2& v : cell.vertices) centre += v;
   centre /= static_cast<double>(cell.vertices.size());
-  for (std::size_t k = 0, n = cell.vertices.size(); k < n; ++k)
-    cells.push_back(Cell{{cell.vertices[k], cell.vertices[(k + 1) % n], centre}});
+  std::vector<Vec2> polygon;
+  for (std::size_t k = 0, n = cell.vertices.size(); k < n; ++k) {
+    polygon.push_back(cell.vertices[k]);
+    for (const Vec2& v : vertices.on_segment(cell.vertices[k], cell.vertices[(k + 1) % n], eps)) polygon.push_back(v);
+  }
+  for (std::size_t k = 0, n = polygon.size(); k < n; ++k) cells.push_back(Cell{{polygon[k], polygon[(k + 1) % n], centre}});
 }
 
 }  // namespace
@@ -193,7 +239,7 @@ std::vector<Cell> region_cells(const std::vector<RegionLoop>& loops, const CellM
                   ": give a larger size or refine_size, or a box");
   }
 
-  std::vector<Cell> cells;
+  std::vector<Cell> polygons;  // one per leaf in the region
   for (const Rect& r : leaves) {
     std::vector<int> cutting;
     for (std::size_t l = 0; l < loops.size(); ++l) {
@@ -206,7 +252,7 @@ std::vector<Cell> region_cells(const std::vector<RegionLoop>& loops, const CellM
     }
     if (cutting.empty()) {
       if (inside_region(r.centre(), loops))
-        add_cell(cells, Cell{{r.lo, Vec2(r.hi.x(), r.lo.y()), r.hi, Vec2(r.lo.x(), r.hi.y())}}, options.crossed);
+        polygons.push_back(Cell{{r.lo, Vec2(r.hi.x(), r.lo.y()), r.hi, Vec2(r.lo.x(), r.hi.y())}});
       continue;
     }
     if (cutting.size() > 1 || loops[static_cast<std::size_t>(cutting[0])].hole)
@@ -223,8 +269,14 @@ std::vector<Cell> region_cells(const std::vector<RegionLoop>& loops, const CellM
     Cell cell{std::move(part)};
     if (cell.triangles().empty())
       throw Error("the cell at " + point_text(r.centre()) + " is not a simple polygon: give a smaller size there");
-    add_cell(cells, std::move(cell), options.crossed);
+    polygons.push_back(std::move(cell));
   }
+  // The leaves' cells, crossed ones through their neighbours' vertices.
+  double smallest = std::numeric_limits<double>::infinity();
+  for (const Rect& r : leaves) smallest = std::min(smallest, r.longer_side());
+  const VertexBuckets vertices(options.crossed ? polygons : std::vector<Cell>{}, lo, smallest);
+  std::vector<Cell> cells;
+  for (auto& polygon : polygons) add_cell(cells, std::move(polygon), options.crossed, vertices, eps);
   if (cells.empty()) throw Error("no cell lies inside the region (is the box outside it?)");
   return cells;
 }

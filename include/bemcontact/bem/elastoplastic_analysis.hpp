@@ -72,6 +72,17 @@ ElastoplasticStep record_elastoplastic_step(double time, const IncrementReport& 
 std::vector<plasticity::Cell> region_cells_of(const geometry::BoundaryMesh& mesh, const BodyDefinition& body,
                                               AnalysisType type, double memory_limit_bytes);
 
+// With [cells] nodes_at_cells (the default), the body with element end points added on its
+// boundaries where the vertices of its cells on `mesh` lie on them
+// (geometry::pieces_with_nodes_at); else the body as it is. A cell-wise constant plastic
+// strain kinks the boundary's displacement at those points, and a collapse mechanism (a
+// compatible plastic strain) leaves no stress only if the elements can follow it: with nodes
+// elsewhere a band of plastic shear leaving the surface kept 2 to 13 % of G gamma as stress
+// whatever the cell size, and the punch's load rose on past Prandtl's limit. Mesh the result
+// again, and make the cells from that mesh. InputError as region_cells_of.
+BodyDefinition body_conforming_to_cells(const geometry::BoundaryMesh& mesh, const BodyDefinition& body,
+                                        AnalysisType type);
+
 // The warning of a plastic zone that reaches a side of the cells' box where the body goes
 // on (the answer too stiff there); none otherwise.
 std::optional<std::string> plastic_zone_box_warning(const geometry::BoundaryMesh& mesh, const BodyDefinition& body,

@@ -92,6 +92,9 @@ class ElastoplasticRegion {
   void restore(const ElastoplasticState& state);
 
   const std::vector<plasticity::Cell>& cells() const { return cells_; }
+  // C E averaged over each cell per unit initial stress component of each cell, at zero
+  // load (the cell-to-cell operator K; components_ rows and columns per cell).
+  const Matrix& cell_operator() const { return cell_operator_; }
   const std::vector<plasticity::J2State>& states() const { return states_; }
   // The stress of each cell (s33 included), and the boundary solution, at the last
   // increment's end.

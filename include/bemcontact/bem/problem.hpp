@@ -54,6 +54,9 @@ struct RegionPlasticity {
   plasticity::CellMeshOptions cells;
   SourceLocation where;        // the yield stress's key, for messages
   SourceLocation cells_where;  // the [cells] table
+  // The boundary's elements given end points where the cells' vertices lie on it
+  // (body_conforming_to_cells in bem/elastoplastic_analysis.hpp); false: the mesh as given.
+  bool nodes_at_cells = true;
 };
 
 struct BodyDefinition {

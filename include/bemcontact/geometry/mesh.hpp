@@ -136,6 +136,19 @@ BoundaryMesh mesh_boundary(const std::vector<BoundaryPiece>& pieces, const MeshO
 // where. A coarse element next to a fine one spoils the fine side's nodes near it.
 std::vector<std::string> mesh_quality_warnings(const BoundaryMesh& mesh, double ratio = 3.0);
 
+// The straight pieces with element end points also at those of `points` that lie on the
+// mesh's elements (within `tolerance`): each piece's breakpoints are the mesh's own (its grading and
+// corner transitions) with those points added. An end point nearer to a new point than
+// `snap` of its element's length moves onto it instead (never a piece's end, nor an end point
+// that already moved), and a new point nearer than that to one already placed is left out,
+// so no element shorter than about `snap` of its neighbours appears (0.35: neighbours of
+// equal elements stay within the mesh-quality warning's factor 3). Arcs and pieces without
+// elements are returned as they are (a node added on an arc lies off the chord the point
+// was on: the polygon of the new chords would cut slivers off cells made on the old one).
+std::vector<BoundaryPiece> pieces_with_nodes_at(const BoundaryMesh& mesh, std::vector<BoundaryPiece> pieces,
+                                                const std::vector<Vec2>& points, double tolerance,
+                                                double snap = 0.35);
+
 // Node at `point` within `tolerance`, or -1.
 Index find_node_at(const BoundaryMesh& mesh, const Vec2& point, double tolerance);
 // Vertex at `point` within `tolerance`, or -1.

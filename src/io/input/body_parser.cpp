@@ -588,6 +588,7 @@ std::optional<bem::RegionPlasticity> read_plasticity(const TableReader& body, co
   auto& options = plasticity.cells;
   options.size = cells.number("size");
   options.crossed = cells.optional_string("shape").value_or("rectangles") == "crossed";
+  plasticity.nodes_at_cells = cells.boolean_or("nodes_at_cells", true);
   if (cells.has("box")) {
     const auto corners = read_point_list(cells, "box", 2, "[[x0, y0], [x1, y1]] (lower-left, upper-right)");
     if (!(corners[1].x() > corners[0].x() && corners[1].y() > corners[0].y()))

@@ -263,7 +263,10 @@ std::vector<Table> build_tables() {
                 number("growth", "0.5", "with refine: the cells' edge grows by this per unit distance from the points",
                        above(0)),
                 choice("shape", {"rectangles", "crossed"}, "rectangles",
-                       "crossed: each rectangle cut by its diagonals into four triangles (docs/plasticity.md, Cells)")}});
+                       "crossed: each rectangle cut by its diagonals into four triangles (docs/plasticity.md, Cells)"),
+                of(Type::boolean, "nodes_at_cells", "true",
+                   "the boundary's elements get end points where the cells' vertices lie on it, so that a collapse "
+                   "mechanism leaves no stress (docs/plasticity.md, Cells); false keeps the mesh as given")}});
   t.push_back({"boundary", "[[boundary]]", "each [[boundary]] table", joined({piece_keys(), condition_keys()})});
   t.push_back({"tabulated", "a table of values", "a table of values",
                {of(Type::points, "table", "required",
