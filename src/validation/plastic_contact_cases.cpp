@@ -18,12 +18,6 @@
 namespace bemcontact::validation {
 namespace {
 
-std::vector<Record> skipped_on_compressed(const std::string& name) {
-  std::vector<Record> records{report_value("skipped_dense_only", 1.0)};
-  tag(records, 0, name, {});
-  return records;
-}
-
 // What the cells show after a load below or above first yield.
 struct OnsetRun {
   int yielded = 0;

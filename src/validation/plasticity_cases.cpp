@@ -198,12 +198,8 @@ void add_tube_from_file(const Context& context, std::vector<Record>& records) {
 // at two cell sizes, against the 1D sphere (reference/plastic_cylinder.hpp) and Hill's
 // plastic radius c = 1.3 at the peak pressure.
 std::vector<Record> run_plastic_sphere(const Context& context) {
+  if (context.operator_kind == bem::OperatorKind::compressed) return skipped_on_compressed("plastic-sphere");
   std::vector<Record> records;
-  if (context.operator_kind == bem::OperatorKind::compressed) {
-    records.push_back(report_value("skipped_dense_only", 1.0));
-    tag(records, 0, "plastic-sphere", {});
-    return records;
-  }
   const std::string path = context.examples_dir + "/plastic_sphere.toml";
   const auto input = io::read_problem(io::read_problem_text(path), path);
   auto history = contact::elastoplastic_history(input.model);
@@ -253,11 +249,7 @@ std::vector<Record> run_plastic_sphere(const Context& context) {
 std::vector<Record> run_plastic_cylinder(const Context& context) {
   // The region is dense only (no compressed domain operator yet): under --operator
   // compressed the case would repeat itself.
-  if (context.operator_kind == bem::OperatorKind::compressed) {
-    std::vector<Record> records{report_value("skipped_dense_only", 1.0)};
-    tag(records, 0, "plastic-cylinder", {});
-    return records;
-  }
+  if (context.operator_kind == bem::OperatorKind::compressed) return skipped_on_compressed("plastic-cylinder");
   // The pressure p = 1: the increments' amplitudes are the pressures.
   auto file = io::read_problem_file(context.examples_dir + "/thick_ring_plane_strain.toml", {{"p", 1.0}});
   auto& problem = file.problem;
@@ -310,12 +302,8 @@ std::vector<Record> run_plastic_cylinder(const Context& context) {
 // the plateau level (its rise over that quarter), and its excess over the
 // limit falling as the edge's cells refine.
 std::vector<Record> run_punch_limit_load(const Context& context) {
+  if (context.operator_kind == bem::OperatorKind::compressed) return skipped_on_compressed("punch-limit-load");
   std::vector<Record> records;
-  if (context.operator_kind == bem::OperatorKind::compressed) {
-    records.push_back(report_value("skipped_dense_only", 1.0));
-    tag(records, 0, "punch-limit-load", {});
-    return records;
-  }
   const std::string path = context.examples_dir + "/prandtl_punch.toml";
   double previous_excess = 0.0;
   for (const double fine : {0.1, 0.05}) {

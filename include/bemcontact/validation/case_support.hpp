@@ -16,6 +16,9 @@ io::ProblemFile load_example(const Context& context, const std::string& file);
 Index node_at(const geometry::BoundaryMesh& mesh, const Vec2& point);
 Index vertex_at(const geometry::BoundaryMesh& mesh, const Vec2& point);
 Index interior_point_at(const bem::InteriorSolution& interior, const Vec2& point);
+// The one record of a case that runs on dense operators only (an elastoplastic region),
+// under --operator compressed: it would repeat itself.
+std::vector<Record> skipped_on_compressed(const std::string& case_name);
 
 // Runs a case with linear and with quadratic elements: measure(problem, records) appends
 // the records of one variant and returns its element count; each variant's records are
