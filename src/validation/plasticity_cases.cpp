@@ -323,12 +323,12 @@ std::vector<Record> run_punch_limit_load(const Context& context) {
     const std::size_t n = pressure.size(), quarter = std::max<std::size_t>(1, n / 4);
     double plateau = 0.0;
     for (std::size_t k = n - quarter; k < n; ++k) plateau += pressure[k] / static_cast<double>(quarter);
-    // Measured 1.038 and 1.021: first order in the edge's cell size (1.010 at 0.025a).
+    // Measured 1.0385 and 1.0213: first order in the edge's cell size (1.010 at 0.025a).
     records.push_back(compare_relative("plateau_pressure_over_prandtl", plateau, 1.0, fine > 0.07 ? 0.05 : 0.03));
-    // Levelled over the plateau (0.06a to 0.08a; measured within 0.1 % at both sizes):
+    // Levelled over the plateau (0.0525a to 0.07a; measured within 0.01 % at both sizes):
     // elements that cannot follow the mechanism (nodes_at_cells = false) rise by 0.65 % of the
-    // limit over this stretch at 0.05a, still going (1.050 at 0.08a), and rectangles (locking)
-    // by 3 to 4 % (1.27 at 0.08a).
+    // limit over the same stretch of a run to 0.08a at 0.05a, still going (1.050 at 0.08a),
+    // and rectangles (locking) by 3 to 4 % (1.27 at 0.08a).
     records.push_back(compare_scaled("rise_over_last_quarter_over_prandtl", pressure[n - 1] - pressure[n - 1 - quarter],
                                      0.0, 1.0, 0.002));
     const double excess = plateau - 1.0;

@@ -101,6 +101,39 @@ TEST(RegionCells, CrossedCellsAreFourTrianglesPerRectangle) {
   expect_valid_cells(curved);
 }
 
+// Graded crossed cells meet vertex to vertex: a leaf beside smaller ones is fanned through
+// their vertices on its sides, so no cell's vertex lies inside another cell's edge (a
+// continuous piecewise linear displacement then has a constant strain on each: a compatible
+// plastic strain). Rectangles keep their hanging vertices.
+TEST(RegionCells, GradedCrossedCellsMeetVertexToVertex) {
+  const RegionLoop square{{{0, 0}, {2, 0}, {2, 1}, {0, 1}}};
+  CellMeshOptions options{0.25};
+  options.refine_points = {Vec2(0.5, 1.0)};
+  options.refine_size = 0.03;
+  options.growth = 0.3;
+  const auto hanging = [](const std::vector<Cell>& cells) {
+    int count = 0;
+    for (const auto& cell : cells)
+      for (std::size_t k = 0, n = cell.vertices.size(); k < n; ++k) {
+        const Vec2 a = cell.vertices[k], d = cell.vertices[(k + 1) % n] - a;
+        for (const auto& other : cells)
+          for (const Vec2& v : other.vertices) {
+            const double t = (v - a).dot(d) / d.squaredNorm();
+            count += t > 1e-9 && t < 1 - 1e-9 && std::abs(d.x() * (v - a).y() - d.y() * (v - a).x()) < 1e-12;
+          }
+      }
+    return count;
+  };
+  const auto rectangles = region_cells({square}, options);
+  EXPECT_GT(hanging(rectangles), 0);  // the grading's hanging vertices are there
+  options.crossed = true;
+  const auto cells = region_cells({square}, options);
+  EXPECT_NEAR(total_area(cells), 2.0, 1e-13);
+  expect_valid_cells(cells);
+  EXPECT_EQ(hanging(cells), 0);
+  EXPECT_GT(cells.size(), 4 * rectangles.size());  // the fans through the neighbours' vertices
+}
+
 TEST(RegionCells, CurvedRegionIsTiledExactly) {
   const RegionLoop tube = quarter_tube();
   for (double size : {0.3, 0.1, 0.05}) {
