@@ -347,8 +347,19 @@ struct ElastoplasticRegion::Evaluation {
   Index worst = 0;    // the cell where it is largest
 };
 
+Vector ElastoplasticRegion::cell_fields_of(const Vector& sigma0) const {
+  const Index d = components_;
+  Vector out = Vector::Zero(cell_operator_.rows());
+  for (Index e = 0; e < static_cast<Index>(cells_.size()); ++e) {
+    const auto block = sigma0.segment(d * e, d);
+    if (!block.isZero(0.0)) out.noalias() += cell_operator_.middleCols(d * e, d) * block;
+  }
+  return out;
+}
+
 ElastoplasticRegion::Evaluation ElastoplasticRegion::evaluate(const Vector& E, double amplitude, const Vector& traction,
-                                                              const std::vector<char>& held) const {
+                                                              const std::vector<char>& held,
+                                                              const CommittedFields& committed) const {
   const Index m = static_cast<Index>(cells_.size()), d = components_;
   const CellKernels kernels(type_, material_);
   const Matrix C = kernels.stiffness();
@@ -378,12 +389,16 @@ ElastoplasticRegion::Evaluation ElastoplasticRegion::evaluate(const Vector& E, d
       for (Index j = 0; j < d; ++j)
         tangent(i, j) = out_scale[i] * update.tangent(rows[static_cast<std::size_t>(i)], rows[static_cast<std::size_t>(j)]) * in_scale[j];
     }
-    // sigma = C E - sigma0: the initial stress the update leaves, and its slope.
-    sigma0.segment(d * e, d) = C * strain - stress;
+    // sigma = C E - sigma0: the initial stress the update leaves (an elastic cell's the
+    // committed one, exactly: its field is then not taken again), and its slope.
+    sigma0.segment(d * e, d) = update.plastic ? Vector(C * strain - stress) : Vector(committed.sigma0.segment(d * e, d));
     out.slope[k] = C - tangent;
   }
-  // C E as the boundary's and the cells' fields give it.
-  const Vector target = amplitude * load_stress_ + traction_stress_ * traction + cell_operator_ * sigma0;
+  // C E as the boundary's and the cells' fields give it; the cells' fields as the committed
+  // ones plus those of the cells whose initial stress moved (the plastic ones: a few of
+  // all, where the whole product was half the run's time).
+  const Vector target = amplitude * load_stress_ + traction_stress_ * traction + committed.field +
+                        cell_fields_of(sigma0 - committed.sigma0);
   out.sigma0 = sigma0;
   out.F.resize(d * m);
   for (Index e = 0; e < m; ++e) out.F.segment(d * e, d) = E.segment(d * e, d) - compliance * target.segment(d * e, d);
@@ -405,9 +420,12 @@ bool ElastoplasticRegion::solve_increment(double amplitude, int max_iterations, 
   const Matrix compliance = CellKernels(type_, material_).stiffness().inverse();
   Vector traction = surface_traction_;
   // The elastic predictor: the new load with the plastic strains of the last increment.
+  CommittedFields committed;
+  committed.sigma0 = initial_stresses();
+  committed.field = cell_fields_of(committed.sigma0);
   Vector E(d * m);
   {
-    const Vector target = amplitude * load_stress_ + traction_stress_ * traction + cell_operator_ * initial_stresses();
+    const Vector target = amplitude * load_stress_ + traction_stress_ * traction + committed.field;
     for (Index e = 0; e < m; ++e) E.segment(d * e, d) = compliance * target.segment(d * e, d);
   }
   // C^-1 H: the strain per unit surface traction, through the boundary.
@@ -418,7 +436,7 @@ bool ElastoplasticRegion::solve_increment(double amplitude, int max_iterations, 
   std::vector<char> held(static_cast<std::size_t>(m), 0);
   std::vector<int> flips(static_cast<std::size_t>(m), 0);  // changes of state from iteration to iteration
   std::vector<char> last_state(static_cast<std::size_t>(m), 0);
-  Evaluation current = evaluate(E, amplitude, traction, held);
+  Evaluation current = evaluate(E, amplitude, traction, held, committed);
   // An increment whose residual has stalled (above the tolerance, 4 iterations running each
   // less than 5 % below the last and not a jump: a new held cell or a contact update) is
   // given up at once: its halves converge, and in the Brinell cycle every stall ran on to
@@ -442,7 +460,7 @@ bool ElastoplasticRegion::solve_increment(double amplitude, int max_iterations, 
       if (iteration > 0 && state != last_state[k] && ++flips[k] >= 2 && !held[k]) held[k] = 1, newly_held = true;
       last_state[k] = state;
     }
-    if (newly_held) current = evaluate(E, amplitude, traction, held);
+    if (newly_held) current = evaluate(E, amplitude, traction, held, committed);
     const bool stalled = stalled_for >= kStalledIterations;
     if (iteration == max_iterations || stalled || !std::isfinite(current.norm)) {
       const Vec2 at = cells_[static_cast<std::size_t>(current.worst)].centroid();
@@ -511,16 +529,16 @@ bool ElastoplasticRegion::solve_increment(double amplitude, int max_iterations, 
       step_plastic += Z * change;
       rhs += strain_per_traction * change;
       traction = next;
-      current = evaluate(E, amplitude, traction, held);  // the line search's reference
+      current = evaluate(E, amplitude, traction, held, committed);  // the line search's reference
     }
     Matrix step = rhs - coupling * step_plastic;
     for (Index i = 0; i < p; ++i) step.middleRows(d * plastic[static_cast<std::size_t>(i)], d) = step_plastic.segment(d * i, d);
     double fraction = 1.0;
-    Evaluation next = evaluate(E + step.col(0), amplitude, traction, held);
+    Evaluation next = evaluate(E + step.col(0), amplitude, traction, held, committed);
     constexpr int kHalvings = 10;
     for (int k = 0; k < kHalvings && !(next.F.norm() < (1.0 - 1e-4 * fraction) * current.F.norm()); ++k) {
       fraction *= 0.5;
-      next = evaluate(E + fraction * step.col(0), amplitude, traction, held);
+      next = evaluate(E + fraction * step.col(0), amplitude, traction, held, committed);
     }
     E += fraction * step.col(0);
     current = std::move(next);

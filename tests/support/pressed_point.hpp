@@ -1,21 +1,24 @@
 #pragma once
 // One material point of a block pressed between smooth platens in plane strain: eps_22
-// prescribed in equal steps, eps_11 found by Newton with sigma_11 = 0 (eps_33 = 0): the
+// prescribed in steps, eps_11 found by Newton with sigma_11 = 0 (eps_33 = 0): the
 // block's uniform state without boundary elements or cells.
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "bemcontact/plasticity/j2_material.hpp"
 
 namespace bemcontact::test_support {
 
+// eps_22 = strain * a for each amplitude a of `amplitudes` in turn (a run's increments,
+// cuts included: the radial return's result depends on them).
 inline plasticity::Mandel pressed_point_stress(const Material& material, const plasticity::J2Hardening& hardening,
-                                               double strain, int steps) {
+                                               double strain, const std::vector<double>& amplitudes) {
   plasticity::J2State state;
   double e11 = 0.0;
   plasticity::J2Update update;
-  for (int k = 1; k <= steps; ++k) {
-    const double e22 = strain * k / steps;
+  for (const double amplitude : amplitudes) {
+    const double e22 = strain * amplitude;
     for (int iteration = 0; iteration < 50; ++iteration) {
       update = plasticity::j2_update(material, hardening, state, plasticity::mandel(e11, e22, 0.0, 0.0));
       if (std::abs(update.stress[0]) < 1e-12 * hardening.yield_stress) break;
@@ -24,6 +27,13 @@ inline plasticity::Mandel pressed_point_stress(const Material& material, const p
     state = update.state;
   }
   return update.stress;
+}
+
+inline plasticity::Mandel pressed_point_stress(const Material& material, const plasticity::J2Hardening& hardening,
+                                               double strain, int steps) {
+  std::vector<double> amplitudes;
+  for (int k = 1; k <= steps; ++k) amplitudes.push_back(static_cast<double>(k) / steps);
+  return pressed_point_stress(material, hardening, strain, amplitudes);
 }
 
 // The block itself: a unit square (cells of 0.25) on a roller base, held at x = 0, its top

@@ -111,8 +111,15 @@ class ElastoplasticRegion {
  private:
   Vector initial_stress(const plasticity::Mandel& plastic_strain) const;
   Vector initial_stresses() const;  // of every cell, from the committed plastic strains
+  // K sigma0, over the cells whose initial stress is not zero.
+  Vector cell_fields_of(const Vector& sigma0) const;
+  // The committed initial stresses of an increment and their fields K sigma0.
+  struct CommittedFields {
+    Vector sigma0, field;
+  };
   struct Evaluation;
-  Evaluation evaluate(const Vector& E, double amplitude, const Vector& traction, const std::vector<char>& held) const;
+  Evaluation evaluate(const Vector& E, double amplitude, const Vector& traction, const std::vector<char>& held,
+                      const CommittedFields& committed) const;
   bool solve_increment(double amplitude, int max_iterations, double tolerance, IncrementReport& report,
                        std::string& failure, const SurfaceContact* contact = nullptr);
 

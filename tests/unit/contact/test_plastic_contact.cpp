@@ -57,7 +57,10 @@ normal = "body1"
   options.keep_tables = true;
   const auto output = run_problem(text, "platen.toml", options);
   const double Y = 250.0;
-  const auto point = pressed_point_stress({200000.0, 0.3}, {Y, 0.0, 0.0}, -0.01, 10);
+  // Along the run's own increments: one the solver cut in halves at the limit load (the
+  // block's tangent in compression vanishes there) takes another path of the return mapping.
+  const auto point =
+      pressed_point_stress({200000.0, 0.3}, {Y, 0.0, 0.0}, -0.01, column(output.tables.at("block_plastic_steps.csv"), "amplitude").numbers);
   const auto& cells = output.tables.at("block_cells.csv");
   ASSERT_EQ(column(cells, "s22").numbers.size(), 16u);
   for (std::size_t k = 0; k < 16; ++k) {
