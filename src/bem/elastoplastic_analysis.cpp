@@ -176,6 +176,14 @@ ElastoplasticStep record_elastoplastic_step(double time, const IncrementReport& 
   return step;
 }
 
+geometry::BoundaryMesh mesh_elastoplastic_body(const ProblemDefinition& problem) {
+  geometry::BoundaryMesh mesh = mesh_body(problem);
+  if (!problem.body.plasticity || !problem.body.plasticity->nodes_at_cells) return mesh;
+  ProblemDefinition conformed = problem;
+  conformed.body = body_conforming_to_cells(mesh, problem.body, problem.analysis);
+  return mesh_body(conformed);
+}
+
 ElastoplasticResult solve_elastoplastic_body(const ProblemDefinition& problem, const std::vector<double>& times,
                                              const std::vector<double>& amplitudes, const ProgressCallback& progress,
                                              double memory_limit_bytes) {
@@ -184,17 +192,12 @@ ElastoplasticResult solve_elastoplastic_body(const ProblemDefinition& problem, c
   const RegionPlasticity& plasticity = *body.plasticity;
   ElastoplasticResult result;
   PhaseClock clock(result.timings);
-  result.mesh = mesh_body(problem);
+  result.mesh = mesh_elastoplastic_body(problem);
   auto selection = select_interior_points(result.mesh, problem.interior_points);
   if (!selection.listed_outside.empty()) {
     const auto& p = *selection.listed_outside.front();
     throw InputError(p.where.file.empty() ? SourceLocation{problem.source_file, 0, "interior.points"} : p.where,
                      "point " + point_text(p.position) + " is not inside the body");
-  }
-  if (plasticity.nodes_at_cells) {
-    ProblemDefinition conformed = problem;
-    conformed.body = body_conforming_to_cells(result.mesh, body, problem.analysis);
-    result.mesh = mesh_body(conformed);
   }
   result.cells = region_cells_of(result.mesh, body, problem.analysis, memory_limit_bytes);
   clock.lap("mesh and cells");
@@ -220,8 +223,9 @@ ElastoplasticResult solve_elastoplastic_body(const ProblemDefinition& problem, c
     result.warnings.push_back(std::move(*warning));
   if (!problem.interior_points.empty()) {
     const ElementIntegrator integrator(problem.analysis, body.material);
+    const PlasticCellFields fields = region.cell_fields();
     result.interior = interior_values(result.mesh, integrator, result.boundary, std::move(selection), progress,
-                                      [&](const Vec2& x, Vec2& u, StressTensor& s) { region.add_cell_fields_at(x, u, s); });
+                                      [&](const Vec2& x, Vec2& u, StressTensor& s) { fields.add_at(x, u, s); });
     clock.lap("interior points");
   }
   return result;

@@ -301,22 +301,23 @@ ElastoplasticRegion::ElastoplasticRegion(const geometry::BoundaryMesh& mesh, con
   thickness_strain_.assign(static_cast<std::size_t>(m), 0.0);
 }
 
-Vector ElastoplasticRegion::initial_stress(const Mandel& plastic_strain) const {
-  // sigma0 = C eps_p on the cell's components: plane strain's and axisymmetry's 3D C with
-  // eps_p33 (eps_p tt) in the trace; plane stress's reduced C of the in-plane eps_p (eps_p33
-  // only moves eps_33).
-  if (type_ == AnalysisType::plane_stress)
-    return in_plane_stiffness(type_, material_) *
+Vector cell_initial_stress(AnalysisType type, const Material& material, const Mandel& plastic_strain) {
+  if (type == AnalysisType::plane_stress)
+    return in_plane_stiffness(type, material) *
            Eigen::Vector3d(plastic_strain[0], plastic_strain[1], component12(plastic_strain));
-  const double G = material_.shear_modulus(), nu = material_.poisson_ratio;
+  const double G = material.shear_modulus(), nu = material.poisson_ratio;
   const double lambda = 2.0 * G * nu / (1.0 - 2.0 * nu);
   const double trace = plastic_strain.head<3>().sum();
-  Vector sigma0(components_);
+  Vector sigma0(type == AnalysisType::axisymmetric ? 4 : 3);
   sigma0[0] = lambda * trace + 2 * G * plastic_strain[0];
   sigma0[1] = lambda * trace + 2 * G * plastic_strain[1];
   sigma0[2] = 2 * G * component12(plastic_strain);
-  if (components_ == 4) sigma0[3] = lambda * trace + 2 * G * plastic_strain[2];
+  if (type == AnalysisType::axisymmetric) sigma0[3] = lambda * trace + 2 * G * plastic_strain[2];
   return sigma0;
+}
+
+Vector ElastoplasticRegion::initial_stress(const Mandel& plastic_strain) const {
+  return cell_initial_stress(type_, material_, plastic_strain);
 }
 
 Vector ElastoplasticRegion::initial_stresses() const {
@@ -616,13 +617,29 @@ BoundarySolution ElastoplasticRegion::boundary_solution() const {
   return solution;
 }
 
-void ElastoplasticRegion::add_cell_fields_at(const Vec2& point, Vec2& u, StressTensor& stress) const {
+struct PlasticCellFields::Sources {
+  std::vector<std::vector<CellImage>> of_cell;  // each cell with its images
+};
+
+PlasticCellFields::PlasticCellFields(AnalysisType type, const Material& material, const geometry::BoundaryMesh& mesh,
+                                     std::vector<Cell> cells, const std::vector<Mandel>& plastic_strains)
+    : type_(type), material_(material), scale_(mesh.scale), cells_(std::move(cells)),
+      plastic_strains_(plastic_strains), sources_(std::make_unique<Sources>()) {
+  if (plastic_strains_.size() != cells_.size())
+    throw std::logic_error("PlasticCellFields: one plastic strain per cell");
+  const int d = type == AnalysisType::axisymmetric ? 4 : 3;
+  for (const auto& cell : cells_) sources_->of_cell.push_back(cell_and_images(cell, mesh.images, d));
+}
+
+PlasticCellFields::~PlasticCellFields() = default;
+PlasticCellFields::PlasticCellFields(PlasticCellFields&&) noexcept = default;
+
+void PlasticCellFields::add_at(const Vec2& point, Vec2& u, StressTensor& stress) const {
   const CellKernels kernels(type_, material_);
-  std::vector<std::vector<CellImage>> sources;
-  for (const auto& cell : cells_) sources.push_back(cell_and_images(cell, mesh_.images, kernels.d));
+  const auto& sources = sources_->of_cell;
   // Off every edge: the fields' edge integrals are singular on them.
   const auto on_an_edge = [&](const Vec2& x) {
-    const double tolerance = 1e-10 * mesh_.scale;
+    const double tolerance = 1e-10 * scale_;
     for (const auto& images : sources)
       for (const auto& source : images) {
         const auto& v = source.cell.vertices;
@@ -635,23 +652,29 @@ void ElastoplasticRegion::add_cell_fields_at(const Vec2& point, Vec2& u, StressT
     return false;
   };
   Vec2 x = point;
-  if (on_an_edge(x)) x += 1e-8 * mesh_.scale * Vec2(1.0, 1.0).normalized();
+  if (on_an_edge(x)) x += 1e-8 * scale_ * Vec2(1.0, 1.0).normalized();
   Vector c_eps = Vector::Zero(kernels.d);
   double plastic33 = 0.0;
   for (std::size_t e = 0; e < cells_.size(); ++e) {
-    const Vector sigma0 = initial_stress(states_[e].plastic_strain);
+    const Vector sigma0 = cell_initial_stress(type_, material_, plastic_strains_[e]);
     if (sigma0.isZero(0.0)) continue;
     for (const auto& source : sources[e]) {
       u += kernels.displacement(x, source.cell) * (source.stress_map * sigma0);
       c_eps += kernels.stress(x, source.cell) * (source.stress_map * sigma0);
     }
-    if (cells_[e].contains(x)) c_eps -= sigma0, plastic33 = states_[e].plastic_strain[2];
+    if (cells_[e].contains(x)) c_eps -= sigma0, plastic33 = plastic_strains_[e][2];
   }
   stress.s11 += c_eps[0], stress.s22 += c_eps[1], stress.s12 += c_eps[2];
   if (kernels.axisymmetric())
     stress.s33 += c_eps[3];  // the hoop stress, its own component
   else if (type_ == AnalysisType::plane_strain)
     stress.s33 += material_.poisson_ratio * (c_eps[0] + c_eps[1]) - material_.young_modulus * plastic33;
+}
+
+PlasticCellFields ElastoplasticRegion::cell_fields() const {
+  std::vector<Mandel> plastic;
+  for (const auto& state : states_) plastic.push_back(state.plastic_strain);
+  return PlasticCellFields(type_, material_, mesh_, cells_, plastic);
 }
 
 }  // namespace bemcontact::bem

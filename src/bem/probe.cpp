@@ -112,7 +112,7 @@ std::vector<ProbeValue> region_values(const ProbeRegion& region, int r, const st
   }
   if (!inside.empty()) {
     const ElementIntegrator integrator(region.analysis, region.material);
-    const auto interior = interior_values(*region.mesh, integrator, *region.solution, inside, progress);
+    const auto interior = interior_values(*region.mesh, integrator, *region.solution, inside, progress, region.domain_term);
     for (std::size_t i = 0; i < inside.size(); ++i) {
       values[inside_value[i]].displacement = interior.displacement[i];
       values[inside_value[i]].stress = interior.stress[i];

@@ -880,8 +880,11 @@ bool add_interior_values(const ContactProblem& problem, const ContactModel& mode
     any_interior = true;
     const bem::ElementIntegrator integrator(problem.analysis, region.definition.material);
     bem::DomainTerm cells;
-    if (coupling && coupling->region() == static_cast<int>(r))
-      cells = [coupling](const Vec2& x, Vec2& u, bem::StressTensor& s) { coupling->add_cell_fields_at(x, u, s); };
+    std::shared_ptr<const bem::PlasticCellFields> fields;
+    if (coupling && coupling->region() == static_cast<int>(r)) {
+      fields = std::make_shared<const bem::PlasticCellFields>(coupling->cell_fields());
+      cells = [fields](const Vec2& x, Vec2& u, bem::StressTensor& s) { fields->add_at(x, u, s); };
+    }
     result.interior[r] = bem::interior_values(result.meshes[r], integrator, result.boundary[r],
                                               std::move(selections[r]), progress, cells);
   }

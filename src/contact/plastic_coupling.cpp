@@ -123,8 +123,6 @@ bem::ElastoplasticResult PlasticCoupling::result() const {
   return out;
 }
 
-void PlasticCoupling::add_cell_fields_at(const Vec2& point, Vec2& u, bem::StressTensor& stress) const {
-  plastic_->add_cell_fields_at(point, u, stress);
-}
+bem::PlasticCellFields PlasticCoupling::cell_fields() const { return plastic_->cell_fields(); }
 
 }  // namespace bemcontact::contact

@@ -4,9 +4,12 @@
 #include <chrono>
 #include <cstdio>
 #include <limits>
+#include <memory>
 #include <nlohmann/json.hpp>
 
 #include "bemcontact/bem/analysis.hpp"
+#include "bemcontact/bem/elastoplastic_analysis.hpp"
+#include "bemcontact/bem/elastoplastic_region.hpp"
 #include "bemcontact/bem/probe.hpp"
 #include "bemcontact/contact/pairing.hpp"
 #include "bemcontact/contact/zone_refinement.hpp"
@@ -28,14 +31,6 @@ namespace bemcontact::driver {
 
 namespace {
 
-// Somigliana's identity of the boundary values alone would miss the plastic strain's domain
-// term: an elastoplastic run, alone or in contact, is refused.
-[[noreturn]] void refuse_elastoplastic(const std::string& file_name) {
-  throw InputError(SourceLocation{file_name, 0, ""},
-                   "probe does not read elastoplastic runs yet: their stresses inside are in <body>_cells.csv and "
-                   "<body>_cells.vtk, and on [interior] points of the run (docs/plasticity.md)");
-}
-
 using nlohmann::json;
 
 // A body or region of the run: its mesh made again from the text, and its stored solution.
@@ -46,6 +41,11 @@ struct StoredRegion {
   Material material;
   std::vector<geometry::BoundaryPiece> pieces;
   bem::BoundarySolution solution;
+  // An elastoplastic region: its cells made again, the file of their plastic strains, and
+  // the cells' fields from them (added to Somigliana's of the boundary values inside).
+  std::vector<plasticity::Cell> cells;
+  std::string cells_csv;
+  std::shared_ptr<const bem::PlasticCellFields> cell_fields;
 };
 
 struct StoredRun {
@@ -168,16 +168,30 @@ StoredRun mesh_again(std::string_view text, const std::string& file_name, const 
     case contact::SolverRoute::condensed: {
       auto prepared = contact::prepare_contact(model);
       for (auto& region : prepared.regions) {
-        if (region.definition.plasticity) refuse_elastoplastic(file_name);
         const auto& body = model.bodies[region.body];
         const std::string name = body.regions.size() == 1 ? body.name : region.definition.name;
-        run.regions.push_back({name, io::file_stem(name) + "_boundary.csv", std::move(region.mesh),
-                               region.definition.material, region.definition.pieces, {}});
+        StoredRegion stored{name, io::file_stem(name) + "_boundary.csv", std::move(region.mesh),
+                            region.definition.material, region.definition.pieces, {}};
+        if (region.definition.plasticity) {
+          stored.cells = bem::region_cells_of(stored.mesh, region.definition, model.analysis, 0.0);
+          stored.cells_csv = io::file_stem(name) + "_cells.csv";
+        }
+        run.regions.push_back(std::move(stored));
       }
       break;
     }
-    case contact::SolverRoute::elastoplastic:
-      refuse_elastoplastic(file_name);
+    case contact::SolverRoute::elastoplastic: {
+      const auto history = contact::elastoplastic_history(model);
+      const auto& body = history.problem.body;
+      const auto& named = model.bodies[0];
+      const std::string prefix = io::body_file_prefix(named.name, named.named);
+      StoredRegion stored{body.name, prefix + "boundary.csv", bem::mesh_elastoplastic_body(history.problem),
+                          body.material, body.pieces, {}};
+      stored.cells = bem::region_cells_of(stored.mesh, body, model.analysis, 0.0);
+      stored.cells_csv = prefix + "cells.csv";
+      run.regions.push_back(std::move(stored));
+      break;
+    }
   }
   return run;
 }
@@ -199,6 +213,31 @@ void check_same_nodes(const StoredRegion& region, const std::vector<Vec2>& store
                      point_text(region.mesh.nodes[i].position) + " now");
 }
 
+// The plastic strains of an elastoplastic region's cells, on the cells made again (the same,
+// centroid for centroid), and their fields.
+void load_cells(const FileReader& run_files, AnalysisType analysis, StoredRegion& region, const ProbeOptions& options) {
+  const auto csv = run_files(region.cells_csv);
+  if (!csv)
+    throw run_error(options, "the run has no " + region.cells_csv + " (the plastic strains of '" + region.name +
+                                 "'): it did not finish, or the file was removed");
+  auto stored = io::parse_cells_csv(*csv, options.run_name + "/" + region.cells_csv);
+  const auto mismatch = [&](const std::string& what) {
+    return run_error(options, "the cells of '" + region.name + "' made from the problem text do not match " +
+                                  region.cells_csv + " (" + what + "): the run was made by another version of "
+                                  "bemcontact; run the problem again");
+  };
+  if (stored.centroids.size() != region.cells.size())
+    throw mismatch(std::to_string(stored.centroids.size()) + " cells stored, " + std::to_string(region.cells.size()) +
+                   " now");
+  const double tolerance = 1e-9 * region.mesh.scale;
+  for (std::size_t k = 0; k < region.cells.size(); ++k)
+    if ((region.cells[k].centroid() - stored.centroids[k]).norm() > tolerance)
+      throw mismatch("cell " + std::to_string(k) + " at " + point_text(stored.centroids[k]) + " stored, " +
+                     point_text(region.cells[k].centroid()) + " now");
+  region.cell_fields = std::make_shared<const bem::PlasticCellFields>(analysis, region.material, region.mesh,
+                                                                      region.cells, stored.plastic_strains);
+}
+
 StoredRun load_run(const FileReader& run_files, const json& summary, const ProbeOptions& options) {
   const std::string text = read_problem_text(run_files, summary, options);
   const std::string path = text_at(summary["input"], "path");
@@ -214,6 +253,7 @@ StoredRun load_run(const FileReader& run_files, const json& summary, const Probe
     auto stored = io::parse_boundary_csv(*csv, options.run_name + "/" + region.csv);
     check_same_nodes(region, stored.positions, options);
     region.solution = std::move(stored.solution);
+    if (!region.cells_csv.empty()) load_cells(run_files, run.analysis, region, options);
   }
   return run;
 }
@@ -439,9 +479,15 @@ ProbeOutput probe_run(const FileReader& run_files, const ProbeRequest& request, 
   const StoredRun run = load_run(run_files, summary, options);
 
   std::vector<bem::ProbeRegion> regions;
-  for (const auto& region : run.regions)
+  for (const auto& region : run.regions) {
+    bem::DomainTerm cells;
+    if (region.cell_fields)
+      cells = [fields = region.cell_fields](const Vec2& x, Vec2& u, bem::StressTensor& stress) {
+        fields->add_at(x, u, stress);
+      };
     regions.push_back({&region.mesh, &region.solution, run.analysis, region.material,
-                       bem::chord_bulges(region.mesh, region.pieces)});
+                       bem::chord_bulges(region.mesh, region.pieces), cells});
+  }
   const auto result = bem::probe_points(regions, asked.positions, options.progress);
   check_listed_points_held(result, asked, request);
   if (result.values.empty())

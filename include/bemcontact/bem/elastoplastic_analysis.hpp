@@ -92,6 +92,10 @@ std::optional<std::string> plastic_zone_box_warning(const geometry::BoundaryMesh
 // InputError at the [cells] table when its cells cannot be made, or when they would take
 // more than `memory_limit_bytes` (0: no limit; before anything large is allocated);
 // SolverError (from the region) when an increment fails after its cuts.
+// The body's mesh as solve_elastoplastic_body meshes it: as given, then (nodes_at_cells)
+// meshed again with a node at every cell vertex on its straight pieces.
+geometry::BoundaryMesh mesh_elastoplastic_body(const ProblemDefinition& problem);
+
 ElastoplasticResult solve_elastoplastic_body(const ProblemDefinition& problem, const std::vector<double>& times,
                                              const std::vector<double>& amplitudes,
                                              const ProgressCallback& progress = {}, double memory_limit_bytes = 0.0);

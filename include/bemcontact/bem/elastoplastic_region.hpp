@@ -67,6 +67,35 @@ struct ElastoplasticState {
   double amplitude = 0.0;
 };
 
+// The initial stress sigma0 = C eps_p of a cell's plastic strain on its components (11, 22,
+// 12, or rr, zz, rz, tt): plane strain's and axisymmetry's 3D C with eps_p33 (eps_p tt) in
+// the trace, plane stress's reduced C of the in-plane eps_p.
+Vector cell_initial_stress(AnalysisType type, const Material& material, const plasticity::Mandel& plastic_strain);
+
+// The cells' part of the displacement and stress at points of the body for given plastic
+// strains (one per cell): their initial stresses' fields (images across the mesh's symmetry
+// lines included), minus the initial stress of the cell holding the point, and s33 with
+// the plastic strain (plane strain: nu (s11 + s22) - E eps_p33). A point on a cell's edge,
+// where the field jumps, takes the value 1e-8 of the body's size up and to the right of
+// it. Used by a region for its own states and by `probe` for a run's stored ones.
+class PlasticCellFields {
+ public:
+  PlasticCellFields(AnalysisType type, const Material& material, const geometry::BoundaryMesh& mesh,
+                    std::vector<plasticity::Cell> cells, const std::vector<plasticity::Mandel>& plastic_strains);
+  ~PlasticCellFields();
+  PlasticCellFields(PlasticCellFields&&) noexcept;
+  void add_at(const Vec2& point, Vec2& u, StressTensor& stress) const;
+
+ private:
+  struct Sources;
+  AnalysisType type_;
+  Material material_;
+  double scale_;
+  std::vector<plasticity::Cell> cells_;
+  std::vector<plasticity::Mandel> plastic_strains_;
+  std::unique_ptr<Sources> sources_;
+};
+
 class ElastoplasticRegion {
  public:
   // Throws Error for a bad hardening (the reader checks it first), SolverError for a
@@ -100,13 +129,9 @@ class ElastoplasticRegion {
   // increment's end.
   const std::vector<plasticity::Mandel>& cell_stress() const { return stress_; }
   BoundarySolution boundary_solution() const;
-  // The cells' part of the displacement and stress at a point of the body, at the last
-  // increment's end, added to `u` and `stress` (Somigliana's of the boundary values):
-  // their initial stresses' fields (images included), minus the initial stress of the
-  // cell holding the point (sigma = C eps - sigma0), and s33 with the plastic strain
-  // (plane strain: nu (s11 + s22) - E eps_p33). A point on a cell's edge, where the field
-  // jumps, takes the value 1e-8 of the body's size up and to the right of it.
-  void add_cell_fields_at(const Vec2& point, Vec2& u, StressTensor& stress) const;
+  // The cells' part of the fields at the last increment's end (PlasticCellFields), to add
+  // to Somigliana's of the boundary values.
+  PlasticCellFields cell_fields() const;
 
  private:
   Vector initial_stress(const plasticity::Mandel& plastic_strain) const;

@@ -21,6 +21,8 @@ struct ProbeRegion {
   AnalysisType analysis = AnalysisType::plane_strain;
   Material material;
   std::vector<double> bulge;  // per element: chord_bulges
+  // Added inside to Somigliana's values: an elastoplastic region's cells (PlasticCellFields).
+  DomainTerm domain_term;
 };
 
 // Per element of `mesh`: how far the piece's true curve lies outside the element's chord

@@ -40,8 +40,8 @@ class PlasticCoupling {
   // The region's result at the last accepted step: cells, states, the steps, the boundary
   // with the cells' stresses and resultants, the box warning.
   bem::ElastoplasticResult result() const;
-  // The cells' part of the displacement and stress at a point (interior points).
-  void add_cell_fields_at(const Vec2& point, Vec2& u, bem::StressTensor& stress) const;
+  // The cells' part of the displacement and stress at the last accepted step (interior points).
+  bem::PlasticCellFields cell_fields() const;
 
  private:
   const ContactProblem& problem_;

@@ -159,14 +159,19 @@ std::vector<Vec2> line_points(const ProbeLine& line) {
   return points;
 }
 
-StoredBoundary parse_boundary_csv(std::string_view text, const std::string& file_name) {
-  static constexpr std::string_view header = "node,x,y,nx,ny,u1,u2,t1,t2,s11,s22,s12,s33";
-  constexpr int numeric_columns = 13;
+namespace {
+
+// Calls row(v, line) with the first N numbers of each data line of a CSV file of bemcontact
+// that starts with `header` (`what` names the file's kind in the message when it does not);
+// the first column must count the rows from 0 (`item` names them).
+template <std::size_t N, class Row>
+void for_each_stored_row(std::string_view text, const std::string& file_name, std::string_view header,
+                         const std::string& what, const std::string& item, Row&& row) {
   if (text.substr(0, header.size()) != header)
-    throw InputError(SourceLocation{file_name, 1, ""}, "not a boundary file of bemcontact: the header is not '" +
-                                                          std::string(header) + ",...'");
-  StoredBoundary stored;
+    throw InputError(SourceLocation{file_name, 1, ""},
+                     "not a " + what + " of bemcontact: the header is not '" + std::string(header) + ",...'");
   int line_number = 1;
+  std::size_t count = 0;
   std::size_t start = text.find('\n');
   start = start == std::string_view::npos ? text.size() : start + 1;
   while (start < text.size()) {
@@ -176,26 +181,47 @@ StoredBoundary parse_boundary_csv(std::string_view text, const std::string& file
     start = end + 1;
     ++line_number;
     if (trimmed(line).empty()) continue;
-    std::array<double, numeric_columns> v{};
+    std::array<double, N> v{};
     std::size_t at = 0;
-    for (int c = 0; c < numeric_columns; ++c) {
+    for (std::size_t c = 0; c < N; ++c) {
       const std::size_t comma = line.find(',', at);
       const auto value = finite_number(line.substr(at, comma == std::string_view::npos ? std::string_view::npos : comma - at));
-      if (!value || (comma == std::string_view::npos && c + 1 < numeric_columns))
+      if (!value || (comma == std::string_view::npos && c + 1 < N))
         throw InputError(SourceLocation{file_name, line_number, ""},
                          "column " + std::to_string(c + 1) + " of '" + std::string(line.substr(0, 80)) +
                              "' is not a finite number (the file is damaged)");
       v[c] = *value;
       at = comma + 1;
     }
-    if (v[0] != static_cast<double>(stored.positions.size()))
+    if (v[0] != static_cast<double>(count))
       throw InputError(SourceLocation{file_name, line_number, ""},
-                       "node " + std::to_string(stored.positions.size()) + " expected (the file is damaged)");
-    stored.positions.emplace_back(v[1], v[2]);
-    stored.solution.displacement.emplace_back(v[5], v[6]);
-    stored.solution.traction.emplace_back(v[7], v[8]);
-    stored.solution.stress.push_back({v[9], v[10], v[11], v[12]});
+                       item + " " + std::to_string(count) + " expected (the file is damaged)");
+    ++count;
+    row(v);
   }
+}
+
+}  // namespace
+
+StoredBoundary parse_boundary_csv(std::string_view text, const std::string& file_name) {
+  StoredBoundary stored;
+  for_each_stored_row<13>(text, file_name, "node,x,y,nx,ny,u1,u2,t1,t2,s11,s22,s12,s33", "boundary file", "node",
+                          [&](const auto& v) {
+                            stored.positions.emplace_back(v[1], v[2]);
+                            stored.solution.displacement.emplace_back(v[5], v[6]);
+                            stored.solution.traction.emplace_back(v[7], v[8]);
+                            stored.solution.stress.push_back({v[9], v[10], v[11], v[12]});
+                          });
+  return stored;
+}
+
+StoredCells parse_cells_csv(std::string_view text, const std::string& file_name) {
+  StoredCells stored;
+  for_each_stored_row<9>(text, file_name, "cell,x,y,area,equivalent_plastic_strain,ep11,ep22,ep33,ep12",
+                         "cells file", "cell", [&](const auto& v) {
+                           stored.centroids.emplace_back(v[1], v[2]);
+                           stored.plastic_strains.push_back(plasticity::mandel(v[5], v[6], v[7], v[8]));
+                         });
   return stored;
 }
 

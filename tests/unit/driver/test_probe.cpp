@@ -1,9 +1,12 @@
 // `bemcontact probe` (driver/probe.hpp): values at new points of a finished run, from its
 // files alone, against the run's own interior points, closed forms (Lame, Hertz-Huber, the
-// compound ring), the whole body of a half model, and its refusals.
+// compound ring), the whole body of a half model,
+// elastoplastic runs (their cells' fields), and its refusals.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
+#include <tuple>
 #include <limits>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -396,21 +399,92 @@ TEST(Probe, PointsOfALineInsideNoBodyAreLeftOutAndReported) {
     }
 }
 
-// Somigliana's identity of the boundary values would miss the cells' domain term: an
-// elastoplastic run is refused, alone (the tube) or in contact (the Brinell ball).
-TEST(Probe, RefusesElastoplasticRunsAloneOrInContact) {
+// The rows of a run's interior table (x, y, u1, u2, s11, s22, s12, s33).
+std::vector<std::array<double, 8>> interior_rows(const std::string& csv) {
+  std::istringstream in(csv);
+  std::string line;
+  std::getline(in, line);
+  EXPECT_EQ(line.rfind("point,x,y,u1,u2,s11,s22,s12,s33", 0), 0u) << line;
+  std::vector<std::array<double, 8>> rows;
+  while (std::getline(in, line)) {
+    std::vector<std::string> f;
+    std::stringstream fields(line);
+    for (std::string field; std::getline(fields, field, ',');) f.push_back(field);
+    std::array<double, 8> row{};
+    for (int k = 0; k < 8; ++k) row[static_cast<std::size_t>(k)] = std::stod(f.at(static_cast<std::size_t>(k) + 1));
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+// An elastoplastic run, alone (the tube after unloading: residual stresses) or in contact
+// (the Brinell ball at its peak): the probe makes the cells again, reads their plastic
+// strains back from <body>_cells.csv (full precision) and adds their fields to Somigliana's
+// of the boundary values, as the run does at its interior points: the same values to
+// round-off. Without the cells the values are far off (the check that they count).
+TEST(Probe, ElastoplasticRunsAloneOrInContactEqualTheRunsInteriorPoints) {
   const std::string tube =
       replaced(replaced(example_text("plastic_tube.toml"), "size = 0.08", "size = 0.32"), "increments = 20",
                "increments = 2");
   std::string ball = replaced(example_text("brinell.toml"), "cell = 0.16", "cell = 0.64");
   ball = replaced(replaced(ball, "end_time = 2.0", "end_time = 1.0"), "increments = 20", "increments = 2");
-  for (const auto& [text, name] : {std::pair{tube, "tube.toml"}, std::pair{ball, "brinell.toml"}}) {
-    const auto folder = run(text, name);
-    EXPECT_NE(input_error([&] { probe_run(folder.reader(), lines({{Vec2(0.1, -0.1), Vec2(0.2, -0.1), 2}}), {}); })
-                  .find("probe does not read elastoplastic runs"),
-              std::string::npos)
-        << name;
+  ball = replaced(ball, "refine_size = \"cell / 4\"\n",
+                  "refine_size = \"cell / 4\"\n[body.interior]\ngrid = { x = [0.05, 1.55, 4], y = [-1.55, -0.05, 4] }\n");
+  for (const auto& [text, name, interior] : {std::tuple{tube, "tube.toml", "tube_interior.csv"},
+                                             std::tuple{ball, "brinell.toml", "block_interior.csv"}}) {
+    auto folder = run(text, name);
+    const auto expected = interior_rows(folder.files.at(interior));
+    ASSERT_GE(expected.size(), 10u) << name;
+    std::vector<Vec2> points;
+    for (const auto& row : expected) points.emplace_back(row[0], row[1]);
+    const auto rows = probe(folder, listed(points));
+    ASSERT_EQ(rows.size(), expected.size()) << name;
+    double largest = 0.0, off = 0.0, cells_part = 0.0;
+    for (std::size_t k = 0; k < rows.size(); ++k) {
+      const auto& e = expected[k];
+      largest = std::max({largest, std::abs(e[4]), std::abs(e[5]), std::abs(e[6]), std::abs(e[7])});
+      const auto& s = rows[k].s;
+      off = std::max({off, std::abs(s.s11 - e[4]), std::abs(s.s22 - e[5]), std::abs(s.s12 - e[6]),
+                      std::abs(s.s33 - e[7])});
+      EXPECT_NEAR(rows[k].u.x(), e[2], 1e-12 * std::abs(e[2]) + 1e-15) << name << " point " << k;
+      EXPECT_NEAR(rows[k].u.y(), e[3], 1e-12 * std::abs(e[3]) + 1e-15) << name << " point " << k;
+    }
+    EXPECT_LE(off, 1e-10 * largest) << name;
+    // The cells' plastic strains set to zero: Somigliana's of the boundary values alone.
+    std::string cells_csv = folder.files.at(std::string(name) == "tube.toml" ? "tube_cells.csv" : "block_cells.csv");
+    std::istringstream in(cells_csv);
+    std::string line, zeroed;
+    std::getline(in, line);
+    zeroed = line + "\n";
+    while (std::getline(in, line)) {
+      std::vector<std::string> f;
+      std::stringstream fields(line);
+      for (std::string field; std::getline(fields, field, ',');) f.push_back(field);
+      for (std::size_t c = 5; c <= 8; ++c) f[c] = "0";
+      for (std::size_t c = 0; c < f.size(); ++c) zeroed += (c ? "," : "") + f[c];
+      zeroed += "\n";
+    }
+    folder.files[std::string(name) == "tube.toml" ? "tube_cells.csv" : "block_cells.csv"] = zeroed;
+    const auto elastic = probe(folder, listed(points));
+    for (std::size_t k = 0; k < rows.size(); ++k)
+      cells_part = std::max(cells_part, std::abs(elastic[k].s.s22 - rows[k].s.s22));
+    EXPECT_GE(cells_part, 0.05 * largest) << name;
   }
+}
+
+// The cells' file missing or not matching the cells made again: refused with its name.
+TEST(Probe, RefusesAnElastoplasticRunWithoutItsCells) {
+  const std::string tube =
+      replaced(replaced(example_text("plastic_tube.toml"), "size = 0.08", "size = 0.32"), "increments = 20",
+               "increments = 2");
+  auto folder = run(tube, "tube.toml");
+  const auto request = lines({{Vec2(1.1, 0.1), Vec2(1.5, 0.1), 3}});
+  const std::string cells = folder.files.at("tube_cells.csv");
+  folder.files.erase("tube_cells.csv");
+  EXPECT_NE(input_error([&] { probe_run(folder.reader(), request, {}); }).find("the run has no tube_cells.csv"),
+            std::string::npos);
+  folder.files["tube_cells.csv"] = cells.substr(0, cells.rfind('\n', cells.size() - 2) + 1);  // the last cell cut
+  EXPECT_NE(input_error([&] { probe_run(folder.reader(), request, {}); }).find("cells stored"), std::string::npos);
 }
 
 TEST(Probe, RefusesWhatIsNotAFinishedRun) {

@@ -7,6 +7,7 @@
 #include <string_view>
 #include <vector>
 
+#include "bemcontact/plasticity/j2_material.hpp"
 #include "bemcontact/bem/solution.hpp"
 
 namespace bemcontact::io {
@@ -43,5 +44,13 @@ struct StoredBoundary {
   bem::BoundarySolution solution;
 };
 StoredBoundary parse_boundary_csv(std::string_view text, const std::string& file_name);
+
+// The cells of an elastoplastic run's <body>_cells.csv (io/plasticity_writer.hpp): each
+// cell's centroid and plastic strain (Mandel: 11, 22, 33, sqrt2 12).
+struct StoredCells {
+  std::vector<Vec2> centroids;
+  std::vector<plasticity::Mandel> plastic_strains;
+};
+StoredCells parse_cells_csv(std::string_view text, const std::string& file_name);
 
 }  // namespace bemcontact::io
