@@ -412,153 +412,224 @@ ElastoplasticRegion::Evaluation ElastoplasticRegion::evaluate(const Vector& E, d
 // return's kinks make full steps cycle near the elastic-plastic boundary). With a contact,
 // each iteration solves it on the linearised plastic response (Newton's step in the
 // tractions), and the increment ends when F and the tractions' change both vanish.
+struct ElastoplasticIncrement::State {
+  ElastoplasticRegion& region;
+  double amplitude;
+  int max_iterations;
+  double tolerance;
+  bool in_contact;
+  Index m, d;
+  Matrix compliance;
+  ElastoplasticRegion::CommittedFields committed;
+  Vector E, traction;
+  Matrix strain_per_traction;  // C^-1 H: the strain per unit surface traction, through the boundary
+  // Cells that cycled between elastic and plastic are held on the yield surface (j2_update).
+  std::vector<char> held, last_state;
+  std::vector<int> flips;  // changes of state from iteration to iteration
+  ElastoplasticRegion::Evaluation current;
+  int iteration = 0, stalled_for = 0, newton_iterations = 0;
+  double last_norm = 0.0;
+  // The present linearisation: the plastic cells, the plastic cells' columns of J - I,
+  // Newton's step at fixed tractions (plastic cells) and its right-hand side, the step per
+  // unit traction change Z, and the surface's affine response u0 + F t.
+  std::vector<Index> plastic;
+  Matrix coupling, Z, F;
+  Vector step_plastic, rhs, u0;
+};
+
+ElastoplasticIncrement::ElastoplasticIncrement(ElastoplasticRegion& region, double amplitude, int max_iterations,
+                                               double tolerance, bool in_contact)
+    : s_(std::make_unique<State>(State{region, amplitude, max_iterations, tolerance, in_contact,
+                                       static_cast<Index>(region.cells_.size()), region.components_})) {
+  State& s = *s_;
+  const Index m = s.m, d = s.d;
+  s.compliance = CellKernels(region.type_, region.material_).stiffness().inverse();
+  s.traction = region.surface_traction_;
+  // The elastic predictor: the new load with the plastic strains of the last increment.
+  s.committed.sigma0 = region.initial_stresses();
+  s.committed.field = region.cell_fields_of(s.committed.sigma0);
+  s.E.resize(d * m);
+  const Vector target = amplitude * region.load_stress_ + region.traction_stress_ * s.traction + s.committed.field;
+  for (Index e = 0; e < m; ++e) s.E.segment(d * e, d) = s.compliance * target.segment(d * e, d);
+  s.strain_per_traction.resize(d * m, region.surface_dofs_);
+  for (Index e = 0; e < m; ++e)
+    s.strain_per_traction.middleRows(d * e, d) = s.compliance * region.traction_stress_.middleRows(d * e, d);
+  s.held.assign(static_cast<std::size_t>(m), 0);
+  s.last_state.assign(static_cast<std::size_t>(m), 0);
+  s.flips.assign(static_cast<std::size_t>(m), 0);
+  s.current = region.evaluate(s.E, amplitude, s.traction, s.held, s.committed);
+  s.last_norm = s.current.norm;
+}
+
+ElastoplasticIncrement::~ElastoplasticIncrement() = default;
+
+double ElastoplasticIncrement::residual() const { return s_->current.norm; }
+int ElastoplasticIncrement::iteration() const { return s_->iteration; }
+bool ElastoplasticIncrement::converged() const { return s_->current.norm <= s_->tolerance; }
+const Vector& ElastoplasticIncrement::traction() const { return s_->traction; }
+const Vector& ElastoplasticIncrement::surface_offset() const { return s_->u0; }
+const Matrix& ElastoplasticIncrement::surface_flexibility() const { return s_->F; }
+
+// An increment whose residual has stalled (above the tolerance, 4 iterations running each
+// less than 5 % below the last and not a jump: a new held cell or a contact update) is
+// given up at once: its halves converge, and in the Brinell cycle every stall ran on to
+// the iteration limit.
+bool ElastoplasticIncrement::linearise(std::string& failure) {
+  State& s = *s_;
+  ElastoplasticRegion& region = s.region;
+  const Index m = s.m, d = s.d;
+  constexpr int kStalledIterations = 4;
+  const bool slow = s.iteration > 0 && s.current.norm > s.tolerance && s.current.norm > 0.95 * s.last_norm &&
+                    s.current.norm < 1.5 * s.last_norm;
+  s.stalled_for = slow ? s.stalled_for + 1 : 0;
+  s.last_norm = s.current.norm;
+  // A cell that went back to the state it left is held (one change is the plastic zone
+  // growing or an unloading; a return is a cycle).
+  bool newly_held = false;
+  for (Index e = 0; e < m; ++e) {
+    const auto k = static_cast<std::size_t>(e);
+    const char state = s.current.updates[k].plastic ? 1 : 0;
+    if (s.iteration > 0 && state != s.last_state[k] && ++s.flips[k] >= 2 && !s.held[k]) s.held[k] = 1, newly_held = true;
+    s.last_state[k] = state;
+  }
+  if (newly_held) s.current = region.evaluate(s.E, s.amplitude, s.traction, s.held, s.committed);
+  const bool stalled = s.stalled_for >= kStalledIterations;
+  if (s.iteration == s.max_iterations || stalled || !std::isfinite(s.current.norm)) {
+    const Vec2 at = region.cells_[static_cast<std::size_t>(s.current.worst)].centroid();
+    std::ostringstream message;
+    message << "Newton on the cells' strains did not converge in " << s.iteration
+            << (stalled ? " iterations (stalled: residual " : " iterations (residual ") << s.current.norm
+            << " of Y/E, largest at cell " << s.current.worst << ", (" << at.x() << ", " << at.y() << "))";
+    failure = message.str();
+    return false;
+  }
+  // J = I - C^-1 K diag(d sigma0 / d E). An elastic cell's slope is 0: its columns are
+  // the identity's, so the plastic cells' block is solved alone and the elastic cells'
+  // steps follow, dE_Q = r_Q - J_QP dE_P, for the right-hand side r = -F (+ C^-1 H dt).
+  s.plastic.clear();
+  for (Index e = 0; e < m; ++e)
+    if (!s.current.slope[static_cast<std::size_t>(e)].isZero(0.0)) s.plastic.push_back(e);
+  const Index p = static_cast<Index>(s.plastic.size());
+  s.coupling.resize(d * m, d * p);  // the plastic cells' columns of J - I
+  for (Index j = 0; j < p; ++j) {
+    const Index e = s.plastic[static_cast<std::size_t>(j)];
+    s.coupling.middleCols(d * j, d) =
+        region.cell_operator_.middleCols(d * e, d) * s.current.slope[static_cast<std::size_t>(e)];
+  }
+  for (Index c = 0; c < m; ++c) s.coupling.middleRows(d * c, d) = -s.compliance * s.coupling.middleRows(d * c, d);
+  Matrix J(d * p, d * p);
+  const Index surface = s.in_contact ? region.surface_dofs_ : 0;
+  Matrix plastic_rhs(d * p, 1 + surface);  // [-F | C^-1 H] on the plastic rows
+  for (Index i = 0; i < p; ++i) {
+    const Index e = s.plastic[static_cast<std::size_t>(i)];
+    J.middleRows(d * i, d) = s.coupling.middleRows(d * e, d);
+    plastic_rhs.block(d * i, 0, d, 1) = -s.current.F.segment(d * e, d);
+    if (s.in_contact) plastic_rhs.block(d * i, 1, d, surface) = s.strain_per_traction.middleRows(d * e, d);
+  }
+  J += Matrix::Identity(d * p, d * p);
+  if (p > 0) {
+    const operators::DenseLU lu(std::move(J), "the elastoplastic Newton system");
+    lu.solve_in_place(plastic_rhs);
+  }
+  s.step_plastic = plastic_rhs.col(0);
+  s.rhs = -s.current.F;
+  if (s.in_contact) {
+    // The cells' displacement of the surface as the step moves the tractions from t to t':
+    // G (sigma0 + S (a + Z (t' - t))), S = d sigma0 / d E of the plastic cells, a and Z
+    // the step's parts (the columns solved above).
+    Matrix GS(surface, d * p);
+    for (Index j = 0; j < p; ++j) {
+      const Index e = s.plastic[static_cast<std::size_t>(j)];
+      GS.middleCols(d * j, d) =
+          region.surface_displacement_.middleCols(d * e, d) * s.current.slope[static_cast<std::size_t>(e)];
+    }
+    s.Z = plastic_rhs.rightCols(surface);
+    s.F = GS * s.Z;
+    s.u0 = region.surface_displacement_ * s.current.sigma0 + GS * (s.step_plastic - s.Z * s.traction);
+  }
+  return true;
+}
+
+// The tractions to 1e-7 of the largest: near a limit load the linearised contact is
+// ill-conditioned (a perfectly plastic block at -2Y/sqrt3: its tractions wander by 3e-9
+// from iteration to iteration while F stays at round-off).
+bool ElastoplasticIncrement::converged_with(const Vector& next) const {
+  const Vector change = next - s_->traction;
+  const double scale = next.size() > 0 ? next.cwiseAbs().maxCoeff() : 0.0;
+  const double moved = change.size() > 0 ? change.cwiseAbs().maxCoeff() : 0.0;
+  return converged() && moved <= 1e-7 * scale;
+}
+
+void ElastoplasticIncrement::step(const Vector& next) {
+  State& s = *s_;
+  ElastoplasticRegion& region = s.region;
+  const Index d = s.d;
+  if (s.in_contact) {
+    const Vector change = next - s.traction;
+    s.step_plastic += s.Z * change;
+    s.rhs += s.strain_per_traction * change;
+    s.traction = next;
+    s.current = region.evaluate(s.E, s.amplitude, s.traction, s.held, s.committed);  // the line search's reference
+  }
+  Matrix step = s.rhs - s.coupling * s.step_plastic;
+  for (std::size_t i = 0; i < s.plastic.size(); ++i)
+    step.middleRows(d * s.plastic[i], d) = s.step_plastic.segment(d * static_cast<Index>(i), d);
+  double fraction = 1.0;
+  auto next_evaluation = region.evaluate(s.E + step.col(0), s.amplitude, s.traction, s.held, s.committed);
+  constexpr int kHalvings = 10;
+  for (int k = 0; k < kHalvings && !(next_evaluation.F.norm() < (1.0 - 1e-4 * fraction) * s.current.F.norm()); ++k) {
+    fraction *= 0.5;
+    next_evaluation = region.evaluate(s.E + fraction * step.col(0), s.amplitude, s.traction, s.held, s.committed);
+  }
+  s.E += fraction * step.col(0);
+  s.current = std::move(next_evaluation);
+  ++s.iteration;
+  ++s.newton_iterations;
+}
+
+void ElastoplasticIncrement::commit(IncrementReport& report) {
+  State& s = *s_;
+  ElastoplasticRegion& region = s.region;
+  report.newton_iterations += s.newton_iterations;
+  report.residual = s.current.norm;
+  const double strain_scale = region.hardening_.yield_stress / region.material_.young_modulus;
+  for (Index e = 0; e < s.m; ++e) {
+    const auto k = static_cast<std::size_t>(e);
+    const auto& update = s.current.updates[k];
+    report.plastic_cells += update.plastic ? 1 : 0;
+    if (s.held[k]) {
+      ++report.held_cells;
+      report.held_increment = std::min(report.held_increment, update.plastic_increment / strain_scale);
+    }
+    region.states_[k] = update.state;
+    region.stress_[k] = update.stress;
+    region.thickness_strain_[k] = update.strain[2];
+  }
+  region.surface_traction_ = s.traction;
+  region.amplitude_ = s.amplitude;
+}
+
 // Commits the state when it converges; false otherwise (`failure` says where).
 bool ElastoplasticRegion::solve_increment(double amplitude, int max_iterations, double tolerance,
                                           IncrementReport& report, std::string& failure,
                                           const SurfaceContact* contact) {
-  const Index m = static_cast<Index>(cells_.size());
-  const Index d = components_;
-  const Matrix compliance = CellKernels(type_, material_).stiffness().inverse();
-  Vector traction = surface_traction_;
-  // The elastic predictor: the new load with the plastic strains of the last increment.
-  CommittedFields committed;
-  committed.sigma0 = initial_stresses();
-  committed.field = cell_fields_of(committed.sigma0);
-  Vector E(d * m);
-  {
-    const Vector target = amplitude * load_stress_ + traction_stress_ * traction + committed.field;
-    for (Index e = 0; e < m; ++e) E.segment(d * e, d) = compliance * target.segment(d * e, d);
-  }
-  // C^-1 H: the strain per unit surface traction, through the boundary.
-  Matrix strain_per_traction(d * m, surface_dofs_);
-  for (Index e = 0; e < m; ++e)
-    strain_per_traction.middleRows(d * e, d) = compliance * traction_stress_.middleRows(d * e, d);
-  // Cells that cycled between elastic and plastic are held on the yield surface (j2_update).
-  std::vector<char> held(static_cast<std::size_t>(m), 0);
-  std::vector<int> flips(static_cast<std::size_t>(m), 0);  // changes of state from iteration to iteration
-  std::vector<char> last_state(static_cast<std::size_t>(m), 0);
-  Evaluation current = evaluate(E, amplitude, traction, held, committed);
-  // An increment whose residual has stalled (above the tolerance, 4 iterations running each
-  // less than 5 % below the last and not a jump: a new held cell or a contact update) is
-  // given up at once: its halves converge, and in the Brinell cycle every stall ran on to
-  // the iteration limit.
-  constexpr int kStalledIterations = 4;
-  int stalled_for = 0;
-  double last_norm = current.norm;
-  for (int iteration = 0;; ++iteration) {
-    report.residual = current.norm;
-    const bool slow = iteration > 0 && current.norm > tolerance && current.norm > 0.95 * last_norm &&
-                      current.norm < 1.5 * last_norm;
-    stalled_for = slow ? stalled_for + 1 : 0;
-    last_norm = current.norm;
-    if (!contact && current.norm <= tolerance) break;
-    // A cell that went back to the state it left is held (one change is the plastic zone
-    // growing or an unloading; a return is a cycle).
-    bool newly_held = false;
-    for (Index e = 0; e < m; ++e) {
-      const auto k = static_cast<std::size_t>(e);
-      const char state = current.updates[k].plastic ? 1 : 0;
-      if (iteration > 0 && state != last_state[k] && ++flips[k] >= 2 && !held[k]) held[k] = 1, newly_held = true;
-      last_state[k] = state;
-    }
-    if (newly_held) current = evaluate(E, amplitude, traction, held, committed);
-    const bool stalled = stalled_for >= kStalledIterations;
-    if (iteration == max_iterations || stalled || !std::isfinite(current.norm)) {
-      const Vec2 at = cells_[static_cast<std::size_t>(current.worst)].centroid();
-      std::ostringstream message;
-      message << "Newton on the cells' strains did not converge in " << iteration
-              << (stalled ? " iterations (stalled: residual " : " iterations (residual ")
-              << current.norm << " of Y/E, largest at cell " << current.worst << ", (" << at.x() << ", " << at.y()
-              << "))";
-      failure = message.str();
-      return false;
-    }
-    // J = I - C^-1 K diag(d sigma0 / d E). An elastic cell's slope is 0: its columns are
-    // the identity's, so the plastic cells' block is solved alone and the elastic cells'
-    // steps follow, dE_Q = r_Q - J_QP dE_P, for the right-hand side r = -F (+ C^-1 H dt).
-    std::vector<Index> plastic;
-    for (Index e = 0; e < m; ++e)
-      if (!current.slope[static_cast<std::size_t>(e)].isZero(0.0)) plastic.push_back(e);
-    const Index p = static_cast<Index>(plastic.size());
-    Matrix coupling(d * m, d * p);  // the plastic cells' columns of J - I
-    for (Index j = 0; j < p; ++j) {
-      const Index e = plastic[static_cast<std::size_t>(j)];
-      coupling.middleCols(d * j, d) = cell_operator_.middleCols(d * e, d) * current.slope[static_cast<std::size_t>(e)];
-    }
-    for (Index c = 0; c < m; ++c) coupling.middleRows(d * c, d) = -compliance * coupling.middleRows(d * c, d);
-    Matrix J(d * p, d * p);
-    const Index columns = 1 + (contact ? surface_dofs_ : 0);
-    Matrix plastic_rhs(d * p, columns);  // [-F | C^-1 H] on the plastic rows
-    for (Index i = 0; i < p; ++i) {
-      const Index e = plastic[static_cast<std::size_t>(i)];
-      J.middleRows(d * i, d) = coupling.middleRows(d * e, d);
-      plastic_rhs.block(d * i, 0, d, 1) = -current.F.segment(d * e, d);
-      if (contact) plastic_rhs.block(d * i, 1, d, surface_dofs_) = strain_per_traction.middleRows(d * e, d);
-    }
-    J += Matrix::Identity(d * p, d * p);
-    if (p > 0) {
-      const operators::DenseLU lu(std::move(J), "the elastoplastic Newton system");
-      lu.solve_in_place(plastic_rhs);
-    }
-    Vector step_plastic = plastic_rhs.col(0);
-    Vector rhs = -current.F;
+  ElastoplasticIncrement increment(*this, amplitude, max_iterations, tolerance, contact != nullptr);
+  for (;;) {
+    report.residual = increment.residual();
+    if (!contact && increment.converged()) break;
+    if (!increment.linearise(failure)) return false;
+    Vector next = increment.traction();
     if (contact) {
-      // The cells' displacement of the surface as the step moves the tractions from t to t':
-      // G (sigma0 + S (a + Z (t' - t))), S = d sigma0 / d E of the plastic cells, a and Z
-      // the step's parts (the columns solved above).
-      Matrix GS(surface_dofs_, d * p);
-      for (Index j = 0; j < p; ++j) {
-        const Index e = plastic[static_cast<std::size_t>(j)];
-        GS.middleCols(d * j, d) = surface_displacement_.middleCols(d * e, d) * current.slope[static_cast<std::size_t>(e)];
-      }
-      const Matrix Z = plastic_rhs.rightCols(surface_dofs_);
-      const Matrix F = GS * Z;
-      const Vector u0 = surface_displacement_ * current.sigma0 + GS * (step_plastic - Z * traction);
-      Vector next = traction;
-      if (!(*contact)(u0, F, next, failure)) {
-        failure = "the contact on the linearised plastic response at Newton iteration " + std::to_string(iteration + 1) +
-                  ": " + failure;
+      if (!(*contact)(increment.surface_offset(), increment.surface_flexibility(), next, failure)) {
+        failure = "the contact on the linearised plastic response at Newton iteration " +
+                  std::to_string(increment.iteration() + 1) + ": " + failure;
         return false;
       }
-      const Vector change = next - traction;
-      const double scale = next.size() > 0 ? next.cwiseAbs().maxCoeff() : 0.0;
-      const double moved = change.size() > 0 ? change.cwiseAbs().maxCoeff() : 0.0;
-      // The tractions to 1e-7 of the largest: near a limit load the linearised contact is
-      // ill-conditioned (a perfectly plastic block at -2Y/sqrt3: its tractions wander by 3e-9
-      // from iteration to iteration while F stays at round-off).
-      if (current.norm <= tolerance && moved <= 1e-7 * scale) break;
-      step_plastic += Z * change;
-      rhs += strain_per_traction * change;
-      traction = next;
-      current = evaluate(E, amplitude, traction, held, committed);  // the line search's reference
+      if (increment.converged_with(next)) break;
     }
-    Matrix step = rhs - coupling * step_plastic;
-    for (Index i = 0; i < p; ++i) step.middleRows(d * plastic[static_cast<std::size_t>(i)], d) = step_plastic.segment(d * i, d);
-    double fraction = 1.0;
-    Evaluation next = evaluate(E + step.col(0), amplitude, traction, held, committed);
-    constexpr int kHalvings = 10;
-    for (int k = 0; k < kHalvings && !(next.F.norm() < (1.0 - 1e-4 * fraction) * current.F.norm()); ++k) {
-      fraction *= 0.5;
-      next = evaluate(E + fraction * step.col(0), amplitude, traction, held, committed);
-    }
-    E += fraction * step.col(0);
-    current = std::move(next);
-    ++report.newton_iterations;
+    increment.step(next);
   }
-  const double strain_scale = hardening_.yield_stress / material_.young_modulus;
-  for (Index e = 0; e < m; ++e) {
-    const auto& update = current.updates[static_cast<std::size_t>(e)];
-    report.plastic_cells += update.plastic ? 1 : 0;
-    if (held[static_cast<std::size_t>(e)]) {
-      ++report.held_cells;
-      report.held_increment = std::min(report.held_increment, update.plastic_increment / strain_scale);
-    }
-    states_[static_cast<std::size_t>(e)] = update.state;
-    stress_[static_cast<std::size_t>(e)] = update.stress;
-    thickness_strain_[static_cast<std::size_t>(e)] = update.strain[2];
-  }
-  surface_traction_ = traction;
-  amplitude_ = amplitude;
+  increment.commit(report);
   return true;
 }
 

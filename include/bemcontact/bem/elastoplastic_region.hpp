@@ -96,6 +96,42 @@ class PlasticCellFields {
   std::unique_ptr<Sources> sources_;
 };
 
+class ElastoplasticRegion;
+
+// One increment's Newton on a region's cell strains (and its surface tractions, in
+// contact), in its phases, so that one contact can couple several regions
+// (contact/plastic_coupling.hpp):
+//   linearise       Newton's system at the present iterate (cells held on the yield surface,
+//                   the failure checks), and in contact the cells' displacement of the
+//                   surface nodes as an affine map of their tractions, u0 + F t;
+//   converged_with  the iterate solves the increment with the tractions t the contact gave;
+//   step            Newton's step to those tractions, with a backtracking line search;
+//   commit          the increment's state kept in the region.
+class ElastoplasticIncrement {
+ public:
+  ElastoplasticIncrement(ElastoplasticRegion& region, double amplitude, int max_iterations, double tolerance,
+                         bool in_contact);
+  ~ElastoplasticIncrement();
+  ElastoplasticIncrement(const ElastoplasticIncrement&) = delete;
+  ElastoplasticIncrement& operator=(const ElastoplasticIncrement&) = delete;
+
+  double residual() const;  // max |F| / (Y / E)
+  int iteration() const;
+  bool converged() const;   // residual() <= tolerance (without contact: the end)
+  // False, with where and why, when Newton has failed (iterations, a stall, not finite).
+  bool linearise(std::string& failure);
+  const Vector& traction() const;  // the surface tractions of the iterate
+  const Vector& surface_offset() const;       // u0 (in contact, after linearise)
+  const Matrix& surface_flexibility() const;  // F
+  bool converged_with(const Vector& next) const;
+  void step(const Vector& next);  // next = traction() without contact
+  void commit(IncrementReport& report);
+
+ private:
+  struct State;
+  std::unique_ptr<State> s_;
+};
+
 class ElastoplasticRegion {
  public:
   // Throws Error for a bad hardening (the reader checks it first), SolverError for a
@@ -134,6 +170,7 @@ class ElastoplasticRegion {
   PlasticCellFields cell_fields() const;
 
  private:
+  friend class ElastoplasticIncrement;
   Vector initial_stress(const plasticity::Mandel& plastic_strain) const;
   Vector initial_stresses() const;  // of every cell, from the committed plastic strains
   // K sigma0, over the cells whose initial stress is not zero.
