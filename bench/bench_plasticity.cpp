@@ -80,8 +80,8 @@ void BM_BrinellCycle(benchmark::State& state) {
       if (phase == "elastoplastic contact steps") steps = seconds;
     }
     iterations = 0;
-    for (const auto& step : result.plastic->steps) iterations += step.report.newton_iterations;
-    cells = result.plastic->cells.size();
+    for (const auto& step : result.plastic.at(0).result.steps) iterations += step.report.newton_iterations;
+    cells = result.plastic.at(0).result.cells.size();
     benchmark::DoNotOptimize(result.summary);
   }
   rusage usage{};

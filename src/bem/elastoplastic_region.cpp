@@ -609,35 +609,20 @@ void ElastoplasticIncrement::commit(IncrementReport& report) {
   region.amplitude_ = s.amplitude;
 }
 
-// Commits the state when it converges; false otherwise (`failure` says where).
+// Without contact: Newton's steps at the surface tractions of the last increment. Commits
+// the state when it converges; false otherwise (`failure` says where).
 bool ElastoplasticRegion::solve_increment(double amplitude, int max_iterations, double tolerance,
-                                          IncrementReport& report, std::string& failure,
-                                          const SurfaceContact* contact) {
-  ElastoplasticIncrement increment(*this, amplitude, max_iterations, tolerance, contact != nullptr);
-  for (;;) {
-    report.residual = increment.residual();
-    if (!contact && increment.converged()) break;
-    if (!increment.linearise(failure)) return false;
-    Vector next = increment.traction();
-    if (contact) {
-      if (!(*contact)(increment.surface_offset(), increment.surface_flexibility(), next, failure)) {
-        failure = "the contact on the linearised plastic response at Newton iteration " +
-                  std::to_string(increment.iteration() + 1) + ": " + failure;
-        return false;
-      }
-      if (increment.converged_with(next)) break;
+                                          IncrementReport& report, std::string& failure) {
+  ElastoplasticIncrement increment(*this, amplitude, max_iterations, tolerance, false);
+  while (!increment.converged()) {
+    if (!increment.linearise(failure)) {
+      report.residual = increment.residual();
+      return false;
     }
-    increment.step(next);
+    increment.step(increment.traction());
   }
   increment.commit(report);
   return true;
-}
-
-bool ElastoplasticRegion::advance_in_contact(double amplitude, const SurfaceContact& contact, IncrementReport& report,
-                                             std::string& failure, int max_iterations, double tolerance) {
-  report = IncrementReport{};
-  report.amplitude = amplitude;
-  return solve_increment(amplitude, max_iterations, tolerance, report, failure, &contact);
 }
 
 IncrementReport ElastoplasticRegion::advance(double amplitude, int max_iterations, double tolerance) {

@@ -828,7 +828,6 @@ void take_history(const ContactProblem& problem, LoadHistory& history, ContactRe
 // Every region's mesh and final boundary solution, with stresses and resultants.
 void add_region_boundaries(const ContactProblem& problem, const ContactModel& model, const LoadHistory& history,
                            ContactResult& result) {
-  const int plastic = result.plastic ? result.plastic_region : -1;
   const auto& regions = model.prepared().regions;
   for (std::size_t r = 0; r < regions.size(); ++r) {
     const auto& region = regions[r];
@@ -837,8 +836,10 @@ void add_region_boundaries(const ContactProblem& problem, const ContactModel& mo
     result.body_names.push_back(body.regions.size() == 1 ? body.name : region.definition.name);
     result.region_labels.push_back(region.label);
     result.meshes.push_back(region.mesh);
-    auto boundary = static_cast<int>(r) == plastic
-                        ? result.plastic->boundary  // the cells' part included, stresses with their plastic strain
+    const auto plastic = std::find_if(result.plastic.begin(), result.plastic.end(),
+                                      [&](const PlasticRegionResult& p) { return p.region == static_cast<int>(r); });
+    auto boundary = plastic != result.plastic.end()
+                        ? plastic->result.boundary  // the cells' part included, stresses with their plastic strain
                         : model.region_solution(static_cast<int>(r), history.x, history.delta, problem.end_time);
     if (boundary.stress.empty())
       boundary.stress = bem::boundary_stresses(region.mesh, problem.analysis, material, boundary);
@@ -881,10 +882,12 @@ bool add_interior_values(const ContactProblem& problem, const ContactModel& mode
     const bem::ElementIntegrator integrator(problem.analysis, region.definition.material);
     bem::DomainTerm cells;
     std::shared_ptr<const bem::PlasticCellFields> fields;
-    if (coupling && coupling->region() == static_cast<int>(r)) {
-      fields = std::make_shared<const bem::PlasticCellFields>(coupling->cell_fields());
-      cells = [fields](const Vec2& x, Vec2& u, bem::StressTensor& s) { fields->add_at(x, u, s); };
-    }
+    const auto plastic = coupling ? coupling->regions() : std::vector<int>{};
+    for (std::size_t k = 0; k < plastic.size(); ++k)
+      if (plastic[k] == static_cast<int>(r)) {
+        fields = std::make_shared<const bem::PlasticCellFields>(coupling->cell_fields(k));
+        cells = [fields](const Vec2& x, Vec2& u, bem::StressTensor& s) { fields->add_at(x, u, s); };
+      }
     result.interior[r] = bem::interior_values(result.meshes[r], integrator, result.boundary[r],
                                               std::move(selections[r]), progress, cells);
   }
@@ -911,9 +914,9 @@ ContactResult solve_on_meshes(const ContactProblem& problem, const bem::Progress
   result.unknowns = 2 * model.condensed().pairs + model.condensed().motions;
 
   std::unique_ptr<PlasticCoupling> coupling;
-  if (const int r = plastic_region_in_contact(problem, model); r >= 0) {
+  if (const auto plastic = plastic_regions_in_contact(problem, model); !plastic.empty()) {
     start = Clock::now();
-    coupling = std::make_unique<PlasticCoupling>(problem, model, r, problem.memory_limit_bytes);
+    coupling = std::make_unique<PlasticCoupling>(problem, model, plastic, problem.memory_limit_bytes);
     result.timings.add("cells and their operators", seconds_since(start));
   }
 
@@ -925,14 +928,14 @@ ContactResult solve_on_meshes(const ContactProblem& problem, const bem::Progress
   take_history(problem, history, result);
   if (finish_pass && !finish_pass(result)) return result;
   if (coupling) {
-    result.plastic = coupling->result();
-    result.plastic_region = coupling->region();
+    const auto regions = coupling->regions();
+    for (std::size_t k = 0; k < regions.size(); ++k) result.plastic.push_back({regions[k], coupling->result(k)});
   }
 
   start = Clock::now();
   result.warnings = model.prepared().warnings;
-  if (result.plastic) result.warnings.insert(result.warnings.end(), result.plastic->warnings.begin(),
-                                             result.plastic->warnings.end());
+  for (const auto& plastic : result.plastic)
+    result.warnings.insert(result.warnings.end(), plastic.result.warnings.begin(), plastic.result.warnings.end());
   add_region_boundaries(problem, model, history, result);
   add_step_boundaries(problem, model, history, result);
   result.timings.add("boundary stresses", seconds_since(start));

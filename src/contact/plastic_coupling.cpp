@@ -5,9 +5,9 @@
 
 namespace bemcontact::contact {
 
-int plastic_region_in_contact(const ContactProblem& problem, const ContactModel& model) {
+std::vector<int> plastic_regions_in_contact(const ContactProblem& problem, const ContactModel& model) {
   const auto& regions = model.prepared().regions;
-  int found = -1;
+  std::vector<int> found;
   for (std::size_t r = 0; r < regions.size(); ++r) {
     const auto& plasticity = regions[r].definition.plasticity;
     if (!plasticity) continue;
@@ -15,10 +15,9 @@ int plastic_region_in_contact(const ContactProblem& problem, const ContactModel&
       throw InputError(plasticity->where, "an elastoplastic region in contact " + what +
                                               " is not in the model yet (docs/plasticity.md, Limits)");
     };
-    if (found >= 0) refuse("beside another elastoplastic region");
-    found = static_cast<int>(r);
+    found.push_back(static_cast<int>(r));
     if (model.prepared().body_regions[regions[r].body].size() > 1) refuse("in a body of several regions");
-    const auto& factored = model.region(found);
+    const auto& factored = model.region(static_cast<int>(r));
     for (const auto& node : factored.variable_nodes())
       if (node.kind != bem::ConditionKind::traction) refuse("under a force load on its own boundary (a platen)");
     if (factored.variable_dofs() != 2 * static_cast<Index>(factored.variable_nodes().size()))
@@ -34,95 +33,129 @@ int plastic_region_in_contact(const ContactProblem& problem, const ContactModel&
 PlasticCoupling::PlasticCoupling(PlasticCoupling&&) noexcept = default;
 PlasticCoupling::~PlasticCoupling() = default;
 
-PlasticCoupling::PlasticCoupling(const ContactProblem& problem, const ContactModel& model, int region,
-                                 double memory_limit_bytes)
-    : problem_(problem), model_(model), region_(region) {
+PlasticCoupling::PlasticCoupling(const ContactProblem& problem, const ContactModel& model,
+                                 const std::vector<int>& regions, double memory_limit_bytes)
+    : problem_(problem), model_(model) {
   bem::PhaseClock clock(timings_);
-  const auto& prepared = model.prepared().regions[static_cast<std::size_t>(region)];
-  const auto& body = prepared.definition;
-  cells_ = bem::region_cells_of(prepared.mesh, body, problem.analysis, memory_limit_bytes);
-  clock.lap("cells");
-  std::vector<Index> surface;
-  for (const auto& node : model.region(region).variable_nodes()) surface.push_back(node.node);
-  plastic_ = std::make_unique<bem::ElastoplasticRegion>(prepared.mesh, body, problem.analysis,
-                                                         body.plasticity->hardening, cells_, std::move(surface));
-  accepted_ = plastic_->state();
+  for (const int r : regions) {
+    const auto& prepared = model.prepared().regions[static_cast<std::size_t>(r)];
+    const auto& body = prepared.definition;
+    PlasticRegion region;
+    region.region = r;
+    region.cells = bem::region_cells_of(prepared.mesh, body, problem.analysis, memory_limit_bytes);
+    std::vector<Index> surface;
+    for (const auto& node : model.region(r).variable_nodes()) surface.push_back(node.node);
+    region.plastic = std::make_unique<bem::ElastoplasticRegion>(prepared.mesh, body, problem.analysis,
+                                                                 body.plasticity->hardening, region.cells,
+                                                                 std::move(surface));
+    region.accepted = region.plastic->state();
+    plastic_.push_back(std::move(region));
+  }
   clock.lap("elastoplastic set-up");
 }
 
+std::vector<int> PlasticCoupling::regions() const {
+  std::vector<int> out;
+  for (const auto& region : plastic_) out.push_back(region.region);
+  return out;
+}
+
 StepOutput PlasticCoupling::solve_step(const StepInput& input, const SolverOptions& options) {
-  plastic_->restore(accepted_);
   const CondensedProblem& condensed = model_.condensed();
   const Index n = condensed.pairs;
-  const Matrix& D = model_.data_map(region_);
-  const Matrix& W = model_.jump_map(region_);
   const auto amplitudes = problem_.group_amplitudes(input.time);
-  const Vector offset =
-      model_.data_offset(region_) * Eigen::Map<const Vector>(amplitudes.data(), static_cast<Index>(amplitudes.size()));
+  const Eigen::Map<const Vector> group_amplitudes(amplitudes.data(), static_cast<Index>(amplitudes.size()));
+  const double amplitude = problem_.data_amplitude.at(input.time);
+  std::vector<std::unique_ptr<bem::ElastoplasticIncrement>> increments;
+  for (auto& region : plastic_) {
+    region.plastic->restore(region.accepted);
+    region.last_report = {};
+    region.last_report.amplitude = amplitude;
+    increments.push_back(std::make_unique<bem::ElastoplasticIncrement>(*region.plastic, amplitude, 30, 1e-10, true));
+  }
+  const auto label = [&](const PlasticRegion& region) {
+    return "elastoplastic " + model_.prepared().regions[static_cast<std::size_t>(region.region)].label + ": ";
+  };
   CondensedProblem linearised = condensed;
   StepOutput out;
   bool solved = false;
   int contact_iterations = 0;
-  const bem::SurfaceContact contact = [&](const Vector& u0, const Matrix& F, Vector& t, std::string& failure) {
-    linearised.M = condensed.M + W * F * D.leftCols(2 * n);
-    if (!problem_.tangential_coupling) drop_tangential_coupling(linearised);
+  std::vector<Vector> tractions(plastic_.size());
+  for (;;) {
+    // Every region's Newton system, and the contact on their linearised plastic responses.
+    linearised.M = condensed.M;
     StepInput in = input;
+    for (std::size_t k = 0; k < plastic_.size(); ++k) {
+      std::string failure;
+      if (!increments[k]->linearise(failure)) {
+        out.converged = false;
+        out.failure = label(plastic_[k]) + failure;
+        return out;
+      }
+      const int r = plastic_[k].region;
+      const Matrix& W = model_.jump_map(r);
+      linearised.M += W * increments[k]->surface_flexibility() * model_.data_map(r).leftCols(2 * n);
+      in.jump0 += W * increments[k]->surface_offset();
+    }
+    if (!problem_.tangential_coupling) drop_tangential_coupling(linearised);
     in.problem = &linearised;
-    in.jump0 = input.jump0 + W * u0;
     in.newton_cache = nullptr;  // the operator changes from iteration to iteration
     if (solved) in.x_start = out.x, in.delta_start = out.delta, in.state_start = out.state;
     out = options.algorithm == Algorithm::newton ? solve_step_newton(in, options) : solve_step_thesis(in, options);
     contact_iterations += out.newton_iterations;
     if (!out.converged) {
-      failure = out.failure;
-      return false;
+      out.failure = "elastoplastic contact: the contact on the linearised plastic response at Newton iteration " +
+                    std::to_string(increments.front()->iteration() + 1) + ": " + out.failure;
+      return out;
     }
     solved = true;
     Vector q(out.x.size() + out.delta.size());
     q << out.x, out.delta;
-    t = D * q + offset;
-    return true;
-  };
-  std::string failure;
-  last_report_ = {};
-  const double amplitude = problem_.data_amplitude.at(input.time);
-  if (!plastic_->advance_in_contact(amplitude, contact, last_report_, failure)) {
-    out.converged = false;
-    out.failure = "elastoplastic " + model_.prepared().regions[static_cast<std::size_t>(region_)].label + ": " + failure;
-    return out;
+    bool converged = true;
+    for (std::size_t k = 0; k < plastic_.size(); ++k) {
+      const int r = plastic_[k].region;
+      tractions[k] = model_.data_map(r) * q + model_.data_offset(r) * group_amplitudes;
+      converged = converged && increments[k]->converged_with(tractions[k]);
+    }
+    if (converged) break;
+    for (std::size_t k = 0; k < plastic_.size(); ++k) increments[k]->step(tractions[k]);
   }
+  for (std::size_t k = 0; k < plastic_.size(); ++k) increments[k]->commit(plastic_[k].last_report);
   out.newton_iterations = contact_iterations;
   return out;
 }
 
 void PlasticCoupling::accept(double time) {
-  accepted_ = plastic_->state();
-  const auto& prepared = model_.prepared().regions[static_cast<std::size_t>(region_)];
-  bem::BoundarySolution boundary;
-  steps_.push_back(bem::record_elastoplastic_step(time, last_report_, *plastic_, prepared.mesh, prepared.definition,
-                                                  problem_.analysis, boundary));
+  for (auto& region : plastic_) {
+    region.accepted = region.plastic->state();
+    const auto& prepared = model_.prepared().regions[static_cast<std::size_t>(region.region)];
+    bem::BoundarySolution boundary;
+    region.steps.push_back(bem::record_elastoplastic_step(time, region.last_report, *region.plastic, prepared.mesh,
+                                                          prepared.definition, problem_.analysis, boundary));
+  }
 }
 
-bem::ElastoplasticResult PlasticCoupling::result() const {
-  const auto& prepared = model_.prepared().regions[static_cast<std::size_t>(region_)];
+bem::ElastoplasticResult PlasticCoupling::result(std::size_t k) const {
+  const PlasticRegion& region = plastic_.at(k);
+  const auto& prepared = model_.prepared().regions[static_cast<std::size_t>(region.region)];
   bem::ElastoplasticResult out;
   out.mesh = prepared.mesh;
-  out.cells = cells_;
-  out.steps = steps_;
-  out.states = plastic_->states();
-  out.cell_stress = plastic_->cell_stress();
-  out.boundary = plastic_->boundary_solution();
+  out.cells = region.cells;
+  out.steps = region.steps;
+  out.states = region.plastic->states();
+  out.cell_stress = region.plastic->cell_stress();
+  out.boundary = region.plastic->boundary_solution();
   out.boundary.stress = bem::elastoplastic_boundary_stresses(prepared.mesh, problem_.analysis,
-                                                             prepared.definition.material, out.boundary, cells_,
+                                                             prepared.definition.material, out.boundary, region.cells,
                                                              out.states);
   out.boundary.resultants =
       bem::boundary_resultants(prepared.mesh, out.boundary, prepared.definition, problem_.analysis);
-  if (auto warning = bem::plastic_zone_box_warning(prepared.mesh, prepared.definition, cells_, out.states))
+  if (auto warning = bem::plastic_zone_box_warning(prepared.mesh, prepared.definition, region.cells, out.states))
     out.warnings.push_back(std::move(*warning));
   out.timings = timings_;
   return out;
 }
 
-bem::PlasticCellFields PlasticCoupling::cell_fields() const { return plastic_->cell_fields(); }
+bem::PlasticCellFields PlasticCoupling::cell_fields(std::size_t k) const { return plastic_.at(k).plastic->cell_fields(); }
 
 }  // namespace bemcontact::contact

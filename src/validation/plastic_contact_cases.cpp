@@ -34,7 +34,7 @@ OnsetRun run_onset(const Context& context, io::ContactFile file, double yield_st
   body.plasticity = plasticity;
   const auto result = contact::solve_contact(with_operator(context, file.problem), context.progress);
   OnsetRun out;
-  const auto& plastic = *result.plastic;
+  const auto& plastic = result.plastic.at(0).result;
   double kappa = 0.0;
   for (std::size_t e = 0; e < plastic.cells.size(); ++e) {
     out.largest_von_mises = std::max(out.largest_von_mises, plasticity::von_mises(plastic.cell_stress[e]) / yield_stress);

@@ -51,13 +51,6 @@ struct IncrementReport {
   double held_increment = 0.0;
 };
 
-// A contact on the region's surface nodes (the constructor's `surface_nodes`): given the
-// displacement the cells add to those nodes as an affine map of the nodes' tractions t
-// (global components, 2 per node), u_cells = u0 + F t (the present linearisation of the
-// plastic response), it sets t to the tractions of its solution; false when it has none
-// (`failure` says why). The elastic response of the nodes is the contact's own.
-using SurfaceContact = std::function<bool(const Vector& u0, const Matrix& F, Vector& t, std::string& failure)>;
-
 // The state an increment changes, to take a trial increment back.
 struct ElastoplasticState {
   std::vector<plasticity::J2State> states;
@@ -147,12 +140,6 @@ class ElastoplasticRegion {
   // cutting it in halves where Newton does not converge. Throws SolverError naming the
   // increment, the step cut it tried and the cell where it fails after 6 cuts.
   IncrementReport advance(double amplitude, int max_iterations = 30, double tolerance = 1e-10);
-  // The increment to `amplitude` with the surface nodes' tractions from `contact`, solved
-  // in each Newton iteration on the linearised plastic response (a Newton on the cells'
-  // strains and the tractions together), without cuts: false (and `failure`) when it does
-  // not converge, the state unchanged.
-  bool advance_in_contact(double amplitude, const SurfaceContact& contact, IncrementReport& report,
-                          std::string& failure, int max_iterations = 30, double tolerance = 1e-10);
   ElastoplasticState state() const;
   void restore(const ElastoplasticState& state);
 
@@ -183,7 +170,7 @@ class ElastoplasticRegion {
   Evaluation evaluate(const Vector& E, double amplitude, const Vector& traction, const std::vector<char>& held,
                       const CommittedFields& committed) const;
   bool solve_increment(double amplitude, int max_iterations, double tolerance, IncrementReport& report,
-                       std::string& failure, const SurfaceContact* contact = nullptr);
+                       std::string& failure);
 
   geometry::BoundaryMesh mesh_;
   AnalysisType type_;

@@ -148,6 +148,12 @@ using MotionReport = std::function<Vector(const Vector& x, const Vector& delta, 
 
 // The base holds the first contact's results (the only one of a two-body problem);
 // `contacts` every contact's, in the problem's order.
+// An elastoplastic region's result in a contact run.
+struct PlasticRegionResult {
+  int region = -1;  // into ContactResult::meshes
+  bem::ElastoplasticResult result;
+};
+
 struct ContactResult : ContactInterfaceResult {
   std::vector<ContactInterfaceResult> contacts;
   std::vector<StepRecord> records;  // per step: forces and motions
@@ -168,10 +174,9 @@ struct ContactResult : ContactInterfaceResult {
   std::vector<std::string> warnings;    // from the pairing (PreparedContact::warnings)
   bem::PhaseTimings timings;
   Index unknowns = 0;  // condensed unknowns
-  // An elastoplastic region in contact (plastic_coupling.hpp): its index in `meshes`, its
-  // cells, states and steps; none for elastic bodies.
-  std::optional<bem::ElastoplasticResult> plastic;
-  int plastic_region = -1;
+  // The elastoplastic regions in contact (plastic_coupling.hpp): each one's index in
+  // `meshes`, its cells, states and steps; none for elastic bodies.
+  std::vector<PlasticRegionResult> plastic;
 };
 
 // The load history on a condensed problem, whatever model gave it (the BEM bodies, or

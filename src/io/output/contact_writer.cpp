@@ -470,24 +470,25 @@ std::string contact_report_text(const contact::ContactProblem& problem, const co
                   result.steps_past_state_limit == 1 ? "its" : "their");
     out += line;
   }
-  if (!result.plastic) {
+  if (result.plastic.empty()) {
     out += hertz_comparison(problem, s);  // an elastic closed form
     return out;
   }
-  const auto& plastic = *result.plastic;
-  int iterations = 0, yielded = 0;
-  double kappa = 0.0;
-  for (const auto& step : plastic.steps) iterations += step.report.newton_iterations;
-  for (const auto& state : plastic.states) {
-    yielded += state.equivalent_plastic_strain > 0.0;
-    kappa = std::max(kappa, state.equivalent_plastic_strain);
+  for (const auto& [region, plastic] : result.plastic) {
+    int iterations = 0, yielded = 0;
+    double kappa = 0.0;
+    for (const auto& step : plastic.steps) iterations += step.report.newton_iterations;
+    for (const auto& state : plastic.states) {
+      yielded += state.equivalent_plastic_strain > 0.0;
+      kappa = std::max(kappa, state.equivalent_plastic_strain);
+    }
+    std::snprintf(line, sizeof line,
+                  "  elastoplastic %s: %zu cells, %d Newton iterations over the steps; %d cells yielded, largest "
+                  "equivalent plastic strain %.4g\n",
+                  result.region_labels[static_cast<std::size_t>(region)].c_str(), plastic.cells.size(), iterations,
+                  yielded, kappa);
+    out += line;
   }
-  std::snprintf(line, sizeof line,
-                "  elastoplastic %s: %zu cells, %d Newton iterations over the steps; %d cells yielded, largest "
-                "equivalent plastic strain %.4g\n",
-                result.region_labels[static_cast<std::size_t>(result.plastic_region)].c_str(), plastic.cells.size(),
-                iterations, yielded, kappa);
-  out += line;
   if (const auto indentation = contact::indentation_report(problem, result)) {
     const auto& r = *indentation;
     std::snprintf(line, sizeof line,
@@ -605,11 +606,11 @@ std::vector<OutputFile> contact_output_files(const contact::ContactProblem& prob
                   << indentation->loads[k];
     add("indentation.csv", std::move(table));
   }
-  if (result.plastic) {  // the elastoplastic region's cells and steps (plasticity_writer.hpp)
-    const std::string stem = file_stem(result.body_names[static_cast<std::size_t>(result.plastic_region)]);
-    add(stem + "_cells.csv", cells_table(*result.plastic));
-    add(stem + "_plastic_steps.csv", elastoplastic_steps_table(*result.plastic));
-    if (vtk) add(stem + "_cells.vtk", cells_vtk(*result.plastic, problem.title));
+  for (const auto& [region, plastic] : result.plastic) {  // each elastoplastic region's cells and steps
+    const std::string stem = file_stem(result.body_names[static_cast<std::size_t>(region)]);
+    add(stem + "_cells.csv", cells_table(plastic));
+    add(stem + "_plastic_steps.csv", elastoplastic_steps_table(plastic));
+    if (vtk) add(stem + "_cells.vtk", cells_vtk(plastic, problem.title));
   }
   for (std::size_t r = 0; r < result.meshes.size(); ++r) {
     const std::string stem = file_stem(result.body_names[r]);
@@ -681,7 +682,17 @@ void fill_contact_summary(RunSummary& summary, const contact::ContactProblem& pr
   nlohmann::json contacts = nlohmann::json::array();
   for (const auto& contact : result.contacts) contacts.push_back(interface_json(contact));
   summary.results["contacts"] = contacts;
-  if (result.plastic) summary.results["elastoplastic"] = elastoplastic_summary_json(*result.plastic);
+  // One elastoplastic region: its object; several: an array of them, each with its region's name.
+  if (result.plastic.size() == 1) summary.results["elastoplastic"] = elastoplastic_summary_json(result.plastic[0].result);
+  if (result.plastic.size() > 1) {
+    nlohmann::json regions = nlohmann::json::array();
+    for (const auto& [region, plastic] : result.plastic) {
+      auto entry = elastoplastic_summary_json(plastic);
+      entry["region"] = result.body_names[static_cast<std::size_t>(region)];
+      regions.push_back(std::move(entry));
+    }
+    summary.results["elastoplastic"] = regions;
+  }
   if (const auto indentation = contact::indentation_report(problem, result)) {
     const auto& r = *indentation;
     summary.results["indentation"] = {

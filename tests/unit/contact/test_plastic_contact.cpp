@@ -72,6 +72,53 @@ normal = "body1"
   for (const double p : column(output.tables.at("contact.csv"), "p_n").numbers) EXPECT_NEAR(p, point[1], 1e-6 * Y);
 }
 
+// A unit block of the pressed block's material (linear hardening E/10) between y0 and y0 + 1,
+// held at x = 0 by a roller; `bottom` and `top` the conditions of those sides (none:
+// free, for the contact).
+std::string hardening_block(const std::string& name, double y0, const std::string& bottom, const std::string& top) {
+  const auto y = [&](double dy) { return std::to_string(y0 + dy); };
+  return "[[body]]\nname = \"" + name +
+         "\"\n[body.material]\nE = 200000.0\nnu = 0.3\nyield_stress = 250.0\nhardening = 20000.0\n"
+         "[body.cells]\nsize = 0.25\n"
+         "[[body.boundary]]\nname = \"bottom\"\nfrom = [0.0, " + y(0) + "]\nto = [1.0, " + y(0) + "]\nelements = 8\n" +
+         bottom + "[[body.boundary]]\nname = \"right\"\nfrom = [1.0, " + y(0) + "]\nto = [1.0, " + y(1) +
+         "]\nelements = 8\n[[body.boundary]]\nname = \"top\"\nfrom = [1.0, " + y(1) + "]\nto = [0.0, " + y(1) +
+         "]\nelements = 8\n" + top + "[[body.boundary]]\nname = \"left\"\nfrom = [0.0, " + y(1) + "]\nto = [0.0, " +
+         y(0) + "]\nelements = 8\nu1 = 0.0\nt2 = 0.0\n";
+}
+
+// Two elastoplastic blocks stacked, in frictionless contact, the upper one's top pressed
+// 0.02 down: each is compressed 0.01 uniformly, so every cell of both is the material
+// point pressed 8 Y/E (with hardening: no limit load) along the run's increments. Both
+// regions' Newton iterations run together on one linearised contact.
+TEST(PlasticContact, TwoElastoplasticBlocksPressedTogetherAreEachThePressedBlock) {
+  const std::string text = "title = \"two blocks\"\nanalysis = \"plane_strain\"\n" +
+                           hardening_block("lower", 0.0, "u2 = 0.0\nt1 = 0.0\n", "") +
+                           hardening_block("upper", 1.0, "", "u2 = -0.02\nt1 = 0.0\n") +
+                           "[[contact]]\nbody1 = \"lower\"\nboundary1 = \"top\"\nbody2 = \"upper\"\n"
+                           "boundary2 = \"bottom\"\nnormal = \"body1\"\n[solver]\nincrements = 10\n";
+  RunOptions options;
+  options.keep_tables = true;
+  const auto output = run_problem(text, "blocks.toml", options);
+  const double Y = 250.0;
+  for (const std::string body : {"lower", "upper"}) {
+    const auto point = pressed_point_stress({200000.0, 0.3}, {Y, 20000.0, 0.0}, -0.01,
+                                            column(output.tables.at(body + "_plastic_steps.csv"), "amplitude").numbers);
+    const auto& cells = output.tables.at(body + "_cells.csv");
+    ASSERT_EQ(column(cells, "s22").numbers.size(), 16u) << body;
+    EXPECT_GT(column(cells, "equivalent_plastic_strain").numbers[0], 4.0 * Y / 200000.0) << body;
+    for (std::size_t k = 0; k < 16; ++k) {
+      EXPECT_NEAR(column(cells, "s22").numbers[k], point[1], 1e-7 * Y) << body << " cell " << k;
+      EXPECT_NEAR(column(cells, "s33").numbers[k], point[2], 1e-7 * Y) << body << " cell " << k;
+      EXPECT_NEAR(column(cells, "s11").numbers[k], 0.0, 1e-7 * Y) << body << " cell " << k;
+    }
+  }
+  // Every pair carries the cells' s22 (as the platen's pairs do).
+  const auto point = pressed_point_stress({200000.0, 0.3}, {Y, 20000.0, 0.0}, -0.01,
+                                          column(output.tables.at("lower_plastic_steps.csv"), "amplitude").numbers);
+  for (const double p : column(output.tables.at("contact.csv"), "p_n").numbers) EXPECT_NEAR(p, point[1], 1e-6 * Y);
+}
+
 // The Brinell example coarsened (cells of 0.64 away from the contact, 18 elements on its
 // zone) and loaded to its peak only.
 std::string coarse_brinell(double yield_stress) {
