@@ -189,27 +189,28 @@ std::vector<CellImage> cell_and_images(const Cell& cell, const std::vector<geome
   return out;
 }
 
-// Adds the cells' direct fields (and their images') to K: C E averaged over cell c per unit
-// initial stress of cell e. A cell far from cell e (centroids more than kFarCells sizes
-// apart) takes the field at its centroid for its mean: the difference is of order
-// (size / distance)^2 of a small term. Each row block by one thread: deterministic for any
-// thread count.
+// Adds the direct fields of the cells `sources` (and their images') to their columns of K:
+// C E averaged over cell c per unit initial stress of cell e. A cell far from cell e
+// (centroids more than kFarCells sizes apart) takes the field at its centroid for its mean:
+// the difference is of order (size / distance)^2 of a small term. Each row block by one
+// thread: deterministic for any thread count.
 void add_cell_fields(const CellKernels& kernels, const std::vector<Cell>& cells, const std::vector<MeanPoints>& means,
-                     const std::vector<geometry::ImageMap>& images, Matrix& K) {
+                     const std::vector<geometry::ImageMap>& images, const std::vector<Index>& columns, Matrix& K) {
   constexpr double kFarCells = 6.25;  // not a lattice distance of equal cells (12.5 sizes): no tie on a grid
   const std::size_t m = cells.size();
   const Index d = kernels.d;
   std::vector<Vec2> centroid(m);
   std::vector<double> size(m);
   for (std::size_t e = 0; e < m; ++e) centroid[e] = cells[e].centroid(), size[e] = std::sqrt(std::abs(cells[e].area()));
-  std::vector<std::vector<CellImage>> sources(m);
-  for (std::size_t e = 0; e < m; ++e) sources[e] = cell_and_images(cells[e], images, kernels.d);
+  std::vector<std::vector<CellImage>> sources;
+  for (const Index e : columns) sources.push_back(cell_and_images(cells[static_cast<std::size_t>(e)], images, kernels.d));
 #pragma omp parallel for schedule(dynamic, 1)
   for (std::size_t c = 0; c < m; ++c) {
     const auto& points = means[c];
-    for (std::size_t e = 0; e < m; ++e) {
+    for (std::size_t j = 0; j < columns.size(); ++j) {
+      const auto e = static_cast<std::size_t>(columns[j]);
       auto block = K.block(d * static_cast<Index>(c), d * static_cast<Index>(e), d, d);
-      for (const auto& source : sources[e]) {
+      for (const auto& source : sources[j]) {
         if ((source.cell.centroid() - centroid[c]).norm() > kFarCells * (size[c] + size[e])) {
           block += kernels.stress(centroid[c], source.cell) * source.stress_map;
           continue;
@@ -286,12 +287,17 @@ ElastoplasticRegion::ElastoplasticRegion(const geometry::BoundaryMesh& mesh, con
     values.col(j) = boundary_values(boundary_unknowns_.col(j), j == 0 ? conditions_ : unloaded, constraints_);
   for (Index j = 0; j < k2; ++j)  // the unit datum itself
     if (carries_traction(j)) values(2 * n + 2 * surface_nodes_[static_cast<std::size_t>(j / 2)] + j % 2, 1 + j) = 1.0;
-  const auto means = cell_mean_points(mesh_, cells_);
+  mean_points_ = cell_mean_points(mesh_, cells_);
+  const auto& means = mean_points_;
   const Matrix through_boundary = mean_somigliana_rows(mesh_, kernels, means) * values;
   load_stress_ = through_boundary.col(0);
   traction_stress_ = through_boundary.middleCols(1, k2);
   cell_operator_ = through_boundary.rightCols(d * m);
-  add_cell_fields(kernels, cells_, means, mesh_.images, cell_operator_);
+  // The cells' direct fields: only the columns of cells whose initial stress is not zero
+  // are ever used (cell_fields_of, the Newton system's plastic columns), added when a cell
+  // first yields (ensure_direct_columns): the O(m^2) integrals of cells that stay elastic
+  // are never made.
+  direct_columns_.assign(static_cast<std::size_t>(m), 0);
   surface_displacement_.resize(k2, d * m);
   for (Index j = 0; j < k2; ++j)
     surface_displacement_.row(j) = values.block(2 * surface_nodes_[static_cast<std::size_t>(j / 2)] + j % 2, first_cell, 1, d * m);
@@ -348,18 +354,34 @@ struct ElastoplasticRegion::Evaluation {
   Index worst = 0;    // the cell where it is largest
 };
 
+void ElastoplasticRegion::ensure_direct_columns(const std::vector<Index>& cells) const {
+  std::vector<Index> missing;
+  for (const Index e : cells)
+    if (!direct_columns_[static_cast<std::size_t>(e)]) missing.push_back(e), direct_columns_[static_cast<std::size_t>(e)] = 1;
+  if (missing.empty()) return;
+  add_cell_fields(CellKernels(type_, material_), cells_, mean_points_, mesh_.images, missing, cell_operator_);
+}
+
+const Matrix& ElastoplasticRegion::cell_operator() const {
+  std::vector<Index> all(cells_.size());
+  for (std::size_t e = 0; e < all.size(); ++e) all[e] = static_cast<Index>(e);
+  ensure_direct_columns(all);
+  return cell_operator_;
+}
+
 Vector ElastoplasticRegion::cell_fields_of(const Vector& sigma0) const {
   const Index d = components_;
+  std::vector<Index> sources;
+  for (Index e = 0; e < static_cast<Index>(cells_.size()); ++e)
+    if (!sigma0.segment(d * e, d).isZero(0.0)) sources.push_back(e);
+  ensure_direct_columns(sources);
   Vector out = Vector::Zero(cell_operator_.rows());
-  for (Index e = 0; e < static_cast<Index>(cells_.size()); ++e) {
-    const auto block = sigma0.segment(d * e, d);
-    if (!block.isZero(0.0)) out.noalias() += cell_operator_.middleCols(d * e, d) * block;
-  }
+  for (const Index e : sources) out.noalias() += cell_operator_.middleCols(d * e, d) * sigma0.segment(d * e, d);
   return out;
 }
 
 ElastoplasticRegion::Evaluation ElastoplasticRegion::evaluate(const Vector& E, double amplitude, const Vector& traction,
-                                                              const std::vector<char>& held,
+                                                              const std::vector<plasticity::J2Hold>& held,
                                                               const CommittedFields& committed) const {
   const Index m = static_cast<Index>(cells_.size()), d = components_;
   const CellKernels kernels(type_, material_);
@@ -380,9 +402,8 @@ ElastoplasticRegion::Evaluation ElastoplasticRegion::evaluate(const Vector& E, d
     const Vector strain = E.segment(d * e, d);
     update = type_ == AnalysisType::plane_stress
                  ? plasticity::j2_update_plane_stress(material_, hardening_, states_[k],
-                                                      kernels.strain_of(strain, thickness_strain_[k]), 1e-12,
-                                                      held[k] != 0)
-                 : j2_update(material_, hardening_, states_[k], kernels.strain_of(strain), held[k] != 0);
+                                                      kernels.strain_of(strain, thickness_strain_[k]), 1e-12, held[k])
+                 : j2_update(material_, hardening_, states_[k], kernels.strain_of(strain), held[k]);
     Vector stress(d);
     Matrix tangent(d, d);
     for (Index i = 0; i < d; ++i) {
@@ -423,8 +444,11 @@ struct ElastoplasticIncrement::State {
   ElastoplasticRegion::CommittedFields committed;
   Vector E, traction;
   Matrix strain_per_traction;  // C^-1 H: the strain per unit surface traction, through the boundary
-  // Cells that cycled between elastic and plastic are held on the yield surface (j2_update).
-  std::vector<char> held, last_state;
+  // Cells that cycled between elastic and plastic are held on the yield surface, and
+  // released to the elastic state where the solution unloads them (settle_held).
+  std::vector<plasticity::J2Hold> held;
+  std::vector<char> last_state;
+  int settled = 0;  // passes of settle_held that changed a cell
   std::vector<int> flips;  // changes of state from iteration to iteration
   ElastoplasticRegion::Evaluation current;
   int iteration = 0, stalled_for = 0, newton_iterations = 0;
@@ -454,7 +478,7 @@ ElastoplasticIncrement::ElastoplasticIncrement(ElastoplasticRegion& region, doub
   s.strain_per_traction.resize(d * m, region.surface_dofs_);
   for (Index e = 0; e < m; ++e)
     s.strain_per_traction.middleRows(d * e, d) = s.compliance * region.traction_stress_.middleRows(d * e, d);
-  s.held.assign(static_cast<std::size_t>(m), 0);
+  s.held.assign(static_cast<std::size_t>(m), plasticity::J2Hold::none);
   s.last_state.assign(static_cast<std::size_t>(m), 0);
   s.flips.assign(static_cast<std::size_t>(m), 0);
   s.current = region.evaluate(s.E, amplitude, s.traction, s.held, s.committed);
@@ -489,7 +513,8 @@ bool ElastoplasticIncrement::linearise(std::string& failure) {
   for (Index e = 0; e < m; ++e) {
     const auto k = static_cast<std::size_t>(e);
     const char state = s.current.updates[k].plastic ? 1 : 0;
-    if (s.iteration > 0 && state != s.last_state[k] && ++s.flips[k] >= 2 && !s.held[k]) s.held[k] = 1, newly_held = true;
+    if (s.iteration > 0 && state != s.last_state[k] && ++s.flips[k] >= 2 && s.held[k] == plasticity::J2Hold::none)
+      s.held[k] = plasticity::J2Hold::on_surface, newly_held = true;
     s.last_state[k] = state;
   }
   if (newly_held) s.current = region.evaluate(s.E, s.amplitude, s.traction, s.held, s.committed);
@@ -510,6 +535,7 @@ bool ElastoplasticIncrement::linearise(std::string& failure) {
   for (Index e = 0; e < m; ++e)
     if (!s.current.slope[static_cast<std::size_t>(e)].isZero(0.0)) s.plastic.push_back(e);
   const Index p = static_cast<Index>(s.plastic.size());
+  region.ensure_direct_columns(s.plastic);
   s.coupling.resize(d * m, d * p);  // the plastic cells' columns of J - I
   for (Index j = 0; j < p; ++j) {
     const Index e = s.plastic[static_cast<std::size_t>(j)];
@@ -587,6 +613,32 @@ void ElastoplasticIncrement::step(const Vector& next) {
   ++s.newton_iterations;
 }
 
+// A held cell's state is the Newton's device, not the material's: once Newton has converged,
+// a cell held on the yield surface with a negative plastic increment (the solution unloads
+// it) is held elastic instead, and a cell held elastic whose trial lies outside the yield
+// surface is held on it again; Newton then goes on. A primal active-set pass, at most
+// kSettlePasses times: what is left is reported (IncrementReport::held_increment).
+bool ElastoplasticIncrement::settle_held() {
+  constexpr int kSettlePasses = 4;
+  State& s = *s_;
+  ElastoplasticRegion& region = s.region;
+  if (s.settled >= kSettlePasses) return false;
+  const double yield = region.hardening_.yield_stress;
+  const double strain_tolerance = 1e-8 * yield / region.material_.young_modulus;
+  bool changed = false;
+  for (std::size_t k = 0; k < s.held.size(); ++k) {
+    const auto& update = s.current.updates[k];
+    if (s.held[k] == plasticity::J2Hold::on_surface && update.plastic_increment < -strain_tolerance)
+      s.held[k] = plasticity::J2Hold::elastic, changed = true;
+    else if (s.held[k] == plasticity::J2Hold::elastic && update.yield_function_trial > 1e-8 * yield)
+      s.held[k] = plasticity::J2Hold::on_surface, changed = true;
+  }
+  if (!changed) return false;
+  ++s.settled;
+  s.current = region.evaluate(s.E, s.amplitude, s.traction, s.held, s.committed);
+  return true;
+}
+
 void ElastoplasticIncrement::commit(IncrementReport& report) {
   State& s = *s_;
   ElastoplasticRegion& region = s.region;
@@ -597,7 +649,7 @@ void ElastoplasticIncrement::commit(IncrementReport& report) {
     const auto k = static_cast<std::size_t>(e);
     const auto& update = s.current.updates[k];
     report.plastic_cells += update.plastic ? 1 : 0;
-    if (s.held[k]) {
+    if (s.held[k] != plasticity::J2Hold::none) {
       ++report.held_cells;
       report.held_increment = std::min(report.held_increment, update.plastic_increment / strain_scale);
     }
@@ -614,7 +666,7 @@ void ElastoplasticIncrement::commit(IncrementReport& report) {
 bool ElastoplasticRegion::solve_increment(double amplitude, int max_iterations, double tolerance,
                                           IncrementReport& report, std::string& failure) {
   ElastoplasticIncrement increment(*this, amplitude, max_iterations, tolerance, false);
-  while (!increment.converged()) {
+  while (!increment.converged() || increment.settle_held()) {
     if (!increment.linearise(failure)) {
       report.residual = increment.residual();
       return false;

@@ -117,7 +117,12 @@ StepOutput PlasticCoupling::solve_step(const StepInput& input, const SolverOptio
       tractions[k] = model_.data_map(r) * q + model_.data_offset(r) * group_amplitudes;
       converged = converged && increments[k]->converged_with(tractions[k]);
     }
-    if (converged) break;
+    if (converged) {
+      bool settled = false;
+      for (auto& increment : increments) settled = increment->settle_held() || settled;
+      if (!settled) break;
+      continue;
+    }
     for (std::size_t k = 0; k < plastic_.size(); ++k) increments[k]->step(tractions[k]);
   }
   for (std::size_t k = 0; k < plastic_.size(); ++k) increments[k]->commit(plastic_[k].last_report);

@@ -36,7 +36,7 @@ MandelMatrix elastic_stiffness(const Material& material) {
 double von_mises(const Mandel& stress) { return std::sqrt(1.5) * deviator(stress).norm(); }
 
 J2Update j2_update(const Material& material, const J2Hardening& hardening, const J2State& previous,
-                   const Mandel& strain, bool hold_on_surface) {
+                   const Mandel& strain, J2Hold hold) {
   const double G = material.shear_modulus();
   const double K = material.young_modulus / (3.0 * (1.0 - 2.0 * material.poisson_ratio));
   const Mandel one = identity_vector();
@@ -51,7 +51,7 @@ J2Update j2_update(const Material& material, const J2Hardening& hardening, const
       kSqrtTwoThirds * (hardening.yield_stress + hardening.isotropic * previous.equivalent_plastic_strain);
   out.yield_function_trial = xi_norm - radius;
   const double pressure_part = K * strain.head<3>().sum();
-  if (out.yield_function_trial <= 0.0 && !(hold_on_surface && xi_norm > 0.0)) {
+  if (hold == J2Hold::elastic || (out.yield_function_trial <= 0.0 && !(hold == J2Hold::on_surface && xi_norm > 0.0))) {
     out.stress = pressure_part * one + trial_deviator;
     out.tangent = elastic_stiffness(material);
     return out;
@@ -75,7 +75,7 @@ J2Update j2_update(const Material& material, const J2Hardening& hardening, const
 }
 
 J2Update j2_update_plane_stress(const Material& material, const J2Hardening& hardening, const J2State& previous,
-                                const Mandel& strain, double tolerance, bool hold_on_surface) {
+                                const Mandel& strain, double tolerance, J2Hold hold) {
   Mandel e = strain;
   J2Update out;
   const double scale = hardening.yield_stress + material.young_modulus * strain.cwiseAbs().maxCoeff();
@@ -87,7 +87,7 @@ J2Update j2_update_plane_stress(const Material& material, const J2Hardening& har
   double below = -std::numeric_limits<double>::infinity(), above = std::numeric_limits<double>::infinity();
   constexpr int kMaxIterations = 100;
   for (int iteration = 0; iteration < kMaxIterations; ++iteration) {
-    out = j2_update(material, hardening, previous, e, hold_on_surface);
+    out = j2_update(material, hardening, previous, e, hold);
     const double s33 = out.stress[2];
     if (std::abs(s33) <= tolerance * scale) {
       // sigma_33 = 0 for any in-plane increment: condense the 33 row.

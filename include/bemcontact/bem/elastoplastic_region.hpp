@@ -23,6 +23,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "bemcontact/bem/boundary_system.hpp"
@@ -99,6 +100,7 @@ class ElastoplasticRegion;
 //                   surface nodes as an affine map of their tractions, u0 + F t;
 //   converged_with  the iterate solves the increment with the tractions t the contact gave;
 //   step            Newton's step to those tractions, with a backtracking line search;
+//   settle_held     once converged, cells held by Newton set to the state the solution asks;
 //   commit          the increment's state kept in the region.
 class ElastoplasticIncrement {
  public:
@@ -117,6 +119,9 @@ class ElastoplasticIncrement {
   const Vector& surface_offset() const;       // u0 (in contact, after linearise)
   const Matrix& surface_flexibility() const;  // F
   bool converged_with(const Vector& next) const;
+  // Once converged: the held cells set to the state the solution asks (true when one
+  // changed: Newton goes on).
+  bool settle_held();
   void step(const Vector& next);  // next = traction() without contact
   void commit(IncrementReport& report);
 
@@ -146,7 +151,7 @@ class ElastoplasticRegion {
   const std::vector<plasticity::Cell>& cells() const { return cells_; }
   // C E averaged over each cell per unit initial stress component of each cell, at zero
   // load (the cell-to-cell operator K; components_ rows and columns per cell).
-  const Matrix& cell_operator() const { return cell_operator_; }
+  const Matrix& cell_operator() const;
   const std::vector<plasticity::J2State>& states() const { return states_; }
   // The stress of each cell (s33 included), and the boundary solution, at the last
   // increment's end.
@@ -162,13 +167,15 @@ class ElastoplasticRegion {
   Vector initial_stresses() const;  // of every cell, from the committed plastic strains
   // K sigma0, over the cells whose initial stress is not zero.
   Vector cell_fields_of(const Vector& sigma0) const;
+  // The direct fields of these cells added to their columns of K, if not yet.
+  void ensure_direct_columns(const std::vector<Index>& cells) const;
   // The committed initial stresses of an increment and their fields K sigma0.
   struct CommittedFields {
     Vector sigma0, field;
   };
   struct Evaluation;
-  Evaluation evaluate(const Vector& E, double amplitude, const Vector& traction, const std::vector<char>& held,
-                      const CommittedFields& committed) const;
+  Evaluation evaluate(const Vector& E, double amplitude, const Vector& traction,
+                      const std::vector<plasticity::J2Hold>& held, const CommittedFields& committed) const;
   bool solve_increment(double amplitude, int max_iterations, double tolerance, IncrementReport& report,
                        std::string& failure);
 
@@ -185,7 +192,11 @@ class ElastoplasticRegion {
   Matrix boundary_unknowns_;
   Vector load_stress_;    // s: C E per unit amplitude (components_ per cell: tensor components)
   Matrix traction_stress_;  // H: C E per unit surface traction
-  Matrix cell_operator_;  // K: C E per unit initial stress component of each cell
+  // K: C E per unit initial stress component of each cell; a column's direct fields are
+  // added when first needed (a cache: filled by const members).
+  mutable Matrix cell_operator_;
+  mutable std::vector<char> direct_columns_;  // per cell: its direct fields added
+  std::vector<std::vector<std::pair<Vec2, double>>> mean_points_;  // each cell's (point, weight)
   Matrix surface_displacement_;  // G: the surface nodes' displacement per unit initial stress
   Vector surface_traction_;      // the surface nodes' tractions at the last increment's end
   std::vector<plasticity::J2State> states_;

@@ -58,20 +58,24 @@ struct J2Update {
 // The elastic stiffness on Mandel vectors.
 MandelMatrix elastic_stiffness(const Material& material);
 
+// A point held in one state whatever its trial: on the yield surface (returned to it even
+// from inside, a negative plastic increment) or elastic (no return even from outside). The
+// stabilisation of a structural Newton whose points cycle between elastic and plastic
+// (elastoplastic_region.hpp: held, then released to the state the solution asks), never the
+// material law itself.
+enum class J2Hold { none, on_surface, elastic };
+
 // The stress of the total strain `strain` from the state `previous` (plane strain,
-// axisymmetry, 3D: every component given). hold_on_surface returns to the yield surface
-// even from inside it (a negative plastic increment): the stabilisation of a structural
-// Newton whose points cycle between elastic and plastic (elastoplastic_region.hpp), never
-// the material law itself.
+// axisymmetry, 3D: every component given).
 J2Update j2_update(const Material& material, const J2Hardening& hardening, const J2State& previous,
-                   const Mandel& strain, bool hold_on_surface = false);
+                   const Mandel& strain, J2Hold hold = J2Hold::none);
 
 // Plane stress: the in-plane strain given (its 33 component the first guess of eps_33),
 // eps_33 found with sigma_33 = 0 to `tolerance` times the stress scale; the tangent is the
 // in-plane one (its 33 row and column zero). Throws SolverError when the Newton on eps_33
 // does not converge.
 J2Update j2_update_plane_stress(const Material& material, const J2Hardening& hardening, const J2State& previous,
-                                const Mandel& strain, double tolerance = 1e-12, bool hold_on_surface = false);
+                                const Mandel& strain, double tolerance = 1e-12, J2Hold hold = J2Hold::none);
 
 // The von Mises stress sqrt(3/2) |dev sigma|.
 double von_mises(const Mandel& stress);

@@ -144,12 +144,26 @@ TEST(J2Material, HeldOnTheSurfaceFromInside) {
   const J2Hardening h{250.0, 1000.0, 0.0};
   const Mandel eps = mandel(5e-4, -2e-4, 0.0, 1e-4);  // elastic
   const auto free = j2_update(steel, h, {}, eps);
-  const auto held = j2_update(steel, h, {}, eps, true);
+  const auto held = j2_update(steel, h, {}, eps, J2Hold::on_surface);
   ASSERT_FALSE(free.plastic);
   EXPECT_TRUE(held.plastic);
   EXPECT_LT(held.plastic_increment, 0.0);
   EXPECT_NEAR(von_mises(held.stress - held.state.back_stress),
               h.yield_stress + h.isotropic * held.state.equivalent_plastic_strain, 1e-9 * 250.0);
+}
+
+// Held elastic from outside the surface: no return, the elastic stress and stiffness, the
+// trial's yield function still reported (settle_held reads it).
+TEST(J2Material, HeldElasticFromOutside) {
+  const J2Hardening h{250.0, 1000.0, 0.0};
+  const Mandel eps = mandel(3e-3, -1e-3, 0.0, 1e-3);  // plastic when free
+  const auto free = j2_update(steel, h, {}, eps);
+  const auto held = j2_update(steel, h, {}, eps, J2Hold::elastic);
+  ASSERT_TRUE(free.plastic);
+  EXPECT_FALSE(held.plastic);
+  EXPECT_GT(held.yield_function_trial, 0.0);
+  EXPECT_EQ(held.state.plastic_strain, Mandel::Zero());
+  EXPECT_NEAR((held.stress - elastic_stiffness(steel) * eps).norm(), 0.0, 1e-9 * 250.0);
 }
 
 }  // namespace bemcontact::plasticity
