@@ -45,9 +45,10 @@ struct IncrementReport {
   double residual = 0.0;  // max |F| / (Y / E) at the end
   int plastic_cells = 0;  // cells that yielded in the increment
   int cuts = 0;           // halvings of the increment (Newton failed on the whole)
-  // Cells held on the yield surface because Newton cycled between their elastic and plastic
-  // states, and the most negative plastic increment (of kappa, in Y / E) that holding gave
-  // them: the size of the complementarity's violation (0: none held).
+  // Cells held in a state because Newton cycled between their elastic and plastic states
+  // (on the yield surface or elastic, as settle_held left them), and the most negative
+  // plastic increment (of kappa, in Y / E) of those on the surface: the complementarity's
+  // violation left (0: none).
   int held_cells = 0;
   double held_increment = 0.0;
 };
