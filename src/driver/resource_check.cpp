@@ -231,7 +231,12 @@ std::string describe(const ResourceEstimate& estimate) {
   return "estimate: " + std::to_string(estimate.total_unknowns) + " unknowns (" + std::to_string(estimate.unknowns) +
          " in the largest body), about " + format_bytes(estimate.bytes) + " of memory and " + time + " on " +
          std::to_string(estimate.threads) + (estimate.threads == 1 ? " thread" : " threads") +
-         " for one solve" + (estimate.compressed ? " (compressed)" : " (dense)");
+         " for one solve" + (estimate.compressed ? " (compressed)" : " (dense)") +
+         (estimate.elastoplastic_regions > 0
+              ? "; the cells of the elastoplastic region" + std::string(estimate.elastoplastic_regions > 1 ? "s" : "") +
+                    " not included (their operators are checked against the memory limit once the cells are made; "
+                    "their time grows as the cells squared: docs/plasticity.md)"
+              : "");
 }
 
 namespace {
@@ -301,6 +306,7 @@ ResourceEstimate estimate_resources(const bem::ProblemDefinition& problem) {
   add_body(estimate, cost);
   estimate.bytes = cost.peak_bytes;
   estimate.could_compress = cost.could_compress;
+  estimate.elastoplastic_regions = problem.body.plasticity ? 1 : 0;
   return estimate;
 }
 
@@ -335,6 +341,7 @@ ResourceEstimate estimate_resources(const contact::ContactProblem& problem) {
       add_body(estimate, cost);
       estimate.bytes += cost.peak_bytes;
       estimate.could_compress = estimate.could_compress || cost.could_compress;
+      estimate.elastoplastic_regions += region.body.plasticity ? 1 : 0;
     }
   if (problem.record_steps && !problem.contacts.empty()) {
     estimate.recorded_steps = most_steps(problem);

@@ -166,7 +166,8 @@ void check_read(const Problem& problem, const io::ProblemInput& input, const Run
                      {"memory_bytes", estimate.bytes},
                      {"recorded_steps_bytes", estimate.recording_bytes},
                      {"seconds", estimate.seconds},
-                     {"threads", estimate.threads}};
+                     {"threads", estimate.threads},
+                     {"elastoplastic_regions_not_included", estimate.elastoplastic_regions}};
   if (options.notice) options.notice(describe(estimate));
   output.warnings = input.warnings;
 }

@@ -27,6 +27,9 @@ struct ResourceEstimate {
   // (included in `bytes`), for at most `recorded_steps` steps.
   double recording_bytes = 0.0;
   std::int64_t recorded_steps = 0;
+  // Regions with a yield stress: their cells' operators and Newton iterations are not in
+  // `bytes` and `seconds` (the cells are made after meshing; their memory is checked then).
+  int elastoplastic_regions = 0;
 };
 
 // One line for the terminal: "estimate: ... unknowns, about ... of memory and ... ".

@@ -154,5 +154,23 @@ TEST(ResourceEstimate, RecordedStepsAreCountedAndWrittenIntoSteps) {
   EXPECT_NO_THROW(mesh_problem(long_history, "punch.toml", options));
 }
 
+// An elastoplastic region's cells are made after meshing: the estimate does not claim
+// them (it said "under a second" for a Brinell cycle of 100 s), it says so, and the summary
+// counts the regions it leaves out.
+TEST(ResourceEstimate, SaysTheCellsOfElastoplasticRegionsAreNotIncluded) {
+  std::string ball = test_support::replaced(test_support::example_text("brinell.toml"), "cell = 0.16", "cell = 0.64");
+  ball = test_support::replaced(test_support::replaced(ball, "end_time = 2.0", "end_time = 1.0"), "increments = 20",
+                                "increments = 2");
+  std::string notice;
+  RunOptions options;
+  options.notice = [&](const std::string& text) { notice += text; };
+  const RunOutput output = run_problem(ball, "ball.toml", options);
+  EXPECT_EQ(output.estimate.at("elastoplastic_regions_not_included").get<int>(), 1);
+  EXPECT_NE(notice.find("the cells of the elastoplastic region not included"), std::string::npos) << notice;
+  notice.clear();
+  run_problem(test_support::example_text("contact_punch_halfplane.toml"), "punch.toml", options);
+  EXPECT_EQ(notice.find("elastoplastic"), std::string::npos) << notice;
+}
+
 }  // namespace
 }  // namespace bemcontact::driver
