@@ -453,11 +453,12 @@ struct ElastoplasticIncrement::State {
   ElastoplasticRegion::Evaluation current;
   int iteration = 0, stalled_for = 0, newton_iterations = 0;
   double last_norm = 0.0;
-  // The present linearisation: the plastic cells, the plastic cells' columns of J - I,
-  // Newton's step at fixed tractions (plastic cells) and its right-hand side, the step per
-  // unit traction change Z, and the surface's affine response u0 + F t.
+  // The present linearisation: the plastic cells and their slopes d sigma0 / d E, Newton's
+  // step at fixed tractions (plastic cells) and its right-hand side, the step per unit
+  // traction change Z, and the surface's affine response u0 + F t.
   std::vector<Index> plastic;
-  Matrix coupling, Z, F;
+  std::vector<Matrix> slopes;
+  Matrix Z, F;
   Vector step_plastic, rhs, u0;
 };
 
@@ -536,19 +537,22 @@ bool ElastoplasticIncrement::linearise(std::string& failure) {
     if (!s.current.slope[static_cast<std::size_t>(e)].isZero(0.0)) s.plastic.push_back(e);
   const Index p = static_cast<Index>(s.plastic.size());
   region.ensure_direct_columns(s.plastic);
-  s.coupling.resize(d * m, d * p);  // the plastic cells' columns of J - I
+  s.slopes.clear();
+  for (const Index e : s.plastic) s.slopes.push_back(s.current.slope[static_cast<std::size_t>(e)]);
+  // J_PP = I - C^-1 K_PP S_P, gathered block by block (only the plastic rows: the elastic
+  // rows' part is applied in step() as a product, never stored).
+  Matrix J(d * p, d * p);
   for (Index j = 0; j < p; ++j) {
     const Index e = s.plastic[static_cast<std::size_t>(j)];
-    s.coupling.middleCols(d * j, d) =
-        region.cell_operator_.middleCols(d * e, d) * s.current.slope[static_cast<std::size_t>(e)];
+    for (Index i = 0; i < p; ++i)
+      J.block(d * i, d * j, d, d) = region.cell_operator_.block(d * s.plastic[static_cast<std::size_t>(i)], d * e, d, d);
+    J.middleCols(d * j, d) = J.middleCols(d * j, d) * s.slopes[static_cast<std::size_t>(j)];
   }
-  for (Index c = 0; c < m; ++c) s.coupling.middleRows(d * c, d) = -s.compliance * s.coupling.middleRows(d * c, d);
-  Matrix J(d * p, d * p);
+  for (Index i = 0; i < p; ++i) J.middleRows(d * i, d) = -s.compliance * J.middleRows(d * i, d);
   const Index surface = s.in_contact ? region.surface_dofs_ : 0;
   Matrix plastic_rhs(d * p, 1 + surface);  // [-F | C^-1 H] on the plastic rows
   for (Index i = 0; i < p; ++i) {
     const Index e = s.plastic[static_cast<std::size_t>(i)];
-    J.middleRows(d * i, d) = s.coupling.middleRows(d * e, d);
     plastic_rhs.block(d * i, 0, d, 1) = -s.current.F.segment(d * e, d);
     if (s.in_contact) plastic_rhs.block(d * i, 1, d, surface) = s.strain_per_traction.middleRows(d * e, d);
   }
@@ -597,7 +601,14 @@ void ElastoplasticIncrement::step(const Vector& next) {
     s.traction = next;
     s.current = region.evaluate(s.E, s.amplitude, s.traction, s.held, s.committed);  // the line search's reference
   }
-  Matrix step = s.rhs - s.coupling * s.step_plastic;
+  // dE_Q = r_Q - (J - I)_QP dE_P = r_Q + C^-1 (K_QP S_P dE_P): one product over the
+  // plastic cells' columns.
+  Vector moved = Vector::Zero(s.m * d);
+  for (std::size_t j = 0; j < s.plastic.size(); ++j)
+    moved.noalias() += region.cell_operator_.middleCols(d * s.plastic[j], d) *
+                       (s.slopes[j] * s.step_plastic.segment(d * static_cast<Index>(j), d));
+  Matrix step = s.rhs;
+  for (Index c = 0; c < s.m; ++c) step.middleRows(d * c, d) += s.compliance * moved.segment(d * c, d);
   for (std::size_t i = 0; i < s.plastic.size(); ++i)
     step.middleRows(d * s.plastic[i], d) = s.step_plastic.segment(d * static_cast<Index>(i), d);
   double fraction = 1.0;
