@@ -62,13 +62,16 @@ void BM_ElastoplasticTube(benchmark::State& state) {
 }
 
 // The Brinell cycle of examples/brinell.toml (axisymmetric, rigid ball 0.06 in and out, 22
-// steps) at cell size 0.32 / range(0), on rectangles (range(1) = 0) or crossed triangles
-// (1): the contact history with the elastoplastic region (contact/plastic_coupling.hpp).
+// steps) at cell size range(0) / 1000 (the example: 160), on rectangles (range(1) = 0) or
+// crossed triangles (1), with range(2) elements on the contact zone (the example: 36):
+// the contact history with the elastoplastic region (contact/plastic_coupling.hpp). The
+// issue's case: 2 182 crossed cells and 200 pairs (113, 1, 200).
 // Counters: cells, the cells' set-up and the steps' seconds (the run's phases), Newton
 // iterations, peak resident memory (of the process so far).
 void BM_BrinellCycle(benchmark::State& state) {
-  const double cell = 0.32 / static_cast<double>(state.range(0));
-  auto file = io::read_contact_file(std::string(BEMCONTACT_EXAMPLES_DIR) + "/brinell.toml", {{"cell", cell}});
+  const double cell = static_cast<double>(state.range(0)) / 1000.0;
+  auto file = io::read_contact_file(std::string(BEMCONTACT_EXAMPLES_DIR) + "/brinell.toml",
+                                    {{"cell", cell}, {"n", static_cast<double>(state.range(2))}});
   file.problem.bodies.front().regions.front().body.plasticity->cells.crossed = state.range(1) != 0;
   double setup = 0.0, steps = 0.0;
   int iterations = 0;
@@ -96,12 +99,14 @@ void BM_BrinellCycle(benchmark::State& state) {
 }  // namespace
 
 BENCHMARK(BM_BrinellCycle)
-    ->ArgNames({"refine", "crossed"})
-    ->Args({1, 0})
-    ->Args({2, 0})
-    ->Args({4, 0})
-    ->Args({1, 1})
-    ->Args({2, 1})
+    ->ArgNames({"cell_per_mille", "crossed", "n"})
+    ->Args({320, 0, 36})
+    ->Args({160, 0, 36})
+    ->Args({80, 0, 36})
+    ->Args({320, 1, 36})
+    ->Args({160, 1, 36})
+    ->Args({113, 1, 200})
+    ->Args({80, 1, 200})
     ->Unit(benchmark::kMillisecond)
     ->Iterations(1);
 BENCHMARK(BM_ElastoplasticTube)->Arg(4)->Arg(8)->Arg(16)->Arg(32)->Arg(64)->Unit(benchmark::kMillisecond)->Iterations(1);
