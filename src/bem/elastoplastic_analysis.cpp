@@ -112,7 +112,7 @@ double elastoplastic_region_bytes(Index cells, Index nodes, AnalysisType type) {
 }
 
 std::vector<plasticity::Cell> region_cells_of(const geometry::BoundaryMesh& mesh, const BodyDefinition& body,
-                                              AnalysisType type, double memory_limit_bytes) {
+                                              AnalysisType type, double memory_limit_bytes, double used_bytes) {
   const RegionPlasticity& plasticity = *body.plasticity;
   std::vector<plasticity::Cell> cells;
   try {
@@ -123,10 +123,14 @@ std::vector<plasticity::Cell> region_cells_of(const geometry::BoundaryMesh& mesh
     throw InputError(plasticity.cells_where, e.what());
   }
   const double bytes = elastoplastic_region_bytes(static_cast<Index>(cells.size()), mesh.node_count(), type);
-  if (memory_limit_bytes > 0.0 && bytes > memory_limit_bytes)
+  if (memory_limit_bytes > 0.0 && used_bytes + bytes > memory_limit_bytes)
     throw InputError(plasticity.cells_where,
                      std::to_string(cells.size()) + " cells would take about " + format_bytes(bytes) +
-                         " of dense matrices, over the limit of " + format_bytes(memory_limit_bytes) +
+                         " of dense matrices" +
+                         (used_bytes > 0.0 ? " (" + format_bytes(used_bytes + bytes) +
+                                                 " with the other elastoplastic regions' cells)"
+                                           : std::string()) +
+                         ", over the limit of " + format_bytes(memory_limit_bytes) +
                          ": give larger cells or a box around where the body may yield, or raise the limit with "
                          "--max-memory (GB) on a larger machine");
   return cells;

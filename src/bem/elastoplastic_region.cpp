@@ -164,12 +164,17 @@ Matrix mean_somigliana_rows(const geometry::BoundaryMesh& mesh, const CellKernel
   return rows;
 }
 
+}  // namespace
+
 // A cell and its images across the symmetry lines, each with the map of the cell's initial
 // stress components to its own: sigma0' = S sigma0 S^T (the hoop component unchanged).
+// (Outside the anonymous namespace: PlasticCellFields keeps them.)
 struct CellImage {
   Cell cell;
   Matrix stress_map;
 };
+
+namespace {
 std::vector<CellImage> cell_and_images(const Cell& cell, const std::vector<geometry::ImageMap>& images, int d) {
   std::vector<CellImage> out{{cell, Matrix::Identity(d, d)}};
   for (const auto& image : images) {
@@ -434,6 +439,9 @@ ElastoplasticRegion::Evaluation ElastoplasticRegion::evaluate(const Vector& E, d
 // each iteration solves it on the linearised plastic response (Newton's step in the
 // tractions), and the increment ends when F and the tractions' change both vanish.
 struct ElastoplasticIncrement::State {
+  State(ElastoplasticRegion& r, double a, int iterations, double tol, bool contact)
+      : region(r), amplitude(a), max_iterations(iterations), tolerance(tol), in_contact(contact),
+        m(static_cast<Index>(r.cells_.size())), d(r.components_) {}
   ElastoplasticRegion& region;
   double amplitude;
   int max_iterations;
@@ -464,8 +472,7 @@ struct ElastoplasticIncrement::State {
 
 ElastoplasticIncrement::ElastoplasticIncrement(ElastoplasticRegion& region, double amplitude, int max_iterations,
                                                double tolerance, bool in_contact)
-    : s_(std::make_unique<State>(State{region, amplitude, max_iterations, tolerance, in_contact,
-                                       static_cast<Index>(region.cells_.size()), region.components_})) {
+    : s_(std::make_unique<State>(region, amplitude, max_iterations, tolerance, in_contact)) {
   State& s = *s_;
   const Index m = s.m, d = s.d;
   s.compliance = CellKernels(region.type_, region.material_).stiffness().inverse();

@@ -37,12 +37,15 @@ PlasticCoupling::PlasticCoupling(const ContactProblem& problem, const ContactMod
                                  const std::vector<int>& regions, double memory_limit_bytes)
     : problem_(problem), model_(model) {
   bem::PhaseClock clock(timings_);
+  double used_bytes = 0.0;  // by the regions made so far: the memory limit is for all of them
   for (const int r : regions) {
     const auto& prepared = model.prepared().regions[static_cast<std::size_t>(r)];
     const auto& body = prepared.definition;
     PlasticRegion region;
     region.region = r;
-    region.cells = bem::region_cells_of(prepared.mesh, body, problem.analysis, memory_limit_bytes);
+    region.cells = bem::region_cells_of(prepared.mesh, body, problem.analysis, memory_limit_bytes, used_bytes);
+    used_bytes += bem::elastoplastic_region_bytes(static_cast<Index>(region.cells.size()), prepared.mesh.node_count(),
+                                                  problem.analysis);
     std::vector<Index> surface;
     for (const auto& node : model.region(r).variable_nodes()) surface.push_back(node.node);
     region.plastic = std::make_unique<bem::ElastoplasticRegion>(prepared.mesh, body, problem.analysis,

@@ -152,7 +152,7 @@ StoredRun mesh_again(std::string_view text, const std::string& file_name, const 
       const auto& body = problem.body;
       const auto& named = model.bodies[0];
       const std::string csv = io::body_file_prefix(named.name, named.named) + "boundary.csv";
-      run.regions.push_back({body.name, csv, bem::mesh_body(problem), body.material, body.pieces, {}});
+      run.regions.push_back({body.name, csv, bem::mesh_body(problem), body.material, body.pieces, {}, {}, {}, {}});
       break;
     }
     case contact::SolverRoute::decomposition: {
@@ -161,7 +161,7 @@ StoredRun mesh_again(std::string_view text, const std::string& file_name, const 
       for (std::size_t s = 0; s < meshes.size(); ++s) {
         const auto& body = problem.subdomains[s].body;
         run.regions.push_back({body.name, io::file_stem(body.name) + "_boundary.csv", std::move(meshes[s]),
-                               body.material, body.pieces, {}});
+                               body.material, body.pieces, {}, {}, {}, {}});
       }
       break;
     }
@@ -171,7 +171,7 @@ StoredRun mesh_again(std::string_view text, const std::string& file_name, const 
         const auto& body = model.bodies[region.body];
         const std::string name = body.regions.size() == 1 ? body.name : region.definition.name;
         StoredRegion stored{name, io::file_stem(name) + "_boundary.csv", std::move(region.mesh),
-                            region.definition.material, region.definition.pieces, {}};
+                            region.definition.material, region.definition.pieces, {}, {}, {}, {}};
         if (region.definition.plasticity) {
           stored.cells = bem::region_cells_of(stored.mesh, region.definition, model.analysis, 0.0);
           stored.cells_csv = io::file_stem(name) + "_cells.csv";
@@ -186,7 +186,7 @@ StoredRun mesh_again(std::string_view text, const std::string& file_name, const 
       const auto& named = model.bodies[0];
       const std::string prefix = io::body_file_prefix(named.name, named.named);
       StoredRegion stored{body.name, prefix + "boundary.csv", bem::mesh_elastoplastic_body(history.problem),
-                          body.material, body.pieces, {}};
+                          body.material, body.pieces, {}, {}, {}, {}};
       stored.cells = bem::region_cells_of(stored.mesh, body, model.analysis, 0.0);
       stored.cells_csv = prefix + "cells.csv";
       run.regions.push_back(std::move(stored));

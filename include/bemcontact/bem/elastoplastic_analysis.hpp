@@ -67,10 +67,11 @@ ElastoplasticStep record_elastoplastic_step(double time, const IncrementReport& 
                                             const BodyDefinition& body, AnalysisType type, BoundarySolution& boundary);
 
 // The cells of an elastoplastic region from its [cells] (plasticity/region_cells.hpp).
-// InputError at the [cells] table when they cannot be made, or when their dense matrices
-// would take more than `memory_limit_bytes` (0: no limit).
+// InputError at the [cells] table when they cannot be made, or when their dense matrices,
+// with `used_bytes` of other elastoplastic regions already made, would take more than
+// `memory_limit_bytes` (0: no limit).
 std::vector<plasticity::Cell> region_cells_of(const geometry::BoundaryMesh& mesh, const BodyDefinition& body,
-                                              AnalysisType type, double memory_limit_bytes);
+                                              AnalysisType type, double memory_limit_bytes, double used_bytes = 0.0);
 
 // With [cells] nodes_at_cells (the default), the body with element end points added on its
 // boundaries where the vertices of its cells on `mesh` lie on them

@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "bemcontact/bem/elastoplastic_analysis.hpp"
 #include "bemcontact/core/error.hpp"
 #include "bemcontact/driver/run.hpp"
 #include "support/example_text.hpp"
@@ -118,6 +119,32 @@ TEST(PlasticContact, TwoElastoplasticBlocksPressedTogetherAreEachThePressedBlock
   const auto point = pressed_point_stress({200000.0, 0.3}, {Y, 20000.0, 0.0}, -0.01,
                                           column(output.tables.at("lower_plastic_steps.csv"), "amplitude").numbers);
   for (const double p : column(output.tables.at("contact.csv"), "p_n").numbers) EXPECT_NEAR(p, point[1], 1e-6 * Y);
+}
+
+// The memory limit is for every elastoplastic region's cells together: two blocks that each
+// fit alone are refused together, at the second block's [cells], naming the sum.
+TEST(PlasticContact, TheMemoryLimitCountsEveryElastoplasticRegion) {
+  const std::string text = "title = \"two blocks\"\nanalysis = \"plane_strain\"\n" +
+                           hardening_block("lower", 0.0, "u2 = 0.0\nt1 = 0.0\n", "") +
+                           hardening_block("upper", 1.0, "", "u2 = -0.02\nt1 = 0.0\n") +
+                           "[[contact]]\nbody1 = \"lower\"\nboundary1 = \"top\"\nbody2 = \"upper\"\n"
+                           "boundary2 = \"bottom\"\nnormal = \"body1\"\n[solver]\nincrements = 2\n";
+  RunOptions options;
+  options.keep_tables = true;
+  const auto output = run_problem(text, "blocks.toml", options);
+  // One block's cells: 16 cells, its nodes as meshed.
+  const auto nodes = static_cast<Index>(column(output.tables.at("lower_boundary.csv"), "x").numbers.size());
+  const double one = bem::elastoplastic_region_bytes(16, nodes, AnalysisType::plane_strain);
+  options.limits.max_memory_bytes = 1.5 * one;
+  try {
+    run_problem(text, "blocks.toml", options);
+    ADD_FAILURE() << "two blocks' cells fit in 1.5 times one's";
+  } catch (const InputError& error) {
+    const std::string what = error.what();
+    EXPECT_NE(what.find("with the other elastoplastic regions' cells"), std::string::npos) << what;
+    EXPECT_NE(what.find("blocks.toml:"), std::string::npos) << what;
+    EXPECT_NE(what.find("cells"), std::string::npos) << what;
+  }
 }
 
 // A block of the hardening material over [0, 1] x [0, 1] (sign = 1) or its mirror image
