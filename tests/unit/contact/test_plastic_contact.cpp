@@ -89,16 +89,22 @@ std::string hardening_block(const std::string& name, double y0, const std::strin
          y(0) + "]\nelements = 8\nu1 = 0.0\nt2 = 0.0\n";
 }
 
+// The lower block on a roller base, the upper one on it (frictionless contact), its top
+// pressed 0.02 down in `increments` steps.
+std::string stacked_blocks_text(int increments) {
+  return "title = \"two blocks\"\nanalysis = \"plane_strain\"\n" +
+         hardening_block("lower", 0.0, "u2 = 0.0\nt1 = 0.0\n", "") +
+         hardening_block("upper", 1.0, "", "u2 = -0.02\nt1 = 0.0\n") +
+         "[[contact]]\nbody1 = \"lower\"\nboundary1 = \"top\"\nbody2 = \"upper\"\n"
+         "boundary2 = \"bottom\"\nnormal = \"body1\"\n[solver]\nincrements = " + std::to_string(increments) + "\n";
+}
+
 // Two elastoplastic blocks stacked, in frictionless contact, the upper one's top pressed
 // 0.02 down: each is compressed 0.01 uniformly, so every cell of both is the material
 // point pressed 8 Y/E (with hardening: no limit load) along the run's increments. Both
 // regions' Newton iterations run together on one linearised contact.
 TEST(PlasticContact, TwoElastoplasticBlocksPressedTogetherAreEachThePressedBlock) {
-  const std::string text = "title = \"two blocks\"\nanalysis = \"plane_strain\"\n" +
-                           hardening_block("lower", 0.0, "u2 = 0.0\nt1 = 0.0\n", "") +
-                           hardening_block("upper", 1.0, "", "u2 = -0.02\nt1 = 0.0\n") +
-                           "[[contact]]\nbody1 = \"lower\"\nboundary1 = \"top\"\nbody2 = \"upper\"\n"
-                           "boundary2 = \"bottom\"\nnormal = \"body1\"\n[solver]\nincrements = 10\n";
+  const std::string text = stacked_blocks_text(10);
   RunOptions options;
   options.keep_tables = true;
   const auto output = run_problem(text, "blocks.toml", options);
@@ -124,11 +130,7 @@ TEST(PlasticContact, TwoElastoplasticBlocksPressedTogetherAreEachThePressedBlock
 // The memory limit is for every elastoplastic region's cells together: two blocks that each
 // fit alone are refused together, at the second block's [cells], naming the sum.
 TEST(PlasticContact, TheMemoryLimitCountsEveryElastoplasticRegion) {
-  const std::string text = "title = \"two blocks\"\nanalysis = \"plane_strain\"\n" +
-                           hardening_block("lower", 0.0, "u2 = 0.0\nt1 = 0.0\n", "") +
-                           hardening_block("upper", 1.0, "", "u2 = -0.02\nt1 = 0.0\n") +
-                           "[[contact]]\nbody1 = \"lower\"\nboundary1 = \"top\"\nbody2 = \"upper\"\n"
-                           "boundary2 = \"bottom\"\nnormal = \"body1\"\n[solver]\nincrements = 2\n";
+  const std::string text = stacked_blocks_text(2);
   RunOptions options;
   options.keep_tables = true;
   const auto output = run_problem(text, "blocks.toml", options);
