@@ -327,15 +327,11 @@ Vector cell_initial_stress(AnalysisType type, const Material& material, const Ma
   return sigma0;
 }
 
-Vector ElastoplasticRegion::initial_stress(const Mandel& plastic_strain) const {
-  return cell_initial_stress(type_, material_, plastic_strain);
-}
-
 Vector ElastoplasticRegion::initial_stresses() const {
   const Index d = components_;
   Vector sigma0(d * static_cast<Index>(cells_.size()));
   for (std::size_t e = 0; e < cells_.size(); ++e)
-    sigma0.segment(d * static_cast<Index>(e), d) = initial_stress(states_[e].plastic_strain);
+    sigma0.segment(d * static_cast<Index>(e), d) = cell_initial_stress(type_, material_, states_[e].plastic_strain);
   return sigma0;
 }
 
@@ -750,11 +746,15 @@ struct PlasticCellFields::Sources {
 PlasticCellFields::PlasticCellFields(AnalysisType type, const Material& material, const geometry::BoundaryMesh& mesh,
                                      std::vector<Cell> cells, const std::vector<Mandel>& plastic_strains)
     : type_(type), material_(material), scale_(mesh.scale), cells_(std::move(cells)),
-      plastic_strains_(plastic_strains), sources_(std::make_unique<Sources>()) {
-  if (plastic_strains_.size() != cells_.size())
+      sources_(std::make_unique<Sources>()) {
+  if (plastic_strains.size() != cells_.size())
     throw std::logic_error("PlasticCellFields: one plastic strain per cell");
   const int d = type == AnalysisType::axisymmetric ? 4 : 3;
-  for (const auto& cell : cells_) sources_->of_cell.push_back(cell_and_images(cell, mesh.images, d));
+  for (std::size_t e = 0; e < cells_.size(); ++e) {
+    sources_->of_cell.push_back(cell_and_images(cells_[e], mesh.images, d));
+    initial_stresses_.push_back(cell_initial_stress(type, material, plastic_strains[e]));
+    plastic33_.push_back(plastic_strains[e][2]);
+  }
 }
 
 PlasticCellFields::~PlasticCellFields() = default;
@@ -782,13 +782,13 @@ void PlasticCellFields::add_at(const Vec2& point, Vec2& u, StressTensor& stress)
   Vector c_eps = Vector::Zero(kernels.d);
   double plastic33 = 0.0;
   for (std::size_t e = 0; e < cells_.size(); ++e) {
-    const Vector sigma0 = cell_initial_stress(type_, material_, plastic_strains_[e]);
+    const Vector& sigma0 = initial_stresses_[e];
     if (sigma0.isZero(0.0)) continue;
     for (const auto& source : sources[e]) {
       u += kernels.displacement(x, source.cell) * (source.stress_map * sigma0);
       c_eps += kernels.stress(x, source.cell) * (source.stress_map * sigma0);
     }
-    if (cells_[e].contains(x)) c_eps -= sigma0, plastic33 = plastic_strains_[e][2];
+    if (cells_[e].contains(x)) c_eps -= sigma0, plastic33 = plastic33_[e];
   }
   stress.s11 += c_eps[0], stress.s22 += c_eps[1], stress.s12 += c_eps[2];
   if (kernels.axisymmetric())

@@ -874,6 +874,7 @@ bool add_interior_values(const ContactProblem& problem, const ContactModel& mode
   const auto& regions = model.prepared().regions;
   bool any_interior = false;
   result.interior.resize(regions.size());
+  const auto plastic = coupling ? coupling->regions() : std::vector<int>{};
   for (std::size_t r = 0; r < regions.size(); ++r) {
     const auto& region = regions[r];
     const auto& points = problem.bodies[region.body].regions[region.region].interior_points;
@@ -882,7 +883,6 @@ bool add_interior_values(const ContactProblem& problem, const ContactModel& mode
     const bem::ElementIntegrator integrator(problem.analysis, region.definition.material);
     bem::DomainTerm cells;
     std::shared_ptr<const bem::PlasticCellFields> fields;
-    const auto plastic = coupling ? coupling->regions() : std::vector<int>{};
     for (std::size_t k = 0; k < plastic.size(); ++k)
       if (plastic[k] == static_cast<int>(r)) {
         fields = std::make_shared<const bem::PlasticCellFields>(coupling->cell_fields(k));

@@ -20,7 +20,6 @@
 // plastic cells beyond about 1.3 times the first-yield pressure (Newton cycled). The stress
 // of a cell is the material's at its mean strain (the plastic strain is cell-wise constant:
 // its error is of the order of the cell size where it varies).
-#include <functional>
 #include <memory>
 #include <string>
 #include <utility>
@@ -87,7 +86,8 @@ class PlasticCellFields {
   Material material_;
   double scale_;
   std::vector<plasticity::Cell> cells_;
-  std::vector<plasticity::Mandel> plastic_strains_;
+  std::vector<Vector> initial_stresses_;  // sigma0 of each cell, from its plastic strain
+  std::vector<double> plastic33_;         // each cell's eps_p33 (plane strain's s33)
   std::unique_ptr<Sources> sources_;
 };
 
@@ -164,7 +164,6 @@ class ElastoplasticRegion {
 
  private:
   friend class ElastoplasticIncrement;
-  Vector initial_stress(const plasticity::Mandel& plastic_strain) const;
   Vector initial_stresses() const;  // of every cell, from the committed plastic strains
   // K sigma0, over the cells whose initial stress is not zero.
   Vector cell_fields_of(const Vector& sigma0) const;
