@@ -233,20 +233,22 @@ ElastoplasticRegion::~ElastoplasticRegion() = default;
 
 ElastoplasticRegion::ElastoplasticRegion(const geometry::BoundaryMesh& mesh, const BodyDefinition& body,
                                          AnalysisType type, const J2Hardening& hardening, std::vector<Cell> cells,
-                                         std::vector<Index> surface_nodes)
+                                         std::vector<VariableNode> surface_nodes)
     : mesh_(mesh), type_(type), material_(body.material), hardening_(hardening), cells_(std::move(cells)),
       surface_nodes_(std::move(surface_nodes)), surface_dofs_(2 * static_cast<Index>(surface_nodes_.size())),
       components_(type == AnalysisType::axisymmetric ? 4 : 3) {
   if (!(hardening_.yield_stress > 0.0) || hardening_.isotropic < 0.0 || hardening_.kinematic < 0.0)
     throw Error("body '" + body.name + "': the yield stress must be > 0 and the hardening moduli >= 0");
   conditions_ = resolve_node_conditions(mesh_, body, type);
-  // The surface nodes carry tractions in global components (u_r = 0 kept on the axis), as
-  // FactoredBody's variable nodes do.
-  for (const Index node : surface_nodes_) {
-    if (node < 0 || node >= mesh_.node_count()) throw Error("ElastoplasticRegion: surface node out of range");
-    NodeCondition& c = conditions_[static_cast<std::size_t>(node)];
+  // The surface nodes carry data of their kind in global components (u_r = 0 kept on the
+  // axis), as FactoredBody's variable nodes do.
+  for (const auto& surface : surface_nodes_) {
+    if (surface.node < 0 || surface.node >= mesh_.node_count())
+      throw Error("ElastoplasticRegion: surface node out of range");
+    NodeCondition& c = conditions_[static_cast<std::size_t>(surface.node)];
     const bool on_axis = c.on_axis;
     c = NodeCondition{};
+    c.kind = {surface.kind, surface.kind};
     if (on_axis) c.on_axis = true, c.kind[0] = ConditionKind::displacement;
   }
   constraints_ = resolve_point_constraints(mesh_, body, conditions_);
@@ -257,19 +259,25 @@ ElastoplasticRegion::ElastoplasticRegion(const geometry::BoundaryMesh& mesh, con
   auto system = build_boundary_system(matrices, conditions_, constraints_);
   const Index n = mesh_.node_count(), rows = system.b.size(), m = static_cast<Index>(cells_.size());
   const Index k2 = surface_dofs_, first_cell = 1 + k2;
-  // A surface dof carries its traction datum, but for the radial one on the axis (p_r = 0).
-  const auto carries_traction = [&](Index j) {
-    return !(conditions_[static_cast<std::size_t>(surface_nodes_[static_cast<std::size_t>(j / 2)])].on_axis &&
-             j % 2 == 0);
+  // A surface dof carries its datum, but for the radial one on the axis (u_r = p_r = 0).
+  const auto surface_of = [&](Index j) -> const VariableNode& { return surface_nodes_[static_cast<std::size_t>(j / 2)]; };
+  const auto carries_datum = [&](Index j) {
+    return !(conditions_[static_cast<std::size_t>(surface_of(j).node)].on_axis && j % 2 == 0);
   };
-  // [b | T | B]: a unit traction at each surface dof, G's column (the matrices are in the
-  // nodes' frames, the surface nodes' global); the cells' domain term at the collocation
-  // nodes (the boundary equation's rows), each cell's columns by one thread. Solved in place.
+  const auto is_displacement = [&](Index j) { return surface_of(j).kind == ConditionKind::displacement; };
+  // [b | T | B]: a unit datum at each surface dof, G's column for a traction and -H's for a
+  // displacement (the matrices are in the nodes' frames, the surface nodes' global); the
+  // cells' domain term at the collocation nodes (the boundary equation's rows), each cell's
+  // columns by one thread. Solved in place.
   boundary_unknowns_ = Matrix::Zero(rows, first_cell + d * m);
   boundary_unknowns_.col(0) = system.b;
   for (Index j = 0; j < k2; ++j) {
-    if (!carries_traction(j)) continue;
-    boundary_unknowns_.block(0, 1 + j, 2 * n, 1) = matrices.G.col(2 * surface_nodes_[static_cast<std::size_t>(j / 2)] + j % 2);
+    if (!carries_datum(j)) continue;
+    const Index dof = 2 * surface_of(j).node + j % 2;
+    if (is_displacement(j))
+      boundary_unknowns_.block(0, 1 + j, 2 * n, 1) = -matrices.H.col(dof);
+    else
+      boundary_unknowns_.block(0, 1 + j, 2 * n, 1) = matrices.G.col(dof);
     for (Index i = 0; i < n; ++i)
       if (conditions_[static_cast<std::size_t>(i)].on_axis) boundary_unknowns_(2 * i, 1 + j) = 0.0;
   }
@@ -291,22 +299,23 @@ ElastoplasticRegion::ElastoplasticRegion(const geometry::BoundaryMesh& mesh, con
   for (Index j = 0; j < first_cell + d * m; ++j)
     values.col(j) = boundary_values(boundary_unknowns_.col(j), j == 0 ? conditions_ : unloaded, constraints_);
   for (Index j = 0; j < k2; ++j)  // the unit datum itself
-    if (carries_traction(j)) values(2 * n + 2 * surface_nodes_[static_cast<std::size_t>(j / 2)] + j % 2, 1 + j) = 1.0;
+    if (carries_datum(j)) values((is_displacement(j) ? 0 : 2 * n) + 2 * surface_of(j).node + j % 2, 1 + j) = 1.0;
   mean_points_ = cell_mean_points(mesh_, cells_);
   const auto& means = mean_points_;
   const Matrix through_boundary = mean_somigliana_rows(mesh_, kernels, means) * values;
   load_stress_ = through_boundary.col(0);
-  traction_stress_ = through_boundary.middleCols(1, k2);
+  data_stress_ = through_boundary.middleCols(1, k2);
   cell_operator_ = through_boundary.rightCols(d * m);
   // The cells' direct fields: only the columns of cells whose initial stress is not zero
   // are ever used (cell_fields_of, the Newton system's plastic columns), added when a cell
   // first yields (ensure_direct_columns): the O(m^2) integrals of cells that stay elastic
   // are never made.
   direct_columns_.assign(static_cast<std::size_t>(m), 0);
-  surface_displacement_.resize(k2, d * m);
+  surface_response_.resize(k2, d * m);  // the complementary value: traction at a displacement datum
   for (Index j = 0; j < k2; ++j)
-    surface_displacement_.row(j) = values.block(2 * surface_nodes_[static_cast<std::size_t>(j / 2)] + j % 2, first_cell, 1, d * m);
-  surface_traction_ = Vector::Zero(k2);
+    surface_response_.row(j) =
+        values.block((is_displacement(j) ? 2 * n : 0) + 2 * surface_of(j).node + j % 2, first_cell, 1, d * m);
+  surface_data_ = Vector::Zero(k2);
   states_.assign(static_cast<std::size_t>(m), J2State{});
   stress_.assign(static_cast<std::size_t>(m), Mandel::Zero());
   thickness_strain_.assign(static_cast<std::size_t>(m), 0.0);
@@ -336,15 +345,15 @@ Vector ElastoplasticRegion::initial_stresses() const {
 }
 
 ElastoplasticState ElastoplasticRegion::state() const {
-  return {states_, stress_, thickness_strain_, surface_traction_, amplitude_};
+  return {states_, stress_, thickness_strain_, surface_data_, amplitude_};
 }
 
 void ElastoplasticRegion::restore(const ElastoplasticState& state) {
   states_ = state.states, stress_ = state.stress, thickness_strain_ = state.thickness_strain;
-  surface_traction_ = state.surface_traction, amplitude_ = state.amplitude;
+  surface_data_ = state.surface_data, amplitude_ = state.amplitude;
 }
 
-// The residual F(E) of an increment to `amplitude` with the surface tractions `traction`,
+// The residual F(E) of an increment to `amplitude` with the surface data `data`,
 // with each cell's update, its initial stress and d sigma0 / d E (the Newton system's blocks).
 struct ElastoplasticRegion::Evaluation {
   std::vector<J2Update> updates;
@@ -381,7 +390,7 @@ Vector ElastoplasticRegion::cell_fields_of(const Vector& sigma0) const {
   return out;
 }
 
-ElastoplasticRegion::Evaluation ElastoplasticRegion::evaluate(const Vector& E, double amplitude, const Vector& traction,
+ElastoplasticRegion::Evaluation ElastoplasticRegion::evaluate(const Vector& E, double amplitude, const Vector& data,
                                                               const std::vector<plasticity::J2Hold>& held,
                                                               const CommittedFields& committed) const {
   const Index m = static_cast<Index>(cells_.size()), d = components_;
@@ -420,7 +429,7 @@ ElastoplasticRegion::Evaluation ElastoplasticRegion::evaluate(const Vector& E, d
   // C E as the boundary's and the cells' fields give it; the cells' fields as the committed
   // ones plus those of the cells whose initial stress moved (the plastic ones: a few of
   // all, where the whole product was half the run's time).
-  const Vector target = amplitude * load_stress_ + traction_stress_ * traction + committed.field +
+  const Vector target = amplitude * load_stress_ + data_stress_ * data + committed.field +
                         cell_fields_of(sigma0 - committed.sigma0);
   out.sigma0 = sigma0;
   out.F.resize(d * m);
@@ -433,7 +442,7 @@ ElastoplasticRegion::Evaluation ElastoplasticRegion::evaluate(const Vector& E, d
 // Newton from the elastic predictor, with a backtracking line search on |F| (the radial
 // return's kinks make full steps cycle near the elastic-plastic boundary). With a contact,
 // each iteration solves it on the linearised plastic response (Newton's step in the
-// tractions), and the increment ends when F and the tractions' change both vanish.
+// surface data), and the increment ends when F and the data's change both vanish.
 struct ElastoplasticIncrement::State {
   State(ElastoplasticRegion& r, double a, int iterations, double tol, bool contact)
       : region(r), amplitude(a), max_iterations(iterations), tolerance(tol), in_contact(contact),
@@ -446,8 +455,8 @@ struct ElastoplasticIncrement::State {
   Index m, d;
   Matrix compliance;
   ElastoplasticRegion::CommittedFields committed;
-  Vector E, traction;
-  Matrix strain_per_traction;  // C^-1 H: the strain per unit surface traction, through the boundary
+  Vector E, data;
+  Matrix strain_per_datum;  // C^-1 H: the strain per unit surface datum, through the boundary
   // Cells that cycled between elastic and plastic are held on the yield surface, and
   // released to the elastic state where the solution unloads them (settle_held).
   std::vector<plasticity::J2Hold> held;
@@ -458,8 +467,9 @@ struct ElastoplasticIncrement::State {
   int iteration = 0, stalled_for = 0, newton_iterations = 0;
   double last_norm = 0.0;
   // The present linearisation: the plastic cells and their slopes d sigma0 / d E, Newton's
-  // step at fixed tractions (plastic cells) and its right-hand side, the step per unit
-  // traction change Z, and the surface's affine response u0 + F t.
+  // step at fixed surface data (plastic cells) and its right-hand side, the step per unit
+  // change of the data Z, and the surface's affine response u0 + F t (the complementary
+  // values: displacements at traction data, tractions at displacement data).
   std::vector<Index> plastic;
   std::vector<Matrix> slopes;
   Matrix Z, F;
@@ -472,20 +482,20 @@ ElastoplasticIncrement::ElastoplasticIncrement(ElastoplasticRegion& region, doub
   State& s = *s_;
   const Index m = s.m, d = s.d;
   s.compliance = CellKernels(region.type_, region.material_).stiffness().inverse();
-  s.traction = region.surface_traction_;
+  s.data = region.surface_data_;
   // The elastic predictor: the new load with the plastic strains of the last increment.
   s.committed.sigma0 = region.initial_stresses();
   s.committed.field = region.cell_fields_of(s.committed.sigma0);
   s.E.resize(d * m);
-  const Vector target = amplitude * region.load_stress_ + region.traction_stress_ * s.traction + s.committed.field;
+  const Vector target = amplitude * region.load_stress_ + region.data_stress_ * s.data + s.committed.field;
   for (Index e = 0; e < m; ++e) s.E.segment(d * e, d) = s.compliance * target.segment(d * e, d);
-  s.strain_per_traction.resize(d * m, region.surface_dofs_);
+  s.strain_per_datum.resize(d * m, region.surface_dofs_);
   for (Index e = 0; e < m; ++e)
-    s.strain_per_traction.middleRows(d * e, d) = s.compliance * region.traction_stress_.middleRows(d * e, d);
+    s.strain_per_datum.middleRows(d * e, d) = s.compliance * region.data_stress_.middleRows(d * e, d);
   s.held.assign(static_cast<std::size_t>(m), plasticity::J2Hold::none);
   s.last_state.assign(static_cast<std::size_t>(m), 0);
   s.flips.assign(static_cast<std::size_t>(m), 0);
-  s.current = region.evaluate(s.E, amplitude, s.traction, s.held, s.committed);
+  s.current = region.evaluate(s.E, amplitude, s.data, s.held, s.committed);
   s.last_norm = s.current.norm;
 }
 
@@ -494,7 +504,7 @@ ElastoplasticIncrement::~ElastoplasticIncrement() = default;
 double ElastoplasticIncrement::residual() const { return s_->current.norm; }
 int ElastoplasticIncrement::iteration() const { return s_->iteration; }
 bool ElastoplasticIncrement::converged() const { return s_->current.norm <= s_->tolerance; }
-const Vector& ElastoplasticIncrement::traction() const { return s_->traction; }
+const Vector& ElastoplasticIncrement::data() const { return s_->data; }
 const Vector& ElastoplasticIncrement::surface_offset() const { return s_->u0; }
 const Matrix& ElastoplasticIncrement::surface_flexibility() const { return s_->F; }
 
@@ -521,7 +531,7 @@ bool ElastoplasticIncrement::linearise(std::string& failure) {
       s.held[k] = plasticity::J2Hold::on_surface, newly_held = true;
     s.last_state[k] = state;
   }
-  if (newly_held) s.current = region.evaluate(s.E, s.amplitude, s.traction, s.held, s.committed);
+  if (newly_held) s.current = region.evaluate(s.E, s.amplitude, s.data, s.held, s.committed);
   const bool stalled = s.stalled_for >= kStalledIterations;
   if (s.iteration == s.max_iterations || stalled || !std::isfinite(s.current.norm)) {
     const Vec2 at = region.cells_[static_cast<std::size_t>(s.current.worst)].centroid();
@@ -557,7 +567,7 @@ bool ElastoplasticIncrement::linearise(std::string& failure) {
   for (Index i = 0; i < p; ++i) {
     const Index e = s.plastic[static_cast<std::size_t>(i)];
     plastic_rhs.block(d * i, 0, d, 1) = -s.current.F.segment(d * e, d);
-    if (s.in_contact) plastic_rhs.block(d * i, 1, d, surface) = s.strain_per_traction.middleRows(d * e, d);
+    if (s.in_contact) plastic_rhs.block(d * i, 1, d, surface) = s.strain_per_datum.middleRows(d * e, d);
   }
   J += Matrix::Identity(d * p, d * p);
   if (p > 0) {
@@ -567,30 +577,39 @@ bool ElastoplasticIncrement::linearise(std::string& failure) {
   s.step_plastic = plastic_rhs.col(0);
   s.rhs = -s.current.F;
   if (s.in_contact) {
-    // The cells' displacement of the surface as the step moves the tractions from t to t':
+    // The cells' complementary values at the surface as the step moves the data from t to t':
     // G (sigma0 + S (a + Z (t' - t))), S = d sigma0 / d E of the plastic cells, a and Z
     // the step's parts (the columns solved above).
     Matrix GS(surface, d * p);
     for (Index j = 0; j < p; ++j) {
       const Index e = s.plastic[static_cast<std::size_t>(j)];
       GS.middleCols(d * j, d) =
-          region.surface_displacement_.middleCols(d * e, d) * s.current.slope[static_cast<std::size_t>(e)];
+          region.surface_response_.middleCols(d * e, d) * s.current.slope[static_cast<std::size_t>(e)];
     }
     s.Z = plastic_rhs.rightCols(surface);
     s.F = GS * s.Z;
-    s.u0 = region.surface_displacement_ * s.current.sigma0 + GS * (s.step_plastic - s.Z * s.traction);
+    s.u0 = region.surface_response_ * s.current.sigma0 + GS * (s.step_plastic - s.Z * s.data);
   }
   return true;
 }
 
-// The tractions to 1e-7 of the largest: near a limit load the linearised contact is
-// ill-conditioned (a perfectly plastic block at -2Y/sqrt3: its tractions wander by 3e-9
-// from iteration to iteration while F stays at round-off).
+// The data to 1e-7 of the largest of their kind (tractions, bond displacements): near a
+// limit load the linearised contact is ill-conditioned (a perfectly plastic block at
+// -2Y/sqrt3: its tractions wander by 3e-9 from iteration to iteration while F stays at
+// round-off).
 bool ElastoplasticIncrement::converged_with(const Vector& next) const {
-  const Vector change = next - s_->traction;
-  const double scale = next.size() > 0 ? next.cwiseAbs().maxCoeff() : 0.0;
-  const double moved = change.size() > 0 ? change.cwiseAbs().maxCoeff() : 0.0;
-  return converged() && moved <= 1e-7 * scale;
+  if (!converged()) return false;
+  const auto& nodes = s_->region.surface_nodes_;
+  for (const ConditionKind kind : {ConditionKind::traction, ConditionKind::displacement}) {
+    double scale = 0.0, moved = 0.0;
+    for (Index j = 0; j < next.size(); ++j) {
+      if (nodes[static_cast<std::size_t>(j / 2)].kind != kind) continue;
+      scale = std::max(scale, std::abs(next[j]));
+      moved = std::max(moved, std::abs(next[j] - s_->data[j]));
+    }
+    if (moved > 1e-7 * scale) return false;
+  }
+  return true;
 }
 
 void ElastoplasticIncrement::step(const Vector& next) {
@@ -598,11 +617,11 @@ void ElastoplasticIncrement::step(const Vector& next) {
   ElastoplasticRegion& region = s.region;
   const Index d = s.d;
   if (s.in_contact) {
-    const Vector change = next - s.traction;
+    const Vector change = next - s.data;
     s.step_plastic += s.Z * change;
-    s.rhs += s.strain_per_traction * change;
-    s.traction = next;
-    s.current = region.evaluate(s.E, s.amplitude, s.traction, s.held, s.committed);  // the line search's reference
+    s.rhs += s.strain_per_datum * change;
+    s.data = next;
+    s.current = region.evaluate(s.E, s.amplitude, s.data, s.held, s.committed);  // the line search's reference
   }
   // dE_Q = r_Q - (J - I)_QP dE_P = r_Q + C^-1 (K_QP S_P dE_P): one product over the
   // plastic cells' columns.
@@ -615,11 +634,11 @@ void ElastoplasticIncrement::step(const Vector& next) {
   for (std::size_t i = 0; i < s.plastic.size(); ++i)
     step.middleRows(d * s.plastic[i], d) = s.step_plastic.segment(d * static_cast<Index>(i), d);
   double fraction = 1.0;
-  auto next_evaluation = region.evaluate(s.E + step.col(0), s.amplitude, s.traction, s.held, s.committed);
+  auto next_evaluation = region.evaluate(s.E + step.col(0), s.amplitude, s.data, s.held, s.committed);
   constexpr int kHalvings = 10;
   for (int k = 0; k < kHalvings && !(next_evaluation.F.norm() < (1.0 - 1e-4 * fraction) * s.current.F.norm()); ++k) {
     fraction *= 0.5;
-    next_evaluation = region.evaluate(s.E + fraction * step.col(0), s.amplitude, s.traction, s.held, s.committed);
+    next_evaluation = region.evaluate(s.E + fraction * step.col(0), s.amplitude, s.data, s.held, s.committed);
   }
   s.E += fraction * step.col(0);
   s.current = std::move(next_evaluation);
@@ -649,7 +668,7 @@ bool ElastoplasticIncrement::settle_held() {
   }
   if (!changed) return false;
   ++s.settled;
-  s.current = region.evaluate(s.E, s.amplitude, s.traction, s.held, s.committed);
+  s.current = region.evaluate(s.E, s.amplitude, s.data, s.held, s.committed);
   return true;
 }
 
@@ -671,11 +690,11 @@ void ElastoplasticIncrement::commit(IncrementReport& report) {
     region.stress_[k] = update.stress;
     region.thickness_strain_[k] = update.strain[2];
   }
-  region.surface_traction_ = s.traction;
+  region.surface_data_ = s.data;
   region.amplitude_ = s.amplitude;
 }
 
-// Without contact: Newton's steps at the surface tractions of the last increment. Commits
+// Without contact: Newton's steps at the surface data of the last increment. Commits
 // the state when it converges; false otherwise (`failure` says where).
 bool ElastoplasticRegion::solve_increment(double amplitude, int max_iterations, double tolerance,
                                           IncrementReport& report, std::string& failure) {
@@ -685,7 +704,7 @@ bool ElastoplasticRegion::solve_increment(double amplitude, int max_iterations, 
       report.residual = increment.residual();
       return false;
     }
-    increment.step(increment.traction());
+    increment.step(increment.data());
   }
   increment.commit(report);
   return true;
@@ -729,12 +748,15 @@ BoundarySolution ElastoplasticRegion::boundary_solution() const {
   const Index m = static_cast<Index>(cells_.size());
   const Index d = components_;
   Vector coefficients(1 + surface_dofs_ + d * m);
-  coefficients << amplitude_, surface_traction_, initial_stresses();
+  coefficients << amplitude_, surface_data_, initial_stresses();
   BoundarySolution solution =
       recover_boundary_values(boundary_unknowns_ * coefficients, scaled(conditions_, amplitude_), constraints_);
   for (Index j = 0; j < surface_dofs_; ++j) {
-    const auto node = static_cast<std::size_t>(surface_nodes_[static_cast<std::size_t>(j / 2)]);
-    if (!(conditions_[node].on_axis && j % 2 == 0)) solution.traction[node][j % 2] = surface_traction_[j];
+    const auto& surface = surface_nodes_[static_cast<std::size_t>(j / 2)];
+    const auto node = static_cast<std::size_t>(surface.node);
+    if (conditions_[node].on_axis && j % 2 == 0) continue;
+    (surface.kind == ConditionKind::displacement ? solution.displacement : solution.traction)[node][j % 2] =
+        surface_data_[j];
   }
   return solution;
 }

@@ -1,5 +1,7 @@
 #include "bemcontact/contact/condensed.hpp"
 
+#include <algorithm>
+
 #include <Eigen/Sparse>
 
 #include "bemcontact/contact/free_motions.hpp"
@@ -97,7 +99,22 @@ struct ContactModel::Build {
   std::vector<Matrix> response, response0;                      // per region (form_affine_responses)
   std::vector<int> load_of_body;                                // per body: its rigid motion's load, or -1
   Matrix W;                                                     // 2n x nq: the jumps' map
+  // Per body (eliminate_bonds): its bond equations K U + L q + l0 = 0 (l0 per load group).
+  struct BondEquations {
+    Matrix K, L, l0;
+  };
+  std::vector<BondEquations> bond_equations;
 };
+
+// What with_added_responses takes from the condensation, for the bodies of elastoplastic
+// regions (empty elsewhere).
+struct ContactModel::KeptElimination {
+  std::vector<Build::BondEquations> bond_equations;  // per body
+  std::vector<Matrix> flexibility, G;                // per region: C_r and its data before the bonds
+  std::vector<std::vector<Index>> bond_unknown;      // per region
+};
+
+ContactModel::~ContactModel() = default;
 
 ContactModel::ContactModel(const ContactProblem& problem, const bem::ProgressCallback& progress)
     : problem_(problem), prepared_(prepare_contact(problem)) {
@@ -109,6 +126,26 @@ ContactModel::ContactModel(const ContactProblem& problem, const bem::ProgressCal
   form_affine_responses(build);
   assemble_jumps_and_loads(build);
   assemble_motion_equations(build);
+  bond_dofs_.clear();
+  for (const auto& v : build.variables) bond_dofs_.push_back(v.bond_dofs);
+  // Kept for the bodies of elastoplastic regions only (a region's C_r is dofs^2).
+  std::vector<bool> plastic_body(problem_.bodies.size(), false);
+  for (const auto& region : prepared_.regions)
+    if (region.definition.plasticity) plastic_body[region.body] = true;
+  if (std::find(plastic_body.begin(), plastic_body.end(), true) == plastic_body.end()) return;
+  kept_ = std::make_unique<KeptElimination>();
+  kept_->bond_equations.resize(problem_.bodies.size());
+  kept_->flexibility.resize(prepared_.regions.size());
+  kept_->G.resize(prepared_.regions.size());
+  kept_->bond_unknown.resize(prepared_.regions.size());
+  for (std::size_t b = 0; b < plastic_body.size(); ++b)
+    if (plastic_body[b]) kept_->bond_equations[b] = std::move(build.bond_equations[b]);
+  for (std::size_t r = 0; r < prepared_.regions.size(); ++r) {
+    if (!plastic_body[prepared_.regions[r].body]) continue;
+    kept_->flexibility[r] = std::move(build.flexibility[r]);
+    kept_->G[r] = std::move(build.G[r]);
+    kept_->bond_unknown[r] = std::move(build.variables[r].bond_unknown);
+  }
 }
 
 // Step 2-3 of docs/model.md: the pairs of every contact one after the other, and the
@@ -278,11 +315,14 @@ void ContactModel::eliminate_bonds(Build& build) {
   data_map_ = G;
   data_offset_.assign(region_count, Matrix());
   for (std::size_t r = 0; r < region_count; ++r) data_offset_[r] = Matrix::Zero(G[r].rows(), groups);
+  build.bond_equations.assign(problem.bodies.size(), {});
   for (std::size_t b = 0; b < problem.bodies.size(); ++b) {
     const Index nb = bonds[b].unknowns;
     if (nb == 0) continue;
-    Matrix K = Matrix::Zero(nb, nb), L = Matrix::Zero(nb, nq);
-    Matrix l0 = Matrix::Zero(nb, groups);
+    Matrix& K = build.bond_equations[b].K;
+    Matrix& L = build.bond_equations[b].L;
+    Matrix& l0 = build.bond_equations[b].l0;
+    K = Matrix::Zero(nb, nb), L = Matrix::Zero(nb, nq), l0 = Matrix::Zero(nb, groups);
     for (const int r : prepared_.body_regions[b]) {
       const auto& v = variables[r];
       const Matrix bond_rows = flexibility[r].topRows(v.bond_dofs);
@@ -500,6 +540,79 @@ void ContactModel::assemble_motion_equations(Build& build) {
   for (Index g = 0; g < groups; ++g) cp.loads[g].F0 = F0.col(g);
   cp.f = F.leftCols(2 * n);
   cp.f_delta = F.rightCols(K);
+}
+
+ResponseChange ContactModel::with_added_responses(const std::vector<AddedResponse>& added, double t) const {
+  if (!kept_) throw std::logic_error("with_added_responses: no elastoplastic region in the model");
+  const Index n = condensed_.pairs;
+  const auto amplitudes = problem_.group_amplitudes(t);
+  const Vector a = Eigen::Map<const Vector>(amplitudes.data(), static_cast<Index>(amplitudes.size()));
+  const auto& regions = prepared_.regions;
+  ResponseChange change;
+  change.M = Matrix::Zero(2 * n, 2 * n);
+  change.jump = Vector::Zero(2 * n);
+  change.data_map.resize(regions.size());
+  change.data_offset.resize(regions.size());
+  std::vector<const AddedResponse*> added_of(regions.size(), nullptr);
+  for (const auto& response : added) added_of.at(static_cast<std::size_t>(response.region)) = &response;
+  for (std::size_t b = 0; b < problem_.bodies.size(); ++b) {
+    const auto& members = prepared_.body_regions[b];
+    if (std::none_of(members.begin(), members.end(), [&](int r) { return added_of[r] != nullptr; })) continue;
+    for (const int r : members)
+      if (!kept_->G[r].rightCols(condensed_.motions).isZero(0.0))
+        throw std::logic_error("with_added_responses: a motion acts on body '" + problem_.bodies[b].name + "'");
+    // K' U = -(L' q + l0') with each added region's bond rows (S_r: its dofs' bond unknowns):
+    // K' = K + S^T F_bb S, L' = L + S^T F_b. G, l0' = l0 a + S^T u0_b.
+    const auto& equations = kept_->bond_equations[b];
+    const Index nb = equations.K.rows();
+    Matrix Uq, U0;
+    if (nb > 0) {
+      Matrix K = equations.K, L = equations.L;
+      Vector l0 = equations.l0 * a;
+      for (const int r : members) {
+        if (!added_of[r]) continue;
+        const Matrix& F = *added_of[r]->flexibility;
+        const Vector& u0 = *added_of[r]->offset;
+        const auto& unknown = kept_->bond_unknown[r];
+        const Index bond = bond_dofs_[r];
+        const Matrix FG = F.topRows(bond) * kept_->G[r];
+        for (Index i = 0; i < bond; ++i) {
+          for (Index j = 0; j < bond; ++j) K(unknown[i], unknown[j]) += F(i, j);
+          L.row(unknown[i]) += FG.row(i);
+          l0[unknown[i]] += u0[i];
+        }
+      }
+      const operators::DenseLU lu(std::move(K), "the bond equations of body '" + problem_.bodies[b].name +
+                                                    "' with its elastoplastic regions' cells");
+      Uq = -L;
+      lu.solve_in_place(Uq);
+      U0 = -l0;
+      lu.solve_in_place(U0);
+    }
+    // Each region's data D'_r q + d0'_r, and the jumps' change
+    //   J_r [(C_r + F_r)(D'_r q + d0'_r) + u0_r - C_r (D_r q + d0_r a)].
+    for (const int r : members) {
+      const auto& unknown = kept_->bond_unknown[r];
+      const Index bond = bond_dofs_[r];
+      Matrix D = kept_->G[r];
+      Vector d0 = Vector::Zero(D.rows());
+      for (Index i = 0; i < bond; ++i) D.row(i) += Uq.row(unknown[i]), d0[i] = U0(unknown[i], 0);
+      const Matrix& C = kept_->flexibility[r];
+      const Matrix dD = D.topRows(bond) - data_map_[r].topRows(bond);
+      const Vector dd0 = d0.head(bond) - data_offset_[r].topRows(bond) * a;
+      Matrix response = C.leftCols(bond) * dD.leftCols(2 * n);
+      Vector offset = C.leftCols(bond) * dd0;
+      if (const AddedResponse* plastic = added_of[r]) {
+        response += *plastic->flexibility * D.leftCols(2 * n);
+        offset += *plastic->flexibility * d0 + *plastic->offset;
+      }
+      change.M += jump_map_[r] * response;
+      change.jump += jump_map_[r] * offset;
+      change.data_map[r] = std::move(D);
+      change.data_offset[r] = std::move(d0);
+    }
+  }
+  return change;
 }
 
 Vec2 ContactModel::traction(Index pair, const Vector& x) const {

@@ -827,7 +827,7 @@ void take_history(const ContactProblem& problem, LoadHistory& history, ContactRe
 
 // Every region's mesh and final boundary solution, with stresses and resultants.
 void add_region_boundaries(const ContactProblem& problem, const ContactModel& model, const LoadHistory& history,
-                           ContactResult& result) {
+                           const PlasticCoupling* coupling, ContactResult& result) {
   const auto& regions = model.prepared().regions;
   for (std::size_t r = 0; r < regions.size(); ++r) {
     const auto& region = regions[r];
@@ -838,9 +838,12 @@ void add_region_boundaries(const ContactProblem& problem, const ContactModel& mo
     result.meshes.push_back(region.mesh);
     const auto plastic = std::find_if(result.plastic.begin(), result.plastic.end(),
                                       [&](const PlasticRegionResult& p) { return p.region == static_cast<int>(r); });
-    auto boundary = plastic != result.plastic.end()
-                        ? plastic->result.boundary  // the cells' part included, stresses with their plastic strain
-                        : model.region_solution(static_cast<int>(r), history.x, history.delta, problem.end_time);
+    // An elastoplastic region's has the cells' part and stresses with its plastic strain; an
+    // elastic region bonded to one has its bonds as the cells moved them.
+    std::optional<bem::BoundarySolution> bonded = coupling ? coupling->elastic_solution(static_cast<int>(r)) : std::nullopt;
+    auto boundary = plastic != result.plastic.end() ? plastic->result.boundary
+                    : bonded                         ? std::move(*bonded)
+                                 : model.region_solution(static_cast<int>(r), history.x, history.delta, problem.end_time);
     if (boundary.stress.empty())
       boundary.stress = bem::boundary_stresses(region.mesh, problem.analysis, material, boundary);
     // Conditions as the user gave them (the platen's are the solver's own).
@@ -936,7 +939,7 @@ ContactResult solve_on_meshes(const ContactProblem& problem, const bem::Progress
   result.warnings = model.prepared().warnings;
   for (const auto& plastic : result.plastic)
     result.warnings.insert(result.warnings.end(), plastic.result.warnings.begin(), plastic.result.warnings.end());
-  add_region_boundaries(problem, model, history, result);
+  add_region_boundaries(problem, model, history, coupling.get(), result);
   add_step_boundaries(problem, model, history, result);
   result.timings.add("boundary stresses", seconds_since(start));
   start = Clock::now();

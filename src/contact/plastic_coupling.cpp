@@ -16,12 +16,16 @@ std::vector<int> plastic_regions_in_contact(const ContactProblem& problem, const
                                               " is not in the model yet (docs/plasticity.md, Limits)");
     };
     found.push_back(static_cast<int>(r));
-    if (model.prepared().body_regions[regions[r].body].size() > 1) refuse("in a body of several regions");
-    const auto& factored = model.region(static_cast<int>(r));
-    for (const auto& node : factored.variable_nodes())
-      if (node.kind != bem::ConditionKind::traction) refuse("under a force load on its own boundary (a platen)");
-    if (factored.variable_dofs() != 2 * static_cast<Index>(factored.variable_nodes().size()))
-      refuse("held only by its contacts (give it displacements of its own)");
+    // No motion acts on its body: the coupling changes the jumps only (ContactModel::with_added_responses).
+    for (const int member : model.prepared().body_regions[regions[r].body]) {
+      const auto& factored = model.region(member);
+      const auto& nodes = factored.variable_nodes();
+      for (std::size_t k = static_cast<std::size_t>(model.bond_dofs(member) / 2); k < nodes.size(); ++k)
+        if (nodes[k].kind != bem::ConditionKind::traction)
+          refuse("in a body under a force load on its own boundary (a platen)");
+      if (factored.variable_dofs() != 2 * static_cast<Index>(nodes.size()))
+        refuse("in a body held only by its contacts (give it displacements of its own)");
+    }
     if (!problem.boundary_amplitudes.empty()) refuse("with boundaries of their own amplitude");
     if (problem.cycles.repeated()) refuse("over repeated load cycles");
     if (problem.record_steps) refuse("with every step recorded (record_steps)");
@@ -46,11 +50,9 @@ PlasticCoupling::PlasticCoupling(const ContactProblem& problem, const ContactMod
     region.cells = bem::region_cells_of(prepared.mesh, body, problem.analysis, memory_limit_bytes, used_bytes);
     used_bytes += bem::elastoplastic_region_bytes(static_cast<Index>(region.cells.size()), prepared.mesh.node_count(),
                                                   problem.analysis);
-    std::vector<Index> surface;
-    for (const auto& node : model.region(r).variable_nodes()) surface.push_back(node.node);
     region.plastic = std::make_unique<bem::ElastoplasticRegion>(prepared.mesh, body, problem.analysis,
                                                                  body.plasticity->hardening, region.cells,
-                                                                 std::move(surface));
+                                                                 model.region(r).variable_nodes());
     region.accepted = region.plastic->state();
     plastic_.push_back(std::move(region));
   }
@@ -65,9 +67,6 @@ std::vector<int> PlasticCoupling::regions() const {
 
 StepOutput PlasticCoupling::solve_step(const StepInput& input, const SolverOptions& options) {
   const CondensedProblem& condensed = model_.condensed();
-  const Index n = condensed.pairs;
-  const auto amplitudes = problem_.group_amplitudes(input.time);
-  const Eigen::Map<const Vector> group_amplitudes(amplitudes.data(), static_cast<Index>(amplitudes.size()));
   const double amplitude = problem_.data_amplitude.at(input.time);
   std::vector<std::unique_ptr<bem::ElastoplasticIncrement>> increments;
   for (auto& region : plastic_) {
@@ -83,11 +82,12 @@ StepOutput PlasticCoupling::solve_step(const StepInput& input, const SolverOptio
   StepOutput out;
   bool solved = false;
   int contact_iterations = 0;
-  std::vector<Vector> tractions(plastic_.size());
+  std::vector<Vector> data(plastic_.size());
+  ResponseChange change;
   for (;;) {
-    // Every region's Newton system, and the contact on their linearised plastic responses.
-    linearised.M = condensed.M;
-    StepInput in = input;
+    // Every region's Newton system, and the contact on their linearised plastic responses
+    // (each of their bodies' bonds eliminated again with them).
+    std::vector<AddedResponse> added;
     for (std::size_t k = 0; k < plastic_.size(); ++k) {
       std::string failure;
       if (!increments[k]->linearise(failure)) {
@@ -95,12 +95,13 @@ StepOutput PlasticCoupling::solve_step(const StepInput& input, const SolverOptio
         out.failure = label(plastic_[k]) + failure;
         return out;
       }
-      const int r = plastic_[k].region;
-      const Matrix& W = model_.jump_map(r);
-      linearised.M += W * increments[k]->surface_flexibility() * model_.data_map(r).leftCols(2 * n);
-      in.jump0 += W * increments[k]->surface_offset();
+      added.push_back({plastic_[k].region, &increments[k]->surface_flexibility(), &increments[k]->surface_offset()});
     }
+    change = model_.with_added_responses(added, input.time);
+    linearised.M = condensed.M + change.M;
     if (!problem_.tangential_coupling) drop_tangential_coupling(linearised);
+    StepInput in = input;
+    in.jump0 += change.jump;
     in.problem = &linearised;
     in.newton_cache = nullptr;  // the operator changes from iteration to iteration
     if (solved) in.x_start = out.x, in.delta_start = out.delta, in.state_start = out.state;
@@ -116,17 +117,22 @@ StepOutput PlasticCoupling::solve_step(const StepInput& input, const SolverOptio
     q << out.x, out.delta;
     bool converged = true;
     for (std::size_t k = 0; k < plastic_.size(); ++k) {
-      const int r = plastic_[k].region;
-      tractions[k] = model_.data_map(r) * q + model_.data_offset(r) * group_amplitudes;
-      converged = converged && increments[k]->converged_with(tractions[k]);
+      data[k] = change.data(plastic_[k].region, q);
+      converged = converged && increments[k]->converged_with(data[k]);
     }
     if (converged) {
       bool settled = false;
       for (auto& increment : increments) settled = increment->settle_held() || settled;
-      if (!settled) break;
+      if (!settled) {
+        // The data of every region of those bodies, for their boundary solutions.
+        last_data_.assign(change.data_map.size(), Vector());
+        for (std::size_t r = 0; r < change.data_map.size(); ++r)
+          if (change.data_map[r].size() > 0) last_data_[r] = change.data(static_cast<int>(r), q);
+        break;
+      }
       continue;
     }
-    for (std::size_t k = 0; k < plastic_.size(); ++k) increments[k]->step(tractions[k]);
+    for (std::size_t k = 0; k < plastic_.size(); ++k) increments[k]->step(data[k]);
   }
   for (std::size_t k = 0; k < plastic_.size(); ++k) increments[k]->commit(plastic_[k].last_report);
   out.newton_iterations = contact_iterations;
@@ -134,6 +140,8 @@ StepOutput PlasticCoupling::solve_step(const StepInput& input, const SolverOptio
 }
 
 void PlasticCoupling::accept(double time) {
+  accepted_data_ = last_data_;
+  accepted_time_ = time;
   for (auto& region : plastic_) {
     region.accepted = region.plastic->state();
     const auto& prepared = model_.prepared().regions[static_cast<std::size_t>(region.region)];
@@ -162,6 +170,14 @@ bem::ElastoplasticResult PlasticCoupling::result(std::size_t k) const {
     out.warnings.push_back(std::move(*warning));
   out.timings = timings_;
   return out;
+}
+
+std::optional<bem::BoundarySolution> PlasticCoupling::elastic_solution(int r) const {
+  const auto k = static_cast<std::size_t>(r);
+  if (k >= accepted_data_.size() || accepted_data_[k].size() == 0) return std::nullopt;
+  for (const auto& region : plastic_)
+    if (region.region == r) return std::nullopt;
+  return model_.region(r).solve_with_amplitudes(accepted_data_[k], problem_.group_amplitudes(accepted_time_));
 }
 
 bem::PlasticCellFields PlasticCoupling::cell_fields(std::size_t k) const { return plastic_.at(k).plastic->cell_fields(); }

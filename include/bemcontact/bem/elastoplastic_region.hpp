@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "bemcontact/bem/boundary_system.hpp"
+#include "bemcontact/bem/factored_body.hpp"
 #include "bemcontact/bem/problem.hpp"
 #include "bemcontact/bem/solution.hpp"
 #include "bemcontact/geometry/mesh.hpp"
@@ -57,7 +58,7 @@ struct ElastoplasticState {
   std::vector<plasticity::J2State> states;
   std::vector<plasticity::Mandel> stress;
   std::vector<double> thickness_strain;
-  Vector surface_traction;
+  Vector surface_data;
   double amplitude = 0.0;
 };
 
@@ -93,14 +94,14 @@ class PlasticCellFields {
 
 class ElastoplasticRegion;
 
-// One increment's Newton on a region's cell strains (and its surface tractions, in
-// contact), in its phases, so that one contact can couple several regions
-// (contact/plastic_coupling.hpp):
+// One increment's Newton on a region's cell strains (and its surface data, in contact: the
+// contact's tractions and the bonds' displacements), in its phases, so that one contact can
+// couple several regions (contact/plastic_coupling.hpp):
 //   linearise       Newton's system at the present iterate (cells held on the yield surface,
-//                   the failure checks), and in contact the cells' displacement of the
-//                   surface nodes as an affine map of their tractions, u0 + F t;
-//   converged_with  the iterate solves the increment with the tractions t the contact gave;
-//   step            Newton's step to those tractions, with a backtracking line search;
+//                   the failure checks), and in contact the cells' complementary values at
+//                   the surface nodes as an affine map of their data, u0 + F t;
+//   converged_with  the iterate solves the increment with the data t the model gave;
+//   step            Newton's step to those data, with a backtracking line search;
 //   settle_held     once converged, cells held by Newton set to the state the solution asks;
 //   commit          the increment's state kept in the region.
 class ElastoplasticIncrement {
@@ -116,14 +117,16 @@ class ElastoplasticIncrement {
   bool converged() const;   // residual() <= tolerance (without contact: the end)
   // False, with where and why, when Newton has failed (iterations, a stall, not finite).
   bool linearise(std::string& failure);
-  const Vector& traction() const;  // the surface tractions of the iterate
-  const Vector& surface_offset() const;       // u0 (in contact, after linearise)
-  const Matrix& surface_flexibility() const;  // F
+  const Vector& data() const;  // the surface data of the iterate
+  // In contact, after linearise: the cells' complementary values at the surface (u0) and
+  // their change per unit datum (F).
+  const Vector& surface_offset() const;
+  const Matrix& surface_flexibility() const;
   bool converged_with(const Vector& next) const;
   // Once converged: the held cells set to the state the solution asks (true when one
   // changed: Newton goes on).
   bool settle_held();
-  void step(const Vector& next);  // next = traction() without contact
+  void step(const Vector& next);  // next = data() without contact
   void commit(IncrementReport& report);
 
  private:
@@ -134,11 +137,11 @@ class ElastoplasticIncrement {
 class ElastoplasticRegion {
  public:
   // Throws Error for a bad hardening (the reader checks it first), SolverError for a
-  // singular system. `surface_nodes` carry tractions set from outside (a contact), in
-  // place of the body's own conditions there.
+  // singular system. `surface_nodes` carry data set from outside, in place of the body's
+  // own conditions there: tractions (a contact) or displacements (a bond).
   ElastoplasticRegion(const geometry::BoundaryMesh& mesh, const BodyDefinition& body, AnalysisType type,
                       const plasticity::J2Hardening& hardening, std::vector<plasticity::Cell> cells,
-                      std::vector<Index> surface_nodes = {});
+                      std::vector<VariableNode> surface_nodes = {});
   ElastoplasticRegion(ElastoplasticRegion&&) noexcept;
   ~ElastoplasticRegion();
 
@@ -174,7 +177,7 @@ class ElastoplasticRegion {
     Vector sigma0, field;
   };
   struct Evaluation;
-  Evaluation evaluate(const Vector& E, double amplitude, const Vector& traction,
+  Evaluation evaluate(const Vector& E, double amplitude, const Vector& data,
                       const std::vector<plasticity::J2Hold>& held, const CommittedFields& committed) const;
   bool solve_increment(double amplitude, int max_iterations, double tolerance, IncrementReport& report,
                        std::string& failure);
@@ -186,19 +189,21 @@ class ElastoplasticRegion {
   std::vector<plasticity::Cell> cells_;
   std::vector<NodeCondition> conditions_;
   std::vector<ConstraintEquation> constraints_;
-  std::vector<Index> surface_nodes_;
+  std::vector<VariableNode> surface_nodes_;
   Index surface_dofs_ = 0;  // 2 per surface node
-  // A^-1 [b | T | B]: the load at amplitude 1, unit surface tractions, the cells' domain term
+  // A^-1 [b | T | B]: the load at amplitude 1, unit surface data, the cells' domain term
   Matrix boundary_unknowns_;
   Vector load_stress_;    // s: C E per unit amplitude (components_ per cell: tensor components)
-  Matrix traction_stress_;  // H: C E per unit surface traction
+  Matrix data_stress_;  // H: C E per unit surface datum
   // K: C E per unit initial stress component of each cell; a column's direct fields are
   // added when first needed (a cache: filled by const members).
   mutable Matrix cell_operator_;
   mutable std::vector<char> direct_columns_;  // per cell: its direct fields added
   std::vector<std::vector<std::pair<Vec2, double>>> mean_points_;  // each cell's (point, weight)
-  Matrix surface_displacement_;  // G: the surface nodes' displacement per unit initial stress
-  Vector surface_traction_;      // the surface nodes' tractions at the last increment's end
+  // G: the surface nodes' complementary values (displacement at a traction datum, traction at
+  // a displacement datum) per unit initial stress
+  Matrix surface_response_;
+  Vector surface_data_;  // the surface nodes' data at the last increment's end
   std::vector<plasticity::J2State> states_;
   std::vector<plasticity::Mandel> stress_;
   std::vector<double> thickness_strain_;  // plane stress: each cell's eps_33 of the last increment

@@ -72,6 +72,29 @@ inline std::vector<Index> pair_groups(const CondensedProblem& problem) {
 // depend on the tangential tractions (M's w_n rows lose their tau columns).
 void drop_tangential_coupling(CondensedProblem& problem);
 
+// A region's further response at its variable nodes: its complementary values gain
+// F d_r + u0 (an elastoplastic region's cells linearised at an iterate:
+// contact/plastic_coupling.hpp).
+struct AddedResponse {
+  int region = -1;
+  const Matrix* flexibility = nullptr;  // F: dofs x dofs
+  const Vector* offset = nullptr;       // u0: dofs, at the step's loads
+};
+
+// The condensed problem with added responses at pseudo-time t: the change of the jumps
+// (the motions' columns and equations are unchanged: no motion acts on those bodies) and
+// the data of every region of the bodies concerned.
+struct ResponseChange {
+  Matrix M;     // 2N x 2N: added to the condensed M
+  Vector jump;  // 2N: added to w0(t)
+  // Per region (empty for those of other bodies): its data D'_r q + d0'_r.
+  std::vector<Matrix> data_map;
+  std::vector<Vector> data_offset;
+  Vector data(int r, const Vector& q) const {
+    return data_map[static_cast<std::size_t>(r)] * q + data_offset[static_cast<std::size_t>(r)];
+  }
+};
+
 // Every elastic region factored once (bem::FactoredBody) with its interface nodes as
 // variable nodes: bond nodes (displacement data: the decomposition's conforming method),
 // contact zone nodes (traction data) and platen nodes (displacement data). Its
@@ -83,6 +106,7 @@ void drop_tangential_coupling(CondensedProblem& problem);
 class ContactModel {
  public:
   ContactModel(const ContactProblem& problem, const bem::ProgressCallback& progress = {});
+  ~ContactModel();
 
   const ContactProblem& problem() const { return problem_; }
   const PreparedContact& prepared() const { return prepared_; }
@@ -110,6 +134,12 @@ class ContactModel {
   const Matrix& data_map(int r) const { return data_map_[static_cast<std::size_t>(r)]; }
   const Matrix& data_offset(int r) const { return data_offset_[static_cast<std::size_t>(r)]; }
   const Matrix& jump_map(int r) const { return jump_map_[static_cast<std::size_t>(r)]; }
+  // Region r's first variable dofs that are its bonds' displacements (the rest: its
+  // contacts' tractions, platens' displacements, then the free motions' pins).
+  Index bond_dofs(int r) const { return bond_dofs_[static_cast<std::size_t>(r)]; }
+  // Step 5 again with regions' added responses (their bodies only; the model is kept for
+  // the bodies of elastoplastic regions): K' U = -(L' q + l0'(t)) with K' = K + S^T F S.
+  ResponseChange with_added_responses(const std::vector<AddedResponse>& added, double t) const;
 
  private:
   // The condensation in the steps of docs/model.md, each filling the state it hands on.
@@ -132,6 +162,10 @@ class ContactModel {
   std::vector<Matrix> data_map_;     // D_r
   std::vector<Matrix> data_offset_;  // d0_r per load group (columns)
   std::vector<Matrix> jump_map_;     // per region: the jumps per unit complementary value at its variable nodes
+  std::vector<Index> bond_dofs_;     // per region
+  // What step 5 needs again (with_added_responses), for the bodies of elastoplastic regions.
+  struct KeptElimination;
+  std::unique_ptr<KeptElimination> kept_;
 };
 
 }  // namespace bemcontact::contact

@@ -1,16 +1,19 @@
 #pragma once
 // Elastoplastic regions in contact (docs/plasticity.md, "In contact"): the contact model
 // (condensed.hpp) holds every region as elastic; each elastoplastic region's cells add to
-// its contact nodes' displacement G sigma0, and its contact tractions t_r = D_r q strain the
-// cells (bem::ElastoplasticRegion's surface nodes). Each load step is one Newton iteration
-// on the cells' strains of every region and the contact together
-// (bem::ElastoplasticIncrement): in every iteration the condensed problem is solved with
-// each region's plastic response linearised at its present strains,
-//   w = w0 + sum_r W_r u0_r + (M + sum_r W_r F_r D_r) x + b delta,
-// u0_r + F_r t_r the cells' displacement of region r's contact nodes, by the step solver of
-// the contact's law (step_solvers.hpp), so that the contact laws stay in their one place.
-// The plastic states advance only when the history accepts the step.
+// the complementary values at its variable nodes (displacements at its contact nodes,
+// tractions at its bond nodes) G sigma0, and its data there d_r (the contact's tractions,
+// the bonds' displacements) strain the cells (bem::ElastoplasticRegion's surface nodes).
+// Each load step is one Newton iteration on the cells' strains of every region and the
+// contact together (bem::ElastoplasticIncrement): in every iteration each region's plastic
+// response is linearised at its present strains, u0_r + F_r d_r, its body's bonds are
+// eliminated again with it (ContactModel::with_added_responses), and the condensed problem
+//   w = w0 + dw0 + (M + dM) x + b delta
+// is solved by the step solver of the contact's law (step_solvers.hpp), so that the
+// contact laws stay in their one place. The plastic states advance only when the history
+// accepts the step.
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "bemcontact/bem/elastoplastic_analysis.hpp"
@@ -20,9 +23,9 @@
 namespace bemcontact::contact {
 
 // The model's elastoplastic regions in contact, in the model's order (none: empty);
-// InputError at a yield_stress for what the coupling does not serve: an elastoplastic body
-// of several regions, a platen or a free motion on it, boundaries of their own amplitude,
-// repeated load cycles, recorded steps, compressed operators.
+// InputError at a yield_stress for what the coupling does not serve: a platen or a free
+// motion on its body, boundaries of their own amplitude, repeated load cycles, recorded
+// steps, compressed operators.
 std::vector<int> plastic_regions_in_contact(const ContactProblem& problem, const ContactModel& model);
 
 class PlasticCoupling {
@@ -44,6 +47,10 @@ class PlasticCoupling {
   bem::ElastoplasticResult result(std::size_t k) const;
   // The k-th region's cells' part of the displacement and stress (interior points).
   bem::PlasticCellFields cell_fields(std::size_t k) const;
+  // The boundary solution of an elastic region r bonded to an elastoplastic one at the last
+  // accepted step (its bonds move with the cells); none for the other regions, whose
+  // solution is the model's (ContactModel::region_solution).
+  std::optional<bem::BoundarySolution> elastic_solution(int r) const;
 
  private:
   struct PlasticRegion {
@@ -58,6 +65,8 @@ class PlasticCoupling {
   const ContactModel& model_;
   std::vector<PlasticRegion> plastic_;
   bem::PhaseTimings timings_;
+  std::vector<Vector> last_data_, accepted_data_;  // per region of their bodies (others empty)
+  double accepted_time_ = 0.0;
 };
 
 }  // namespace bemcontact::contact

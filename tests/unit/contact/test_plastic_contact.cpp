@@ -308,6 +308,80 @@ TEST(PlasticContact, ElasticBallOnASupportThatStaysElasticIsTheElasticContact) {
   for (std::size_t i = 0; i < s.size(); ++i) EXPECT_NEAR(s[i], t[i], 1e-7 * peak) << i;
 }
 
+// A block of two regions side by side, bonded along x = 1: "left" over [0, 1] x [0, 1]
+// (elastoplastic, yield stress 250, hardening E/10, roller at x = 0) and "right" over
+// [1, 2] x [0, 1] with the material `right_material`, both on a roller base; a smooth rigid
+// flat pushes both tops `depth` down in 10 steps.
+std::string bonded_block_text(const std::string& right_material, double depth) {
+  const auto region = [](const std::string& name, double x0, const std::string& material, const std::string& left,
+                         const std::string& right) {
+    const auto x = [&](double dx) { return std::to_string(x0 + dx); };
+    return "[[body.region]]\nname = \"" + name + "\"\n[body.region.material]\n" + material +
+           "[[body.region.boundary]]\nname = \"" + name + " bottom\"\nfrom = [" + x(0) + ", 0.0]\nto = [" + x(1) +
+           ", 0.0]\nelements = 8\nu2 = 0.0\nt1 = 0.0\n[[body.region.boundary]]\nname = \"" + name +
+           " right\"\nfrom = [" + x(1) + ", 0.0]\nto = [" + x(1) + ", 1.0]\nelements = 8\n" + right +
+           "[[body.region.boundary]]\nname = \"" + name + " top\"\nfrom = [" + x(1) + ", 1.0]\nto = [" + x(0) +
+           ", 1.0]\nelements = 8\n[[body.region.boundary]]\nname = \"" + name + " left\"\nfrom = [" + x(0) +
+           ", 1.0]\nto = [" + x(0) + ", 0.0]\nelements = 8\n" + left;
+  };
+  const std::string bond = "interface = \"bond\"\n";
+  std::string text = "title = \"bonded block\"\nanalysis = \"plane_strain\"\n[[body]]\nname = \"block\"\n" +
+                     region("left", 0.0,
+                            "E = 200000.0\nnu = 0.3\nyield_stress = 250.0\nhardening = 20000.0\n"
+                            "[body.region.cells]\nsize = 0.25\n",
+                            "u1 = 0.0\nt2 = 0.0\n", bond) +
+                     region("right", 1.0, right_material, bond, "");
+  text += "[[body]]\nname = \"platen\"\n[body.rigid]\nprofile = \"flat\"\ncenter = [1.0, 1.0]\nhalf_width = 2.0\n"
+          "displacement = [0.0, " + std::to_string(-depth) + "]\n";
+  for (const std::string side : {"left", "right"})
+    text += "[[contact]]\nname = \"" + side + "\"\nbody1 = \"block\"\nboundary1 = \"" + side +
+            " top\"\nbody2 = \"platen\"\nnormal = \"body1\"\n";
+  return text + "[solver]\nincrements = 10\n";
+}
+
+// Two regions side by side pressed by a flat stay uniform, each at its own stress: the
+// bond moves with the elastoplastic region's cells (its lateral plastic flow) and carries
+// no traction. Without the cells' part in the bond equations the bond would shear and the
+// fields would not be uniform. Right region elastic (E = 100 000: s22 = E eps / (1 - nu^2))
+// and elastoplastic (yield stress 400, each region its material point).
+TEST(PlasticContact, BondedRegionsSideBySidePressedByAFlatAreEachUniform) {
+  RunOptions options;
+  options.keep_tables = true;
+  const double Y = 250.0, eps = -0.01;
+  for (const bool right_plastic : {false, true}) {
+    const std::string right = right_plastic ? "E = 200000.0\nnu = 0.3\nyield_stress = 400.0\nhardening = 20000.0\n"
+                                              "[body.region.cells]\nsize = 0.25\n"
+                                            : "E = 100000.0\nnu = 0.3\n";
+    const auto output = run_problem(bonded_block_text(right, -eps), "bonded.toml", options);
+    const auto amplitudes = column(output.tables.at("left_plastic_steps.csv"), "amplitude").numbers;
+    const auto left = pressed_point_stress({200000.0, 0.3}, {Y, 20000.0, 0.0}, eps, amplitudes);
+    EXPECT_LT(left[1], -1.5 * Y);  // well past first yield
+    const double right_s22 = right_plastic ? pressed_point_stress({200000.0, 0.3}, {400.0, 20000.0, 0.0}, eps,
+                                                                  amplitudes)[1]
+                                           : 100000.0 * eps / (1.0 - 0.09);
+    const auto expect_cells = [&](const std::string& name, double s22) {
+      const auto& cells = output.tables.at(name + "_cells.csv");
+      ASSERT_EQ(column(cells, "s22").numbers.size(), 16u) << name;
+      for (std::size_t k = 0; k < 16; ++k) {
+        EXPECT_NEAR(column(cells, "s22").numbers[k], s22, 1e-7 * Y) << name << " cell " << k;
+        EXPECT_NEAR(column(cells, "s11").numbers[k], 0.0, 1e-7 * Y) << name << " cell " << k;
+        EXPECT_NEAR(column(cells, "s12").numbers[k], 0.0, 1e-7 * Y) << name << " cell " << k;
+      }
+    };
+    expect_cells("left", left[1]);
+    if (right_plastic) expect_cells("right", right_s22);
+    // Each contact's pairs carry their region's stress; every node of both boundaries too.
+    for (const auto& [name, s22] : {std::pair<std::string, double>{"left", left[1]}, {"right", right_s22}}) {
+      const auto& p = column(output.tables.at(name + ".csv"), "p_n").numbers;
+      ASSERT_EQ(p.size(), 9u) << name;
+      for (std::size_t i = 0; i < p.size(); ++i) EXPECT_NEAR(p[i], s22, 1e-6 * Y) << name << " pair " << i;
+      const auto& boundary = output.tables.at(name + "_boundary.csv");
+      for (const double s : column(boundary, "s22").numbers) EXPECT_NEAR(s, s22, 1e-5 * Y) << name;
+      for (const double s : column(boundary, "s12").numbers) EXPECT_NEAR(s, 0.0, 1e-5 * Y) << name;
+    }
+  }
+}
+
 // What the coupling does not serve is refused at the region's yield_stress, with its line,
 // before any cell is made.
 TEST(PlasticContact, RefusesWhatTheCouplingDoesNotServe) {
