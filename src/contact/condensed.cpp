@@ -551,6 +551,7 @@ ResponseChange ContactModel::with_added_responses(const std::vector<AddedRespons
   ResponseChange change;
   change.M = Matrix::Zero(2 * n, 2 * n);
   change.jump = Vector::Zero(2 * n);
+  change.changed.assign(regions.size(), 0);
   change.data_map.resize(regions.size());
   change.data_offset.resize(regions.size());
   std::vector<const AddedResponse*> added_of(regions.size(), nullptr);
@@ -608,6 +609,7 @@ ResponseChange ContactModel::with_added_responses(const std::vector<AddedRespons
       }
       change.M += jump_map_[r] * response;
       change.jump += jump_map_[r] * offset;
+      change.changed[r] = 1;
       change.data_map[r] = std::move(D);
       change.data_offset[r] = std::move(d0);
     }

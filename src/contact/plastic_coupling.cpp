@@ -127,7 +127,7 @@ StepOutput PlasticCoupling::solve_step(const StepInput& input, const SolverOptio
         // The data of every region of those bodies, for their boundary solutions.
         last_data_.assign(change.data_map.size(), Vector());
         for (std::size_t r = 0; r < change.data_map.size(); ++r)
-          if (change.data_map[r].size() > 0) last_data_[r] = change.data(static_cast<int>(r), q);
+          if (change.changed[r]) last_data_[r] = change.data(static_cast<int>(r), q);
         break;
       }
       continue;
@@ -174,7 +174,7 @@ bem::ElastoplasticResult PlasticCoupling::result(std::size_t k) const {
 
 std::optional<bem::BoundarySolution> PlasticCoupling::elastic_solution(int r) const {
   const auto k = static_cast<std::size_t>(r);
-  if (k >= accepted_data_.size() || accepted_data_[k].size() == 0) return std::nullopt;
+  if (k >= accepted_data_.size() || accepted_data_[k].size() == 0) return std::nullopt;  // not bonded to one
   for (const auto& region : plastic_)
     if (region.region == r) return std::nullopt;
   return model_.region(r).solve_with_amplitudes(accepted_data_[k], problem_.group_amplitudes(accepted_time_));

@@ -87,7 +87,8 @@ struct AddedResponse {
 struct ResponseChange {
   Matrix M;     // 2N x 2N: added to the condensed M
   Vector jump;  // 2N: added to w0(t)
-  // Per region (empty for those of other bodies): its data D'_r q + d0'_r.
+  // Per region: whether it is of those bodies, and then its data D'_r q + d0'_r.
+  std::vector<char> changed;
   std::vector<Matrix> data_map;
   std::vector<Vector> data_offset;
   Vector data(int r, const Vector& q) const {

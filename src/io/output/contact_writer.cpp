@@ -456,19 +456,21 @@ std::string contact_report_text(const contact::ContactProblem& problem, const co
     if (!contact.zone.passes.empty()) out += zone_text(problem.contacts[c], contact.zone);
     if (!contact.wear.empty()) out += wear_text(contact, result.rejected_jumps);
   }
-  if (problem.contacts.empty()) return out;
+  if (problem.contacts.empty() && result.plastic.empty()) return out;
   const auto& s = result.summary;
-  std::snprintf(line, sizeof line, "  %s algorithm, %d load step%s (%d redone in halves): newton %d, kalker %d, threshold %d, gmres cycles %d\n",
-                contact::to_string(problem.solver.algorithm), result.steps_taken, result.steps_taken == 1 ? "" : "s",
-                result.rejected_steps, s.newton_iterations,
-                s.kalker_iterations, s.threshold_iterations, s.gmres_cycles);
-  out += line;
-  if (result.steps_past_state_limit > 0) {
-    std::snprintf(line, sizeof line,
-                  "  %d step%s changed more pairs than max_state_changes: %s halves did not converge\n",
-                  result.steps_past_state_limit, result.steps_past_state_limit == 1 ? "" : "s",
-                  result.steps_past_state_limit == 1 ? "its" : "their");
+  if (!problem.contacts.empty()) {
+    std::snprintf(line, sizeof line, "  %s algorithm, %d load step%s (%d redone in halves): newton %d, kalker %d, threshold %d, gmres cycles %d\n",
+                  contact::to_string(problem.solver.algorithm), result.steps_taken, result.steps_taken == 1 ? "" : "s",
+                  result.rejected_steps, s.newton_iterations,
+                  s.kalker_iterations, s.threshold_iterations, s.gmres_cycles);
     out += line;
+    if (result.steps_past_state_limit > 0) {
+      std::snprintf(line, sizeof line,
+                    "  %d step%s changed more pairs than max_state_changes: %s halves did not converge\n",
+                    result.steps_past_state_limit, result.steps_past_state_limit == 1 ? "" : "s",
+                    result.steps_past_state_limit == 1 ? "its" : "their");
+      out += line;
+    }
   }
   if (result.plastic.empty()) {
     out += hertz_comparison(problem, s);  // an elastic closed form

@@ -382,6 +382,49 @@ TEST(PlasticContact, BondedRegionsSideBySidePressedByAFlatAreEachUniform) {
   }
 }
 
+// An axisymmetric cylinder (radius 1, height 2) of two elastoplastic regions stacked and
+// bonded along z = 1 (the bond meets the axis), both of the hardening material, on a
+// roller base, pressed 0.02 by a smooth rigid flat in 10 steps: uniaxial compression
+// eps_zz = -0.01, every cell at |s_zz| = (Y + H |eps|) / (1 + H / E) (monotonic: the
+// closed form, path free) and s_rr = s_tt = s_rz = 0.
+TEST(PlasticContact, AxisymmetricRegionsStackedAndBondedOnTheAxisAreUniaxial) {
+  const std::string material =
+      "[body.region.material]\nE = 200000.0\nnu = 0.3\nyield_stress = 250.0\nhardening = 20000.0\n"
+      "[body.region.cells]\nsize = 0.25\n";
+  const auto side = [](const std::string& name, const std::string& from, const std::string& to,
+                       const std::string& conditions) {
+    return "[[body.region.boundary]]\nname = \"" + name + "\"\nfrom = " + from + "\nto = " + to +
+           "\nelements = 8\n" + conditions;
+  };
+  const std::string text =
+      "title = \"stacked cylinder\"\nanalysis = \"axisymmetric\"\n[[body]]\nname = \"cylinder\"\n"
+      "[[body.region]]\nname = \"lower\"\n" + material +
+      side("base", "[0.0, 0.0]", "[1.0, 0.0]", "u2 = 0.0\nt1 = 0.0\n") + side("lower side", "[1.0, 0.0]", "[1.0, 1.0]", "") +
+      side("bond", "[1.0, 1.0]", "[0.0, 1.0]", "interface = \"bond\"\n") + side("lower axis", "[0.0, 1.0]", "[0.0, 0.0]", "") +
+      "[[body.region]]\nname = \"upper\"\n" + material +
+      side("bond above", "[0.0, 1.0]", "[1.0, 1.0]", "interface = \"bond\"\n") +
+      side("upper side", "[1.0, 1.0]", "[1.0, 2.0]", "") + side("top", "[1.0, 2.0]", "[0.0, 2.0]", "") +
+      side("upper axis", "[0.0, 2.0]", "[0.0, 1.0]", "") +
+      "[[body]]\nname = \"platen\"\n[body.rigid]\nprofile = \"flat\"\ncenter = [0.5, 2.0]\nhalf_width = 1.0\n"
+      "displacement = [0.0, -0.02]\n[[contact]]\nbody1 = \"cylinder\"\nboundary1 = \"top\"\nbody2 = \"platen\"\n"
+      "normal = \"body1\"\n[solver]\nincrements = 10\n";
+  RunOptions options;
+  options.keep_tables = true;
+  const auto output = run_problem(text, "cylinder.toml", options);
+  const double E = 200000.0, Y = 250.0, H = 20000.0;
+  const double szz = -(Y + H * 0.01) / (1.0 + H / E);
+  for (const std::string name : {"lower", "upper"}) {
+    const auto& cells = output.tables.at(name + "_cells.csv");
+    ASSERT_GE(column(cells, "s22").numbers.size(), 16u) << name;
+    for (std::size_t k = 0; k < column(cells, "s22").numbers.size(); ++k) {
+      EXPECT_NEAR(column(cells, "s22").numbers[k], szz, 1e-7 * Y) << name << " cell " << k;
+      for (const char* zero : {"s11", "s12", "s33"})
+        EXPECT_NEAR(column(cells, zero).numbers[k], 0.0, 1e-7 * Y) << name << " cell " << k << " " << zero;
+    }
+  }
+  for (const double p : column(output.tables.at("contact.csv"), "p_n").numbers) EXPECT_NEAR(p, szz, 1e-6 * Y);
+}
+
 // What the coupling does not serve is refused at the region's yield_stress, with its line,
 // before any cell is made.
 TEST(PlasticContact, RefusesWhatTheCouplingDoesNotServe) {
