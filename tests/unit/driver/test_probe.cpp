@@ -7,6 +7,7 @@
 #include <array>
 #include <cmath>
 #include <tuple>
+#include <vector>
 #include <limits>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -23,6 +24,7 @@
 #include "bemcontact/reference/hertz.hpp"
 #include "bemcontact/reference/lame.hpp"
 #include "bemcontact/reference/two_layer_ring.hpp"
+#include "support/bonded_tube.hpp"
 #include "support/example_text.hpp"
 
 namespace bemcontact::driver {
@@ -417,8 +419,9 @@ std::vector<std::array<double, 8>> interior_rows(const std::string& csv) {
   return rows;
 }
 
-// An elastoplastic run, alone (the tube after unloading: residual stresses) or in contact
-// (the Brinell ball at its peak): the probe makes the cells again, reads their plastic
+// An elastoplastic run, alone (the tube after unloading: residual stresses), in contact
+// (the Brinell ball at its peak) or bonded to an elastic region (the tube of two rings,
+// both regions' points): the probe makes the cells again, reads their plastic
 // strains back from <body>_cells.csv (full precision) and adds their fields to Somigliana's
 // of the boundary values, as the run does at its interior points: the same values to
 // round-off. Without the cells the values are far off (the check that they count).
@@ -430,15 +433,30 @@ TEST(Probe, ElastoplasticRunsAloneOrInContactEqualTheRunsInteriorPoints) {
   ball = replaced(replaced(ball, "end_time = 2.0", "end_time = 1.0"), "increments = 20", "increments = 2");
   ball = replaced(ball, "refine_size = \"cell / 4\"\n",
                   "refine_size = \"cell / 4\"\n[body.interior]\ngrid = { x = [0.05, 1.55, 4], y = [-1.55, -0.05, 4] }\n");
-  for (const auto& [text, name, interior] : {std::tuple{tube, "tube.toml", "tube_interior.csv"},
-                                             std::tuple{ball, "brinell.toml", "block_interior.csv"}}) {
-    auto folder = run(text, name);
-    const auto expected = interior_rows(folder.files.at(interior));
-    ASSERT_GE(expected.size(), 10u) << name;
+  // The tube of an elastoplastic inner ring bonded to an elastic outer one (no contact).
+  const std::string bonded = replaced(
+      test_support::bonded_tube(0.32, "[body.region.interior]\ngrid = { x = [0.05, 1.95, 8], y = [0.05, 1.95, 8] }\n"),
+      "increments = 20", "increments = 4");
+  struct Case {
+    std::string text, name, cells;
+    std::vector<std::string> interiors;
+  };
+  for (const auto& c : {Case{tube, "tube.toml", "tube_cells.csv", {"tube_interior.csv"}},
+                        Case{ball, "brinell.toml", "block_cells.csv", {"block_interior.csv"}},
+                        Case{bonded, "bonded.toml", "inner_ring_cells.csv",
+                             {"inner_ring_interior.csv", "outer_ring_interior.csv"}}}) {
+    auto folder = run(c.text, c.name);
+    std::vector<std::array<double, 8>> expected;
+    for (const auto& interior : c.interiors) {
+      const auto rows = interior_rows(folder.files.at(interior));
+      EXPECT_GE(rows.size(), 8u) << interior;
+      expected.insert(expected.end(), rows.begin(), rows.end());
+    }
+    ASSERT_GE(expected.size(), 10u) << c.name;
     std::vector<Vec2> points;
     for (const auto& row : expected) points.emplace_back(row[0], row[1]);
     const auto rows = probe(folder, listed(points));
-    ASSERT_EQ(rows.size(), expected.size()) << name;
+    ASSERT_EQ(rows.size(), expected.size()) << c.name;
     double largest = 0.0, off = 0.0, cells_part = 0.0;
     for (std::size_t k = 0; k < rows.size(); ++k) {
       const auto& e = expected[k];
@@ -446,13 +464,12 @@ TEST(Probe, ElastoplasticRunsAloneOrInContactEqualTheRunsInteriorPoints) {
       const auto& s = rows[k].s;
       off = std::max({off, std::abs(s.s11 - e[4]), std::abs(s.s22 - e[5]), std::abs(s.s12 - e[6]),
                       std::abs(s.s33 - e[7])});
-      EXPECT_NEAR(rows[k].u.x(), e[2], 1e-12 * std::abs(e[2]) + 1e-15) << name << " point " << k;
-      EXPECT_NEAR(rows[k].u.y(), e[3], 1e-12 * std::abs(e[3]) + 1e-15) << name << " point " << k;
+      EXPECT_NEAR(rows[k].u.x(), e[2], 1e-12 * std::abs(e[2]) + 1e-15) << c.name << " point " << k;
+      EXPECT_NEAR(rows[k].u.y(), e[3], 1e-12 * std::abs(e[3]) + 1e-15) << c.name << " point " << k;
     }
-    EXPECT_LE(off, 1e-10 * largest) << name;
+    EXPECT_LE(off, 1e-10 * largest) << c.name;
     // The cells' plastic strains set to zero: Somigliana's of the boundary values alone.
-    std::string cells_csv = folder.files.at(std::string(name) == "tube.toml" ? "tube_cells.csv" : "block_cells.csv");
-    std::istringstream in(cells_csv);
+    std::istringstream in(folder.files.at(c.cells));
     std::string line, zeroed;
     std::getline(in, line);
     zeroed = line + "\n";
@@ -460,15 +477,15 @@ TEST(Probe, ElastoplasticRunsAloneOrInContactEqualTheRunsInteriorPoints) {
       std::vector<std::string> f;
       std::stringstream fields(line);
       for (std::string field; std::getline(fields, field, ',');) f.push_back(field);
-      for (std::size_t c = 5; c <= 8; ++c) f[c] = "0";
-      for (std::size_t c = 0; c < f.size(); ++c) zeroed += (c ? "," : "") + f[c];
+      for (std::size_t k = 5; k <= 8; ++k) f[k] = "0";
+      for (std::size_t k = 0; k < f.size(); ++k) zeroed += (k ? "," : "") + f[k];
       zeroed += "\n";
     }
-    folder.files[std::string(name) == "tube.toml" ? "tube_cells.csv" : "block_cells.csv"] = zeroed;
+    folder.files[c.cells] = zeroed;
     const auto elastic = probe(folder, listed(points));
     for (std::size_t k = 0; k < rows.size(); ++k)
       cells_part = std::max(cells_part, std::abs(elastic[k].s.s22 - rows[k].s.s22));
-    EXPECT_GE(cells_part, 0.05 * largest) << name;
+    EXPECT_GE(cells_part, 0.05 * largest) << c.name;
   }
 }
 
