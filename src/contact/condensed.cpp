@@ -104,6 +104,9 @@ struct ContactModel::Build {
     Matrix K, L, l0;
   };
   std::vector<BondEquations> bond_equations;
+  // Per region (assemble_motion_equations): the motions' equations per unit complementary
+  // value at its variable nodes (a platen's weights, a pin's reaction), K x dofs.
+  std::vector<Matrix> motion_rows;
 };
 
 // What with_added_responses takes from the condensation, for the bodies of elastoplastic
@@ -111,6 +114,7 @@ struct ContactModel::Build {
 struct ContactModel::KeptElimination {
   std::vector<Build::BondEquations> bond_equations;  // per body
   std::vector<Matrix> flexibility, G;                // per region: C_r and its data before the bonds
+  std::vector<Matrix> motion_rows;                   // per region
   std::vector<std::vector<Index>> bond_unknown;      // per region
 };
 
@@ -137,6 +141,7 @@ ContactModel::ContactModel(const ContactProblem& problem, const bem::ProgressCal
   kept_->bond_equations.resize(problem_.bodies.size());
   kept_->flexibility.resize(prepared_.regions.size());
   kept_->G.resize(prepared_.regions.size());
+  kept_->motion_rows.resize(prepared_.regions.size());
   kept_->bond_unknown.resize(prepared_.regions.size());
   for (std::size_t b = 0; b < plastic_body.size(); ++b)
     if (plastic_body[b]) kept_->bond_equations[b] = std::move(build.bond_equations[b]);
@@ -144,6 +149,7 @@ ContactModel::ContactModel(const ContactProblem& problem, const bem::ProgressCal
     if (!plastic_body[prepared_.regions[r].body]) continue;
     kept_->flexibility[r] = std::move(build.flexibility[r]);
     kept_->G[r] = std::move(build.G[r]);
+    kept_->motion_rows[r] = std::move(build.motion_rows[r]);
     kept_->bond_unknown[r] = std::move(build.variables[r].bond_unknown);
   }
 }
@@ -500,6 +506,9 @@ void ContactModel::assemble_motion_equations(Build& build) {
   auto& cp = condensed_;
   Matrix F = Matrix::Zero(K, nq);
   Matrix F0 = Matrix::Zero(K, groups);
+  auto& motion_rows = build.motion_rows;
+  motion_rows.assign(prepared_.regions.size(), Matrix());
+  for (std::size_t r = 0; r < motion_rows.size(); ++r) motion_rows[r] = Matrix::Zero(K, response[r].rows());
   cp.force = Vector::Zero(K);
   cp.force_amplitude.assign(K, Amplitude{});
   for (std::size_t k = 0; k < problem.forces.size(); ++k) {
@@ -525,17 +534,18 @@ void ContactModel::assemble_motion_equations(Build& build) {
     }
     const auto& platen = prepared_.platens[p];
     const Index of = block_offset(variables[platen.region], BlockKind::platen, static_cast<std::size_t>(p));
-    for (Index l = 0; l < static_cast<Index>(platen.nodes.size()); ++l) {
-      F.row(row) += platen.weights[l] * response[platen.region].row(of + 2 * l + load.component);
-      F0.row(row) += platen.weights[l] * response0[platen.region].row(of + 2 * l + load.component);
-    }
+    for (Index l = 0; l < static_cast<Index>(platen.nodes.size()); ++l)
+      motion_rows[platen.region](row, of + 2 * l + load.component) += platen.weights[l];
   }
   // A free motion's equation: its pin's reaction vanishes (the body's equilibrium).
   for (std::size_t m = 0; m < pin_of_motion.size(); ++m) {
     const auto [r, q] = pin_of_motion[m];
-    const Index row = 2 * static_cast<Index>(variables[r].nodes.size()) + q;
-    F.row(force_motions + static_cast<Index>(m)) = response[r].row(row);
-    F0.row(force_motions + static_cast<Index>(m)) = response0[r].row(row);
+    motion_rows[r](force_motions + static_cast<Index>(m), 2 * static_cast<Index>(variables[r].nodes.size()) + q) = 1.0;
+  }
+  for (std::size_t r = 0; r < motion_rows.size(); ++r) {
+    if (motion_rows[r].isZero(0.0)) continue;
+    F += motion_rows[r] * response[r];
+    F0 += motion_rows[r] * response0[r];
   }
   for (Index g = 0; g < groups; ++g) cp.loads[g].F0 = F0.col(g);
   cp.f = F.leftCols(2 * n);
@@ -549,8 +559,11 @@ ResponseChange ContactModel::with_added_responses(const std::vector<AddedRespons
   const Vector a = Eigen::Map<const Vector>(amplitudes.data(), static_cast<Index>(amplitudes.size()));
   const auto& regions = prepared_.regions;
   ResponseChange change;
-  change.M = Matrix::Zero(2 * n, 2 * n);
+  const Index K = condensed_.motions;
+  change.jumps = Matrix::Zero(2 * n, 2 * n + K);
   change.jump = Vector::Zero(2 * n);
+  change.motions = Matrix::Zero(K, 2 * n + K);
+  change.motion_offset = Vector::Zero(K);
   change.changed.assign(regions.size(), 0);
   change.data_map.resize(regions.size());
   change.data_offset.resize(regions.size());
@@ -559,9 +572,6 @@ ResponseChange ContactModel::with_added_responses(const std::vector<AddedRespons
   for (std::size_t b = 0; b < problem_.bodies.size(); ++b) {
     const auto& members = prepared_.body_regions[b];
     if (std::none_of(members.begin(), members.end(), [&](int r) { return added_of[r] != nullptr; })) continue;
-    for (const int r : members)
-      if (!kept_->G[r].rightCols(condensed_.motions).isZero(0.0))
-        throw std::logic_error("with_added_responses: a motion acts on body '" + problem_.bodies[b].name + "'");
     // K' U = -(L' q + l0') with each added region's bond rows (S_r: its dofs' bond unknowns):
     // K' = K + S^T F_bb S, L' = L + S^T F_b. G, l0' = l0 a + S^T u0_b.
     const auto& equations = kept_->bond_equations[b];
@@ -590,8 +600,9 @@ ResponseChange ContactModel::with_added_responses(const std::vector<AddedRespons
       U0 = -l0;
       lu.solve_in_place(U0);
     }
-    // Each region's data D'_r q + d0'_r, and the jumps' change
-    //   J_r [(C_r + F_r)(D'_r q + d0'_r) + u0_r - C_r (D_r q + d0_r a)].
+    // Each region's data D'_r q + d0'_r, and the change of its complementary values
+    //   (C_r + F_r)(D'_r q + d0'_r) + u0_r - C_r (D_r q + d0_r a),
+    // through the jumps' map J_r and the motions' rows P_r.
     for (const int r : members) {
       const auto& unknown = kept_->bond_unknown[r];
       const Index bond = bond_dofs_[r];
@@ -601,20 +612,35 @@ ResponseChange ContactModel::with_added_responses(const std::vector<AddedRespons
       const Matrix& C = kept_->flexibility[r];
       const Matrix dD = D.topRows(bond) - data_map_[r].topRows(bond);
       const Vector dd0 = d0.head(bond) - data_offset_[r].topRows(bond) * a;
-      Matrix response = C.leftCols(bond) * dD.leftCols(2 * n);
+      Matrix response = C.leftCols(bond) * dD;
       Vector offset = C.leftCols(bond) * dd0;
       if (const AddedResponse* plastic = added_of[r]) {
-        response += *plastic->flexibility * D.leftCols(2 * n);
+        response += *plastic->flexibility * D;
         offset += *plastic->flexibility * d0 + *plastic->offset;
       }
-      change.M += jump_map_[r] * response;
+      change.jumps += jump_map_[r] * response;
       change.jump += jump_map_[r] * offset;
+      if (!kept_->motion_rows[r].isZero(0.0)) {
+        change.motions += kept_->motion_rows[r] * response;
+        change.motion_offset += kept_->motion_rows[r] * offset;
+      }
       change.changed[r] = 1;
       change.data_map[r] = std::move(D);
       change.data_offset[r] = std::move(d0);
     }
   }
   return change;
+}
+
+void ResponseChange::apply(const CondensedProblem& problem, CondensedProblem& changed_problem, Vector& jump0,
+                           Vector& target) const {
+  const Index n = problem.pairs;
+  changed_problem.M = problem.M + jumps.leftCols(2 * n);
+  changed_problem.b = problem.b + jumps.rightCols(problem.motions);
+  changed_problem.f = problem.f + motions.leftCols(2 * n);
+  changed_problem.f_delta = problem.f_delta + motions.rightCols(problem.motions);
+  jump0 += jump;
+  target -= motion_offset;
 }
 
 Vec2 ContactModel::traction(Index pair, const Vector& x) const {

@@ -147,6 +147,7 @@ using ActiveSets = std::vector<int>;
 // node on the axis of a quadratic element has zero weight: its shape function times r
 // integrates to 0).
 void close_nearest_pairs(const CondensedProblem& p, const Vector& gap, const Vector& w, ActiveSets& state) {
+  if (p.pairs == 0 || p.motions == 0) return;  // (a platen's force on a body without contacts: no pair to close)
   const double carrying = 1e-3 * p.f.cwiseAbs().maxCoeff();
   const auto groups = pair_groups(p);
   // All pairs at the closest distance (to round-off) go in: a flat face touches along

@@ -16,16 +16,11 @@ std::vector<int> plastic_regions_in_contact(const ContactProblem& problem, const
                                               " is not in the model yet (docs/plasticity.md, Limits)");
     };
     found.push_back(static_cast<int>(r));
-    // No motion acts on its body: the coupling changes the jumps only (ContactModel::with_added_responses).
-    for (const int member : model.prepared().body_regions[regions[r].body]) {
-      const auto& factored = model.region(member);
-      const auto& nodes = factored.variable_nodes();
-      for (std::size_t k = static_cast<std::size_t>(model.bond_dofs(member) / 2); k < nodes.size(); ++k)
-        if (nodes[k].kind != bem::ConditionKind::traction)
-          refuse("in a body under a force load on its own boundary (a platen)");
-      if (factored.variable_dofs() != 2 * static_cast<Index>(nodes.size()))
-        refuse("in a body held only by its contacts (give it displacements of its own)");
-    }
+    // Its surface data are its variable nodes' (bonds, contacts, platens); a pin of a free
+    // motion is a datum it does not take.
+    const auto& factored = model.region(static_cast<int>(r));
+    if (factored.variable_dofs() != 2 * static_cast<Index>(factored.variable_nodes().size()))
+      refuse("held only by its contacts (give it displacements of its own, or bond it to a region that is)");
     if (!problem.boundary_amplitudes.empty()) refuse("with boundaries of their own amplitude");
     if (problem.cycles.repeated()) refuse("over repeated load cycles");
     if (problem.record_steps) refuse("with every step recorded (record_steps)");
@@ -98,10 +93,9 @@ StepOutput PlasticCoupling::solve_step(const StepInput& input, const SolverOptio
       added.push_back({plastic_[k].region, &increments[k]->surface_flexibility(), &increments[k]->surface_offset()});
     }
     change = model_.with_added_responses(added, input.time);
-    linearised.M = condensed.M + change.M;
-    if (!problem_.tangential_coupling) drop_tangential_coupling(linearised);
     StepInput in = input;
-    in.jump0 += change.jump;
+    change.apply(condensed, linearised, in.jump0, in.target);
+    if (!problem_.tangential_coupling) drop_tangential_coupling(linearised);
     in.problem = &linearised;
     in.newton_cache = nullptr;  // the operator changes from iteration to iteration
     if (solved) in.x_start = out.x, in.delta_start = out.delta, in.state_start = out.state;

@@ -82,11 +82,12 @@ struct AddedResponse {
 };
 
 // The condensed problem with added responses at pseudo-time t: the change of the jumps
-// (the motions' columns and equations are unchanged: no motion acts on those bodies) and
-// the data of every region of the bodies concerned.
+// and of the motions' equations, and the data of every region of the bodies concerned.
 struct ResponseChange {
-  Matrix M;     // 2N x 2N: added to the condensed M
-  Vector jump;  // 2N: added to w0(t)
+  Matrix jumps;          // 2N x (2N + K): added to [M b]
+  Vector jump;           // 2N: added to w0(t)
+  Matrix motions;        // K x (2N + K): added to [f f_delta]
+  Vector motion_offset;  // K: added to the motions' left-hand sides (subtracted from their targets)
   // Per region: whether it is of those bodies, and then its data D'_r q + d0'_r.
   std::vector<char> changed;
   std::vector<Matrix> data_map;
@@ -94,6 +95,8 @@ struct ResponseChange {
   Vector data(int r, const Vector& q) const {
     return data_map[static_cast<std::size_t>(r)] * q + data_offset[static_cast<std::size_t>(r)];
   }
+  // The condensed problem and step input changed by it (added to `problem`'s and `input`'s).
+  void apply(const CondensedProblem& problem, CondensedProblem& changed_problem, Vector& jump0, Vector& target) const;
 };
 
 // Every elastic region factored once (bem::FactoredBody) with its interface nodes as

@@ -12,6 +12,7 @@
 
 #include "bemcontact/core/error.hpp"
 #include "bemcontact/driver/run.hpp"
+#include "bemcontact/io/text_format.hpp"
 #include "bemcontact/plasticity/j2_material.hpp"
 #include "bemcontact/reference/plastic_cylinder.hpp"
 #include "support/bonded_tube.hpp"
@@ -304,6 +305,60 @@ TEST(ElastoplasticRun, TubeWithAnElasticOuterRingBondedIsTheReference) {
                 "error %.4f %% of Y\n",
                 size, 100.0 * (bore / residual.inner_displacement - 1.0),
                 100.0 * (outside / residual.outer_displacement - 1.0), 100.0 * hoop_error);
+  }
+}
+
+// A force on a platen (the top of the pressed block, [load] on its boundary: u1 held, u2
+// the approach) is the prescribed displacement that causes it. The block's top pressed
+// 0.01 with u1 = 0 (not uniform: the top is held) gives a force per step; that force
+// history on the platen gives back the approach 0.01 per step and the same cells. Elastic:
+// the force at the end in one step (a body with a platen and no contact crashed before).
+// Elastoplastic: the run's steps at the same times, so that the return mappings see the
+// same increments (the contact model's route, the platen's motion equation changed by the
+// cells at every Newton iteration).
+TEST(ElastoplasticRun, ForceOnAPlatenIsThePrescribedDisplacementThatCausesIt) {
+  RunOptions options;
+  options.keep_tables = true;
+  std::string pressed = replaced(replaced(test_support::pressed_block_text(), "ANALYSIS", "plane_strain"),
+                                 "HARDENING", "20000.0");
+  pressed = replaced(pressed, "u2 = -0.01\nt1 = 0.0\n", "u2 = -0.01\nu1 = 0.0\n");
+  const auto on_platen = [](std::string text, double force, const std::string& amplitude) {
+    text = replaced(text, "u2 = -0.01\nu1 = 0.0\n", "");
+    return replaced(text, "[solver]", "[load]\nbody = \"block\"\nboundary = \"top\"\ncomponent = 2\nforce = " +
+                                          io::format_number(force) + "\n" + amplitude + "[solver]");
+  };
+  for (const bool plastic : {false, true}) {
+    std::string text = pressed;
+    if (!plastic)
+      text = replaced(replaced(replaced(text, "yield_stress = 250.0\nhardening = 20000.0\n", ""),
+                               "[body.cells]\nsize = 0.25\n", ""),
+                      "[solver]\nincrements = 10\n", "[solver]\n");
+    const auto prescribed = run_problem(text, "block.toml", options);
+    std::vector<double> times{1.0}, forces;
+    if (plastic) {
+      const auto& steps = prescribed.tables.at("block_steps.csv");
+      times = column(steps, "time").numbers;
+      forces = column(steps, "top_f2").numbers;
+    } else {
+      const auto summary = nlohmann::json::parse(*file(prescribed, "summary.json"));
+      for (const auto& reaction : summary["reactions"]["block"])
+        if (reaction["boundary"] == "top") forces.push_back(reaction["force"][1].get<double>());
+    }
+    ASSERT_EQ(forces.size(), times.size());
+    std::string amplitude = "amplitude = [[0.0, 0.0]";
+    for (std::size_t k = 0; k < times.size(); ++k)
+      amplitude += ", [" + io::format_number(times[k]) + ", " + io::format_number(forces[k] / forces.back()) + "]";
+    const auto pushed = run_problem(on_platen(text, forces.back(), amplitude + "]\n"), "block.toml", options);
+    const auto& approach = column(pushed.tables.at("motions.csv"), "block_top_y_displacement").numbers;
+    ASSERT_EQ(approach.size(), times.size()) << plastic;
+    for (std::size_t k = 0; k < times.size(); ++k) EXPECT_NEAR(approach[k], -0.01 * times[k], 1e-9) << k;
+    if (!plastic) continue;
+    const auto& a = prescribed.tables.at("block_cells.csv");
+    const auto& b = pushed.tables.at("block_cells.csv");
+    for (const char* name : {"s11", "s22", "s12", "s33", "equivalent_plastic_strain"})
+      for (std::size_t k = 0; k < column(a, name).numbers.size(); ++k)
+        EXPECT_NEAR(column(b, name).numbers[k], column(a, name).numbers[k], 1e-8 * 250.0) << name << " " << k;
+    EXPECT_GT(column(a, "equivalent_plastic_strain").numbers[0], 0.0);
   }
 }
 
