@@ -136,14 +136,21 @@ std::vector<plasticity::Cell> region_cells_of(const geometry::BoundaryMesh& mesh
   return cells;
 }
 
-BodyDefinition body_conforming_to_cells(const geometry::BoundaryMesh& mesh, const BodyDefinition& body,
-                                        AnalysisType type) {
-  if (!body.plasticity || !body.plasticity->nodes_at_cells) return body;
-  const auto cells = region_cells_of(mesh, body, type, 0.0);
+std::vector<Vec2> cell_vertices_to_conform(const geometry::BoundaryMesh& mesh, const BodyDefinition& body,
+                                           AnalysisType type) {
   std::vector<Vec2> vertices;
-  for (const auto& cell : cells) vertices.insert(vertices.end(), cell.vertices.begin(), cell.vertices.end());
+  if (!body.plasticity || !body.plasticity->nodes_at_cells) return vertices;
+  for (const auto& cell : region_cells_of(mesh, body, type, 0.0))
+    vertices.insert(vertices.end(), cell.vertices.begin(), cell.vertices.end());
+  return vertices;
+}
+
+BodyDefinition body_conforming_to_cells(const geometry::BoundaryMesh& mesh, const BodyDefinition& body,
+                                        AnalysisType type, const std::vector<Vec2>& vertices) {
+  if (!body.plasticity || !body.plasticity->nodes_at_cells) return body;
   BodyDefinition out = body;
-  out.pieces = geometry::pieces_with_nodes_at(mesh, body.pieces, vertices, 1e-9 * mesh.scale);
+  out.pieces = geometry::pieces_with_nodes_at(
+      mesh, body.pieces, vertices.empty() ? cell_vertices_to_conform(mesh, body, type) : vertices, 1e-9 * mesh.scale);
   return out;
 }
 

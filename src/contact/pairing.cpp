@@ -160,6 +160,55 @@ std::string region_label(const ContactProblem& problem, int body, int region) {
 
 // The regions of every elastic body, their contact zones and platen marked, meshed as the
 // body's decomposition (bond pieces shared node for node).
+// An elastoplastic region's nodes where its cells meet its boundary (and those of the other
+// elastoplastic regions of the body: on a bond between two): the breakpoints of its pieces
+// set for meshing again (bem::body_conforming_to_cells). A bond so meshed on one side is
+// meshed alike on the other, whose facing nodes must coincide (dd::build_connectivity): its
+// breakpoints copied, reversed when it runs the other way (the snapping of
+// geometry::pieces_with_nodes_at depends on the direction). False when no region asks.
+bool conform_to_cells(dd::DecompositionProblem& decomposition, const std::vector<geometry::BoundaryMesh>& meshes,
+                      AnalysisType analysis) {
+  auto& regions = decomposition.subdomains;
+  std::vector<Vec2> vertices;
+  for (std::size_t r = 0; r < regions.size(); ++r) {
+    const auto more = bem::cell_vertices_to_conform(meshes[r], dd::subdomain_problem(decomposition, r).body, analysis);
+    vertices.insert(vertices.end(), more.begin(), more.end());
+  }
+  if (vertices.empty()) return false;
+  std::vector<std::vector<char>> copied(regions.size());
+  for (std::size_t r = 0; r < regions.size(); ++r) copied[r].assign(regions[r].body.pieces.size(), 0);
+  for (std::size_t r = 0; r < regions.size(); ++r) {
+    auto& region = regions[r].body;
+    if (!region.plasticity || !region.plasticity->nodes_at_cells) continue;
+    const auto pieces =
+        bem::body_conforming_to_cells(meshes[r], dd::subdomain_problem(decomposition, r).body, analysis, vertices).pieces;
+    for (std::size_t p = 0; p < pieces.size(); ++p) {
+      if (copied[r][p]) continue;  // the other side of a bond already meshed it
+      region.pieces[p].breakpoints = pieces[p].breakpoints;
+      const std::string& name = p < regions[r].piece_interface.size() ? regions[r].piece_interface[p] : "";
+      if (name.empty() || pieces[p].breakpoints.empty()) continue;
+      const double tolerance = 1e-9 * meshes[r].scale;
+      for (std::size_t k = 0; k < regions.size(); ++k)
+        for (std::size_t q = 0; q < regions[k].piece_interface.size(); ++q) {
+          if ((k == r && q == p) || regions[k].piece_interface[q] != name) continue;
+          auto& other = regions[k].body.pieces[q];
+          const bool reversed = (other.start - pieces[p].end).norm() <= tolerance &&
+                                (other.end - pieces[p].start).norm() <= tolerance;
+          const bool same = (other.start - pieces[p].start).norm() <= tolerance &&
+                            (other.end - pieces[p].end).norm() <= tolerance;
+          if (other.shape != pieces[p].shape || (!reversed && !same)) continue;  // dd::build_connectivity says why
+          other.breakpoints = pieces[p].breakpoints;
+          if (reversed) {
+            std::reverse(other.breakpoints.begin(), other.breakpoints.end());
+            for (double& s : other.breakpoints) s = 1.0 - s;
+          }
+          copied[k][q] = 1;
+        }
+    }
+  }
+  return true;
+}
+
 void mesh_regions(const ContactProblem& problem, PreparedContact& prepared) {
   for (std::size_t b = 0; b < problem.bodies.size(); ++b) {
     const auto& body = problem.bodies[b];
@@ -192,17 +241,7 @@ void mesh_regions(const ContactProblem& problem, PreparedContact& prepared) {
     std::vector<geometry::BoundaryMesh> meshes;
     try {
       meshes = dd::mesh_subdomains(decomposition);
-      // An elastoplastic region's nodes where its cells meet its boundary: meshed again.
-      bool conformed = false;
-      for (std::size_t r = 0; r < meshes.size(); ++r) {
-        auto& region = decomposition.subdomains[r].body;
-        if (!region.plasticity || !region.plasticity->nodes_at_cells) continue;
-        const auto pieces = bem::body_conforming_to_cells(meshes[r], dd::subdomain_problem(decomposition, r).body,
-                                                          problem.analysis).pieces;
-        for (std::size_t p = 0; p < pieces.size(); ++p) region.pieces[p].breakpoints = pieces[p].breakpoints;
-        conformed = true;
-      }
-      if (conformed) meshes = dd::mesh_subdomains(decomposition);
+      if (conform_to_cells(decomposition, meshes, problem.analysis)) meshes = dd::mesh_subdomains(decomposition);
     } catch (const GeometryError& error) {
       throw error.in_context("body '" + body.name + "'");
     }

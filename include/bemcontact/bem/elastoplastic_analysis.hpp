@@ -80,9 +80,14 @@ std::vector<plasticity::Cell> region_cells_of(const geometry::BoundaryMesh& mesh
 // compatible plastic strain) leaves no stress only if the elements can follow it: with nodes
 // elsewhere a band of plastic shear leaving the surface kept 2 to 13 % of G gamma as stress
 // whatever the cell size, and the punch's load rose on past Prandtl's limit. Mesh the result
-// again, and make the cells from that mesh. InputError as region_cells_of.
+// again, and make the cells from that mesh. `vertices`: those points instead (a body's
+// regions bonded: every elastoplastic region's, contact/pairing.cpp). InputError as
+// region_cells_of.
 BodyDefinition body_conforming_to_cells(const geometry::BoundaryMesh& mesh, const BodyDefinition& body,
-                                        AnalysisType type);
+                                        AnalysisType type, const std::vector<Vec2>& vertices = {});
+// The vertices of the body's cells on `mesh` when nodes_at_cells asks for them; none else.
+std::vector<Vec2> cell_vertices_to_conform(const geometry::BoundaryMesh& mesh, const BodyDefinition& body,
+                                           AnalysisType type);
 
 // The warning of a plastic zone that reaches a side of the cells' box where the body goes
 // on (the answer too stiff there); none otherwise.

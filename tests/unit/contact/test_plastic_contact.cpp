@@ -311,7 +311,8 @@ TEST(PlasticContact, ElasticBallOnASupportThatStaysElasticIsTheElasticContact) {
 // A block of two regions side by side, bonded along x = 1: "left" over [0, 1] x [0, 1]
 // (elastoplastic, yield stress 250, hardening E/10, roller at x = 0) and "right" over
 // [1, 2] x [0, 1] with the material `right_material`, both on a roller base; a smooth rigid
-// flat pushes both tops `depth` down in 10 steps.
+// flat pushes both tops `depth` down in 10 steps. The bond has 6 elements a side: the cells'
+// vertices at y = 0.25 and 0.75 put nodes on it (nodes_at_cells), on both sides alike.
 std::string bonded_block_text(const std::string& right_material, double depth) {
   const auto region = [](const std::string& name, double x0, const std::string& material, const std::string& left,
                          const std::string& right) {
@@ -319,10 +320,12 @@ std::string bonded_block_text(const std::string& right_material, double depth) {
     return "[[body.region]]\nname = \"" + name + "\"\n[body.region.material]\n" + material +
            "[[body.region.boundary]]\nname = \"" + name + " bottom\"\nfrom = [" + x(0) + ", 0.0]\nto = [" + x(1) +
            ", 0.0]\nelements = 8\nu2 = 0.0\nt1 = 0.0\n[[body.region.boundary]]\nname = \"" + name +
-           " right\"\nfrom = [" + x(1) + ", 0.0]\nto = [" + x(1) + ", 1.0]\nelements = 8\n" + right +
+           " right\"\nfrom = [" + x(1) + ", 0.0]\nto = [" + x(1) + ", 1.0]\nelements = " +
+           (right.empty() ? "8" : "6") + "\n" + right +
            "[[body.region.boundary]]\nname = \"" + name + " top\"\nfrom = [" + x(1) + ", 1.0]\nto = [" + x(0) +
            ", 1.0]\nelements = 8\n[[body.region.boundary]]\nname = \"" + name + " left\"\nfrom = [" + x(0) +
-           ", 1.0]\nto = [" + x(0) + ", 0.0]\nelements = 8\n" + left;
+           ", 1.0]\nto = [" + x(0) + ", 0.0]\nelements = " + (left == "u1 = 0.0\nt2 = 0.0\n" ? "8" : "6") + "\n" +
+           left;
   };
   const std::string bond = "interface = \"bond\"\n";
   std::string text = "title = \"bonded block\"\nanalysis = \"plane_strain\"\n[[body]]\nname = \"block\"\n" +
