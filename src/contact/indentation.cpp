@@ -49,8 +49,10 @@ std::optional<IndentationReport> indentation_report(const ContactProblem& proble
   const auto& material = problem.bodies[static_cast<std::size_t>(contact.side1.body)]
                              .regions[static_cast<std::size_t>(contact.side1.region)]
                              .body.material;
-  out.elastic_unloading_stiffness =
-      2.0 * material.young_modulus / (1.0 - material.poisson_ratio * material.poisson_ratio) * a;
+  // Sneddon's is for a homogeneous body: none for one of several regions (a coating).
+  if (problem.bodies[static_cast<std::size_t>(contact.side1.body)].regions.size() == 1)
+    out.elastic_unloading_stiffness =
+        2.0 * material.young_modulus / (1.0 - material.poisson_ratio * material.poisson_ratio) * a;
   if (region < result.meshes.size()) {
     const auto& mesh = result.meshes[region];
     double closest = std::numeric_limits<double>::infinity();

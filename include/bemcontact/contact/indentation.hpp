@@ -23,7 +23,9 @@ struct IndentationReport {
   double brinell = 0.0;         // HB (NaN when d >= D)
   double meyer = 0.0;           // P / (pi a^2)
   double unloading_stiffness = 0.0;          // (P_peak - P_next) / (h_peak - h_next); 0 without unloading
-  double elastic_unloading_stiffness = 0.0;  // 2 E* a, E* = E / (1 - nu^2) of the body (rigid ball)
+  // 2 E* a, E* = E / (1 - nu^2) of the body (rigid ball); 0 for a body of several regions
+  // (a coating: no closed form)
+  double elastic_unloading_stiffness = 0.0;
   double residual_depth = 0.0;  // -u_z of the body's contact node on the axis after the last step
 };
 

@@ -505,10 +505,15 @@ std::string contact_report_text(const contact::ContactProblem& problem, const co
     out += line;
     std::snprintf(line, sizeof line, "; dent depth after the last step %.6g\n", r.residual_depth);
     out += line;
-    if (r.unloading_stiffness > 0.0) {
+    if (r.unloading_stiffness > 0.0 && r.elastic_unloading_stiffness > 0.0) {
       std::snprintf(line, sizeof line, "  initial unloading stiffness %.6g (elastic 2 E* a = %.6g: ratio %.4g)\n",
                     r.unloading_stiffness, r.elastic_unloading_stiffness,
                     r.unloading_stiffness / r.elastic_unloading_stiffness);
+      out += line;
+    } else if (r.unloading_stiffness > 0.0) {
+      std::snprintf(line, sizeof line,
+                    "  initial unloading stiffness %.6g (a body of several regions: no elastic closed form)\n",
+                    r.unloading_stiffness);
       out += line;
     }
   }
@@ -706,7 +711,8 @@ void fill_contact_summary(RunSummary& summary, const contact::ContactProblem& pr
         {"meyer_hardness", r.meyer},
         {"brinell_hardness", std::isfinite(r.brinell) ? nlohmann::json(r.brinell) : nlohmann::json(nullptr)},
         {"unloading_stiffness", r.unloading_stiffness},
-        {"elastic_unloading_stiffness", r.elastic_unloading_stiffness},
+        {"elastic_unloading_stiffness", r.elastic_unloading_stiffness > 0.0 ? nlohmann::json(r.elastic_unloading_stiffness)
+                                                                          : nlohmann::json(nullptr)},
         {"residual_depth", r.residual_depth}};
   }
 }
