@@ -233,9 +233,11 @@ ElastoplasticRegion::~ElastoplasticRegion() = default;
 
 ElastoplasticRegion::ElastoplasticRegion(const geometry::BoundaryMesh& mesh, const BodyDefinition& body,
                                          AnalysisType type, const J2Hardening& hardening, std::vector<Cell> cells,
-                                         std::vector<VariableNode> surface_nodes)
+                                         std::vector<VariableNode> surface_nodes,
+                                         std::vector<PointConstraint> surface_constraints)
     : mesh_(mesh), type_(type), material_(body.material), hardening_(hardening), cells_(std::move(cells)),
-      surface_nodes_(std::move(surface_nodes)), surface_dofs_(2 * static_cast<Index>(surface_nodes_.size())),
+      surface_nodes_(std::move(surface_nodes)),
+      surface_dofs_(2 * static_cast<Index>(surface_nodes_.size()) + static_cast<Index>(surface_constraints.size())),
       components_(type == AnalysisType::axisymmetric ? 4 : 3) {
   if (!(hardening_.yield_stress > 0.0) || hardening_.isotropic < 0.0 || hardening_.kinematic < 0.0)
     throw Error("body '" + body.name + "': the yield stress must be > 0 and the hardening moduli >= 0");
@@ -251,26 +253,41 @@ ElastoplasticRegion::ElastoplasticRegion(const geometry::BoundaryMesh& mesh, con
     c.kind = {surface.kind, surface.kind};
     if (on_axis) c.on_axis = true, c.kind[0] = ConditionKind::displacement;
   }
-  constraints_ = resolve_point_constraints(mesh_, body, conditions_);
+  // Variable constraints (a free body's pins): one displacement component each, their value
+  // a datum after the nodes', their reaction its complementary value (as FactoredBody's).
+  BodyDefinition constrained = body;
+  for (auto& constraint : surface_constraints) {
+    if (constraint.displacement[0].has_value() == constraint.displacement[1].has_value())
+      throw Error("ElastoplasticRegion: a variable constraint prescribes exactly one component");
+    constrained.constraints.push_back(std::move(constraint));
+  }
+  constraints_ = resolve_point_constraints(mesh_, constrained, conditions_);
   const ElementIntegrator integrator(type, material_);
   const CellKernels kernels(type, material_);
   const Index d = components_;
   auto matrices = assemble_influence_matrices(mesh_, integrator);
   auto system = build_boundary_system(matrices, conditions_, constraints_);
   const Index n = mesh_.node_count(), rows = system.b.size(), m = static_cast<Index>(cells_.size());
-  const Index k2 = surface_dofs_, first_cell = 1 + k2;
-  // A surface dof carries its datum, but for the radial one on the axis (u_r = p_r = 0).
+  const Index k2 = surface_dofs_, first_cell = 1 + k2, node_dofs = 2 * static_cast<Index>(surface_nodes_.size());
+  const Index first_constraint = static_cast<Index>(constraints_.size()) - (k2 - node_dofs);
+  // A surface node's dof carries its datum, but for the radial one on the axis (u_r = p_r = 0).
   const auto surface_of = [&](Index j) -> const VariableNode& { return surface_nodes_[static_cast<std::size_t>(j / 2)]; };
   const auto carries_datum = [&](Index j) {
-    return !(conditions_[static_cast<std::size_t>(surface_of(j).node)].on_axis && j % 2 == 0);
+    return j < node_dofs && !(conditions_[static_cast<std::size_t>(surface_of(j).node)].on_axis && j % 2 == 0);
   };
-  const auto is_displacement = [&](Index j) { return surface_of(j).kind == ConditionKind::displacement; };
+  const auto is_displacement = [&](Index j) { return j >= node_dofs || surface_of(j).kind == ConditionKind::displacement; };
   // [b | T | B]: a unit datum at each surface dof, G's column for a traction and -H's for a
   // displacement (the matrices are in the nodes' frames, the surface nodes' global); the
   // cells' domain term at the collocation nodes (the boundary equation's rows), each cell's
   // columns by one thread. Solved in place.
   boundary_unknowns_ = Matrix::Zero(rows, first_cell + d * m);
   boundary_unknowns_.col(0) = system.b;
+  // A variable constraint's datum is the right-hand side of its equation (the last rows).
+  for (Index j = node_dofs; j < k2; ++j) {
+    const Index row = 2 * n + first_constraint + (j - node_dofs);
+    boundary_unknowns_(row, 0) = 0.0;
+    boundary_unknowns_(row, 1 + j) = 1.0;
+  }
   for (Index j = 0; j < k2; ++j) {
     if (!carries_datum(j)) continue;
     const Index dof = 2 * surface_of(j).node + j % 2;
@@ -311,10 +328,13 @@ ElastoplasticRegion::ElastoplasticRegion(const geometry::BoundaryMesh& mesh, con
   // first yields (ensure_direct_columns): the O(m^2) integrals of cells that stay elastic
   // are never made.
   direct_columns_.assign(static_cast<std::size_t>(m), 0);
-  surface_response_.resize(k2, d * m);  // the complementary value: traction at a displacement datum
+  // The complementary value: traction at a displacement datum, a constraint's reaction.
+  surface_response_.resize(k2, d * m);
   for (Index j = 0; j < k2; ++j)
     surface_response_.row(j) =
-        values.block((is_displacement(j) ? 2 * n : 0) + 2 * surface_of(j).node + j % 2, first_cell, 1, d * m);
+        j < node_dofs
+            ? Matrix(values.block((is_displacement(j) ? 2 * n : 0) + 2 * surface_of(j).node + j % 2, first_cell, 1, d * m))
+            : Matrix(boundary_unknowns_.block(2 * n + first_constraint + (j - node_dofs), first_cell, 1, d * m));
   surface_data_ = Vector::Zero(k2);
   states_.assign(static_cast<std::size_t>(m), J2State{});
   stress_.assign(static_cast<std::size_t>(m), Mandel::Zero());
@@ -600,10 +620,14 @@ bool ElastoplasticIncrement::linearise(std::string& failure) {
 bool ElastoplasticIncrement::converged_with(const Vector& next) const {
   if (!converged()) return false;
   const auto& nodes = s_->region.surface_nodes_;
+  const auto kind_of = [&](Index j) {  // the variable constraints' data after the nodes' are displacements
+    return j < 2 * static_cast<Index>(nodes.size()) ? nodes[static_cast<std::size_t>(j / 2)].kind
+                                                    : ConditionKind::displacement;
+  };
   for (const ConditionKind kind : {ConditionKind::traction, ConditionKind::displacement}) {
     double scale = 0.0, moved = 0.0;
     for (Index j = 0; j < next.size(); ++j) {
-      if (nodes[static_cast<std::size_t>(j / 2)].kind != kind) continue;
+      if (kind_of(j) != kind) continue;
       scale = std::max(scale, std::abs(next[j]));
       moved = std::max(moved, std::abs(next[j] - s_->data[j]));
     }
@@ -751,7 +775,7 @@ BoundarySolution ElastoplasticRegion::boundary_solution() const {
   coefficients << amplitude_, surface_data_, initial_stresses();
   BoundarySolution solution =
       recover_boundary_values(boundary_unknowns_ * coefficients, scaled(conditions_, amplitude_), constraints_);
-  for (Index j = 0; j < surface_dofs_; ++j) {
+  for (Index j = 0; j < 2 * static_cast<Index>(surface_nodes_.size()); ++j) {
     const auto& surface = surface_nodes_[static_cast<std::size_t>(j / 2)];
     const auto node = static_cast<std::size_t>(surface.node);
     if (conditions_[node].on_axis && j % 2 == 0) continue;

@@ -132,6 +132,7 @@ ContactModel::ContactModel(const ContactProblem& problem, const bem::ProgressCal
   assemble_motion_equations(build);
   bond_dofs_.clear();
   for (const auto& v : build.variables) bond_dofs_.push_back(v.bond_dofs);
+  pins_ = build.pins;
   // Kept for the bodies of elastoplastic regions only (a region's C_r is dofs^2).
   std::vector<bool> plastic_body(problem_.bodies.size(), false);
   for (const auto& region : prepared_.regions)

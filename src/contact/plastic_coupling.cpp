@@ -16,11 +16,6 @@ std::vector<int> plastic_regions_in_contact(const ContactProblem& problem, const
                                               " is not in the model yet (docs/plasticity.md, Limits)");
     };
     found.push_back(static_cast<int>(r));
-    // Its surface data are its variable nodes' (bonds, contacts, platens); a pin of a free
-    // motion is a datum it does not take.
-    const auto& factored = model.region(static_cast<int>(r));
-    if (factored.variable_dofs() != 2 * static_cast<Index>(factored.variable_nodes().size()))
-      refuse("held only by its contacts (give it displacements of its own, or bond it to a region that is)");
     if (!problem.boundary_amplitudes.empty()) refuse("with boundaries of their own amplitude");
     if (problem.cycles.repeated()) refuse("over repeated load cycles");
     if (problem.record_steps) refuse("with every step recorded (record_steps)");
@@ -47,7 +42,7 @@ PlasticCoupling::PlasticCoupling(const ContactProblem& problem, const ContactMod
                                                   problem.analysis);
     region.plastic = std::make_unique<bem::ElastoplasticRegion>(prepared.mesh, body, problem.analysis,
                                                                  body.plasticity->hardening, region.cells,
-                                                                 model.region(r).variable_nodes());
+                                                                 model.region(r).variable_nodes(), model.pins(r));
     region.accepted = region.plastic->state();
     plastic_.push_back(std::move(region));
   }

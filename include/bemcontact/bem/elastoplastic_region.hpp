@@ -138,10 +138,13 @@ class ElastoplasticRegion {
  public:
   // Throws Error for a bad hardening (the reader checks it first), SolverError for a
   // singular system. `surface_nodes` carry data set from outside, in place of the body's
-  // own conditions there: tractions (a contact) or displacements (a bond).
+  // own conditions there: tractions (a contact) or displacements (a bond, a platen);
+  // `surface_constraints` are point constraints of one component whose values are data
+  // after the nodes' (a free body's pins: FactoredBody's variable constraints).
   ElastoplasticRegion(const geometry::BoundaryMesh& mesh, const BodyDefinition& body, AnalysisType type,
                       const plasticity::J2Hardening& hardening, std::vector<plasticity::Cell> cells,
-                      std::vector<VariableNode> surface_nodes = {});
+                      std::vector<VariableNode> surface_nodes = {},
+                      std::vector<PointConstraint> surface_constraints = {});
   ElastoplasticRegion(ElastoplasticRegion&&) noexcept;
   ~ElastoplasticRegion();
 
@@ -190,7 +193,7 @@ class ElastoplasticRegion {
   std::vector<NodeCondition> conditions_;
   std::vector<ConstraintEquation> constraints_;
   std::vector<VariableNode> surface_nodes_;
-  Index surface_dofs_ = 0;  // 2 per surface node
+  Index surface_dofs_ = 0;  // 2 per surface node, 1 per surface constraint
   // A^-1 [b | T | B]: the load at amplitude 1, unit surface data, the cells' domain term
   Matrix boundary_unknowns_;
   Vector load_stress_;    // s: C E per unit amplitude (components_ per cell: tensor components)

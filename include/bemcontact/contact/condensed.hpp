@@ -141,6 +141,9 @@ class ContactModel {
   // Region r's first variable dofs that are its bonds' displacements (the rest: its
   // contacts' tractions, platens' displacements, then the free motions' pins).
   Index bond_dofs(int r) const { return bond_dofs_[static_cast<std::size_t>(r)]; }
+  // Region r's variable point constraints (the free motions' pins), their data after its
+  // variable nodes'.
+  const std::vector<bem::PointConstraint>& pins(int r) const { return pins_[static_cast<std::size_t>(r)]; }
   // Step 5 again with regions' added responses (their bodies only; the model is kept for
   // the bodies of elastoplastic regions): K' U = -(L' q + l0'(t)) with K' = K + S^T F S.
   ResponseChange with_added_responses(const std::vector<AddedResponse>& added, double t) const;
@@ -167,6 +170,7 @@ class ContactModel {
   std::vector<Matrix> data_offset_;  // d0_r per load group (columns)
   std::vector<Matrix> jump_map_;     // per region: the jumps per unit complementary value at its variable nodes
   std::vector<Index> bond_dofs_;     // per region
+  std::vector<std::vector<bem::PointConstraint>> pins_;  // per region
   // What step 5 needs again (with_added_responses), for the bodies of elastoplastic regions.
   struct KeptElimination;
   std::unique_ptr<KeptElimination> kept_;

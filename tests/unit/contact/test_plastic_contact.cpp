@@ -308,6 +308,38 @@ TEST(PlasticContact, ElasticBallOnASupportThatStaysElasticIsTheElasticContact) {
   for (std::size_t i = 0; i < s.size(); ++i) EXPECT_NEAR(s[i], t[i], 1e-7 * peak) << i;
 }
 
+// The hardening block held only by its contacts: a roller on its left side, frictionless
+// contacts with a rigid floor below and a rigid platen above, pressed 0.01. Its vertical
+// translation is a free motion (a pin whose displacement is a datum of the cells, its
+// reaction a complementary value): every cell is the material point pressed 0.01.
+TEST(PlasticContact, BlockHeldOnlyByItsContactsIsThePressedBlock) {
+  std::string text = replaced(replaced(test_support::pressed_block_text(), "ANALYSIS", "plane_strain"),
+                              "HARDENING", "20000.0");
+  text = replaced(replaced(text, "u2 = 0.0\nt1 = 0.0\n", ""), "u2 = -0.01\nt1 = 0.0\n", "");
+  text = replaced(text, "[solver]",
+                  "[[body]]\nname = \"floor\"\n[body.rigid]\nprofile = \"contour\"\npoints = [[2.0, 0.0], [-1.0, 0.0]]\n"
+                  "displacement = [0.0, 0.0]\n[[body]]\nname = \"platen\"\n[body.rigid]\nprofile = \"flat\"\n"
+                  "center = [0.5, 1.0]\nhalf_width = 1.0\ndisplacement = [0.0, -0.01]\n"
+                  "[[contact]]\nname = \"below\"\nbody1 = \"block\"\nboundary1 = \"bottom\"\nbody2 = \"floor\"\n"
+                  "normal = \"body1\"\n[[contact]]\nname = \"above\"\nbody1 = \"block\"\nboundary1 = \"top\"\n"
+                  "body2 = \"platen\"\nnormal = \"body1\"\n[solver]");
+  RunOptions options;
+  options.keep_tables = true;
+  const auto output = run_problem(text, "free.toml", options);
+  ASSERT_TRUE(output.tables.count("motions.csv"));  // the free motion is reported
+  const double Y = 250.0;
+  const auto point = pressed_point_stress({200000.0, 0.3}, {Y, 20000.0, 0.0}, -0.01,
+                                          column(output.tables.at("block_plastic_steps.csv"), "amplitude").numbers);
+  const auto& cells = output.tables.at("block_cells.csv");
+  ASSERT_EQ(column(cells, "s22").numbers.size(), 16u);
+  for (std::size_t k = 0; k < 16; ++k) {
+    EXPECT_NEAR(column(cells, "s22").numbers[k], point[1], 1e-7 * Y) << k;
+    EXPECT_NEAR(column(cells, "s11").numbers[k], 0.0, 1e-7 * Y) << k;
+  }
+  for (const char* contact : {"below.csv", "above.csv"})
+    for (const double p : column(output.tables.at(contact), "p_n").numbers) EXPECT_NEAR(p, point[1], 1e-6 * Y);
+}
+
 // A block of two regions side by side, bonded along x = 1: "left" over [0, 1] x [0, 1]
 // (elastoplastic, yield stress 250, hardening E/10, roller at x = 0) and "right" over
 // [1, 2] x [0, 1] with the material `right_material`, both on a roller base; a smooth rigid
