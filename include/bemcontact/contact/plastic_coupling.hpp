@@ -23,9 +23,8 @@
 namespace bemcontact::contact {
 
 // The model's elastoplastic regions in contact, in the model's order (none: empty);
-// InputError at a yield_stress for what the coupling does not serve: a platen or a free
-// motion on its body, boundaries of their own amplitude, repeated load cycles, recorded
-// steps, compressed operators.
+// InputError at a yield_stress for what the coupling does not serve: boundaries of their
+// own amplitude, repeated load cycles, recorded steps, compressed operators.
 std::vector<int> plastic_regions_in_contact(const ContactProblem& problem, const ContactModel& model);
 
 class PlasticCoupling {
