@@ -917,7 +917,7 @@ ContactResult solve_on_meshes(const ContactProblem& problem, const bem::Progress
   result.unknowns = 2 * model.condensed().pairs + model.condensed().motions;
 
   std::unique_ptr<PlasticCoupling> coupling;
-  if (const auto plastic = plastic_regions_in_contact(problem, model); !plastic.empty()) {
+  if (const auto plastic = coupled_plastic_regions(problem, model); !plastic.empty()) {
     start = Clock::now();
     coupling = std::make_unique<PlasticCoupling>(problem, model, plastic, problem.memory_limit_bytes);
     result.timings.add("cells and their operators", seconds_since(start));

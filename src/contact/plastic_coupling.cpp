@@ -5,14 +5,14 @@
 
 namespace bemcontact::contact {
 
-std::vector<int> plastic_regions_in_contact(const ContactProblem& problem, const ContactModel& model) {
+std::vector<int> coupled_plastic_regions(const ContactProblem& problem, const ContactModel& model) {
   const auto& regions = model.prepared().regions;
   std::vector<int> found;
   for (std::size_t r = 0; r < regions.size(); ++r) {
     const auto& plasticity = regions[r].definition.plasticity;
     if (!plasticity) continue;
     const auto refuse = [&](const std::string& what) {
-      throw InputError(plasticity->where, "an elastoplastic region in contact " + what +
+      throw InputError(plasticity->where, "an elastoplastic region " + what +
                                               " is not in the model yet (docs/plasticity.md, Limits)");
     };
     found.push_back(static_cast<int>(r));

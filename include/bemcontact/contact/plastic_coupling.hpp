@@ -22,10 +22,11 @@
 
 namespace bemcontact::contact {
 
-// The model's elastoplastic regions in contact, in the model's order (none: empty);
+// The model's elastoplastic regions (in contact, bonded, under a force load or free), in
+// the model's order (none: empty);
 // InputError at a yield_stress for what the coupling does not serve: boundaries of their
 // own amplitude, repeated load cycles, recorded steps, compressed operators.
-std::vector<int> plastic_regions_in_contact(const ContactProblem& problem, const ContactModel& model);
+std::vector<int> coupled_plastic_regions(const ContactProblem& problem, const ContactModel& model);
 
 class PlasticCoupling {
  public:
