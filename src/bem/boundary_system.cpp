@@ -247,4 +247,30 @@ double boundary_equation_residual(const InfluenceMatrices& rotated,
   return scale > 0.0 ? r.norm() / scale : r.norm();
 }
 
+VariableConditions resolve_variable_conditions(const geometry::BoundaryMesh& mesh, const BodyDefinition& body,
+                                               AnalysisType type, const std::vector<VariableNode>& variable,
+                                               std::vector<PointConstraint> pins, const std::string& owner) {
+  VariableConditions out;
+  out.nodes = resolve_node_conditions(mesh, body, type);
+  for (const auto& v : variable) {
+    if (v.node < 0 || v.node >= mesh.node_count()) throw Error(owner + ": variable node out of range");
+    NodeCondition& c = out.nodes[static_cast<std::size_t>(v.node)];
+    const bool on_axis = c.on_axis;
+    c = NodeCondition{};
+    c.kind = {v.kind, v.kind};
+    if (on_axis) {  // symmetry keeps u_r = 0 and p_r = 0 on the axis
+      c.on_axis = true;
+      c.kind[0] = ConditionKind::displacement;
+    }
+  }
+  BodyDefinition constrained = body;
+  for (auto& pin : pins) {
+    if (pin.displacement[0].has_value() == pin.displacement[1].has_value())
+      throw Error(owner + ": a variable constraint prescribes exactly one component");
+    constrained.constraints.push_back(std::move(pin));
+  }
+  out.constraints = resolve_point_constraints(mesh, constrained, out.nodes);
+  return out;
+}
+
 }  // namespace bemcontact::bem

@@ -241,27 +241,12 @@ ElastoplasticRegion::ElastoplasticRegion(const geometry::BoundaryMesh& mesh, con
       components_(type == AnalysisType::axisymmetric ? 4 : 3) {
   if (!(hardening_.yield_stress > 0.0) || hardening_.isotropic < 0.0 || hardening_.kinematic < 0.0)
     throw Error("body '" + body.name + "': the yield stress must be > 0 and the hardening moduli >= 0");
-  conditions_ = resolve_node_conditions(mesh_, body, type);
-  // The surface nodes carry data of their kind in global components (u_r = 0 kept on the
-  // axis), as FactoredBody's variable nodes do.
-  for (const auto& surface : surface_nodes_) {
-    if (surface.node < 0 || surface.node >= mesh_.node_count())
-      throw Error("ElastoplasticRegion: surface node out of range");
-    NodeCondition& c = conditions_[static_cast<std::size_t>(surface.node)];
-    const bool on_axis = c.on_axis;
-    c = NodeCondition{};
-    c.kind = {surface.kind, surface.kind};
-    if (on_axis) c.on_axis = true, c.kind[0] = ConditionKind::displacement;
-  }
-  // Variable constraints (a free body's pins): one displacement component each, their value
-  // a datum after the nodes', their reaction its complementary value (as FactoredBody's).
-  BodyDefinition constrained = body;
-  for (auto& constraint : surface_constraints) {
-    if (constraint.displacement[0].has_value() == constraint.displacement[1].has_value())
-      throw Error("ElastoplasticRegion: a variable constraint prescribes exactly one component");
-    constrained.constraints.push_back(std::move(constraint));
-  }
-  constraints_ = resolve_point_constraints(mesh_, constrained, conditions_);
+  // The surface nodes carry data of their kind, the surface constraints theirs (as
+  // FactoredBody's variable nodes and constraints).
+  auto conditions = resolve_variable_conditions(mesh_, body, type, surface_nodes_, std::move(surface_constraints),
+                                                "ElastoplasticRegion");
+  conditions_ = std::move(conditions.nodes);
+  constraints_ = std::move(conditions.constraints);
   const ElementIntegrator integrator(type, material_);
   const CellKernels kernels(type, material_);
   const Index d = components_;

@@ -37,25 +37,10 @@ FactoredBody::FactoredBody(const geometry::BoundaryMesh& mesh, const BodyDefinit
                            std::vector<VariableNode> variable_nodes, const ProgressCallback& progress,
                            std::vector<PointConstraint> variable_constraints, const OperatorChoice& choice)
     : mesh_(mesh), variable_(std::move(variable_nodes)), variable_constraints_(static_cast<Index>(variable_constraints.size())) {
-  conditions_ = resolve_node_conditions(mesh_, body, type);
-  for (const auto& v : variable_) {
-    if (v.node < 0 || v.node >= mesh_.node_count()) throw Error("FactoredBody: variable node out of range");
-    NodeCondition& c = conditions_[v.node];
-    const bool on_axis = c.on_axis;
-    c = NodeCondition{};
-    c.kind = {v.kind, v.kind};
-    if (on_axis) {  // symmetry keeps u_r = 0 and p_r = 0 on the axis
-      c.on_axis = true;
-      c.kind[0] = ConditionKind::displacement;
-    }
-  }
-  BodyDefinition constrained = body;
-  for (auto& constraint : variable_constraints) {
-    if (constraint.displacement[0].has_value() == constraint.displacement[1].has_value())
-      throw Error("FactoredBody: a variable constraint prescribes exactly one component");
-    constrained.constraints.push_back(std::move(constraint));
-  }
-  constraints_ = resolve_point_constraints(mesh_, constrained, conditions_);
+  auto conditions = resolve_variable_conditions(mesh_, body, type, variable_, std::move(variable_constraints),
+                                                "FactoredBody");
+  conditions_ = std::move(conditions.nodes);
+  constraints_ = std::move(conditions.constraints);
   const std::string what = "the boundary element system of body '" + body.name + "'";
   const Index unknowns = 2 * mesh_.node_count() + static_cast<Index>(constraints_.size());
   if (use_compressed_operator(choice, unknowns, geometry::symmetry_line_count(mesh_.images))) {

@@ -46,6 +46,26 @@ std::vector<ConstraintEquation> resolve_point_constraints(
     const geometry::BoundaryMesh& mesh, const BodyDefinition& body,
     const std::vector<NodeCondition>& conditions);
 
+// A node whose data are set from outside (a contact's tractions, a bond's or a platen's
+// displacements): both components of one kind, in global components.
+struct VariableNode {
+  Index node = -1;
+  ConditionKind kind = ConditionKind::traction;  // what is prescribed at the node
+};
+
+// A body's conditions with its variable nodes' and pins' data set from outside: the nodes'
+// conditions as resolve_node_conditions gives them, each variable node's replaced (both
+// components of its kind, global frame; on the axis u_r = p_r = 0 kept), and the point
+// constraints with the pins after the body's own (one component each, their values data).
+// Error naming `owner` for a node out of range or a pin of not exactly one component.
+struct VariableConditions {
+  std::vector<NodeCondition> nodes;
+  std::vector<ConstraintEquation> constraints;
+};
+VariableConditions resolve_variable_conditions(const geometry::BoundaryMesh& mesh, const BodyDefinition& body,
+                                               AnalysisType type, const std::vector<VariableNode>& variable,
+                                               std::vector<PointConstraint> pins, const std::string& owner);
+
 struct BoundarySystem {
   Matrix A;
   Vector b;

@@ -19,11 +19,6 @@
 
 namespace bemcontact::bem {
 
-struct VariableNode {
-  Index node = -1;
-  ConditionKind kind = ConditionKind::traction;  // what is prescribed at the node
-};
-
 // Point constraints may be variable too (a free body's rigid motion, the contact model's
 // unknown): each such constraint prescribes one displacement component, its value is a
 // variable datum after the nodes' (one per constraint) and its complementary value the

@@ -238,6 +238,19 @@ TEST(ElastoplasticRun, WarnsWhenThePlasticZoneReachesTheBox) {
   EXPECT_EQ(wide.find("plastic zone"), std::string::npos) << wide;
 }
 
+// The mean radial displacement of a boundary's nodes in a boundary table.
+double mean_radial_displacement(const io::CsvTable& table, const std::string& boundary) {
+  double sum = 0.0;
+  int nodes = 0;
+  for (std::size_t i = 0; i < column(table, "x").numbers.size(); ++i) {
+    if (column(table, "boundary").texts[i] != boundary) continue;
+    const Vec2 x(column(table, "x").numbers[i], column(table, "y").numbers[i]);
+    sum += Vec2(column(table, "u1").numbers[i], column(table, "u2").numbers[i]).dot(x.normalized());
+    ++nodes;
+  }
+  return sum / nodes;
+}
+
 // The bonded tube against the independent 1D reference (reference/plastic_cylinder.hpp) at
 // two cell sizes: the residual bore displacement and the cells' residual hoop stress within
 // the bounds of the one-region tube (validate plastic-cylinder: 10 % / 4 %, 2 % / 1 % of Y),
@@ -258,16 +271,7 @@ TEST(ElastoplasticRun, TubeWithAnElasticOuterRingBondedIsTheReference) {
   for (const double size : {0.16, 0.08}) {
     const auto output = run_problem(test_support::bonded_tube(size), "tube.toml", options);
     // The bore's mean radial displacement after unloading.
-    const auto& inner = output.tables.at("inner_ring_boundary.csv");
-    double bore = 0.0;
-    int nodes = 0;
-    for (std::size_t i = 0; i < column(inner, "x").numbers.size(); ++i) {
-      if (column(inner, "boundary").texts[i] != "inner") continue;
-      const Vec2 x(column(inner, "x").numbers[i], column(inner, "y").numbers[i]);
-      bore += Vec2(column(inner, "u1").numbers[i], column(inner, "u2").numbers[i]).dot(x.normalized());
-      ++nodes;
-    }
-    bore /= nodes;
+    const double bore = mean_radial_displacement(output.tables.at("inner_ring_boundary.csv"), "inner");
     const double bore_error = std::abs(bore / residual.inner_displacement - 1.0);
     // The cells' residual hoop stress against the reference's at the nearest Gauss point.
     const auto& cells = output.tables.at("inner_ring_cells.csv");
@@ -287,16 +291,7 @@ TEST(ElastoplasticRun, TubeWithAnElasticOuterRingBondedIsTheReference) {
     // The outer ring stays elastic; its outer surface keeps the residual u_r(b) the plastic
     // strains leave (a small difference of the loaded and unloaded responses: its error is
     // the bore's, carried through the bond).
-    const auto& outer = output.tables.at("outer_ring_boundary.csv");
-    double outside = 0.0;
-    int outer_nodes = 0;
-    for (std::size_t i = 0; i < column(outer, "x").numbers.size(); ++i) {
-      if (column(outer, "boundary").texts[i] != "outer") continue;
-      const Vec2 x(column(outer, "x").numbers[i], column(outer, "y").numbers[i]);
-      outside += Vec2(column(outer, "u1").numbers[i], column(outer, "u2").numbers[i]).dot(x.normalized());
-      ++outer_nodes;
-    }
-    outside /= outer_nodes;
+    const double outside = mean_radial_displacement(output.tables.at("outer_ring_boundary.csv"), "outer");
     const double outside_error = std::abs(outside / residual.outer_displacement - 1.0);
     EXPECT_LT(outside_error, size > 0.1 ? 0.10 : 0.04) << size;
     EXPECT_LT(outside_error, last_outside) << size;
