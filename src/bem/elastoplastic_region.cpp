@@ -87,6 +87,15 @@ std::vector<NodeCondition> scaled(std::vector<NodeCondition> conditions, double 
   return conditions;
 }
 
+// The conditions with their prescribed values times their load group's amplitude.
+std::vector<NodeCondition> scaled(std::vector<NodeCondition> conditions, const Vector& amplitudes) {
+  for (auto& c : conditions) {
+    const double a = amplitudes[c.load_group];
+    c.value = {a * c.value[0], a * c.value[1]};
+  }
+  return conditions;
+}
+
 // Nodal values (u, t), 4N, of the boundary unknowns y.
 Vector boundary_values(const Vector& y, const std::vector<NodeCondition>& conditions,
                        const std::vector<ConstraintEquation>& constraints) {
@@ -253,7 +262,9 @@ ElastoplasticRegion::ElastoplasticRegion(const geometry::BoundaryMesh& mesh, con
   auto matrices = assemble_influence_matrices(mesh_, integrator);
   auto system = build_boundary_system(matrices, conditions_, constraints_);
   const Index n = mesh_.node_count(), rows = system.b.size(), m = static_cast<Index>(cells_.size());
-  const Index k2 = surface_dofs_, first_cell = 1 + k2, node_dofs = 2 * static_cast<Index>(surface_nodes_.size());
+  groups_ = 1;
+  for (const auto& c : conditions_) groups_ = std::max<Index>(groups_, c.load_group + 1);
+  const Index g = groups_, k2 = surface_dofs_, first_cell = g + k2, node_dofs = 2 * static_cast<Index>(surface_nodes_.size());
   const Index first_constraint = static_cast<Index>(constraints_.size()) - (k2 - node_dofs);
   // A surface node's dof carries its datum, but for the radial one on the axis (u_r = p_r = 0).
   const auto surface_of = [&](Index j) -> const VariableNode& { return surface_nodes_[static_cast<std::size_t>(j / 2)]; };
@@ -261,27 +272,40 @@ ElastoplasticRegion::ElastoplasticRegion(const geometry::BoundaryMesh& mesh, con
     return j < node_dofs && !(conditions_[static_cast<std::size_t>(surface_of(j).node)].on_axis && j % 2 == 0);
   };
   const auto is_displacement = [&](Index j) { return j >= node_dofs || surface_of(j).kind == ConditionKind::displacement; };
-  // [b | T | B]: a unit datum at each surface dof, G's column for a traction and -H's for a
-  // displacement (the matrices are in the nodes' frames, the surface nodes' global); the
-  // cells' domain term at the collocation nodes (the boundary equation's rows), each cell's
-  // columns by one thread. Solved in place.
+  // [b_g | T | B]: the body's own data by load group (b_g = G p_g - H u_g, the constraints'
+  // rows in group 0, as FactoredBody's), a unit datum at each surface dof, G's column for a
+  // traction and -H's for a displacement (the matrices are in the nodes' frames, the surface
+  // nodes' global); the cells' domain term at the collocation nodes (the boundary
+  // equation's rows), each cell's columns by one thread. Solved in place.
   boundary_unknowns_ = Matrix::Zero(rows, first_cell + d * m);
-  boundary_unknowns_.col(0) = system.b;
+  for (Index group = 0; group < g; ++group) {
+    Vector known_u = Vector::Zero(2 * n), known_p = Vector::Zero(2 * n);
+    for (Index i = 0; i < n; ++i)
+      for (int c = 0; c < 2; ++c) {
+        const auto& condition = conditions_[static_cast<std::size_t>(i)];
+        if (condition.load_group == group)
+          (condition.kind[c] == ConditionKind::displacement ? known_u : known_p)[2 * i + c] = condition.value[c];
+      }
+    boundary_unknowns_.block(0, group, 2 * n, 1) = matrices.G * known_p - matrices.H * known_u;
+    if (group == 0) boundary_unknowns_.block(2 * n, 0, rows - 2 * n, 1) = system.b.tail(rows - 2 * n);
+    for (Index i = 0; i < n; ++i)
+      if (conditions_[static_cast<std::size_t>(i)].on_axis) boundary_unknowns_(2 * i, group) = 0.0;
+  }
   // A variable constraint's datum is the right-hand side of its equation (the last rows).
   for (Index j = node_dofs; j < k2; ++j) {
     const Index row = 2 * n + first_constraint + (j - node_dofs);
     boundary_unknowns_(row, 0) = 0.0;
-    boundary_unknowns_(row, 1 + j) = 1.0;
+    boundary_unknowns_(row, g + j) = 1.0;
   }
   for (Index j = 0; j < k2; ++j) {
     if (!carries_datum(j)) continue;
     const Index dof = 2 * surface_of(j).node + j % 2;
     if (is_displacement(j))
-      boundary_unknowns_.block(0, 1 + j, 2 * n, 1) = -matrices.H.col(dof);
+      boundary_unknowns_.block(0, g + j, 2 * n, 1) = -matrices.H.col(dof);
     else
-      boundary_unknowns_.block(0, 1 + j, 2 * n, 1) = matrices.G.col(dof);
+      boundary_unknowns_.block(0, g + j, 2 * n, 1) = matrices.G.col(dof);
     for (Index i = 0; i < n; ++i)
-      if (conditions_[static_cast<std::size_t>(i)].on_axis) boundary_unknowns_(2 * i, 1 + j) = 0.0;
+      if (conditions_[static_cast<std::size_t>(i)].on_axis) boundary_unknowns_(2 * i, g + j) = 0.0;
   }
 #pragma omp parallel for schedule(dynamic, 1)
   for (Index e = 0; e < m; ++e) {
@@ -298,15 +322,18 @@ ElastoplasticRegion::ElastoplasticRegion(const geometry::BoundaryMesh& mesh, con
   // then the cells' own fields.
   const std::vector<NodeCondition> unloaded = scaled(conditions_, 0.0);
   Matrix values(4 * n, first_cell + d * m);
-  for (Index j = 0; j < first_cell + d * m; ++j)
-    values.col(j) = boundary_values(boundary_unknowns_.col(j), j == 0 ? conditions_ : unloaded, constraints_);
+  for (Index j = 0; j < first_cell + d * m; ++j) {
+    Vector unit = Vector::Zero(g);  // group j's data at amplitude 1, the others' none
+    if (j < g) unit[j] = 1.0;
+    values.col(j) = boundary_values(boundary_unknowns_.col(j), j < g ? scaled(conditions_, unit) : unloaded, constraints_);
+  }
   for (Index j = 0; j < k2; ++j)  // the unit datum itself
-    if (carries_datum(j)) values((is_displacement(j) ? 0 : 2 * n) + 2 * surface_of(j).node + j % 2, 1 + j) = 1.0;
+    if (carries_datum(j)) values((is_displacement(j) ? 0 : 2 * n) + 2 * surface_of(j).node + j % 2, g + j) = 1.0;
   mean_points_ = cell_mean_points(mesh_, cells_);
   const auto& means = mean_points_;
   const Matrix through_boundary = mean_somigliana_rows(mesh_, kernels, means) * values;
-  load_stress_ = through_boundary.col(0);
-  data_stress_ = through_boundary.middleCols(1, k2);
+  load_stress_ = through_boundary.leftCols(g);
+  data_stress_ = through_boundary.middleCols(g, k2);
   cell_operator_ = through_boundary.rightCols(d * m);
   // The cells' direct fields: only the columns of cells whose initial stress is not zero
   // are ever used (cell_fields_of, the Newton system's plastic columns), added when a cell
@@ -321,6 +348,7 @@ ElastoplasticRegion::ElastoplasticRegion(const geometry::BoundaryMesh& mesh, con
             ? Matrix(values.block((is_displacement(j) ? 2 * n : 0) + 2 * surface_of(j).node + j % 2, first_cell, 1, d * m))
             : Matrix(boundary_unknowns_.block(2 * n + first_constraint + (j - node_dofs), first_cell, 1, d * m));
   surface_data_ = Vector::Zero(k2);
+  amplitudes_ = Vector::Zero(g);
   states_.assign(static_cast<std::size_t>(m), J2State{});
   stress_.assign(static_cast<std::size_t>(m), Mandel::Zero());
   thickness_strain_.assign(static_cast<std::size_t>(m), 0.0);
@@ -350,15 +378,15 @@ Vector ElastoplasticRegion::initial_stresses() const {
 }
 
 ElastoplasticState ElastoplasticRegion::state() const {
-  return {states_, stress_, thickness_strain_, surface_data_, amplitude_};
+  return {states_, stress_, thickness_strain_, surface_data_, amplitudes_};
 }
 
 void ElastoplasticRegion::restore(const ElastoplasticState& state) {
   states_ = state.states, stress_ = state.stress, thickness_strain_ = state.thickness_strain;
-  surface_data_ = state.surface_data, amplitude_ = state.amplitude;
+  surface_data_ = state.surface_data, amplitudes_ = state.amplitudes;
 }
 
-// The residual F(E) of an increment to `amplitude` with the surface data `data`,
+// The residual F(E) of an increment to the load groups' `amplitudes` with the surface data `data`,
 // with each cell's update, its initial stress and d sigma0 / d E (the Newton system's blocks).
 struct ElastoplasticRegion::Evaluation {
   std::vector<J2Update> updates;
@@ -395,7 +423,7 @@ Vector ElastoplasticRegion::cell_fields_of(const Vector& sigma0) const {
   return out;
 }
 
-ElastoplasticRegion::Evaluation ElastoplasticRegion::evaluate(const Vector& E, double amplitude, const Vector& data,
+ElastoplasticRegion::Evaluation ElastoplasticRegion::evaluate(const Vector& E, const Vector& amplitudes, const Vector& data,
                                                               const std::vector<plasticity::J2Hold>& held,
                                                               const CommittedFields& committed) const {
   const Index m = static_cast<Index>(cells_.size()), d = components_;
@@ -434,7 +462,7 @@ ElastoplasticRegion::Evaluation ElastoplasticRegion::evaluate(const Vector& E, d
   // C E as the boundary's and the cells' fields give it; the cells' fields as the committed
   // ones plus those of the cells whose initial stress moved (the plastic ones: a few of
   // all, where the whole product was half the run's time).
-  const Vector target = amplitude * load_stress_ + data_stress_ * data + committed.field +
+  const Vector target = load_stress_ * amplitudes.head(groups_) + data_stress_ * data + committed.field +
                         cell_fields_of(sigma0 - committed.sigma0);
   out.sigma0 = sigma0;
   out.F.resize(d * m);
@@ -449,11 +477,11 @@ ElastoplasticRegion::Evaluation ElastoplasticRegion::evaluate(const Vector& E, d
 // each iteration solves it on the linearised plastic response (Newton's step in the
 // surface data), and the increment ends when F and the data's change both vanish.
 struct ElastoplasticIncrement::State {
-  State(ElastoplasticRegion& r, double a, int iterations, double tol, bool contact)
-      : region(r), amplitude(a), max_iterations(iterations), tolerance(tol), in_contact(contact),
+  State(ElastoplasticRegion& r, Vector a, int iterations, double tol, bool contact)
+      : region(r), amplitudes(std::move(a)), max_iterations(iterations), tolerance(tol), in_contact(contact),
         m(static_cast<Index>(r.cells_.size())), d(r.components_) {}
   ElastoplasticRegion& region;
-  double amplitude;
+  Vector amplitudes;  // per load group
   int max_iterations;
   double tolerance;
   bool in_contact;
@@ -481,9 +509,10 @@ struct ElastoplasticIncrement::State {
   Vector step_plastic, rhs, u0;
 };
 
-ElastoplasticIncrement::ElastoplasticIncrement(ElastoplasticRegion& region, double amplitude, int max_iterations,
+ElastoplasticIncrement::ElastoplasticIncrement(ElastoplasticRegion& region, const Vector& amplitudes, int max_iterations,
                                                double tolerance, bool in_contact)
-    : s_(std::make_unique<State>(region, amplitude, max_iterations, tolerance, in_contact)) {
+    : s_(std::make_unique<State>(region, amplitudes, max_iterations, tolerance, in_contact)) {
+  if (amplitudes.size() < region.groups_) throw std::logic_error("ElastoplasticIncrement: an amplitude per load group");
   State& s = *s_;
   const Index m = s.m, d = s.d;
   s.compliance = CellKernels(region.type_, region.material_).stiffness().inverse();
@@ -492,7 +521,8 @@ ElastoplasticIncrement::ElastoplasticIncrement(ElastoplasticRegion& region, doub
   s.committed.sigma0 = region.initial_stresses();
   s.committed.field = region.cell_fields_of(s.committed.sigma0);
   s.E.resize(d * m);
-  const Vector target = amplitude * region.load_stress_ + region.data_stress_ * s.data + s.committed.field;
+  const Vector target = region.load_stress_ * s.amplitudes.head(region.groups_) + region.data_stress_ * s.data +
+                        s.committed.field;
   for (Index e = 0; e < m; ++e) s.E.segment(d * e, d) = s.compliance * target.segment(d * e, d);
   s.strain_per_datum.resize(d * m, region.surface_dofs_);
   for (Index e = 0; e < m; ++e)
@@ -500,7 +530,7 @@ ElastoplasticIncrement::ElastoplasticIncrement(ElastoplasticRegion& region, doub
   s.held.assign(static_cast<std::size_t>(m), plasticity::J2Hold::none);
   s.last_state.assign(static_cast<std::size_t>(m), 0);
   s.flips.assign(static_cast<std::size_t>(m), 0);
-  s.current = region.evaluate(s.E, amplitude, s.data, s.held, s.committed);
+  s.current = region.evaluate(s.E, s.amplitudes, s.data, s.held, s.committed);
   s.last_norm = s.current.norm;
 }
 
@@ -536,7 +566,7 @@ bool ElastoplasticIncrement::linearise(std::string& failure) {
       s.held[k] = plasticity::J2Hold::on_surface, newly_held = true;
     s.last_state[k] = state;
   }
-  if (newly_held) s.current = region.evaluate(s.E, s.amplitude, s.data, s.held, s.committed);
+  if (newly_held) s.current = region.evaluate(s.E, s.amplitudes, s.data, s.held, s.committed);
   const bool stalled = s.stalled_for >= kStalledIterations;
   if (s.iteration == s.max_iterations || stalled || !std::isfinite(s.current.norm)) {
     const Vec2 at = region.cells_[static_cast<std::size_t>(s.current.worst)].centroid();
@@ -630,7 +660,7 @@ void ElastoplasticIncrement::step(const Vector& next) {
     s.step_plastic += s.Z * change;
     s.rhs += s.strain_per_datum * change;
     s.data = next;
-    s.current = region.evaluate(s.E, s.amplitude, s.data, s.held, s.committed);  // the line search's reference
+    s.current = region.evaluate(s.E, s.amplitudes, s.data, s.held, s.committed);  // the line search's reference
   }
   // dE_Q = r_Q - (J - I)_QP dE_P = r_Q + C^-1 (K_QP S_P dE_P): one product over the
   // plastic cells' columns.
@@ -643,11 +673,11 @@ void ElastoplasticIncrement::step(const Vector& next) {
   for (std::size_t i = 0; i < s.plastic.size(); ++i)
     step.middleRows(d * s.plastic[i], d) = s.step_plastic.segment(d * static_cast<Index>(i), d);
   double fraction = 1.0;
-  auto next_evaluation = region.evaluate(s.E + step.col(0), s.amplitude, s.data, s.held, s.committed);
+  auto next_evaluation = region.evaluate(s.E + step.col(0), s.amplitudes, s.data, s.held, s.committed);
   constexpr int kHalvings = 10;
   for (int k = 0; k < kHalvings && !(next_evaluation.F.norm() < (1.0 - 1e-4 * fraction) * s.current.F.norm()); ++k) {
     fraction *= 0.5;
-    next_evaluation = region.evaluate(s.E + fraction * step.col(0), s.amplitude, s.data, s.held, s.committed);
+    next_evaluation = region.evaluate(s.E + fraction * step.col(0), s.amplitudes, s.data, s.held, s.committed);
   }
   s.E += fraction * step.col(0);
   s.current = std::move(next_evaluation);
@@ -677,7 +707,7 @@ bool ElastoplasticIncrement::settle_held() {
   }
   if (!changed) return false;
   ++s.settled;
-  s.current = region.evaluate(s.E, s.amplitude, s.data, s.held, s.committed);
+  s.current = region.evaluate(s.E, s.amplitudes, s.data, s.held, s.committed);
   return true;
 }
 
@@ -700,14 +730,14 @@ void ElastoplasticIncrement::commit(IncrementReport& report) {
     region.thickness_strain_[k] = update.strain[2];
   }
   region.surface_data_ = s.data;
-  region.amplitude_ = s.amplitude;
+  region.amplitudes_ = s.amplitudes;
 }
 
 // Without contact: Newton's steps at the surface data of the last increment. Commits
 // the state when it converges; false otherwise (`failure` says where).
 bool ElastoplasticRegion::solve_increment(double amplitude, int max_iterations, double tolerance,
                                           IncrementReport& report, std::string& failure) {
-  ElastoplasticIncrement increment(*this, amplitude, max_iterations, tolerance, false);
+  ElastoplasticIncrement increment(*this, Vector::Constant(1, amplitude), max_iterations, tolerance, false);
   while (!increment.converged() || increment.settle_held()) {
     if (!increment.linearise(failure)) {
       report.residual = increment.residual();
@@ -722,7 +752,8 @@ bool ElastoplasticRegion::solve_increment(double amplitude, int max_iterations, 
 IncrementReport ElastoplasticRegion::advance(double amplitude, int max_iterations, double tolerance) {
   IncrementReport report;
   report.amplitude = amplitude;
-  const double from = amplitude_;
+  if (groups_ > 1) throw std::logic_error("ElastoplasticRegion::advance: one load group (the data amplitude)");
+  const double from = amplitudes_[0];
   // An increment that fails is cut in halves, each solved in turn, down to kMaxCuts levels.
   constexpr int kMaxCuts = 6;
   std::vector<std::pair<double, int>> targets{{amplitude, 0}};  // (amplitude, cut level), last first
@@ -748,7 +779,7 @@ IncrementReport ElastoplasticRegion::advance(double amplitude, int max_iteration
     }
     ++report.cuts;
     targets.back().second = level + 1;
-    targets.push_back({0.5 * (amplitude_ + target), level + 1});
+    targets.push_back({0.5 * (amplitudes_[0] + target), level + 1});
   }
   return report;
 }
@@ -756,10 +787,10 @@ IncrementReport ElastoplasticRegion::advance(double amplitude, int max_iteration
 BoundarySolution ElastoplasticRegion::boundary_solution() const {
   const Index m = static_cast<Index>(cells_.size());
   const Index d = components_;
-  Vector coefficients(1 + surface_dofs_ + d * m);
-  coefficients << amplitude_, surface_data_, initial_stresses();
+  Vector coefficients(groups_ + surface_dofs_ + d * m);
+  coefficients << amplitudes_.head(groups_), surface_data_, initial_stresses();
   BoundarySolution solution =
-      recover_boundary_values(boundary_unknowns_ * coefficients, scaled(conditions_, amplitude_), constraints_);
+      recover_boundary_values(boundary_unknowns_ * coefficients, scaled(conditions_, amplitudes_), constraints_);
   for (Index j = 0; j < 2 * static_cast<Index>(surface_nodes_.size()); ++j) {
     const auto& surface = surface_nodes_[static_cast<std::size_t>(j / 2)];
     const auto node = static_cast<std::size_t>(surface.node);

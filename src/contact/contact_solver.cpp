@@ -855,15 +855,19 @@ void add_region_boundaries(const ContactProblem& problem, const ContactModel& mo
 
 // When every step is recorded: the regions' boundary solutions at each step, with stresses.
 void add_step_boundaries(const ContactProblem& problem, const ContactModel& model, const LoadHistory& history,
-                         ContactResult& result) {
+                         const PlasticCoupling* coupling, ContactResult& result) {
   const auto& regions = model.prepared().regions;
   for (std::size_t k = 0; k < history.step_x.size(); ++k) {
     std::vector<bem::BoundarySolution> regions_at_step;
     for (std::size_t r = 0; r < regions.size(); ++r) {
-      auto boundary = model.region_solution(static_cast<int>(r), history.step_x[k], history.step_delta[k],
-                                            result.records[k].load_time);
-      boundary.stress =
-          bem::boundary_stresses(regions[r].mesh, problem.analysis, regions[r].definition.material, boundary);
+      // The regions of an elastoplastic region's body: as the coupling kept them at the step.
+      auto kept = coupling ? coupling->step_solution(k, static_cast<int>(r)) : std::nullopt;
+      auto boundary = kept ? std::move(*kept)
+                           : model.region_solution(static_cast<int>(r), history.step_x[k], history.step_delta[k],
+                                                   result.records[k].load_time);
+      if (boundary.stress.empty())
+        boundary.stress =
+            bem::boundary_stresses(regions[r].mesh, problem.analysis, regions[r].definition.material, boundary);
       regions_at_step.push_back(std::move(boundary));
     }
     result.step_boundary.push_back(std::move(regions_at_step));
@@ -940,7 +944,7 @@ ContactResult solve_on_meshes(const ContactProblem& problem, const bem::Progress
   for (const auto& plastic : result.plastic)
     result.warnings.insert(result.warnings.end(), plastic.result.warnings.begin(), plastic.result.warnings.end());
   add_region_boundaries(problem, model, history, coupling.get(), result);
-  add_step_boundaries(problem, model, history, result);
+  add_step_boundaries(problem, model, history, coupling.get(), result);
   result.timings.add("boundary stresses", seconds_since(start));
   start = Clock::now();
   if (add_interior_values(problem, model, selections, progress, coupling.get(), result))

@@ -46,14 +46,15 @@ ContactProblem model_of(const dd::DecompositionProblem& problem) {
 }
 
 SolverRoute route_of(const ContactProblem& model) {
-  // An elastoplastic region alone steps on its own; in contact, bonded to other regions or
-  // pressed by a force load (a platen), the contact model's history steps it
-  // (plastic_coupling.hpp).
+  // An elastoplastic region alone steps on its own; in contact, bonded to other regions,
+  // pressed by a force load (a platen) or with boundaries of their own amplitude, the
+  // contact model's history steps it (plastic_coupling.hpp).
   std::size_t regions = 0;
   for (const auto& body : model.bodies) regions += body.rigid ? 1 : body.regions.size();
   for (const auto& body : model.bodies)
     for (const auto& region : body.regions)
-      if (region.body.plasticity && model.contacts.empty() && model.forces.empty() && regions == 1)
+      if (region.body.plasticity && model.contacts.empty() && model.forces.empty() &&
+          model.boundary_amplitudes.empty() && regions == 1)
         return SolverRoute::elastoplastic;
   if (!holds_one_body_alone(model)) return SolverRoute::condensed;
   return model.bodies[0].regions.size() == 1 ? SolverRoute::direct : SolverRoute::decomposition;
@@ -102,7 +103,6 @@ ElastoplasticHistory elastoplastic_history(const ContactProblem& model) {
     throw InputError(plasticity.where, "an elastoplastic region " + what +
                                            " is not in the model yet (docs/plasticity.md, Limits)");
   };
-  if (!model.boundary_amplitudes.empty()) refuse("with boundaries of their own amplitude");
   if (model.operator_choice.kind == bem::OperatorKind::compressed) refuse("on compressed operators (dense only)");
 
   ElastoplasticHistory history;

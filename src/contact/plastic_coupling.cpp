@@ -16,9 +16,8 @@ std::vector<int> coupled_plastic_regions(const ContactProblem& problem, const Co
                                               " is not in the model yet (docs/plasticity.md, Limits)");
     };
     found.push_back(static_cast<int>(r));
-    if (!problem.boundary_amplitudes.empty()) refuse("with boundaries of their own amplitude");
-    if (problem.cycles.repeated()) refuse("over repeated load cycles");
-    if (problem.record_steps) refuse("with every step recorded (record_steps)");
+    if (problem.cycles.repeated())
+      refuse("over repeated load cycles with cycle jumping ([history] cycles: write the cycles in the amplitudes)");
     if (problem.operator_choice.kind == bem::OperatorKind::compressed) refuse("on compressed operators (dense only)");
   }
   return found;
@@ -57,13 +56,14 @@ std::vector<int> PlasticCoupling::regions() const {
 
 StepOutput PlasticCoupling::solve_step(const StepInput& input, const SolverOptions& options) {
   const CondensedProblem& condensed = model_.condensed();
-  const double amplitude = problem_.data_amplitude.at(input.time);
+  const auto group_amplitudes = problem_.group_amplitudes(input.time);
+  const Vector amplitudes = Eigen::Map<const Vector>(group_amplitudes.data(), static_cast<Index>(group_amplitudes.size()));
   std::vector<std::unique_ptr<bem::ElastoplasticIncrement>> increments;
   for (auto& region : plastic_) {
     region.plastic->restore(region.accepted);
     region.last_report = {};
-    region.last_report.amplitude = amplitude;
-    increments.push_back(std::make_unique<bem::ElastoplasticIncrement>(*region.plastic, amplitude, 30, 1e-10, true));
+    region.last_report.amplitude = amplitudes[0];
+    increments.push_back(std::make_unique<bem::ElastoplasticIncrement>(*region.plastic, amplitudes, 30, 1e-10, true));
   }
   const auto label = [&](const PlasticRegion& region) {
     return "elastoplastic " + model_.prepared().regions[static_cast<std::size_t>(region.region)].label + ": ";
@@ -131,6 +131,12 @@ StepOutput PlasticCoupling::solve_step(const StepInput& input, const SolverOptio
 void PlasticCoupling::accept(double time) {
   accepted_data_ = last_data_;
   accepted_time_ = time;
+  if (problem_.record_steps) {
+    std::vector<std::optional<bem::BoundarySolution>> at_step;
+    for (std::size_t r = 0; r < model_.prepared().regions.size(); ++r)
+      at_step.push_back(solution_now(static_cast<int>(r), accepted_data_, time));
+    step_solutions_.push_back(std::move(at_step));
+  }
   for (auto& region : plastic_) {
     region.accepted = region.plastic->state();
     const auto& prepared = model_.prepared().regions[static_cast<std::size_t>(region.region)];
@@ -161,12 +167,31 @@ bem::ElastoplasticResult PlasticCoupling::result(std::size_t k) const {
   return out;
 }
 
-std::optional<bem::BoundarySolution> PlasticCoupling::elastic_solution(int r) const {
+std::optional<bem::BoundarySolution> PlasticCoupling::solution_now(int r, const std::vector<Vector>& data,
+                                                                   double time) const {
+  for (const auto& region : plastic_) {
+    if (region.region != r) continue;
+    const auto& prepared = model_.prepared().regions[static_cast<std::size_t>(r)];
+    auto boundary = region.plastic->boundary_solution();
+    boundary.stress = bem::elastoplastic_boundary_stresses(prepared.mesh, problem_.analysis,
+                                                           prepared.definition.material, boundary, region.cells,
+                                                           region.plastic->states());
+    return boundary;
+  }
   const auto k = static_cast<std::size_t>(r);
-  if (k >= accepted_data_.size() || accepted_data_[k].size() == 0) return std::nullopt;  // not bonded to one
+  if (k >= data.size() || data[k].size() == 0) return std::nullopt;  // not of an elastoplastic region's body
+  return model_.region(r).solve_with_amplitudes(data[k], problem_.group_amplitudes(time));
+}
+
+std::optional<bem::BoundarySolution> PlasticCoupling::elastic_solution(int r) const {
   for (const auto& region : plastic_)
     if (region.region == r) return std::nullopt;
-  return model_.region(r).solve_with_amplitudes(accepted_data_[k], problem_.group_amplitudes(accepted_time_));
+  return solution_now(r, accepted_data_, accepted_time_);
+}
+
+std::optional<bem::BoundarySolution> PlasticCoupling::step_solution(std::size_t step, int r) const {
+  if (step >= step_solutions_.size()) return std::nullopt;
+  return step_solutions_[step][static_cast<std::size_t>(r)];
 }
 
 bem::PlasticCellFields PlasticCoupling::cell_fields(std::size_t k) const { return plastic_.at(k).plastic->cell_fields(); }

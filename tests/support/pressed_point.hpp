@@ -29,6 +29,24 @@ inline plasticity::Mandel pressed_point_stress(const Material& material, const p
   return update.stress;
 }
 
+// Per step k: eps_22 = strains[k] and sigma_11 = stresses[k] (a lateral pressure of its
+// own history: non-proportional loading), eps_11 found by Newton.
+inline plasticity::Mandel pressed_point_stress(const Material& material, const plasticity::J2Hardening& hardening,
+                                               const std::vector<double>& strains, const std::vector<double>& stresses) {
+  plasticity::J2State state;
+  double e11 = 0.0;
+  plasticity::J2Update update;
+  for (std::size_t k = 0; k < strains.size(); ++k) {
+    for (int iteration = 0; iteration < 50; ++iteration) {
+      update = plasticity::j2_update(material, hardening, state, plasticity::mandel(e11, strains[k], 0.0, 0.0));
+      if (std::abs(update.stress[0] - stresses[k]) < 1e-12 * hardening.yield_stress) break;
+      e11 -= (update.stress[0] - stresses[k]) / update.tangent(0, 0);
+    }
+    state = update.state;
+  }
+  return update.stress;
+}
+
 inline plasticity::Mandel pressed_point_stress(const Material& material, const plasticity::J2Hardening& hardening,
                                                double strain, int steps) {
   std::vector<double> amplitudes;

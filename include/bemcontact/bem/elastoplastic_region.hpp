@@ -59,7 +59,7 @@ struct ElastoplasticState {
   std::vector<plasticity::Mandel> stress;
   std::vector<double> thickness_strain;
   Vector surface_data;
-  double amplitude = 0.0;
+  Vector amplitudes;  // per load group
 };
 
 // The initial stress sigma0 = C eps_p of a cell's plastic strain on its components (11, 22,
@@ -106,7 +106,8 @@ class ElastoplasticRegion;
 //   commit          the increment's state kept in the region.
 class ElastoplasticIncrement {
  public:
-  ElastoplasticIncrement(ElastoplasticRegion& region, double amplitude, int max_iterations, double tolerance,
+  // `amplitudes`: of the region's own data by load group (BoundaryCondition::load_group).
+  ElastoplasticIncrement(ElastoplasticRegion& region, const Vector& amplitudes, int max_iterations, double tolerance,
                          bool in_contact);
   ~ElastoplasticIncrement();
   ElastoplasticIncrement(const ElastoplasticIncrement&) = delete;
@@ -148,9 +149,10 @@ class ElastoplasticRegion {
   ElastoplasticRegion(ElastoplasticRegion&&) noexcept;
   ~ElastoplasticRegion();
 
-  // Solves the increment to the load amplitude `amplitude` from the state of the last one,
-  // cutting it in halves where Newton does not converge. Throws SolverError naming the
-  // increment, the step cut it tried and the cell where it fails after 6 cuts.
+  // Solves the increment to the load amplitude `amplitude` (a region of one load group) from
+  // the state of the last one, cutting it in halves where Newton does not converge. Throws
+  // SolverError naming the increment, the step cut it tried and the cell where it fails
+  // after 6 cuts.
   IncrementReport advance(double amplitude, int max_iterations = 30, double tolerance = 1e-10);
   ElastoplasticState state() const;
   void restore(const ElastoplasticState& state);
@@ -180,7 +182,7 @@ class ElastoplasticRegion {
     Vector sigma0, field;
   };
   struct Evaluation;
-  Evaluation evaluate(const Vector& E, double amplitude, const Vector& data,
+  Evaluation evaluate(const Vector& E, const Vector& amplitudes, const Vector& data,
                       const std::vector<plasticity::J2Hold>& held, const CommittedFields& committed) const;
   bool solve_increment(double amplitude, int max_iterations, double tolerance, IncrementReport& report,
                        std::string& failure);
@@ -194,9 +196,10 @@ class ElastoplasticRegion {
   std::vector<ConstraintEquation> constraints_;
   std::vector<VariableNode> surface_nodes_;
   Index surface_dofs_ = 0;  // 2 per surface node, 1 per surface constraint
-  // A^-1 [b | T | B]: the load at amplitude 1, unit surface data, the cells' domain term
+  // A^-1 [b_g | T | B]: each load group's data at amplitude 1, unit surface data, the cells' domain term
   Matrix boundary_unknowns_;
-  Vector load_stress_;    // s: C E per unit amplitude (components_ per cell: tensor components)
+  Index groups_ = 1;      // load groups of the body's own data
+  Matrix load_stress_;    // s: C E per unit amplitude of each load group (components_ per cell: tensor components)
   Matrix data_stress_;  // H: C E per unit surface datum
   // K: C E per unit initial stress component of each cell; a column's direct fields are
   // added when first needed (a cache: filled by const members).
@@ -210,7 +213,7 @@ class ElastoplasticRegion {
   std::vector<plasticity::J2State> states_;
   std::vector<plasticity::Mandel> stress_;
   std::vector<double> thickness_strain_;  // plane stress: each cell's eps_33 of the last increment
-  double amplitude_ = 0.0;
+  Vector amplitudes_;  // per load group, at the last increment's end
   Index components_ = 3;  // per cell: 11, 22, 12 (plane) or rr, zz, rz, tt (axisymmetric)
 };
 

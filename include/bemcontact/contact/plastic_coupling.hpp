@@ -23,9 +23,8 @@
 namespace bemcontact::contact {
 
 // The model's elastoplastic regions (in contact, bonded, under a force load or free), in
-// the model's order (none: empty);
-// InputError at a yield_stress for what the coupling does not serve: boundaries of their
-// own amplitude, repeated load cycles, recorded steps, compressed operators.
+// the model's order (none: empty); InputError at a yield_stress for what the coupling does
+// not serve: repeated load cycles with cycle jumping, compressed operators.
 std::vector<int> coupled_plastic_regions(const ContactProblem& problem, const ContactModel& model);
 
 class PlasticCoupling {
@@ -51,6 +50,9 @@ class PlasticCoupling {
   // accepted step (its bonds move with the cells); none for the other regions, whose
   // solution is the model's (ContactModel::region_solution).
   std::optional<bem::BoundarySolution> elastic_solution(int r) const;
+  // With record_steps: region r's boundary solution at the accepted step `step` when it is of
+  // an elastoplastic region's body (an elastoplastic region's with its stresses); none else.
+  std::optional<bem::BoundarySolution> step_solution(std::size_t step, int r) const;
 
  private:
   struct PlasticRegion {
@@ -67,6 +69,11 @@ class PlasticCoupling {
   bem::PhaseTimings timings_;
   std::vector<Vector> last_data_, accepted_data_;  // per region of their bodies (others empty)
   double accepted_time_ = 0.0;
+  // With record_steps: per accepted step, per region of their bodies, its boundary solution.
+  std::vector<std::vector<std::optional<bem::BoundarySolution>>> step_solutions_;
+  // Region r's boundary solution now: an elastoplastic region's (stresses with its plastic
+  // strains), a bonded elastic region's from its last data; none for the others.
+  std::optional<bem::BoundarySolution> solution_now(int r, const std::vector<Vector>& data, double time) const;
 };
 
 }  // namespace bemcontact::contact

@@ -74,6 +74,41 @@ normal = "body1"
   for (const double p : column(output.tables.at("contact.csv"), "p_n").numbers) EXPECT_NEAR(p, point[1], 1e-6 * Y);
 }
 
+// With record_steps every step's boundary fields are written, the elastoplastic region's
+// with its cells at that step: the hardening block pressed by the platen has the material
+// point's s22 at each step (to 1e-6 Y at every node), not the elastic solution's.
+TEST(PlasticContact, RecordedStepsHoldEachStepsPlasticState) {
+  std::string block = replaced(replaced(test_support::pressed_block_text(), "ANALYSIS", "plane_strain"),
+                               "HARDENING", "20000.0");
+  block = replaced(block, "elements = 8\nu2 = -0.01\nt1 = 0.0\n", "elements = 8\n");
+  const std::string text = replaced(block, "increments = 10\n", "increments = 10\nrecord_steps = true\n") + R"(
+[[body]]
+name = "platen"
+[body.rigid]
+profile = "flat"
+center = [0.5, 1.0]
+half_width = 1.0
+displacement = [0.0, -0.01]
+[[contact]]
+body1 = "block"
+boundary1 = "top"
+body2 = "platen"
+normal = "body1"
+)";
+  RunOptions options;
+  options.keep_tables = true;
+  const auto output = run_problem(text, "platen.toml", options);
+  const auto amplitudes = column(output.tables.at("block_plastic_steps.csv"), "amplitude").numbers;
+  ASSERT_EQ(amplitudes.size(), 10u);
+  for (const std::size_t k : {2u, 6u, 10u}) {
+    const std::vector<double> path(amplitudes.begin(), amplitudes.begin() + static_cast<std::ptrdiff_t>(k));
+    const auto point = pressed_point_stress({200000.0, 0.3}, {250.0, 20000.0, 0.0}, -0.01, path);
+    const std::string name = "steps/block_boundary_step" + std::to_string(k) + ".csv";
+    ASSERT_TRUE(output.tables.count(name)) << name;
+    for (const double s22 : column(output.tables.at(name), "s22").numbers) EXPECT_NEAR(s22, point[1], 1e-6 * 250.0) << k;
+  }
+}
+
 // A unit block of the pressed block's material (linear hardening E/10) between y0 and y0 + 1,
 // held at x = 0 by a roller; `bottom` and `top` the conditions of those sides (none:
 // free, for the contact).
@@ -473,10 +508,14 @@ TEST(PlasticContact, RefusesWhatTheCouplingDoesNotServe) {
     return std::string();
   };
   const std::string ball = coarse_brinell(150.0);
-  const std::string recorded = refusal(replaced(ball, "increments = 2", "increments = 2\nrecord_steps = true"));
-  EXPECT_NE(recorded.find("ball.toml:"), std::string::npos) << recorded;
-  EXPECT_NE(recorded.find("yield_stress"), std::string::npos) << recorded;
-  EXPECT_NE(recorded.find("record_steps"), std::string::npos) << recorded;
+  // Wear cycles (they need friction, wear and a closed cycle: pressed, eased, pressed again).
+  std::string worn = replaced(ball, "normal = \"body1\"\n", "normal = \"body1\"\nfriction = 0.3\nwear_coefficient1 = 1e-7\n");
+  worn = replaced(worn, "[1.0, 1.0], [1.05, 0.995], [2.0, 0.0]]", "[1.0, 1.0], [1.5, 0.5], [2.0, 1.0]]");
+  worn = replaced(worn, "end_time = 1.0", "end_time = 2.0\ncycles = 4\ncycle_start = 1.0");
+  const std::string cycles = refusal(worn);
+  EXPECT_NE(cycles.find("ball.toml:"), std::string::npos) << cycles;
+  EXPECT_NE(cycles.find("yield_stress"), std::string::npos) << cycles;
+  EXPECT_NE(cycles.find("cycle jumping"), std::string::npos) << cycles;
   const std::string compressed = refusal(replaced(ball, "increments = 2", "increments = 2\noperator = \"compressed\""));
   EXPECT_NE(compressed.find("compressed operators"), std::string::npos) << compressed;
   // Cells beyond the memory limit: refused at [cells] before their matrices are made.

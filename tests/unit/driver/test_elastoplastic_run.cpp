@@ -357,6 +357,39 @@ TEST(ElastoplasticRun, ForceOnAPlatenIsThePrescribedDisplacementThatCausesIt) {
   }
 }
 
+// Non-proportional loading: the pressed block's top pressed 0.01 over t in [0, 1] and held,
+// then its right side pressed by 200 (0.8 Y) over [1, 2], a boundary with its own amplitude
+// (a load group of its own). Uniform: every cell is the material point along the same
+// steps with eps_22 and sigma_11 prescribed, to 1e-7 Y (the right side's pressure taken
+// with the top's amplitude would press it from the start: s22 40 % of Y away).
+TEST(ElastoplasticRun, BoundaryOfItsOwnAmplitudeLoadsTheCellsOnItsOwnPath) {
+  std::string text = replaced(replaced(test_support::pressed_block_text(), "ANALYSIS", "plane_strain"),
+                              "HARDENING", "20000.0");
+  text = replaced(text, "to = [1.0, 1.0]\nelements = 8\n",
+                  "to = [1.0, 1.0]\nelements = 8\npressure = 200.0\namplitude = [[0.0, 0.0], [1.0, 0.0], [2.0, 1.0]]\n");
+  text = replaced(text, "[solver]\nincrements = 10\n",
+                  "[history]\ndata_amplitude = [[0.0, 0.0], [1.0, 1.0], [2.0, 1.0]]\nend_time = 2.0\n"
+                  "[solver]\nincrements = 20\n");
+  RunOptions options;
+  options.keep_tables = true;
+  const auto output = run_problem(text, "block.toml", options);
+  const auto& times = column(output.tables.at("block_plastic_steps.csv"), "time").numbers;
+  ASSERT_EQ(times.size(), 20u);
+  std::vector<double> strains, stresses;
+  for (const double t : times) {
+    strains.push_back(-0.01 * std::min(t, 1.0));
+    stresses.push_back(-200.0 * std::max(t - 1.0, 0.0));
+  }
+  const double Y = 250.0;
+  const auto point = pressed_point_stress({200000.0, 0.3}, {Y, 20000.0, 0.0}, strains, stresses);
+  const auto& cells = output.tables.at("block_cells.csv");
+  for (std::size_t k = 0; k < column(cells, "s22").numbers.size(); ++k) {
+    EXPECT_NEAR(column(cells, "s11").numbers[k], -200.0, 1e-7 * Y) << k;
+    EXPECT_NEAR(column(cells, "s22").numbers[k], point[1], 1e-7 * Y) << k;
+    EXPECT_NEAR(column(cells, "s33").numbers[k], point[2], 1e-7 * Y) << k;
+  }
+}
+
 TEST(ElastoplasticRun, RefusesWhatItDoesNotServe) {
   const std::string tube = coarse_tube();
   const auto expect = [](const std::string& message, const std::string& key, const std::string& what) {
