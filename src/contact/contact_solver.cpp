@@ -941,6 +941,7 @@ ContactResult solve_on_meshes(const ContactProblem& problem, const bem::Progress
 
   start = Clock::now();
   result.warnings = model.prepared().warnings;
+  if (coupling) result.warnings.insert(result.warnings.end(), coupling->warnings().begin(), coupling->warnings().end());
   for (const auto& plastic : result.plastic)
     result.warnings.insert(result.warnings.end(), plastic.result.warnings.begin(), plastic.result.warnings.end());
   add_region_boundaries(problem, model, history, coupling.get(), result);

@@ -14,6 +14,7 @@
 // accepts the step.
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "bemcontact/bem/elastoplastic_analysis.hpp"
@@ -24,7 +25,7 @@ namespace bemcontact::contact {
 
 // The model's elastoplastic regions (in contact, bonded, under a force load or free), in
 // the model's order (none: empty); InputError at a yield_stress for what the coupling does
-// not serve: repeated load cycles with cycle jumping, compressed operators.
+// not serve: repeated load cycles with cycle jumping.
 std::vector<int> coupled_plastic_regions(const ContactProblem& problem, const ContactModel& model);
 
 class PlasticCoupling {
@@ -36,6 +37,8 @@ class PlasticCoupling {
 
   // The elastoplastic regions (indices into the model's regions), in order.
   std::vector<int> regions() const;
+  // What the run should say of the coupling (operator = "compressed" leaves the cells dense).
+  const std::vector<std::string>& warnings() const { return warnings_; }
   // The step whose input is `input` (its loads at input.time), from the accepted state.
   StepOutput solve_step(const StepInput& input, const SolverOptions& options);
   // The last step solved is the history's: its state is kept and recorded at `time`.
@@ -69,6 +72,7 @@ class PlasticCoupling {
   bem::PhaseTimings timings_;
   std::vector<Vector> last_data_, accepted_data_;  // per region of their bodies (others empty)
   double accepted_time_ = 0.0;
+  std::vector<std::string> warnings_;
   // With record_steps: per accepted step, per region of their bodies, its boundary solution.
   std::vector<std::vector<std::optional<bem::BoundarySolution>>> step_solutions_;
   // Region r's boundary solution now: an elastoplastic region's (stresses with its plastic
