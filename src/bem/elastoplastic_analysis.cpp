@@ -106,9 +106,9 @@ std::vector<StressTensor> elastoplastic_boundary_stresses(const geometry::Bounda
 double elastoplastic_region_bytes(Index cells, Index nodes, AnalysisType type) {
   const double components = type == AnalysisType::axisymmetric ? 4.0 : 3.0;
   const double unknowns = components * static_cast<double>(cells), values = 4.0 * static_cast<double>(nodes);
-  // K and the Newton system's coupling and matrix (4 (3m)^2); [b | B], A^-1 [b | B], the
-  // nodal values, Somigliana's rows (about 3 x 4n x 3m).
-  return 8.0 * (4.0 * unknowns * unknowns + 3.0 * values * unknowns);
+  // At worst (every cell yields): K's columns and the Newton system (2 (3m)^2); A^-1 [b | B],
+  // the nodal values V and Somigliana's rows R (about 4 x 4n x 3m).
+  return 8.0 * (2.0 * unknowns * unknowns + 4.0 * values * unknowns);
 }
 
 std::vector<plasticity::Cell> region_cells_of(const geometry::BoundaryMesh& mesh, const BodyDefinition& body,

@@ -209,7 +209,8 @@ std::vector<CellImage> cell_and_images(const Cell& cell, const std::vector<geome
 // the difference is of order (size / distance)^2 of a small term. Each row block by one
 // thread: deterministic for any thread count.
 void add_cell_fields(const CellKernels& kernels, const std::vector<Cell>& cells, const std::vector<MeanPoints>& means,
-                     const std::vector<geometry::ImageMap>& images, const std::vector<Index>& columns, Matrix& K) {
+                     const std::vector<geometry::ImageMap>& images, const std::vector<Index>& columns,
+                     std::vector<Matrix>& K) {
   constexpr double kFarCells = 6.25;  // not a lattice distance of equal cells (12.5 sizes): no tie on a grid
   const std::size_t m = cells.size();
   const Index d = kernels.d;
@@ -223,7 +224,7 @@ void add_cell_fields(const CellKernels& kernels, const std::vector<Cell>& cells,
     const auto& points = means[c];
     for (std::size_t j = 0; j < columns.size(); ++j) {
       const auto e = static_cast<std::size_t>(columns[j]);
-      auto block = K.block(d * static_cast<Index>(c), d * static_cast<Index>(e), d, d);
+      auto block = K[e].middleRows(d * static_cast<Index>(c), d);
       for (const auto& source : sources[j]) {
         if ((source.cell.centroid() - centroid[c]).norm() > kFarCells * (size[c] + size[e])) {
           block += kernels.stress(centroid[c], source.cell) * source.stress_map;
@@ -330,16 +331,16 @@ ElastoplasticRegion::ElastoplasticRegion(const geometry::BoundaryMesh& mesh, con
   for (Index j = 0; j < k2; ++j)  // the unit datum itself
     if (carries_datum(j)) values((is_displacement(j) ? 0 : 2 * n) + 2 * surface_of(j).node + j % 2, g + j) = 1.0;
   mean_points_ = cell_mean_points(mesh_, cells_);
-  const auto& means = mean_points_;
-  const Matrix through_boundary = mean_somigliana_rows(mesh_, kernels, means) * values;
-  load_stress_ = through_boundary.leftCols(g);
-  data_stress_ = through_boundary.middleCols(g, k2);
-  cell_operator_ = through_boundary.rightCols(d * m);
-  // The cells' direct fields: only the columns of cells whose initial stress is not zero
-  // are ever used (cell_fields_of, the Newton system's plastic columns), added when a cell
-  // first yields (ensure_direct_columns): the O(m^2) integrals of cells that stay elastic
-  // are never made.
-  direct_columns_.assign(static_cast<std::size_t>(m), 0);
+  // K = R V + the cells' direct fields, R Somigliana's rows at the cells' means and V the
+  // boundary values per unit initial stress: only the columns of cells whose initial stress
+  // is not zero are ever used (cell_fields_of, the Newton system's plastic columns), made
+  // when a cell first yields (ensure_columns). The O(m^2) operator of the cells that stay
+  // elastic is never made: its boundary part is kept as R and V, O(m n).
+  boundary_rows_ = mean_somigliana_rows(mesh_, kernels, mean_points_);
+  load_stress_ = boundary_rows_ * values.leftCols(g);
+  data_stress_ = boundary_rows_ * values.middleCols(g, k2);
+  cell_values_ = values.rightCols(d * m);
+  cell_columns_.assign(static_cast<std::size_t>(m), Matrix());
   // The complementary value: traction at a displacement datum, a constraint's reaction.
   surface_response_.resize(k2, d * m);
   for (Index j = 0; j < k2; ++j)
@@ -397,19 +398,30 @@ struct ElastoplasticRegion::Evaluation {
   Index worst = 0;    // the cell where it is largest
 };
 
-void ElastoplasticRegion::ensure_direct_columns(const std::vector<Index>& cells) const {
+void ElastoplasticRegion::ensure_columns(const std::vector<Index>& cells) const {
+  const Index d = components_;
   std::vector<Index> missing;
   for (const Index e : cells)
-    if (!direct_columns_[static_cast<std::size_t>(e)]) missing.push_back(e), direct_columns_[static_cast<std::size_t>(e)] = 1;
+    if (cell_columns_[static_cast<std::size_t>(e)].size() == 0) missing.push_back(e);
   if (missing.empty()) return;
-  add_cell_fields(CellKernels(type_, material_), cells_, mean_points_, mesh_.images, missing, cell_operator_);
+  // The boundary's part of all of them in one product (R times their columns of V).
+  Matrix V(cell_values_.rows(), d * static_cast<Index>(missing.size()));
+  for (std::size_t j = 0; j < missing.size(); ++j)
+    V.middleCols(d * static_cast<Index>(j), d) = cell_values_.middleCols(d * missing[j], d);
+  const Matrix RV = boundary_rows_ * V;
+  for (std::size_t j = 0; j < missing.size(); ++j)
+    cell_columns_[static_cast<std::size_t>(missing[j])] = RV.middleCols(d * static_cast<Index>(j), d);
+  add_cell_fields(CellKernels(type_, material_), cells_, mean_points_, mesh_.images, missing, cell_columns_);
 }
 
-const Matrix& ElastoplasticRegion::cell_operator() const {
+Matrix ElastoplasticRegion::cell_operator() const {
+  const Index d = components_, m = static_cast<Index>(cells_.size());
   std::vector<Index> all(cells_.size());
   for (std::size_t e = 0; e < all.size(); ++e) all[e] = static_cast<Index>(e);
-  ensure_direct_columns(all);
-  return cell_operator_;
+  ensure_columns(all);
+  Matrix K(d * m, d * m);
+  for (Index e = 0; e < m; ++e) K.middleCols(d * e, d) = cell_columns_[static_cast<std::size_t>(e)];
+  return K;
 }
 
 Vector ElastoplasticRegion::cell_fields_of(const Vector& sigma0) const {
@@ -417,9 +429,9 @@ Vector ElastoplasticRegion::cell_fields_of(const Vector& sigma0) const {
   std::vector<Index> sources;
   for (Index e = 0; e < static_cast<Index>(cells_.size()); ++e)
     if (!sigma0.segment(d * e, d).isZero(0.0)) sources.push_back(e);
-  ensure_direct_columns(sources);
-  Vector out = Vector::Zero(cell_operator_.rows());
-  for (const Index e : sources) out.noalias() += cell_operator_.middleCols(d * e, d) * sigma0.segment(d * e, d);
+  ensure_columns(sources);
+  Vector out = Vector::Zero(d * static_cast<Index>(cells_.size()));
+  for (const Index e : sources) out.noalias() += cell_columns_[static_cast<std::size_t>(e)] * sigma0.segment(d * e, d);
   return out;
 }
 
@@ -584,7 +596,7 @@ bool ElastoplasticIncrement::linearise(std::string& failure) {
   for (Index e = 0; e < m; ++e)
     if (!s.current.slope[static_cast<std::size_t>(e)].isZero(0.0)) s.plastic.push_back(e);
   const Index p = static_cast<Index>(s.plastic.size());
-  region.ensure_direct_columns(s.plastic);
+  region.ensure_columns(s.plastic);
   s.slopes.clear();
   for (const Index e : s.plastic) s.slopes.push_back(s.current.slope[static_cast<std::size_t>(e)]);
   // J_PP = I - C^-1 K_PP S_P, gathered block by block (only the plastic rows: the elastic
@@ -593,7 +605,8 @@ bool ElastoplasticIncrement::linearise(std::string& failure) {
   for (Index j = 0; j < p; ++j) {
     const Index e = s.plastic[static_cast<std::size_t>(j)];
     for (Index i = 0; i < p; ++i)
-      J.block(d * i, d * j, d, d) = region.cell_operator_.block(d * s.plastic[static_cast<std::size_t>(i)], d * e, d, d);
+      J.block(d * i, d * j, d, d) =
+          region.cell_columns_[static_cast<std::size_t>(e)].middleRows(d * s.plastic[static_cast<std::size_t>(i)], d);
     J.middleCols(d * j, d) = J.middleCols(d * j, d) * s.slopes[static_cast<std::size_t>(j)];
   }
   for (Index i = 0; i < p; ++i) J.middleRows(d * i, d) = -s.compliance * J.middleRows(d * i, d);
@@ -666,7 +679,7 @@ void ElastoplasticIncrement::step(const Vector& next) {
   // plastic cells' columns.
   Vector moved = Vector::Zero(s.m * d);
   for (std::size_t j = 0; j < s.plastic.size(); ++j)
-    moved.noalias() += region.cell_operator_.middleCols(d * s.plastic[j], d) *
+    moved.noalias() += region.cell_columns_[static_cast<std::size_t>(s.plastic[j])] *
                        (s.slopes[j] * s.step_plastic.segment(d * static_cast<Index>(j), d));
   Matrix step = s.rhs;
   for (Index c = 0; c < s.m; ++c) step.middleRows(d * c, d) += s.compliance * moved.segment(d * c, d);

@@ -159,8 +159,9 @@ class ElastoplasticRegion {
 
   const std::vector<plasticity::Cell>& cells() const { return cells_; }
   // C E averaged over each cell per unit initial stress component of each cell, at zero
-  // load (the cell-to-cell operator K; components_ rows and columns per cell).
-  const Matrix& cell_operator() const;
+  // load (the cell-to-cell operator K; components_ rows and columns per cell), made whole
+  // (tests: the run makes only the columns of cells that yield).
+  Matrix cell_operator() const;
   const std::vector<plasticity::J2State>& states() const { return states_; }
   // The stress of each cell (s33 included), and the boundary solution, at the last
   // increment's end.
@@ -175,8 +176,8 @@ class ElastoplasticRegion {
   Vector initial_stresses() const;  // of every cell, from the committed plastic strains
   // K sigma0, over the cells whose initial stress is not zero.
   Vector cell_fields_of(const Vector& sigma0) const;
-  // The direct fields of these cells added to their columns of K, if not yet.
-  void ensure_direct_columns(const std::vector<Index>& cells) const;
+  // The columns of K of these cells (R V and their direct fields), if not made yet.
+  void ensure_columns(const std::vector<Index>& cells) const;
   // The committed initial stresses of an increment and their fields K sigma0.
   struct CommittedFields {
     Vector sigma0, field;
@@ -201,10 +202,11 @@ class ElastoplasticRegion {
   Index groups_ = 1;      // load groups of the body's own data
   Matrix load_stress_;    // s: C E per unit amplitude of each load group (components_ per cell: tensor components)
   Matrix data_stress_;  // H: C E per unit surface datum
-  // K: C E per unit initial stress component of each cell; a column's direct fields are
-  // added when first needed (a cache: filled by const members).
-  mutable Matrix cell_operator_;
-  mutable std::vector<char> direct_columns_;  // per cell: its direct fields added
+  // K: C E per unit initial stress component of each cell, K = R V + the cells' direct
+  // fields, its columns made when first needed (a cache: filled by const members).
+  Matrix boundary_rows_;  // R: Somigliana's rows of C E at the cells' mean points, per nodal (u, t)
+  Matrix cell_values_;    // V: the nodal (u, t) per unit initial stress of each cell
+  mutable std::vector<Matrix> cell_columns_;  // per cell: its columns of K (empty until used)
   std::vector<std::vector<std::pair<Vec2, double>>> mean_points_;  // each cell's (point, weight)
   // G: the surface nodes' complementary values (displacement at a traction datum, traction at
   // a displacement datum) per unit initial stress
