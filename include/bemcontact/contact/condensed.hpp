@@ -130,14 +130,6 @@ class ContactModel {
   bem::BoundarySolution region_solution(int r, const Vector& x, const Vector& delta, double t) const;
   // Traction on side 1 at each pair in global components.
   Vec2 traction(Index pair, const Vector& x) const;
-  // Region r's data at its variable nodes (FactoredBody::variable_nodes, global components)
-  // as D_r q + d0_r of the contact unknowns q = (x, delta) and the load groups' amplitudes,
-  // and the pairs' jumps per unit displacement of those nodes (2N rows; w = sum_r of it times
-  // the region's complementary field): how a region's own further response (an
-  // elastoplastic region's cells: contact/plastic_coupling.hpp) enters the jumps.
-  const Matrix& data_map(int r) const { return data_map_[static_cast<std::size_t>(r)]; }
-  const Matrix& data_offset(int r) const { return data_offset_[static_cast<std::size_t>(r)]; }
-  const Matrix& jump_map(int r) const { return jump_map_[static_cast<std::size_t>(r)]; }
   // Region r's first variable dofs that are its bonds' displacements (the rest: its
   // contacts' tractions, platens' displacements, then the free motions' pins).
   Index bond_dofs(int r) const { return bond_dofs_[static_cast<std::size_t>(r)]; }
@@ -166,9 +158,13 @@ class ContactModel {
   std::vector<ContactPair> pairs_;
   FreeMotions free_motions_;
   std::vector<std::unique_ptr<bem::FactoredBody>> factored_;
+  // Per region: its data at its variable nodes (FactoredBody::variable_nodes, global
+  // components) as D_r q + d0_r of the contact unknowns q = (x, delta) and the load groups'
+  // amplitudes (d0_r a column per group), and the pairs' jumps per unit complementary value
+  // at those nodes (2N rows; w = sum_r of it times the region's complementary field).
   std::vector<Matrix> data_map_;     // D_r
-  std::vector<Matrix> data_offset_;  // d0_r per load group (columns)
-  std::vector<Matrix> jump_map_;     // per region: the jumps per unit complementary value at its variable nodes
+  std::vector<Matrix> data_offset_;  // d0_r
+  std::vector<Matrix> jump_map_;     // J_r
   std::vector<Index> bond_dofs_;     // per region
   std::vector<std::vector<bem::PointConstraint>> pins_;  // per region
   // What step 5 needs again (with_added_responses), for the bodies of elastoplastic regions.
