@@ -491,7 +491,16 @@ def plasticity_figure(result, stem, title, path=None):
         curve.set_xlabel("depth of the ball")
         curve.set_ylabel("load")
         dent = axes[3]
-        boundary = result.table(_file(stem, "boundary.csv"))
+        # The indented face: the highest surface facing up among the bodies' boundaries (a
+        # coating's top over an elastoplastic substrate, not the substrate's bond).
+        faces = []
+        for name in names:
+            if name.endswith("boundary.csv") and "/" not in name:
+                table = result.table(name)
+                up = table["ny"] > 0.5
+                if np.any(up):
+                    faces.append((np.max(table["y"][up]), name))
+        boundary = result.table(max(faces)[1]) if faces else result.table(_file(stem, "boundary.csv"))
         top = boundary["ny"] > 0.5  # the surfaces facing up: the indented face
         order = np.argsort(boundary["x"][top])
         dent.plot(boundary["x"][top][order], (boundary["y"] + boundary["u2"])[top][order], ".-", ms=3)

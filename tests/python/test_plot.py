@@ -307,3 +307,20 @@ def test_plasticity_figure_of_a_ball_indentation_draws_its_curve_and_dent(exampl
     assert dent[0, 0] == 0.0
     assert dent[:, 1].min() == dent[0, 1] == -summary["results"]["indentation"]["residual_depth"]
     plot.plt.close(fig)
+
+
+def test_the_dent_of_a_coated_block_is_the_coatings_top(examples, tmp_path):
+    # examples/brinell_coated.toml: the elastoplastic region is the substrate under the
+    # coating; the dent drawn is the indented face (the coating's top), not the bond.
+    run_dir = tmp_path / "run"
+    text = (examples / "brinell_coated.toml").read_text().replace("cell = 0.32", "cell = 0.64")
+    problem = tmp_path / "coated.toml"
+    problem.write_text(text.replace("increments = 20", "increments = 6"))
+    bc.run(problem, output=run_dir)
+    fig = plot.plasticity_figure(plot._load_folder(run_dir), "substrate", "coated")
+    dent = _axes_titled(fig, "the surface after the last step").lines[0].get_xydata()
+    summary = json.loads((run_dir / "summary.json").read_text())
+    assert dent[0, 0] == 0.0
+    assert dent[0, 1] == -summary["results"]["indentation"]["residual_depth"]
+    assert summary["results"]["indentation"]["elastic_unloading_stiffness"] is None  # a body of two regions
+    plot.plt.close(fig)
