@@ -12,6 +12,7 @@
 #include "bemcontact/bem/analysis.hpp"
 #include "bemcontact/bem/elastoplastic_analysis.hpp"
 #include "bemcontact/contact/contact_problem.hpp"
+#include "bemcontact/contact/contact_solver.hpp"
 #include "bemcontact/io/input/problem_file.hpp"
 #include "bemcontact/io/input/problem_reader.hpp"
 #include "bemcontact/io/input/problem_text.hpp"
@@ -21,6 +22,7 @@
 #include "bemcontact/reference/plastic_cylinder.hpp"
 #include "bemcontact/validation/case_groups.hpp"
 #include "bemcontact/validation/case_support.hpp"
+#include "bemcontact/validation/contact_support.hpp"
 
 namespace bemcontact::validation {
 namespace {
@@ -194,6 +196,53 @@ void add_tube_from_file(const Context& context, std::vector<Record>& records) {
   }
 }
 
+// examples/plastic_tube_bonded.toml: the same tube as an elastoplastic inner ring bonded to
+// an elastic outer ring (docs/plasticity.md, "Bonded to other regions"), through the contact
+// model without contacts, at two cell sizes: the bore's and the outer surface's residual
+// displacements and the cells' residual hoop stress against the 1D reference, within the
+// one-region tube's bounds and falling on halving.
+void add_bonded_tube(const Context& context, std::vector<Record>& records) {
+  double previous_bore = 0.0, previous_hoop = 0.0;
+  for (const double size : {0.16, 0.08}) {
+    const std::size_t first = records.size();
+    const auto file = load_contact_example(context, "plastic_tube_bonded.toml", {{"cell", size}});
+    auto problem = file.problem;
+    problem.drop_interior_points();
+    const auto result = contact::solve_contact(problem, context.progress);
+    const auto& inner = result.plastic.at(0).result;
+    const auto& hardening = problem.bodies[0].regions[0].body.plasticity->hardening;
+    const Material& material = problem.bodies[0].regions[0].body.material;
+    std::vector<double> pressures;
+    for (const auto& step : inner.steps) pressures.push_back(step.amplitude * file.parameters.at("py"));
+    const auto reference = reference::plastic_thick_cylinder(kInner, kOuter, material, hardening, pressures, 400);
+    const auto [plastic, residual] = bore_errors(inner, pressures, reference);
+    // The outer ring's outer surface after unloading: its nodes' mean radial displacement.
+    const auto& mesh = result.meshes.at(1);
+    double outside = 0.0;
+    const auto& nodes = mesh.piece_nodes[piece_named(mesh, "outer")];
+    for (const Index i : nodes)
+      outside += result.boundary.at(1).displacement[static_cast<std::size_t>(i)].dot(
+          mesh.nodes[static_cast<std::size_t>(i)].position.normalized());
+    outside /= static_cast<double>(nodes.size());
+    std::vector<Vec2> centroids;
+    for (const auto& cell : inner.cells) centroids.push_back(cell.centroid());
+    const double hoop = reference.back().mean_hoop_error(centroids, inner.cell_stress, hardening.yield_stress);
+    records.push_back(compare_scaled("residual_bore_displacement", residual, 0.0, 1.0, size > 0.1 ? 0.10 : 0.04));
+    records.push_back(compare_scaled("residual_outer_displacement", outside / reference.back().outer_displacement - 1.0,
+                                     0.0, 1.0, size > 0.1 ? 0.10 : 0.04));
+    records.push_back(compare_scaled("mean_residual_hoop_stress_error_over_Y", hoop, 0.0, 1.0, size > 0.1 ? 0.02 : 0.01));
+    records.push_back(report_value("plastic_bore_displacement_error", plastic));
+    records.push_back(report_value("cells", static_cast<double>(inner.cells.size())));
+    if (previous_bore > 0.0) {
+      records.push_back(compare_scaled("bore_error_ratio_on_halving", std::abs(residual) / previous_bore, 0.0, 1.0, 0.8));
+      records.push_back(compare_scaled("hoop_error_ratio_on_halving", hoop / previous_hoop, 0.0, 1.0, 0.8));
+    }
+    previous_bore = std::abs(residual), previous_hoop = hoop;
+    tag(records, first, "plastic-cylinder",
+        {{"input", "examples/plastic_tube_bonded.toml"}, {"cell_size", std::to_string(size)}});
+  }
+}
+
 // examples/plastic_sphere.toml as a user runs it (axisymmetric, cells from [cells] size),
 // at two cell sizes, against the 1D sphere (reference/plastic_cylinder.hpp) and Hill's
 // plastic radius c = 1.3 at the peak pressure.
@@ -292,6 +341,7 @@ std::vector<Record> run_plastic_cylinder(const Context& context) {
     }
   }
   add_tube_from_file(context, records);
+  add_bonded_tube(context, records);
   return records;
 }
 

@@ -24,7 +24,6 @@
 #include "bemcontact/reference/hertz.hpp"
 #include "bemcontact/reference/lame.hpp"
 #include "bemcontact/reference/two_layer_ring.hpp"
-#include "support/bonded_tube.hpp"
 #include "support/example_text.hpp"
 
 namespace bemcontact::driver {
@@ -434,9 +433,8 @@ TEST(Probe, ElastoplasticRunsAloneOrInContactEqualTheRunsInteriorPoints) {
   ball = replaced(ball, "refine_size = \"cell / 4\"\n",
                   "refine_size = \"cell / 4\"\n[body.interior]\ngrid = { x = [0.05, 1.55, 4], y = [-1.55, -0.05, 4] }\n");
   // The tube of an elastoplastic inner ring bonded to an elastic outer one (no contact).
-  const std::string bonded = replaced(
-      test_support::bonded_tube(0.32, "[body.region.interior]\ngrid = { x = [0.05, 1.95, 8], y = [0.05, 1.95, 8] }\n"),
-      "increments = 20", "increments = 4");
+  const std::string bonded = replaced(replaced(example_text("plastic_tube_bonded.toml"), "cell = 0.08", "cell = 0.32"),
+                                      "increments = 20", "increments = 4");
   struct Case {
     std::string text, name, cells;
     std::vector<std::string> interiors;
