@@ -33,15 +33,14 @@ const io::CsvTable::Column& column(const io::CsvTable& table, const std::string&
   return table.columns().front();
 }
 
-// A unit block (plane strain, perfectly plastic) on a roller base, its top pressed 8 Y/E
-// down in 10 steps by a smooth rigid platen wider than it: uniform state, the material
-// point's stress in every cell (as ElastoplasticRun.PressedBlockMeetsTheClosedForms with the
-// displacement prescribed on the top).
-TEST(PlasticContact, FlatPlatenPressesTheBlockAsItsPrescribedDisplacement) {
-  const std::string block =
-      replaced(replaced(test_support::pressed_block_text(), "ANALYSIS", "plane_strain"), "HARDENING", "0.0");
-  // The top's prescribed displacement taken off: the platen pushes it.
-  const std::string text = replaced(block, "elements = 8\nu2 = -0.01\nt1 = 0.0\n", "elements = 8\n") + R"(
+// The pressed block (plane strain, its hardening `hardening`) with its top's prescribed
+// displacement taken off: a smooth rigid platen wider than it pushes it 0.01 down; `solver`:
+// more [solver] keys.
+std::string block_under_platen(const std::string& hardening, const std::string& solver) {
+  std::string block = replaced(replaced(test_support::pressed_block_text(), "ANALYSIS", "plane_strain"),
+                               "HARDENING", hardening);
+  block = replaced(block, "elements = 8\nu2 = -0.01\nt1 = 0.0\n", "elements = 8\n");
+  return replaced(block, "increments = 10\n", "increments = 10\n" + solver) + R"(
 [[body]]
 name = "platen"
 [body.rigid]
@@ -55,6 +54,14 @@ boundary1 = "top"
 body2 = "platen"
 normal = "body1"
 )";
+}
+
+// A unit block (plane strain, perfectly plastic) on a roller base, its top pressed 8 Y/E
+// down in 10 steps by a smooth rigid platen wider than it: uniform state, the material
+// point's stress in every cell (as ElastoplasticRun.PressedBlockMeetsTheClosedForms with the
+// displacement prescribed on the top).
+TEST(PlasticContact, FlatPlatenPressesTheBlockAsItsPrescribedDisplacement) {
+  const std::string text = block_under_platen("0.0", "");
   RunOptions options;
   options.keep_tables = true;
   const auto output = run_problem(text, "platen.toml", options);
@@ -78,23 +85,7 @@ normal = "body1"
 // with its cells at that step: the hardening block pressed by the platen has the material
 // point's s22 at each step (to 1e-6 Y at every node), not the elastic solution's.
 TEST(PlasticContact, RecordedStepsHoldEachStepsPlasticState) {
-  std::string block = replaced(replaced(test_support::pressed_block_text(), "ANALYSIS", "plane_strain"),
-                               "HARDENING", "20000.0");
-  block = replaced(block, "elements = 8\nu2 = -0.01\nt1 = 0.0\n", "elements = 8\n");
-  const std::string text = replaced(block, "increments = 10\n", "increments = 10\nrecord_steps = true\n") + R"(
-[[body]]
-name = "platen"
-[body.rigid]
-profile = "flat"
-center = [0.5, 1.0]
-half_width = 1.0
-displacement = [0.0, -0.01]
-[[contact]]
-body1 = "block"
-boundary1 = "top"
-body2 = "platen"
-normal = "body1"
-)";
+  const std::string text = block_under_platen("20000.0", "record_steps = true\n");
   RunOptions options;
   options.keep_tables = true;
   const auto output = run_problem(text, "platen.toml", options);
