@@ -113,7 +113,7 @@ struct ContactModel::Build {
 // regions (empty elsewhere).
 struct ContactModel::KeptElimination {
   std::vector<Build::BondEquations> bond_equations;  // per body
-  std::vector<Matrix> flexibility, G;                // per region: C_r and its data before the bonds
+  std::vector<Matrix> flexibility;                   // per region: C_r
   std::vector<Matrix> motion_rows;                   // per region
   std::vector<std::vector<Index>> bond_unknown;      // per region
 };
@@ -141,7 +141,6 @@ ContactModel::ContactModel(const ContactProblem& problem, const bem::ProgressCal
   kept_ = std::make_unique<KeptElimination>();
   kept_->bond_equations.resize(problem_.bodies.size());
   kept_->flexibility.resize(prepared_.regions.size());
-  kept_->G.resize(prepared_.regions.size());
   kept_->motion_rows.resize(prepared_.regions.size());
   kept_->bond_unknown.resize(prepared_.regions.size());
   for (std::size_t b = 0; b < plastic_body.size(); ++b)
@@ -149,7 +148,6 @@ ContactModel::ContactModel(const ContactProblem& problem, const bem::ProgressCal
   for (std::size_t r = 0; r < prepared_.regions.size(); ++r) {
     if (!plastic_body[prepared_.regions[r].body]) continue;
     kept_->flexibility[r] = std::move(build.flexibility[r]);
-    kept_->G[r] = std::move(build.G[r]);
     kept_->motion_rows[r] = std::move(build.motion_rows[r]);
     kept_->bond_unknown[r] = std::move(build.variables[r].bond_unknown);
   }
@@ -587,7 +585,9 @@ ResponseChange ContactModel::with_added_responses(const std::vector<AddedRespons
         const Vector& u0 = *added_of[r]->offset;
         const auto& unknown = kept_->bond_unknown[r];
         const Index bond = bond_dofs_[r];
-        const Matrix FG = F.topRows(bond) * kept_->G[r];
+        // The data before the bonds, G_r: D_r without its bond rows (G_r's are 0).
+        const Index rest = data_map_[r].rows() - bond;
+        const Matrix FG = F.topRows(bond).rightCols(rest) * data_map_[r].bottomRows(rest);
         for (Index i = 0; i < bond; ++i) {
           for (Index j = 0; j < bond; ++j) K(unknown[i], unknown[j]) += F(i, j);
           L.row(unknown[i]) += FG.row(i);
@@ -607,9 +607,9 @@ ResponseChange ContactModel::with_added_responses(const std::vector<AddedRespons
     for (const int r : members) {
       const auto& unknown = kept_->bond_unknown[r];
       const Index bond = bond_dofs_[r];
-      Matrix D = kept_->G[r];
+      Matrix D = data_map_[r];  // its rows past the bonds' are G_r's, unchanged
       Vector d0 = Vector::Zero(D.rows());
-      for (Index i = 0; i < bond; ++i) D.row(i) += Uq.row(unknown[i]), d0[i] = U0(unknown[i], 0);
+      for (Index i = 0; i < bond; ++i) D.row(i) = Uq.row(unknown[i]), d0[i] = U0(unknown[i], 0);
       const Matrix& C = kept_->flexibility[r];
       const Matrix dD = D.topRows(bond) - data_map_[r].topRows(bond);
       const Vector dd0 = d0.head(bond) - data_offset_[r].topRows(bond) * a;
