@@ -440,15 +440,24 @@ void reject_runaway_motions(const HistoryData& data, StepOutput& trial) {
                                      trial.residual, taken + 1, t_next});
 }
 
-// True when some group changes the state of more pairs than the problem allows in one step.
-bool changes_too_fast(const HistoryData& data, const std::vector<PairStatus>& state,
-                      const std::vector<PairStatus>& trial_state) {
+// The most pairs of one group that change state between two states.
+int most_state_changes(const HistoryData& data, const std::vector<PairStatus>& state,
+                       const std::vector<PairStatus>& trial_state) {
   const auto& all_groups = data.all_groups;
-  bool too_fast = false;
+  int most = 0;
   for (std::size_t g = 0; g + 1 < all_groups.size(); ++g)
-    too_fast = too_fast ||
-               state_changes(state, trial_state, all_groups[g], all_groups[g + 1]) > data.problem.max_state_changes;
-  return too_fast;
+    most = std::max(most, state_changes(state, trial_state, all_groups[g], all_groups[g + 1]));
+  return most;
+}
+
+// The factor on a step of adaptive stepping that changed `changes` pairs of one contact:
+// the zones' edges move about in proportion to the load, so that step would have changed
+// max_state_changes pairs in h max / changes; aiming at 3/4 of it leaves room for the edges'
+// uneven pace, so that few steps are redone. Within [1/8, 2]: a step grows at most twice
+// (no change) and a redone one shrinks at least by half (as a plain halving would).
+double step_factor(int changes, int max_changes) {
+  if (changes == 0) return 2.0;
+  return std::clamp(0.75 * max_changes / changes, 0.125, 2.0);
 }
 
 // Energy dissipated by friction in the step: -sum weight tau (slip increment).
@@ -525,7 +534,7 @@ struct HistoryHooks {
 
 // The steps from pseudo-time `from` to `to`, recorded at their times + offset. A plan (the
 // step ends of the same stretch before: a repeated cycle) sets the steps, adaptive stepping
-// halving them where the state now changes faster; without one they start at the base step.
+// shortening them where the state now changes faster; without one they start at the base step.
 void advance(const HistoryData& data, double from, double to, double offset, const HistoryHooks& hooks,
              HistoryRun& run, LoadHistory& history, const std::vector<double>& plan = {}) {
   const auto& problem = data.problem;
@@ -544,7 +553,7 @@ void advance(const HistoryData& data, double from, double to, double offset, con
   std::size_t corner = 0, planned = 0;
   int taken = 0;  // in this stretch (max_steps bounds each cycle)
   run.step_ends.clear();
-  // The last step redone in halves for changing too many pairs: taken after all when its
+  // The last step redone shorter for changing too many pairs: taken after all when its
   // halves do not converge (a normal compliance whose friction exponent is below the
   // pressure's fails at the small loads halving leads to).
   std::optional<std::pair<double, StepOutput>> too_fast;
@@ -574,9 +583,10 @@ void advance(const HistoryData& data, double from, double to, double offset, con
     too_fast.reset();
     if (!trial.converged) throw_no_solution(data, trial, t, t_next, run.taken);
     const auto trial_state = statuses(data.pairs, trial, data.laws);
-    if (!fall_back && adaptive && h > 2.0 * min_step && changes_too_fast(data, run.state, trial_state)) {
+    const int changes = adaptive ? most_state_changes(data, run.state, trial_state) : 0;
+    if (!fall_back && adaptive && h > 2.0 * min_step && changes > problem.max_state_changes) {
       too_fast.emplace(t_next, trial);
-      dt = 0.5 * h;
+      dt = std::max(min_step, std::min(0.5, step_factor(changes, problem.max_state_changes)) * h);
       ++history.rejected_steps;
       continue;
     }
@@ -592,8 +602,15 @@ void advance(const HistoryData& data, double from, double to, double offset, con
     record_history_step(data, run, t, offset, hooks.report, history);
     run.step_ends.push_back(t);
     carry_over(run.step, run.previous);
-    // Grow again after an accepted step.
-    if (halve_failures && dt < base_step) dt = std::min(base_step, 2.0 * dt);
+    // The next step: from this one's state changes (adaptive), or grown again by 2 after a
+    // shortened one. A plan's steps are the last cycle's, already sized by their changes:
+    // sizing them again would split some in every cycle, so there a step shortened for too
+    // many changes only grows back.
+    const bool following_plan = planned < plan.size();
+    if (adaptive && !following_plan)
+      dt = std::min(base_step, changes == 0 ? std::max(dt, 2.0 * h)
+                                            : std::max(min_step, step_factor(changes, problem.max_state_changes) * h));
+    else if (halve_failures && dt < base_step) dt = std::min(base_step, 2.0 * dt);
     check_step_budget(problem, taken, t);
     if (hooks.progress) hooks.progress("contact load steps", (t - from) / (to - from));
   }

@@ -33,6 +33,14 @@ CentredHertzFit fit_hertz_profile_free_centre(const std::vector<contact::PairRes
 // pairs), over the first's peak pressure: Newton against the thesis algorithm.
 double algorithm_difference(const contact::ContactResult& a, const contact::ContactResult& b);
 
+// Newton and the thesis' algorithm on the same equal steps (adaptive stepping off): their
+// solutions and algorithm_difference of the two.
+struct AlgorithmComparison {
+  contact::ContactResult newton, thesis;
+  double difference = 0.0;
+};
+AlgorithmComparison compare_algorithms(const Context& context, const contact::ContactProblem& problem);
+
 // A bundled contact example, with parameter overrides.
 io::ContactFile load_contact_example(const Context& context, const std::string& file,
                                      const io::ParameterOverrides& overrides = {});

@@ -222,7 +222,7 @@ std::vector<Key> contact_solver_keys() {
                  between(0, 1, true, true)),
           of(Type::boolean, "record_steps", "false", "write the pairs and boundary fields of every step, into steps/"),
           of(Type::boolean, "adaptive", "true with friction",
-             "redo a step in halves when too many pairs change state (friction only)"),
+             "redo a step shorter when too many pairs change state (friction only)"),
           integer("max_state_changes", "2", "adaptive: pairs of one contact that may change state in a step",
                   at_least(1)),
           integer("max_steps", "4096 (at least increments)", "adaptive: the most steps over the history"),

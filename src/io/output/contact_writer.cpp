@@ -363,7 +363,8 @@ nlohmann::json contact_summary_json(const contact::ContactProblem& problem, cons
                   {"steps_taken", result.steps_taken},
                   {"rejected_steps", result.rejected_steps},
                   {"rule", "a step in which more than max_state_changes pairs of one contact change state (open, "
-                           "stick, slip) is redone in halves; the step grows back by 2 after an accepted one"},
+                           "stick, slip) is redone shorter; each next step is the last one scaled by 0.75 max_state_changes / its "
+                           "changes (within 1/8 and 2)"},
                   {"max_state_changes", problem.max_state_changes},
                   {"newton_systems",
                    {{"factored", result.newton_systems.factored},
@@ -459,7 +460,7 @@ std::string contact_report_text(const contact::ContactProblem& problem, const co
   if (problem.contacts.empty() && result.plastic.empty()) return out;
   const auto& s = result.summary;
   if (!problem.contacts.empty()) {
-    std::snprintf(line, sizeof line, "  %s algorithm, %d load step%s (%d redone in halves): newton %d, kalker %d, threshold %d, gmres cycles %d\n",
+    std::snprintf(line, sizeof line, "  %s algorithm, %d load step%s (%d redone shorter): newton %d, kalker %d, threshold %d, gmres cycles %d\n",
                   contact::to_string(problem.solver.algorithm), result.steps_taken, result.steps_taken == 1 ? "" : "s",
                   result.rejected_steps, s.newton_iterations,
                   s.kalker_iterations, s.threshold_iterations, s.gmres_cycles);

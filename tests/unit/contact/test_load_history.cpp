@@ -79,7 +79,9 @@ TEST(LoadHistory, AdaptiveStepsFollowTheFineHistory) {
   // A steel cylinder on aluminium (the normal load alone makes them slip against each
   // other), then Q = 0.6 mu P, 100 elements per zone: 16 equal steps leave the shear 15 % of
   // its peak away from 512 equal steps (it zig-zags from pair to pair); the adaptive
-  // stepping from the same 16 comes within 4 %.
+  // stepping from the same 16 comes within 1.4 % (held to 2.5 %) in 110 steps, 8 of them
+  // redone. Growing each accepted step by 2 whatever it changed redid every other step:
+  // 71 steps and 69 redone, 2.8 % away.
   auto text = replaced(fretting_text(), "amplitude = [[0.0, 0.0], [1.0, 0.0], [2.0, 1.0], [3.0, -1.0], [4.0, 1.0]]",
                        "amplitude = [[0.0, 0.0], [1.0, 0.0], [2.0, 1.0]]");
   text = replaced(text, "[body.material]\nE = \"E\"\nnu = 0.3\n[body.vertices]\nQL",
@@ -104,9 +106,10 @@ TEST(LoadHistory, AdaptiveStepsFollowTheFineHistory) {
     return worst / peak;
   };
   EXPECT_GT(distance(coarse), 0.10);
-  EXPECT_LT(distance(adaptive), 0.04);
+  EXPECT_LT(distance(adaptive), 0.025);
   EXPECT_GT(adaptive.steps_taken, 16);
   EXPECT_LT(adaptive.steps_taken, 200);
+  EXPECT_LT(adaptive.rejected_steps, adaptive.steps_taken / 4);
   // Most Newton systems are solved through earlier factors (kept, or a bordered update).
   const auto& systems = adaptive.newton_systems;
   EXPECT_GT(systems.updated, 0);
