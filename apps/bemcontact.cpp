@@ -71,7 +71,7 @@ void print_written(const std::string& output_dir, const io::OutputDirectory& out
   if (names.size() > kListed) std::printf(",... %zu files in all", names.size());
   std::printf("}\n");
   for (const auto& [folder, count] : in_folder)
-    std::printf("  wrote %d files into %s/%s/\n", count, output_dir.c_str(), folder.c_str());
+    std::printf("  wrote %d file%s into %s/%s/\n", count, count == 1 ? "" : "s", output_dir.c_str(), folder.c_str());
 }
 
 // `run` and `mesh`: the driver computes every file in memory, then the folder is replaced
@@ -81,6 +81,7 @@ int command_run(const std::string& input, const std::string& output_dir, bool qu
   const std::string text = io::read_problem_text(input);
   // Under mpirun every process solves its share; the root alone prints and writes.
   const bool root = options.parallel.distribution.root();
+  if (root) io::check_output_directory(output_dir);  // refused now rather than after the solve
   quiet = quiet || !root;
   options.progress = make_progress(quiet);
   if (!quiet && !mesh_only)
@@ -121,6 +122,8 @@ int command_probe(const std::string& run_dir, const std::string& points_file, co
                   std::string output_dir, bool quiet, const ResourceLimits& limits) {
   if (!std::filesystem::is_directory(run_dir))
     throw InputError(SourceLocation{run_dir, 0, ""}, "no such run folder (bemcontact run FILE -o DIR writes one)");
+  if (output_dir.empty()) output_dir = (std::filesystem::path(run_dir) / "probe").string();
+  io::check_output_directory(output_dir);  // refused now rather than after the probe
   driver::ProbeRequest request;
   if (!points_file.empty()) {
     request.points_file = points_file;
@@ -138,7 +141,6 @@ int command_probe(const std::string& run_dir, const std::string& points_file, co
   const auto output = driver::probe_run(
       [&](const std::string& name) { return file_text(std::filesystem::path(run_dir) / name); }, request, options);
   for (const auto& warning : output.warnings) std::fprintf(stderr, "bemcontact: warning: %s\n", warning.c_str());
-  if (output_dir.empty()) output_dir = (std::filesystem::path(run_dir) / "probe").string();
   output.files.commit(output_dir);
   if (!quiet) {
     std::printf("%s", output.report.c_str());

@@ -98,7 +98,7 @@ struct ContactModel::Build {
   std::vector<Matrix> flexibility, G, own_response;             // per region (factor_regions)
   std::vector<Matrix> response, response0;                      // per region (form_affine_responses)
   std::vector<int> load_of_body;                                // per body: its rigid motion's load, or -1
-  Matrix W;                                                     // 2n x nq: the jumps' map
+  std::vector<char> keep_flexibility;                          // per region: kept for with_added_responses
   // Per body (eliminate_bonds): its bond equations K U + L q + l0 = 0 (l0 per load group).
   struct BondEquations {
     Matrix K, L, l0;
@@ -123,6 +123,11 @@ ContactModel::~ContactModel() = default;
 ContactModel::ContactModel(const ContactProblem& problem, const bem::ProgressCallback& progress)
     : problem_(problem), prepared_(prepare_contact(problem)) {
   Build build;
+  // Kept for the bodies of elastoplastic regions only (a region's C_r is dofs^2).
+  std::vector<bool> plastic_body(problem_.bodies.size(), false);
+  for (const auto& region : prepared_.regions)
+    if (region.definition.plasticity) plastic_body[region.body] = true;
+  for (const auto& region : prepared_.regions) build.keep_flexibility.push_back(plastic_body[region.body] ? 1 : 0);
   number_pairs_and_motions(build);
   collect_region_variables(build);
   factor_regions(build, progress);
@@ -133,10 +138,6 @@ ContactModel::ContactModel(const ContactProblem& problem, const bem::ProgressCal
   bond_dofs_.clear();
   for (const auto& v : build.variables) bond_dofs_.push_back(v.bond_dofs);
   pins_ = build.pins;
-  // Kept for the bodies of elastoplastic regions only (a region's C_r is dofs^2).
-  std::vector<bool> plastic_body(problem_.bodies.size(), false);
-  for (const auto& region : prepared_.regions)
-    if (region.definition.plasticity) plastic_body[region.body] = true;
   if (std::find(plastic_body.begin(), plastic_body.end(), true) == plastic_body.end()) return;
   kept_ = std::make_unique<KeptElimination>();
   kept_->bond_equations.resize(problem_.bodies.size());
@@ -315,9 +316,11 @@ void ContactModel::eliminate_bonds(Build& build) {
   const auto& variables = build.variables;
   const auto& bonds = build.bonds;
   const auto& flexibility = build.flexibility;
-  const auto& G = build.G;
   const auto& own_response = build.own_response;
-  data_map_ = G;
+  // D_r starts as G_r (moved: it is not needed apart); a body's L below reads its regions'
+  // G_r before their bond rows change.
+  data_map_ = std::move(build.G);
+  const auto& G = data_map_;
   data_offset_.assign(region_count, Matrix());
   for (std::size_t r = 0; r < region_count; ++r) data_offset_[r] = Matrix::Zero(G[r].rows(), groups);
   build.bond_equations.assign(problem.bodies.size(), {});
@@ -369,7 +372,7 @@ void ContactModel::eliminate_bonds(Build& build) {
 // map of q, C_r (D_r q + d0_r) + c0_r.
 void ContactModel::form_affine_responses(Build& build) {
   const std::size_t region_count = prepared_.regions.size();
-  const auto& flexibility = build.flexibility;
+  auto& flexibility = build.flexibility;
   const auto& own_response = build.own_response;
   auto& response = build.response;
   auto& response0 = build.response0;
@@ -381,6 +384,7 @@ void ContactModel::form_affine_responses(Build& build) {
     const Eigen::SparseMatrix<double> data_map = data_map_[r].sparseView();
     response[r] = flexibility[r] * data_map;
     response0[r] = flexibility[r] * data_offset_[r] + own_response[r];
+    if (!build.keep_flexibility[r]) flexibility[r] = Matrix();  // dofs^2: freed before the jumps
   }
 
 }
@@ -391,7 +395,7 @@ void ContactModel::form_affine_responses(Build& build) {
 void ContactModel::assemble_jumps_and_loads(Build& build) {
   const auto& problem = problem_;
   const auto& regions = prepared_.regions;
-  const Index n = build.n, nq = build.nq, K = build.K, groups = build.groups;
+  const Index n = build.n, K = build.K, groups = build.groups;
   const auto& variables = build.variables;
   const auto& response = build.response;
   const auto& response0 = build.response0;
@@ -399,10 +403,14 @@ void ContactModel::assemble_jumps_and_loads(Build& build) {
   // body's prescribed translation.
   auto& cp = condensed_;
   cp.pairs = n;
-  build.W = Matrix::Zero(2 * n, nq);
-  auto& W = build.W;
-  jump_map_.assign(regions.size(), Matrix());
-  for (std::size_t r = 0; r < regions.size(); ++r) jump_map_[r] = Matrix::Zero(2 * n, response[r].rows());
+  cp.M = Matrix::Zero(2 * n, 2 * n);
+  cp.b = Matrix::Zero(2 * n, K);
+  std::vector<std::vector<Eigen::Triplet<double>>> jump_entries(regions.size());
+  const auto add_jump = [&](int r, Index row, Index col, const Mat2& block) {
+    for (int i = 0; i < 2; ++i)
+      for (int j = 0; j < 2; ++j)
+        if (block(i, j) != 0.0) jump_entries[static_cast<std::size_t>(r)].emplace_back(row + i, col + j, block(i, j));
+  };
   cp.loads.push_back({problem.data_amplitude, Vector::Zero(2 * n), Vector::Zero(K)});
   for (const auto& amplitude : problem.boundary_amplitudes) cp.loads.push_back({amplitude, Vector::Zero(2 * n), Vector::Zero(K)});
   // Interferences: the overlap d - interference of each pair, as a jump +interference along
@@ -432,7 +440,7 @@ void ContactModel::assemble_jumps_and_loads(Build& build) {
       Matrix u = response[contact.region1].middleRows(o1 + 2 * i, 2);
       Matrix u0 = response0[contact.region1].middleRows(o1 + 2 * i, 2);  // 2 x groups
       const Index row = 2 * (first + i);
-      jump_map_[contact.region1].block(row, o1 + 2 * i, 2, 2) += Qg;
+      add_jump(contact.region1, row, o1 + 2 * i, Qg);
       if (contact.mortar.size() > 0) {
         // The weighted jump (pairing.hpp, mortar).
         for (Index a = 0; a < contact.mortar.rows(); ++a) {
@@ -440,13 +448,13 @@ void ContactModel::assemble_jumps_and_loads(Build& build) {
           if (c == 0.0) continue;
           u -= c * response[contact.region2].middleRows(o2 + 2 * a, 2);
           u0 -= c * response0[contact.region2].middleRows(o2 + 2 * a, 2);
-          jump_map_[contact.region2].block(row, o2 + 2 * a, 2, 2) -= c * Qg;
+          add_jump(contact.region2, row, o2 + 2 * a, -c * Qg);
         }
       } else if (contact.region2 >= 0) {
         for (int a = 0; a < pair.count2; ++a) {
           u -= pair.shape2[a] * response[contact.region2].middleRows(o2 + 2 * pair.zone2[a], 2);
           u0 -= pair.shape2[a] * response0[contact.region2].middleRows(o2 + 2 * pair.zone2[a], 2);
-          jump_map_[contact.region2].block(row, o2 + 2 * pair.zone2[a], 2, 2) -= pair.shape2[a] * Qg;
+          add_jump(contact.region2, row, o2 + 2 * pair.zone2[a], -pair.shape2[a] * Qg);
         }
       } else {
         // The rigid body translates by its force loads' approaches and its prescribed displacement.
@@ -471,12 +479,18 @@ void ContactModel::assemble_jumps_and_loads(Build& build) {
           cp.loads[load_of_body[contact.rigid_body]].a.segment<2>(2 * (first + i)) = -Qg * motion;
         }
       }
-      W.middleRows(2 * (first + i), 2) = Qg * u;
+      const Matrix w = Qg * u;
+      cp.M.middleRows(2 * (first + i), 2) = w.leftCols(2 * n);
+      cp.b.middleRows(2 * (first + i), 2) = w.rightCols(K);
       const Matrix w0 = Qg * u0;
       for (Index g = 0; g < groups; ++g) cp.loads[g].a.segment<2>(2 * (first + i)) = w0.col(g);
     }
   }
-  cp.M = W.leftCols(2 * n);
+  jump_map_.assign(regions.size(), {});
+  for (std::size_t r = 0; r < regions.size(); ++r) {
+    jump_map_[r].resize(2 * n, response[r].rows());
+    jump_map_[r].setFromTriplets(jump_entries[r].begin(), jump_entries[r].end());  // sums repeated entries
+  }
   if (!problem.tangential_coupling) drop_tangential_coupling(cp);
   cp.gap.resize(n);
   cp.on_axis.resize(n);
@@ -489,7 +503,6 @@ void ContactModel::assemble_jumps_and_loads(Build& build) {
     cp.half_models.push_back(zone_starts_on_symmetry_line(problem, contact, prepared_.regions));
   for (const auto& region : regions) cp.length_scale = std::max(cp.length_scale, region.mesh.scale);
   cp.motions = K;
-  cp.b = W.rightCols(K);
 }
 
 // Step 6: the motions' equations f x + f_delta delta = force(t) - F0(t): each force load's

@@ -132,6 +132,19 @@ TEST(CommandLine, AFreeBodyIsASolverErrorAndWritesNothing) {
   fs::remove_all(dir);
 }
 
+TEST(CommandLine, AFolderOfSomeoneElsesFilesIsRefusedBeforeTheSolve) {
+  // The folder's state is known before the run: refused then, not after a long solve.
+  const auto dir = scratch("foreign");
+  fs::create_directories(dir / "out");
+  write(dir / "out" / "thesis.tex", "precious\n");
+  const auto out = run("run " + example("plate_hole.toml") + " -o " + (dir / "out").string());
+  EXPECT_EQ(out.exit_code, 4) << out.output;
+  EXPECT_NE(out.output.find("did not write"), std::string::npos) << out.output;
+  EXPECT_EQ(out.output.find("estimate"), std::string::npos) << "solved before refusing:\n" << out.output;
+  EXPECT_EQ(fs::directory_iterator(dir / "out")->path().filename(), "thesis.tex");
+  fs::remove_all(dir);
+}
+
 TEST(CommandLine, GeometryErrorsNameTheBoundary) {
   const auto dir = scratch("geometry");
   std::string text = free_body;

@@ -15,6 +15,8 @@
 // (delta: the approaches of force loads, the rigid motions of free bodies). Each motion has
 // a force equation F = F0(t) + f x + f_delta delta = force(t).
 #include <memory>
+
+#include <Eigen/Sparse>
 #include <vector>
 
 #include "bemcontact/bem/factored_body.hpp"
@@ -164,7 +166,7 @@ class ContactModel {
   // at those nodes (2N rows; w = sum_r of it times the region's complementary field).
   std::vector<Matrix> data_map_;     // D_r
   std::vector<Matrix> data_offset_;  // d0_r
-  std::vector<Matrix> jump_map_;     // J_r
+  std::vector<Eigen::SparseMatrix<double>> jump_map_;  // J_r (2 x 2 blocks per pair)
   std::vector<Index> bond_dofs_;     // per region
   std::vector<std::vector<bem::PointConstraint>> pins_;  // per region
   // What step 5 needs again (with_added_responses), for the bodies of elastoplastic regions.

@@ -162,6 +162,8 @@ struct ContactResult : ContactInterfaceResult {
   int rejected_steps = 0;
   int rejected_jumps = 0;
   int steps_past_state_limit = 0;  // LoadHistory's
+  int steps_at_shortest = 0;       // LoadHistory's
+  std::vector<double> shortest_step_times;  // LoadHistory's
   NewtonSystemCounts newton_systems;
   // When record_steps: per step, every region's boundary solution with stresses.
   std::vector<std::vector<bem::BoundarySolution>> step_boundary;
@@ -191,11 +193,15 @@ struct LoadHistory : ContactInterfaceResult {
   std::vector<StepRecord> records;      // per step
   std::vector<Vector> step_x, step_delta;  // per step when record_steps
   int steps_taken = 0;
-  int rejected_steps = 0;               // steps redone in halves (adaptive, or an elastoplastic step that failed)
+  int rejected_steps = 0;               // steps redone shorter (adaptive, or an elastoplastic step that failed)
   int rejected_jumps = 0;               // cycle jumps undone (wear.hpp)
   // Steps taken although they changed more pairs than max_state_changes: their halves did
   // not converge.
   int steps_past_state_limit = 0;
+  // Steps taken although they changed more pairs than max_state_changes: they were already
+  // at the shortest step, end_time / max_steps.
+  int steps_at_shortest = 0;
+  std::vector<double> shortest_step_times;  // the first three
   NewtonSystemCounts newton_systems;
   Vector x;                             // final (lambda_n, tau) per pair
   Vector delta;                         // final motions (CondensedProblem::motions)

@@ -556,6 +556,12 @@ std::string section_of(std::string_view key, std::string_view section) {
       {"each [[contact]] table (the law of that contact; or the single [contact] table)", {"kind", "friction",
                                                                                            "coupling"}},
   };
+  // A body's own tables: top-level tables in a one-body file, but written under the body
+  // (or region) in a file of bodies, so "the top level" would send the user astray.
+  for (const char* body_table : {"material", "cells", "interior", "vertices"})
+    if (key == body_table)
+      return "a table of its own, of the body or region: [" + std::string(key) + "] in a one-body file, [body." +
+             std::string(key) + "] or [body.region." + std::string(key) + "] in a file of bodies";
   for (const auto& [name, keys] : sections) {
     if (section == name) continue;
     if (std::find(keys.begin(), keys.end(), key) != keys.end()) return name;

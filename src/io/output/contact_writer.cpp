@@ -362,6 +362,7 @@ nlohmann::json contact_summary_json(const contact::ContactProblem& problem, cons
                   {"adaptive", problem.adaptive && problem.has_friction()},
                   {"steps_taken", result.steps_taken},
                   {"rejected_steps", result.rejected_steps},
+                  {"steps_at_shortest", result.steps_at_shortest},
                   {"rule", "a step in which more than max_state_changes pairs of one contact change state (open, "
                            "stick, slip) is redone shorter; each next step is the last one scaled by 0.75 max_state_changes / its "
                            "changes (within 1/8 and 2)"},
@@ -470,6 +471,12 @@ std::string contact_report_text(const contact::ContactProblem& problem, const co
                     "  %d step%s changed more pairs than max_state_changes: %s halves did not converge\n",
                     result.steps_past_state_limit, result.steps_past_state_limit == 1 ? "" : "s",
                     result.steps_past_state_limit == 1 ? "its" : "their");
+      out += line;
+    }
+    if (result.steps_at_shortest > 0) {
+      std::snprintf(line, sizeof line,
+                    "  %d step%s changed more pairs than max_state_changes at the shortest step (raise max_steps)\n",
+                    result.steps_at_shortest, result.steps_at_shortest == 1 ? "" : "s");
       out += line;
     }
   }

@@ -195,6 +195,8 @@ std::vector<std::string> OutputDirectory::names() const {
   return list;
 }
 
+void check_output_directory(const fs::path& directory) { check_replaceable(resolve_target(directory)); }
+
 std::vector<fs::path> OutputDirectory::commit(const fs::path& directory) const {
   const fs::path target = resolve_target(directory);
   const fs::path parent = target.parent_path();

@@ -120,6 +120,25 @@ TEST(LoadHistory, AdaptiveStepsFollowTheFineHistory) {
 
 namespace bemcontact::contact {
 
+TEST(LoadHistory, StepsThatChangeTooManyPairsAtTheShortestStepAreReported) {
+  // max_steps = increments leaves no shorter step: the steps that change more than
+  // max_state_changes pairs are taken as they are, counted and named in a warning. With
+  // room to shorten (the default max_steps) none is left; the slip zone sticking at once at
+  // the reversals is not counted, whatever the step.
+  const auto file = io::parse_contact_problem(fretting_text(), "fretting.toml", {{"n", 30.0}});
+  auto problem = file.problem;
+  problem.drop_interior_points();
+  problem.increments = 8;
+  const auto roomy = solve_contact(problem);
+  EXPECT_EQ(roomy.steps_at_shortest, 0);
+  problem.max_steps = 8;
+  const auto tight = solve_contact(problem);
+  EXPECT_GT(tight.steps_at_shortest, 0);
+  EXPECT_EQ(tight.rejected_steps, 0);
+  ASSERT_FALSE(tight.warnings.empty());
+  EXPECT_NE(tight.warnings.back().find("raise max_steps"), std::string::npos) << tight.warnings.back();
+}
+
 TEST(LoadHistory, ABoundaryAmplitudeEqualsTheDataAmplitudeWhenTheyAgree) {
   // The bulk stress of fretting_bulk_stress.toml through its boundary's own amplitude, or
   // through [history] data_amplitude: the same history, the same answer.

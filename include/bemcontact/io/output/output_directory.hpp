@@ -42,6 +42,10 @@ class OutputDirectory {
   std::vector<File> files_;
 };
 
+// Throws the Error commit() would for a folder it may not replace (a file of that name, a
+// folder of files it did not write), so that a run can refuse its -o before it solves.
+void check_output_directory(const std::filesystem::path& directory);
+
 // Writes `content` to `path` through a temporary file in the same folder and a rename;
 // throws Error naming the path.
 void write_file_atomically(const std::filesystem::path& path, const std::string& content);
