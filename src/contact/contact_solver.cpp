@@ -418,10 +418,24 @@ void reject_runaway_motions(const HistoryData& data, StepOutput& trial) {
   if (!problem.forces.empty()) {
     message << "; the force loads there:";
     const Vector forces = data.condensed.force_at(t_next);
-    for (std::size_t k = 0; k < problem.forces.size(); ++k)
-      message << (k ? ", " : " ") << problem.forces[k].name << " = " << forces[static_cast<Index>(k)];
-    message << " (a force that no contact state can carry, such as a tangential force above the friction limit "
-               "or without friction, has no solution)";
+    // Near zero: every force below 1 % of the largest it takes in the history.
+    bool near_zero = false;
+    for (std::size_t k = 0; k < problem.forces.size(); ++k) {
+      const auto& load = problem.forces[k];
+      message << (k ? ", " : " ") << load.name << " = " << forces[static_cast<Index>(k)] + 0.0;  // not -0
+      double peak = 0.0;
+      for (const Vec2& point : load.amplitude.points) peak = std::max(peak, std::abs(point.y() * load.force));
+      if (load.amplitude.points.empty()) peak = std::abs(load.force);
+      const bool small = std::abs(forces[static_cast<Index>(k)]) < 0.01 * peak || peak == 0.0;
+      near_zero = (k == 0 || near_zero) && small;
+    }
+    if (near_zero)
+      message << " (every force below 1 % of its largest: the contact may hold a pair or two there, whose stick and slip states "
+                 "can cycle from one Newton iteration to the next; end the amplitude at 0, where the bodies part, or "
+                 "at a load that keeps several pairs in contact, or mesh the zone finer)";
+    else
+      message << " (a force that no contact state can carry, such as a tangential force above the friction limit "
+                 "or without friction, has no solution)";
   }
   for (const auto& contact : problem.contacts) {
     const auto& law = contact.law.compliance;
@@ -667,10 +681,12 @@ void cut_back(const HistoryMark& m, LoadHistory& history) {
   }
 }
 
-// The wear of every wearing contact at the end of a computed cycle; a contact whose worn
-// surfaces no longer touch stops the run.
+// The wear of every wearing contact at the end of a computed cycle. A repeated cycle
+// (cycle_steps > 0: its last steps) in which a contact never touched stops the run: the
+// wear has taken it out of its load's reach. Open at the end alone is a history that
+// unloads, and a history that is not repeated (cycle_steps = 0) may end anyhow.
 void record_wear_cycle(const HistoryData& data, const HistoryRun& run, long cycle, int computed, long jump,
-                       double change, LoadHistory& history) {
+                       double change, int cycle_steps, LoadHistory& history) {
   const auto& groups = data.all_groups;
   for (std::size_t g = 0; g + 1 < groups.size(); ++g) {
     const Index first = groups[g], last = groups[g + 1];
@@ -690,13 +706,16 @@ void record_wear_cycle(const HistoryData& data, const HistoryRun& run, long cycl
     record.pairs = out.pairs;
     record.summary = out.steps.back();
     out.wear.push_back(std::move(record));
-    if (out.steps.back().pairs_in_contact > 0) continue;
+    bool touched = cycle_steps == 0;
+    for (int k = 1; k <= cycle_steps && k <= static_cast<int>(out.steps.size()) && !touched; ++k)
+      touched = out.steps[out.steps.size() - static_cast<std::size_t>(k)].pairs_in_contact > 0;
+    if (touched) continue;
     const std::string name = groups.size() == data.problem.contacts.size() + 1
                                  ? "contact '" + data.problem.contacts[g].name + "'"
                                  : std::string("the contact");
-    throw SolverError(name + ": the worn surfaces no longer touch at the end of load cycle " + std::to_string(cycle) +
+    throw SolverError(name + ": the worn surfaces no longer touch in load cycle " + std::to_string(cycle) +
                           " (computed cycle " + std::to_string(computed) +
-                          "): every pair is open. The wear has taken the contact out of its load's reach (a "
+                          "): every pair is open at every step. The wear has taken the contact out of its load's reach (a "
                           "prescribed approach rather than a force?); fewer cycles or a smaller wear coefficient",
                       {"wear cycle", computed, -1.0, run.taken, data.problem.end_time});
   }
@@ -704,15 +723,15 @@ void record_wear_cycle(const HistoryData& data, const HistoryRun& run, long cycl
 
 // Cycle jumping (wear.hpp): after the history's first cycle, each computed cycle stands for
 // ΔN, the wear of ΔN - 1 of them extrapolated from the last computed one.
-void repeat_cycles(const HistoryData& data, const HistoryHooks& hooks, WearDepths at_cycle_start, HistoryRun& run,
-                   LoadHistory& history) {
+void repeat_cycles(const HistoryData& data, const HistoryHooks& hooks, WearDepths at_cycle_start, int first_cycle_steps,
+                   HistoryRun& run, LoadHistory& history) {
   const LoadCycles& cycles = data.problem.cycles;
   const double period = data.problem.end_time - cycles.start;
   const CycleJumpControl control{cycles.max_jump, cycles.max_pressure_change};
   const bool adaptive = cycles.fixed_jump == 0;
   long represented = 1, jump = adaptive ? 1 : cycles.fixed_jump;
   int computed = 1;
-  record_wear_cycle(data, run, represented, computed, 1, 0.0, history);
+  record_wear_cycle(data, run, represented, computed, 1, 0.0, first_cycle_steps, history);
   while (represented < cycles.cycles) {
     const long dn = std::min(jump, cycles.cycles - represented);
     const HistoryRun saved = run;
@@ -745,7 +764,7 @@ void repeat_cycles(const HistoryData& data, const HistoryHooks& hooks, WearDepth
     at_cycle_start = start_of_cycle;
     represented += dn;
     ++computed;
-    record_wear_cycle(data, run, represented, computed, dn, change, history);
+    record_wear_cycle(data, run, represented, computed, dn, change, run.taken - saved.taken, history);
     if (adaptive) jump = control.next(dn, change);
     if (hooks.progress) hooks.progress("wear cycles", static_cast<double>(represented) / cycles.cycles);
   }
@@ -776,12 +795,13 @@ LoadHistory solve_load_history(const CondensedProblem& condensed, const std::vec
   const LoadCycles& cycles = problem.cycles;
   if (!cycles.repeated()) {
     advance(data, 0.0, problem.end_time, 0.0, hooks, run, history);
-    if (run.wear.side1.size() > 0) record_wear_cycle(data, run, 1, 1, 1, 0.0, history);
+    if (run.wear.side1.size() > 0) record_wear_cycle(data, run, 1, 1, 1, 0.0, 0, history);
   } else {
     if (cycles.start > 0.0) advance(data, 0.0, cycles.start, 0.0, hooks, run, history);
     const WearDepths at_cycle_start = run.wear;
+    const int taken_before = run.taken;
     advance(data, cycles.start, problem.end_time, 0.0, hooks, run, history);
-    repeat_cycles(data, hooks, at_cycle_start, run, history);
+    repeat_cycles(data, hooks, at_cycle_start, run.taken - taken_before, run, history);
   }
   finish_history(run, run.totals, history);
   history.newton_systems = {data.newton_cache->factored, data.newton_cache->updated, data.newton_cache->reused};
@@ -970,7 +990,10 @@ ContactResult solve_on_meshes(const ContactProblem& problem, const bem::Progress
   for (const auto& body : model.free_motions().bodies)
     for (const Index mode : body.reported) result.free_motions.push_back({body.body, mode_direction(mode, problem.analysis)});
   LoadHistory history = contact_history(problem, model, progress, coupling.get());
-  result.timings.add(coupling ? "elastoplastic contact steps" : "contact iterations", seconds_since(start));
+  result.timings.add(!coupling                ? "contact iterations"
+                     : model.pairs().empty() ? "elastoplastic steps"  // bonded regions, no contact
+                                             : "elastoplastic contact steps",
+                     seconds_since(start));
   take_history(problem, history, result);
   if (finish_pass && !finish_pass(result)) return result;
   if (coupling) {

@@ -96,6 +96,17 @@ StepInput step_input(const CondensedProblem& problem, double t) {
   in.jump0 = problem.jump_at(t);
   in.target = problem.target_at(t);
   in.force_scale = problem.force_at(t).cwiseAbs();
+  in.force_floor = Vector::Zero(problem.motions);
+  for (Index k = 0; k < problem.motions; ++k) {
+    double amplitude = problem.force_amplitude[static_cast<std::size_t>(k)].points.empty() ? 1.0 : 0.0;
+    for (const Vec2& point : problem.force_amplitude[static_cast<std::size_t>(k)].points)
+      amplitude = std::max(amplitude, std::abs(point.y()));
+    const double peak = amplitude * std::abs(problem.force[k]);
+    in.force_floor[k] = 1e-9 * peak;
+    double carrying = 0.0;  // the zone's length (area) that carries the force
+    for (Index i = 0; i < problem.pairs; ++i) carrying += std::abs(problem.f(k, 2 * i));
+    if (carrying > 0.0) in.pressure_floor = std::max(in.pressure_floor, 1e-9 * peak / carrying);
+  }
   in.gap = problem.gap;
   return in;
 }
@@ -117,6 +128,7 @@ double complementarity_residual(const StepInput& in, const Vector& x, const Vect
   double scale = 0.0, worst = 0.0;
   const Vector g_all = thresholds(in, x, w, c);
   for (Index i = 0; i < p.pairs; ++i) scale = std::max(scale, std::abs(x[2 * i]));
+  scale = std::max(scale, in.pressure_floor);
   if (scale == 0.0) scale = 1.0;
   for (Index i = 0; i < p.pairs; ++i) {
     const double lambda = x[2 * i], tau = x[2 * i + 1];
@@ -130,7 +142,8 @@ double complementarity_residual(const StepInput& in, const Vector& x, const Vect
     const double mismatch = p.f.row(k).dot(x) + p.f_delta.row(k).dot(delta) - in.target[k];
     // A free body's equilibrium (force 0), or a force through 0: relative to the contact
     // forces on the body.
-    const double size = std::max({in.force_scale[k], p.f.row(k).cwiseAbs().dot(x.cwiseAbs()), 1e-300});
+    const double floor = in.force_floor.size() == p.motions ? in.force_floor[k] : 0.0;
+    const double size = std::max({in.force_scale[k], p.f.row(k).cwiseAbs().dot(x.cwiseAbs()), floor, 1e-300});
     worst = std::max(worst, std::abs(mismatch) / size);
   }
   return worst;

@@ -243,6 +243,17 @@ TEST(ContactErrors, OverlappingRigidBody) {
 
 namespace bemcontact {
 
+TEST(ContactErrors, AnEndTimeBeforeTheAmplitudesEndIsAWarningNamingIt) {
+  // The tube unloads from t = 1 to 2: end_time = 1 leaves the unloading out, said at the key.
+  const auto text = test_support::example_text("plastic_tube_bonded.toml");
+  const auto cut = io::parse_contact_problem(test_support::replaced(text, "end_time = 2.0", "end_time = 1.0"), "tube.toml");
+  ASSERT_EQ(cut.warnings.size(), 1u);
+  EXPECT_NE(cut.warnings[0].find("tube.toml:"), std::string::npos) << cut.warnings[0];
+  EXPECT_NE(cut.warnings[0].find("history.end_time"), std::string::npos) << cut.warnings[0];
+  EXPECT_NE(cut.warnings[0].find("until t = 2"), std::string::npos) << cut.warnings[0];
+  EXPECT_TRUE(io::parse_contact_problem(text, "tube.toml").warnings.empty());
+}
+
 TEST(ContactErrors, ALargeInterferenceIsAWarning) {
   auto file = io::parse_contact_problem(test_support::example_text("contact_shrink_fit.toml"), "fit.toml", {{"delta", 0.5}});
   const auto prepared = contact::prepare_contact(file.problem);

@@ -350,6 +350,12 @@ TEST(IoProblemFileErrors, TomlSyntaxErrorGivesLineAndColumn) {
         << message;
     EXPECT_NE(message.find("TOML syntax error at column"), std::string::npos) << message;
   }
+  try {  // a bare word: the hint says to quote it
+    parse_problem(replace(valid, "nu = 0.1", "nu = abc"), "case.toml");
+    FAIL() << "no error";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("goes in quotes"), std::string::npos) << error.what();
+  }
   const std::string duplicate = replace(valid, "nu = 0.1", "nu = 0.1\nnu = 0.2");
   try {
     parse_problem(duplicate, "case.toml");

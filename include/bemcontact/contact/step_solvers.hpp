@@ -63,6 +63,11 @@ struct StepInput {
   Vector jump0;       // 2N: the loads' jump at `time` (CondensedProblem::jump_at)
   Vector target;      // K: the motions' right-hand sides at `time`
   Vector force_scale; // K: |prescribed force| at `time`, for the residual
+  // Below these the residual's scales are round-off (a history unloaded to 0): 1e-9 of the
+  // largest force each motion's load reaches, and of its mean pressure over the pairs that
+  // carry it (complementarity_residual).
+  Vector force_floor;     // K
+  double pressure_floor = 0.0;
   Vector gap;         // N: each pair's gap d (V.3), grown by the wear so far (wear.hpp)
   // The law of each pair (that of its contact).
   std::vector<ContactKind> kind;

@@ -712,6 +712,26 @@ void read_history(const TableReader& root, FileContext& context, contact::Contac
     problem.end_time = history.optional_number("end_time").value_or(last);
     if (!(problem.end_time > 0.0 && std::isfinite(problem.end_time)))
       history.fail("end_time", "the end of the history must be a finite time > 0");
+    // An end_time before an amplitude's last change cuts the history short (an unloading
+    // left out): allowed, and said.
+    if (problem.end_time < last) {
+      const double end = problem.end_time;
+      bool changes = false;
+      auto check = [&](const contact::Amplitude& a) {
+        for (const Vec2& point : a.points)
+          changes = changes || (point.x() > end && std::abs(point.y() - a.at(end)) > 1e-12 * std::abs(point.y()));
+      };
+      for (const auto& force : problem.forces) check(force.amplitude);
+      for (const auto& body : problem.bodies)
+        if (body.rigid) check(body.rigid->amplitude);
+      for (const auto& contact : problem.contacts) check(contact.interference_amplitude);
+      for (const auto& amplitude : problem.boundary_amplitudes) check(amplitude);
+      check(problem.data_amplitude);
+      if (changes)
+        context.warnings.push_back(history.where("end_time").describe() + ": the history stops at end_time = " +
+                                   format_number(end) + ", but the amplitudes change until t = " + format_number(last) +
+                                   ": the loads after end_time are not run (the last step is the state at end_time)");
+    }
     read_load_cycles(history, problem);
   } else {
     problem.end_time = last;

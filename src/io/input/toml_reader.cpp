@@ -335,9 +335,13 @@ toml::table parse_toml_text(std::string_view text, const std::string& file_name)
     return toml::parse(text, std::string_view(file_name));
   } catch (const toml::parse_error& error) {
     const auto& begin = error.source().begin;
-    throw InputError(SourceLocation{file_name, static_cast<int>(begin.line), ""},
-                     "TOML syntax error at column " + std::to_string(begin.column) + ": " +
-                         std::string(error.description()));
+    std::string message = "TOML syntax error at column " + std::to_string(begin.column) + ": " +
+                          std::string(error.description());
+    // A bare word where a value goes: most often a parameter name or an expression unquoted.
+    if (message.find("could not determine value type") != std::string::npos)
+      message += " (a value is a number, true/false, a \"quoted string\", [a, list] or a {table}; a parameter "
+                 "name or an expression goes in quotes: E = \"E_steel\", elements = \"2*n\")";
+    throw InputError(SourceLocation{file_name, static_cast<int>(begin.line), ""}, message);
   }
 }
 

@@ -437,7 +437,10 @@ std::string contact_report_text(const contact::ContactProblem& problem, const co
         result.contacts.size() == 1 ? std::string("contact")
                                     : "contact '" + contact.name + "' (" + body_label(problem, problem.contacts[c].side1) +
                                           " / " + body_label(problem, problem.contacts[c].side2) + ")";
-    if (c < problem.contacts.size() && problem.contacts[c].law.friction > 0.0)
+    if (s.pairs_in_contact == 0)  // no zone to describe (a history that ends unloaded)
+      std::snprintf(line, sizeof line, "%s: %zu pairs, none in contact at the end\n", label.c_str(),
+                    contact.pairs.size());
+    else if (c < problem.contacts.size() && problem.contacts[c].law.friction > 0.0)
       std::snprintf(line, sizeof line,
                     "%s: %zu pairs, %d in contact over [%.6g, %.6g], a = %.6g, stick zone [%.6g, %.6g] (half-width c = "
                     "%.6g, offset %.6g, c/a = %.4f)\n",
@@ -507,7 +510,8 @@ std::string contact_report_text(const contact::ContactProblem& problem, const co
                   r.peak_load, r.peak_depth, r.contact_radius, 2.0 * r.contact_radius / r.ball_diameter, r.meyer);
     out += line;
     if (std::isfinite(r.brinell))
-      std::snprintf(line, sizeof line, "HB = %.6g", r.brinell);
+      std::snprintf(line, sizeof line, "HB = %.6g (stress units of the file; in N and mm, HB in kgf/mm^2 = %.4g)",
+                    r.brinell, r.brinell / 9.80665);
     else
       std::snprintf(line, sizeof line, "HB undefined (d >= D)");
     out += line;
