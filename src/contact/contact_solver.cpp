@@ -1012,8 +1012,9 @@ ContactResult solve_on_meshes(const ContactProblem& problem, const bem::Progress
     for (std::size_t k = 0; k < result.shortest_step_times.size(); ++k)
       text << (k == 0 ? " " : ", ") << result.shortest_step_times[k];
     text << (result.steps_at_shortest > 3 ? ", ..." : "")
-         << "): the stick and contact zones may lag the load there. Just after a contact first touches, its zone "
-            "grows faster than any step; elsewhere raise max_steps in [solver]";
+         << "): the stick and contact zones may lag the load there. Just after a contact first touches or a "
+            "tangential load reverses, its zones grow as the square root of the load's change, faster than any "
+            "step; elsewhere raise max_steps in [solver]";
     result.warnings.push_back(text.str());
   }
   if (coupling) result.warnings.insert(result.warnings.end(), coupling->warnings().begin(), coupling->warnings().end());
