@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <limits>
 
+#include "bemcontact/io/file_names.hpp"
 #include "bemcontact/io/output/results_writer.hpp"
 
 namespace bemcontact::io {
@@ -39,7 +40,7 @@ CsvTable elastoplastic_steps_table(const bem::ElastoplasticResult& result) {
                   {"residual", c}, {"held_cells", i}, {"held_increment", c}, {"yielded_cells", i}, {"max_equivalent_plastic_strain", c}});
   const auto& names = result.mesh.piece_names;
   for (const auto& name : names)
-    for (const char* column : {"_u1", "_u2", "_f1", "_f2"}) table.add_column(name + column, c);
+    for (const char* column : {"_u1", "_u2", "_f1", "_f2"}) table.add_column(file_stem(name) + column, c);
   for (std::size_t k = 0; k < result.steps.size(); ++k) {
     const auto& step = result.steps[k];
     auto row = table.row();
