@@ -701,8 +701,11 @@ void fill_contact_summary(RunSummary& summary, const contact::ContactProblem& pr
   nlohmann::json contacts = nlohmann::json::array();
   for (const auto& contact : result.contacts) contacts.push_back(interface_json(contact));
   summary.results["contacts"] = contacts;
-  // One elastoplastic region: its object; several: an array of them, each with its region's name.
-  if (result.plastic.size() == 1) summary.results["elastoplastic"] = elastoplastic_summary_json(result.plastic[0].result);
+  // One elastoplastic region: its object; several: an array of them; each with its region's name.
+  if (result.plastic.size() == 1) {
+    summary.results["elastoplastic"] = elastoplastic_summary_json(result.plastic[0].result);
+    summary.results["elastoplastic"]["region"] = result.body_names[static_cast<std::size_t>(result.plastic[0].region)];
+  }
   if (result.plastic.size() > 1) {
     nlohmann::json regions = nlohmann::json::array();
     for (const auto& [region, plastic] : result.plastic) {
