@@ -123,6 +123,20 @@ int command_probe(const std::string& run_dir, const std::string& points_file, co
   if (!std::filesystem::is_directory(run_dir))
     throw InputError(SourceLocation{run_dir, 0, ""}, "no such run folder (bemcontact run FILE -o DIR writes one)");
   if (output_dir.empty()) output_dir = (std::filesystem::path(run_dir) / "probe").string();
+  {
+    // The probe's folder replaces -o whole: the run folder itself, or a folder holding it,
+    // would lose the run.
+    namespace fs = std::filesystem;
+    std::error_code error;
+    const fs::path run = fs::weakly_canonical(fs::absolute(run_dir), error);
+    const fs::path out = fs::weakly_canonical(fs::absolute(output_dir), error);
+    const auto [end, at] = std::mismatch(out.begin(), out.end(), run.begin(), run.end());
+    if (!error && end == out.end())
+      throw InputError(SourceLocation{"command line", 0, "-o"},
+                       "the probe's folder '" + output_dir + "' is the run folder '" + run_dir +
+                           "' or holds it, and would replace it (and the run) whole: give another folder, or leave "
+                           "-o out for RUN_DIR/probe");
+  }
   io::check_output_directory(output_dir);  // refused now rather than after the probe
   driver::ProbeRequest request;
   if (!points_file.empty()) {

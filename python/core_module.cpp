@@ -91,17 +91,24 @@ io::ParameterOverrides keyword_overrides(const std::map<std::string, std::varian
   return overrides;
 }
 
+// threads > 0: that many; 0: as many as the process had when the module was loaded (every
+// core, or OMP_NUM_THREADS), so that one call's count does not stay for the next.
+void use_threads(int threads) {
+  static const int initial = omp_get_max_threads();
+  omp_set_num_threads(threads > 0 ? threads : initial);
+}
+
 py::dict run(const std::string& text, const std::string& file_name,
              const std::map<std::string, std::variant<double, std::string>>& overrides, bool mesh_only, int threads,
              double gmsh_timeout) {
   driver::RunOptions options;
   options.keep_tables = true;
   options.overrides = keyword_overrides(overrides);
-  if (gmsh_timeout > 0.0) options.limits.gmsh_timeout_seconds = gmsh_timeout;
+  options.limits.gmsh_timeout_seconds = gmsh_timeout;  // checked > 0 by the package
   driver::RunOutput output;
   {
     py::gil_scoped_release released;
-    if (threads > 0) omp_set_num_threads(threads);
+    use_threads(threads);
     output = mesh_only ? driver::mesh_problem(text, file_name, options) : driver::run_problem(text, file_name, options);
   }
   return as_dict(output);
@@ -110,7 +117,8 @@ py::dict run(const std::string& text, const std::string& file_name,
 // `bemcontact probe` on a result's files in memory: points (their position in the list
 // stands for the line of a points file in messages) and lines (x0, y0, x1, y1, n).
 py::dict probe(const std::map<std::string, py::bytes>& files, const std::vector<std::array<double, 2>>& points,
-               const std::vector<std::tuple<double, double, double, double, int>>& lines, int threads) {
+               const std::vector<std::tuple<double, double, double, double, int>>& lines, int threads,
+               std::int64_t max_points) {
   std::map<std::string, std::string> contents;
   for (const auto& [name, content] : files) contents[name] = std::string(content);
   driver::ProbeRequest request;
@@ -121,10 +129,14 @@ py::dict probe(const std::map<std::string, py::bytes>& files, const std::vector<
   driver::ProbeOptions options;
   options.run_name = "the result";
   options.keep_tables = true;
+  options.request_source = "probe()";
+  options.points_hint = "points=[(x, y), ...] or lines=[(x0, y0, x1, y1, n), ...]";
+  options.limit_hint = "raise it with max_points=";
+  options.limits.max_interior_points = max_points;
   driver::ProbeOutput output;
   {
     py::gil_scoped_release released;
-    if (threads > 0) omp_set_num_threads(threads);
+    use_threads(threads);
     output = driver::probe_run(
         [&](const std::string& name) -> std::optional<std::string> {
           const auto found = contents.find(name);
@@ -155,6 +167,7 @@ void commit(const std::map<std::string, py::bytes>& files, const std::string& di
 PYBIND11_MODULE(_core, m) {
   m.doc() = "bemcontact's native part; use the bemcontact package instead";
   operators::use_single_threaded_blas();
+  use_threads(0);  // the count the process starts with, kept for threads=0
   // The error classes, and a translator that gives each raised error its data as attributes:
   // InputError.file/.line/.key/.detail, GeometryError.places/.detail (file, line, key per
   // boundary), SolverError.part/.iterations/.residual/.step/.time (None where unknown).
@@ -200,6 +213,7 @@ PYBIND11_MODULE(_core, m) {
         "Solve (or only mesh) a problem text; returns files, tables (the CSV files' columns), report, warnings. gmsh_timeout: the seconds a .geo "
         "file may take to mesh (as --gmsh-timeout).");
   m.def("probe", &probe, py::arg("files"), py::arg("points"), py::arg("lines"), py::arg("threads") = 0,
+        py::arg("max_points") = 2000000,
         "Values at new points of a result (as `bemcontact probe`); returns files, tables, report, warnings.");
   m.def("commit", &commit, py::arg("files"), py::arg("directory"),
         "Replace `directory` whole by these files (as `bemcontact run -o`).");

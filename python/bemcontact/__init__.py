@@ -163,23 +163,44 @@ class Result:
                            f"wear_coefficient2 (docs/contact.md, Wear)")
         return self.table(table)
 
-    def probe(self, points=(), lines=(), output=None, threads=0):
+    def probe(self, points=(), lines=(), output=None, threads=0, max_points=2_000_000):
         """Displacements and stresses at new points, from this result's boundary solution (no
-        new solve), as `bemcontact probe`: `points` a sequence of (x, y), `lines` of
-        (x0, y0, x1, y1, n) (n points, ends included). Returns probe.csv as a Table (a row per
-        point and body holding it), with `.warnings` (points of lines inside no body, left
-        out), `.summary` (probe.json) and `.files`; `output` also writes the files there (the
-        folder replaced whole). A listed point inside no body is an InputError naming its
-        place in the list (from 1)."""
-        points = [(float(x), float(y)) for x, y in np.asarray(points, dtype=float).reshape(-1, 2)]
+        new solve), as `bemcontact probe`: `points` a sequence of (x, y) or an (n, 2) array,
+        `lines` of (x0, y0, x1, y1, n) (n points, ends included), at most `max_points` points
+        in all (as --max-points). Returns probe.csv as a Table (a row per point and body
+        holding it), with `.warnings` (points of lines inside no body, left out), `.summary`
+        (probe.json) and `.files`; `output` also writes the files there (the folder replaced
+        whole). A listed point inside no body is an InputError naming its place in the list
+        (from 1)."""
+        try:
+            array = np.asarray(points, dtype=float)
+        except (TypeError, ValueError):
+            raise _argument_error("probe()", "points", f"{points!r} is not a sequence of (x, y) pairs") from None
+        if array.size == 0:
+            array = array.reshape(0, 2)
+        elif array.shape == (2,):
+            array = array.reshape(1, 2)  # one point
+        if array.ndim != 2 or array.shape[1] != 2:
+            raise _argument_error("probe()", "points", f"a sequence of (x, y) pairs or an (n, 2) array, found shape "
+                                  f"{array.shape}")
+        if not np.all(np.isfinite(array)):
+            raise _argument_error("probe()", "points", "every coordinate must be a finite number")
+        points = [(float(x), float(y)) for x, y in array]
         checked = []
         for k, line in enumerate(lines):
-            x0, y0, x1, y1, n = line
-            if int(n) != n or n < 2 or (x0, y0) == (x1, y1):
-                raise InputError(f"lines[{k}] = {tuple(line)!r}: a line is (x0, y0, x1, y1, n) with n >= 2 points "
-                                 f"(a whole number, ends included) and two different ends")
-            checked.append((float(x0), float(y0), float(x1), float(y1), int(n)))
-        raw = _core.probe(self.files, points, checked, int(threads))
+            what = "a line is (x0, y0, x1, y1, n) with n >= 2 points (a whole number, ends included) and two " \
+                   "different finite ends"
+            try:
+                x0, y0, x1, y1, n = (float(v) for v in line)
+            except (TypeError, ValueError):
+                raise _argument_error("probe()", f"lines[{k}]", f"{line!r}: {what}") from None
+            if not (np.all(np.isfinite([x0, y0, x1, y1, n])) and n == int(n) and n >= 2 and (x0, y0) != (x1, y1)):
+                raise _argument_error("probe()", f"lines[{k}]", f"{tuple(line)!r}: {what}")
+            if n > max_points:
+                raise _argument_error("probe()", f"lines[{k}]", f"{int(n)} points, over the limit of {max_points} "
+                                      f"(raise it with max_points=)")
+            checked.append((x0, y0, x1, y1, int(n)))
+        raw = _core.probe(self.files, points, checked, _thread_count("probe()", threads), int(max_points))
         table = Table("probe.csv", raw["tables"]["probe.csv"])
         table.files = dict(raw["files"])
         table.warnings = list(raw["warnings"])
@@ -197,13 +218,29 @@ class Result:
         return f"Result({len(self.files)} files: {', '.join(list(self.files)[:6])}...)"
 
 
+def _argument_error(function, key, detail, message=None):
+    """An InputError of the Python layer's own checks, with the attributes the native ones
+    carry: file (the function), line (None), key (the argument) and detail."""
+    error = InputError(message or f"{function}: argument {key}: {detail}")
+    error.file, error.line, error.key, error.detail = function, None, key, detail
+    return error
+
+
+def _thread_count(function, threads):
+    """threads=: 0 for every core (the default), or a count >= 1."""
+    if isinstance(threads, (bool, np.bool_)) or not isinstance(threads, numbers.Integral) or threads < 0:
+        raise _argument_error(function, "threads", f"{threads!r}: 0 (every core) or a whole number of threads >= 1")
+    return int(threads)
+
+
 def _parameter_value(name, value):
     """A keyword argument's value as the native part takes it: a float, or an expression's text."""
     if isinstance(value, str):
         return value
     if isinstance(value, (bool, np.bool_)) or not isinstance(value, numbers.Real):
-        raise InputError(f"keyword argument {name}={value!r}: a parameter takes a number or an expression in "
-                         f"quotes (e.g. {name}=\"2*250\"), found {type(value).__name__}")
+        detail = (f"a parameter takes a number or an expression in quotes (e.g. {name}=\"2*250\"), found "
+                  f"{type(value).__name__}")
+        raise _argument_error("keyword argument", name, detail, f"keyword argument {name}={value!r}: {detail}")
     return float(value)
 
 
@@ -262,8 +299,16 @@ class Problem:
 
     def _go(self, mesh_only, output, threads, gmsh_timeout, parameters):
         problem = self.with_parameters(**parameters) if parameters else self
-        raw = _core.run(problem.text, problem.file_name, problem.overrides, mesh_only, int(threads),
-                        float(gmsh_timeout))
+        function = "mesh()" if mesh_only else "run()"
+        try:
+            timeout = float(gmsh_timeout)
+        except (TypeError, ValueError):
+            timeout = float("nan")
+        if not (np.isfinite(timeout) and timeout > 0.0):
+            raise _argument_error(function, "gmsh_timeout", f"{gmsh_timeout!r}: the seconds a .geo file may take to "
+                                  f"mesh, a finite number > 0")
+        raw = _core.run(problem.text, problem.file_name, problem.overrides, mesh_only,
+                        _thread_count(function, threads), timeout)
         result = Result(raw)
         if output is not None:
             result.save(output)

@@ -317,11 +317,16 @@ def history_figure(result, names, title, path=None):
         t = steps["time"]
         axes[0, 0].plot(t, steps["normal_force"], ".-", label=name)
         axes[0, 1].plot(t, steps["a"], ".-", label=f"{name}: a")
-        axes[0, 1].plot(t, steps["c"], ".--", label=f"{name}: c (stick)")
+        # Frictionless (or never sticking): no stick size and nothing dissipated to draw.
+        if np.any(steps["c"] != 0.0):
+            axes[0, 1].plot(t, steps["c"], ".--", label=f"{name}: c (stick)")
         # Already cumulative: the energy dissipated since the start (docs/contact.md).
-        axes[1, 0].plot(t, steps["dissipated_energy"], ".-", label=name)
+        if np.any(np.abs(steps["dissipated_energy"]) > 0.0):
+            axes[1, 0].plot(t, steps["dissipated_energy"], ".-", label=name)
+    motions_drawn = False
     if "motions.csv" in result.names():
         motions = result.motions()
+        motions_drawn = len(motions.columns) > 2
         # Forces on the left axis, displacements (much smaller numbers) on the right.
         right = axes[1, 1].twinx()
         for k, column in enumerate(motions.columns[2:]):
@@ -336,6 +341,11 @@ def history_figure(result, names, title, path=None):
                                      "prescribed / computed motions and forces")):
         ax.set_title(label, fontsize=9)
         ax.set_xlabel("time")
+    # Said rather than left blank.
+    for ax, drawn, empty in ((axes[1, 0], axes[1, 0].has_data(), "nothing dissipated (frictionless)"),
+                             (axes[1, 1], motions_drawn, "no force loads or moving rigid bodies")):
+        if not drawn:
+            ax.text(0.5, 0.5, empty, ha="center", va="center", transform=ax.transAxes, fontsize=9, color="0.4")
     if loops:
         raw, slip = grid[0, 2], grid[1, 2]
         for loop in loops:

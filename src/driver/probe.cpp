@@ -281,13 +281,16 @@ AskedPoints asked_points(const ProbeRequest& request) {
   return asked;
 }
 
-void check_point_count(std::size_t count, const ProbeOptions& options) {
+// Counted before the lines are made into points: a line of 10^9 points is refused, not made.
+void check_point_count(const ProbeRequest& request, const ProbeOptions& options) {
+  double count = static_cast<double>(request.listed.size());
+  for (const auto& line : request.lines) count += static_cast<double>(line.count);
   if (count == 0)
-    throw InputError(SourceLocation{"command line", 0, ""}, "give points: --points FILE or --line x0,y0,x1,y1,n");
-  if (static_cast<std::int64_t>(count) > options.limits.max_interior_points)
-    throw InputError(SourceLocation{"command line", 0, ""},
-                     std::to_string(count) + " points, over the limit of " +
-                         std::to_string(options.limits.max_interior_points) + " (raise it with --max-points)");
+    throw InputError(SourceLocation{options.request_source, 0, ""}, "give points: " + options.points_hint);
+  if (count > static_cast<double>(options.limits.max_interior_points))
+    throw InputError(SourceLocation{options.request_source, 0, ""},
+                     std::to_string(static_cast<long long>(count)) + " points, over the limit of " +
+                         std::to_string(options.limits.max_interior_points) + " (" + options.limit_hint + ")");
 }
 
 // A listed point that no body holds is a mistake in the points file.
@@ -473,8 +476,8 @@ std::string report_text(const StoredRun& run, const AskedPoints& asked, const st
 
 ProbeOutput probe_run(const FileReader& run_files, const ProbeRequest& request, const ProbeOptions& options) {
   const auto started = std::chrono::steady_clock::now();
+  check_point_count(request, options);
   const AskedPoints asked = asked_points(request);
-  check_point_count(asked.positions.size(), options);
   const json summary = read_summary(run_files, options);
   const StoredRun run = load_run(run_files, summary, options);
 
@@ -491,7 +494,7 @@ ProbeOutput probe_run(const FileReader& run_files, const ProbeRequest& request, 
   const auto result = bem::probe_points(regions, asked.positions, options.progress);
   check_listed_points_held(result, asked, request);
   if (result.values.empty())
-    throw InputError(SourceLocation{"command line", 0, ""},
+    throw InputError(SourceLocation{options.request_source, 0, ""},
                      "none of the " + std::to_string(asked.positions.size()) + " points lies inside a body of " +
                          options.run_name + " (" + run.title + ")");
 

@@ -323,6 +323,41 @@ def test_probe_errors_name_the_point_and_warn_for_lines(tmp_path):
     assert (tmp_path / "probe" / "probe.vtk").exists()
 
 
+def test_probe_and_run_arguments_are_checked_before_any_work():
+    # A wrong shape is not read as other points, a line of 10^9 points is refused before it
+    # is made, and the Python layer's errors carry the attributes the native ones do.
+    result = bc.Problem.from_dict(tension_plate()).run()
+    with pytest.raises(bc.InputError, match=r"shape \(2, 3\)") as wrong_shape:
+        result.probe(points=[(0, 1, 0), (0.5, 0.5, 0)])
+    assert wrong_shape.value.key == "points" and wrong_shape.value.file == "probe()" and wrong_shape.value.line is None
+    assert len(result.probe(points=(1.0, 0.5))) == 1  # one point as a pair
+    with pytest.raises(bc.InputError, match=r"over the limit of 2000000 \(raise it with max_points=\)"):
+        result.probe(lines=[(-0.5, 1, 0.5, 1, 10**9)])
+    for line in [(0, 0, 1, 1, math.inf), (0, 0, 1, 1, math.nan), (0, 0, 1, 1), ("a", 0, 1, 1, 3)]:
+        with pytest.raises(bc.InputError, match=r"lines\[0\]") as bad_line:
+            result.probe(lines=[line])
+        assert bad_line.value.key == "lines[0]" and bad_line.value.detail
+    with pytest.raises(bc.InputError, match=r"probe\(\).*points=") as none:
+        result.probe()
+    assert none.value.file == "probe()"
+    problem = bc.Problem.from_dict(tension_plate())
+    for bad in (-1.0, 0.0, math.nan, "a"):
+        with pytest.raises(bc.InputError, match="gmsh_timeout"):
+            problem.run(gmsh_timeout=bad)
+    for bad in (-5, 1.5, "a", True):
+        with pytest.raises(bc.InputError, match="threads") as threads:
+            problem.run(threads=bad)
+        assert threads.value.key == "threads"
+    with pytest.raises(bc.InputError) as keyword:
+        problem.run(p=[1])
+    assert keyword.value.key == "p" and keyword.value.file == "keyword argument"
+    # threads=1 for one run does not stay for the next (threads=0: every core, or
+    # OMP_NUM_THREADS).
+    every = problem.run().summary["options"]["threads"]
+    assert problem.run(threads=1).summary["options"]["threads"] == 1
+    assert problem.run().summary["options"]["threads"] == every
+
+
 def test_errors_carry_their_data(examples, tmp_path):
     # An input error's place, a geometry error's boundaries, a solver failure's part.
     with pytest.raises(bc.InputError) as raised:

@@ -42,6 +42,11 @@ struct ProbeOptions {
   bem::ProgressCallback progress;
   ResourceLimits limits;  // max_interior_points bounds the number of points
   bool keep_tables = false;  // keep probe.csv's table in ProbeOutput::tables
+  // How the request's own errors name where it came from and how to give points or raise
+  // the limit: the command line's, or a caller's (Python's probe()).
+  std::string request_source = "command line";
+  std::string points_hint = "--points FILE or --line x0,y0,x1,y1,n";
+  std::string limit_hint = "raise it with --max-points";
 };
 
 struct ProbeOutput {
