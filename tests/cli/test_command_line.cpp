@@ -538,6 +538,16 @@ TEST(CommandLine, ProbeErrorsAreBadInputAndWriteNothing) {
   const auto bad_line = run("probe " + folder + " --line 0,0,1,1");
   EXPECT_EQ(bad_line.exit_code, 2) << bad_line.output;
   EXPECT_NE(bad_line.output.find("--line 0,0,1,1"), std::string::npos) << bad_line.output;
+  // -o the run folder itself, or a folder holding it: the probe's folder would replace the run.
+  for (const fs::path& target : {dir / "out", dir}) {
+    const auto over = run("probe " + folder + " --line -1,1,1,1,3 -o " + target.string());
+    EXPECT_EQ(over.exit_code, 2) << over.output;
+    EXPECT_NE(over.output.find("would replace it (and the run) whole"), std::string::npos) << over.output;
+  }
+  EXPECT_TRUE(fs::exists(dir / "out" / "summary.json"));
+  const auto huge = run("probe " + folder + " --line -1,1,1,1,900000000");  // counted, not made
+  EXPECT_EQ(huge.exit_code, 2) << huge.output;
+  EXPECT_NE(huge.output.find("over the limit"), std::string::npos) << huge.output;
   EXPECT_FALSE(fs::exists(dir / "out" / "probe"));
   // A run folder without problem.toml (older) whose input file changed since.
   fs::remove(dir / "out" / "problem.toml");

@@ -143,7 +143,7 @@ ProbeLine parse_probe_line(const std::string& specification) {
   }
   const auto count = finite_number(fields[4]);
   if (!count || *count != std::floor(*count) || *count < 2 || *count > 1e9)
-    throw InputError(where, "n = '" + fields[4] + "' must be a whole number of points >= 2 (ends included)");
+    throw InputError(where, "n = '" + fields[4] + "' must be a whole number of points from 2 to 10^9 (ends included)");
   ProbeLine line{Vec2(ends[0], ends[1]), Vec2(ends[2], ends[3]), static_cast<int>(*count)};
   if (line.start == line.end) throw InputError(where, "the line's two ends are the same point");
   return line;

@@ -69,7 +69,7 @@ TEST(ProbeInput, LinesAndTheirPoints) {
   EXPECT_EQ(input_error([] { parse_probe_line("0,0,1,1"); }),
             "command line: key '--line 0,0,1,1': a line is x0,y0,x1,y1,n (its ends and the number of points, ends "
             "included); found 4 values");
-  EXPECT_NE(input_error([] { parse_probe_line("0,0,1,1,1"); }).find("must be a whole number of points >= 2"),
+  EXPECT_NE(input_error([] { parse_probe_line("0,0,1,1,1"); }).find("must be a whole number of points from 2"),
             std::string::npos);
   EXPECT_NE(input_error([] { parse_probe_line("0,0,1,1,2.5"); }).find("whole number"), std::string::npos);
   EXPECT_NE(input_error([] { parse_probe_line("0,zero,1,1,5"); }).find("'zero' is not a finite number"),
