@@ -344,13 +344,24 @@ int command_keys(const std::vector<std::string>& ids, const std::string& docs_di
   return ok;
 }
 
+// A value that must be > 0 (CLI11's PositiveNumber says "not in range 0 to 1.8e308" of 0).
+const CLI::Validator kPositive(
+    [](std::string& text) -> std::string {
+      char* end = nullptr;
+      const double value = std::strtod(text.c_str(), &end);
+      if (end == text.c_str() || *end != '\0' || !std::isfinite(value) || !(value > 0.0))
+        return "must be a number > 0, found '" + text + "'";
+      return {};
+    },
+    "NUMBER > 0");
+
 int main(int argc, char** argv) {
   CLI::App app{"bemcontact: boundary elements for 2D and axisymmetric elasticity and frictional contact"};
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string("bemcontact ") + BEMCONTACT_VERSION);
   int threads = 0;
   app.add_option("--threads", threads, "number of threads (default: OMP_NUM_THREADS or all cores)")
-      ->check(CLI::PositiveNumber);
+      ->check(kPositive);
 
   std::string input, output_dir = "out";
   bool quiet = false;
@@ -364,16 +375,16 @@ int main(int argc, char** argv) {
     command->add_option("--set", assignments, "NAME=VALUE: replace a [parameters] value of the file (repeatable)");
     command->add_option("--max-elements", run_options.limits.max_elements,
                         "largest number of elements of one body (default 200000)")
-        ->check(CLI::PositiveNumber);
+        ->check(kPositive);
     command->add_option("--max-points", run_options.limits.max_interior_points,
                         "largest number of interior points (default 2000000)")
-        ->check(CLI::PositiveNumber);
+        ->check(kPositive);
     command->add_option("--max-memory", max_memory_gb,
                         "memory the dense systems may take, in GB (default: 80 % of the machine's)")
-        ->check(CLI::PositiveNumber);
+        ->check(kPositive);
     command->add_option("--gmsh-timeout", run_options.limits.gmsh_timeout_seconds,
                         "seconds Gmsh may take to mesh a .geo file (default 60)")
-        ->check(CLI::PositiveNumber);
+        ->check(kPositive);
   };
   auto* run = app.add_subcommand("run", "solve a problem file and write boundary.csv, interior.csv, VTK, summary.json");
   add_run_options(run, "no progress and no summary on the terminal");
@@ -430,7 +441,7 @@ int main(int argc, char** argv) {
                     "folder of the probe's files, replaced whole (default: OUTPUT_DIR/probe)");
   probe->add_flag("-q,--quiet", quiet, "print nothing but warnings and errors");
   probe->add_option("--max-points", probe_limits.max_interior_points, "largest number of points (default 2000000)")
-      ->check(CLI::PositiveNumber);
+      ->check(kPositive);
 
   try {
     app.parse(argc, argv);

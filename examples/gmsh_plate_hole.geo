@@ -1,5 +1,5 @@
 // Quarter plate with a circular hole (the plate_hole.toml example, drawn in Gmsh).
-// Every boundary curve has a physical name; bemcontact_plate_hole reads the conditions
+// Every boundary curve has a physical name; gmsh_plate_hole.toml reads the conditions
 // by these names. Two curves are drawn against the body's orientation on purpose (CD from
 // D to C, the hole from A to E): bemcontact turns them so that the plate is on their left.
 a = 1.0;

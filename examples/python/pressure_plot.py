@@ -1,4 +1,4 @@
-"""A plot: the contact pressure of the Hertz ball against Hertz's, for two meshes.
+"""A plot: the contact pressure of the Hertz ball against Hertz's, for three meshes.
 
     PYTHONPATH=build/python python3 examples/python/pressure_plot.py [OUTPUT.png]
 """
