@@ -137,9 +137,20 @@ struct RawMesh {
   std::map<int, std::vector<std::array<long, 2>>> by_physical;  // physical tag -> elements
   std::vector<int> physical_order;                      // first appearance
   std::vector<std::pair<long, Vec2>> nodes;
+  std::set<long> node_tags;  // to refuse a tag given twice and an element on a missing node
 };
 
+// A node of $Nodes; a tag given twice is refused.
+void add_node(MshLines& lines, RawMesh& mesh, long tag, const Vec2& position) {
+  if (!mesh.node_tags.insert(tag).second) lines.fail("node " + std::to_string(tag) + " is defined twice");
+  mesh.nodes.emplace_back(tag, position);
+}
+
 void add_element(MshLines& lines, RawMesh& mesh, int physical, long a, long b) {
+  for (const long node : {a, b})
+    if (!mesh.node_tags.count(node))
+      lines.fail("a line element on node " + std::to_string(node) + ", which $Nodes does not define (or comes after "
+                 "$Elements)");
   if (++mesh.line_elements > mesh.max_elements)
     lines.fail("more than " + std::to_string(mesh.max_elements) + " line elements on the physical curves, over the "
                "limit of elements of one body (raise it with --max-elements if the machine has the memory)");
@@ -149,6 +160,13 @@ void add_element(MshLines& lines, RawMesh& mesh, int physical, long a, long b) {
 
 // Line elements: type 1 (2 nodes) and 8 (3 nodes: ends first); other types are not boundary.
 int line_nodes(int type) { return type == 1 ? 2 : type == 8 ? 3 : 0; }
+// Lines of a higher order (4, 5, 6 nodes): boundary elements that are not read.
+void refuse_high_order_line(MshLines& lines, int type) {
+  if (type == 26 || type == 27 || type == 28)
+    lines.fail("line elements of type " + std::to_string(type) + " (" + std::to_string(type - 22) +
+               " nodes) are not read: mesh the curves with elements of order 1 or 2 (types 1 and 8: "
+               "Mesh.ElementOrder = 1 or 2)");
+}
 int element_node_count(int type) {
   static const std::map<int, int> counts{{1, 2}, {2, 3}, {3, 4}, {4, 4}, {5, 8}, {6, 6}, {7, 5}, {8, 3},
                                          {9, 6}, {10, 9}, {11, 10}, {15, 1}, {16, 8}, {21, 10}, {26, 4}, {27, 5}};
@@ -216,7 +234,7 @@ void read_nodes(MshLines& lines, double version, RawMesh& mesh) {
       long tag = 0;
       double x = 0, y = 0, z = 0;
       read_values(lines, entry, tag, x, y, z);
-      mesh.nodes.emplace_back(tag, Vec2(x, y));
+      add_node(lines, mesh, tag, Vec2(x, y));
     });
     lines.expect_end("nodes");
     return;
@@ -231,15 +249,20 @@ void read_nodes(MshLines& lines, double version, RawMesh& mesh) {
       auto entry = lines.read_words();
       double x = 0, y = 0, z = 0;
       read_values(lines, entry, x, y, z);
-      mesh.nodes.emplace_back(tag, Vec2(x, y));
+      add_node(lines, mesh, tag, Vec2(x, y));
     }
   });
 }
 
-// The end nodes of a line element (`count` nodes, ends first) from the rest of its line.
+// The end nodes of a line element (`count` nodes, ends first) from the rest of its line,
+// which must hold nothing more.
 std::array<long, 2> line_ends(MshLines& lines, std::istringstream& entry, int count) {
   std::array<long, 3> nodes{};
   for (int a = 0; a < count; ++a) read_values(lines, entry, nodes[a]);
+  std::string extra;
+  if (entry >> extra)
+    lines.fail("a line element of " + std::to_string(count) + " nodes with more values on its line ('" + extra +
+               "'): the element's type and its nodes do not match");
   return {nodes[0], nodes[1]};
 }
 
@@ -259,6 +282,7 @@ void read_elements(MshLines& lines, double version, RawMesh& mesh) {
                      " tags, more than its line holds: the counts do not match the content");
         if (k == 0) physical = value;
       }
+      refuse_high_order_line(lines, type);
       const int n = line_nodes(type);
       if (n == 0) return;
       const auto ends = line_ends(lines, entry, n);
@@ -272,6 +296,7 @@ void read_elements(MshLines& lines, double version, RawMesh& mesh) {
   each_block(lines, words, "elements", 1, [&](int dim, int entity, int type, long in_block) {
     const int n = dim == 1 ? line_nodes(type) : 0;
     if (element_node_count(type) < 0) lines.fail("unknown element type " + std::to_string(type));
+    if (dim == 1) refuse_high_order_line(lines, type);
     lines.each_line(in_block, [&](std::istringstream& entry) {
       if (n == 0) return;
       long tag = 0;

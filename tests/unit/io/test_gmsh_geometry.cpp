@@ -159,6 +159,33 @@ TEST(GmshGeometry, FileErrorsNameTheFileAndLine) {
   EXPECT_THROW(boundary_from_curves(parse_msh(open_square, "open.msh"), false, "open.msh"), InputError);
 }
 
+TEST(GmshGeometry, ElementLinesAreReadWhole) {
+  // A line of 4 nodes, an element on a node $Nodes lacks, a value too many on an element's
+  // line, a node given twice: each refused at its line (they were dropped, or read as a
+  // boundary with other faults).
+  struct Case {
+    const char* from;
+    const char* to;
+    int line;
+    const char* says;
+  };
+  for (const Case& c : {Case{"3 1 2 2 2 2 3", "3 26 2 2 2 2 3 4 1", 23, "type 26 (4 nodes) are not read"},
+                        Case{"3 1 2 2 2 2 3", "3 1 2 2 2 2 9", 23, "node 9, which $Nodes does not define"},
+                        Case{"3 1 2 2 2 2 3", "3 1 2 2 2 2 3 7", 23, "more values on its line ('7')"},
+                        Case{"4 0 1 0\n", "3 0 1 0\n", 16, "node 3 is defined twice"}}) {
+    std::string text = square_22;
+    text.replace(text.find(c.from), std::string(c.from).size(), c.to);
+    try {
+      parse_msh(text, "bad.msh");
+      FAIL() << c.to << ": no error";
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.where().file, "bad.msh") << e.what();
+      EXPECT_EQ(e.where().line, c.line) << e.what();
+      EXPECT_NE(std::string(e.what()).find(c.says), std::string::npos) << e.what();
+    }
+  }
+}
+
 TEST(GmshGeometry, GeoSyntaxErrorsCarryGmshsMessage) {
   if (!gmsh_api_available()) GTEST_SKIP() << "built without the Gmsh library (.geo files refused)";
   const auto file = std::filesystem::temp_directory_path() / "bemcontact_test_bad.geo";
