@@ -142,6 +142,8 @@ class Result:
 
     def contact_step(self, step, name=None):
         """The pairs at load step `step` (1 = first), written with record_steps = true."""
+        if isinstance(step, (bool, np.bool_)) or not isinstance(step, numbers.Integral):
+            raise TypeError(f"step={step!r}: a load step is a whole number from 1")
         table = f"steps/{self._contact_name(name)}_step{int(step)}"
         if table + ".csv" not in self.files:
             raise KeyError(f"no pairs of step {step}: run with record_steps = true in [solver] "

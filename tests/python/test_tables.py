@@ -67,6 +67,9 @@ def test_recorded_steps_and_probe_tables(examples, monkeypatch):
     refuse_parsing(monkeypatch)
     names = check_tables(result)
     assert "steps/contact_step2.csv" in names
+    assert len(result.contact_step(np.int64(2))) == len(result.contact_step(2))
+    with pytest.raises(TypeError, match="whole number"):
+        result.contact_step(1.7)  # not read as step 1
     probe = result.probe(lines=[(0.0, -0.1, 0.0, -0.5, 5)])
     check_table(probe, probe.files["probe.csv"].decode(), "probe.csv")
     assert len(probe) == 5 and probe["body"].dtype.kind == "U"
