@@ -430,9 +430,9 @@ void reject_runaway_motions(const HistoryData& data, StepOutput& trial) {
       near_zero = (k == 0 || near_zero) && small;
     }
     if (near_zero)
-      message << " (every force below 1 % of its largest: the contact may hold a pair or two there, whose stick and slip states "
-                 "can cycle from one Newton iteration to the next; end the amplitude at 0, where the bodies part, or "
-                 "at a load that keeps several pairs in contact, or mesh the zone finer)";
+      message << " (every force below 1 % of its largest: the contact may hold a pair or two there, whose stick "
+                 "and slip states can cycle from one Newton iteration to the next; end the amplitude at 0, where the "
+                 "bodies part, or at a load that keeps several pairs in contact, or mesh the zone finer)";
     else
       message << " (a force that no contact state can carry, such as a tangential force above the friction limit "
                  "or without friction, has no solution)";
@@ -715,8 +715,9 @@ void record_wear_cycle(const HistoryData& data, const HistoryRun& run, long cycl
                                  : std::string("the contact");
     throw SolverError(name + ": the worn surfaces no longer touch in load cycle " + std::to_string(cycle) +
                           " (computed cycle " + std::to_string(computed) +
-                          "): every pair is open at every step. The wear has taken the contact out of its load's reach (a "
-                          "prescribed approach rather than a force?); fewer cycles or a smaller wear coefficient",
+                          "): every pair is open at every step. The wear has taken the contact out of its load's "
+                          "reach (a prescribed approach rather than a force?); fewer cycles or a smaller wear "
+                          "coefficient",
                       {"wear cycle", computed, -1.0, run.taken, data.problem.end_time});
   }
 }

@@ -100,7 +100,8 @@ void add_pressures_and_forces(const std::vector<ContactPair>& geometry, const st
   // The centre pressure: at the pair nearest to x1 = 0.
   double nearest = std::numeric_limits<double>::infinity();
   for (const auto& pair : pairs)
-    if (std::abs(pair.coordinate) < nearest) nearest = std::abs(pair.coordinate), s.centre_pressure = 0.0 - pair.p_n;  // +0 for an open pair
+    if (std::abs(pair.coordinate) < nearest)  // 0 - p_n: +0 for an open pair
+      nearest = std::abs(pair.coordinate), s.centre_pressure = 0.0 - pair.p_n;
   for (std::size_t i = 0; i < pairs.size(); ++i) {
     if (pairs[i].status == PairStatus::open) continue;
     s.pairs_in_contact += 1;

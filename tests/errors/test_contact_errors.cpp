@@ -246,7 +246,8 @@ namespace bemcontact {
 TEST(ContactErrors, AnEndTimeBeforeTheAmplitudesEndIsAWarningNamingIt) {
   // The tube unloads from t = 1 to 2: end_time = 1 leaves the unloading out, said at the key.
   const auto text = test_support::example_text("plastic_tube_bonded.toml");
-  const auto cut = io::parse_contact_problem(test_support::replaced(text, "end_time = 2.0", "end_time = 1.0"), "tube.toml");
+  const auto cut =
+      io::parse_contact_problem(test_support::replaced(text, "end_time = 2.0", "end_time = 1.0"), "tube.toml");
   ASSERT_EQ(cut.warnings.size(), 1u);
   EXPECT_NE(cut.warnings[0].find("tube.toml:"), std::string::npos) << cut.warnings[0];
   EXPECT_NE(cut.warnings[0].find("history.end_time"), std::string::npos) << cut.warnings[0];

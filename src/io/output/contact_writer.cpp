@@ -364,8 +364,8 @@ nlohmann::json contact_summary_json(const contact::ContactProblem& problem, cons
                   {"rejected_steps", result.rejected_steps},
                   {"steps_at_shortest", result.steps_at_shortest},
                   {"rule", "a step in which more than max_state_changes pairs of one contact change state (open, "
-                           "stick, slip) is redone shorter; each next step is the last one scaled by 0.75 max_state_changes / its "
-                           "changes (within 1/8 and 2)"},
+                           "stick, slip) is redone shorter; each next step is the last one scaled by 0.75 "
+                           "max_state_changes / its changes (within 1/8 and 2)"},
                   {"max_state_changes", problem.max_state_changes},
                   {"newton_systems",
                    {{"factored", result.newton_systems.factored},
