@@ -421,7 +421,8 @@ std::vector<Table> build_tables() {
                 of(Type::amplitude, "amplitude", "a ramp over 0 <= t <= 1", "the force's history")}});
   t.push_back({"history", "[history]", "the [history] table",
                {number("end_time", "the last time of the amplitudes (1 without)",
-                       "the end of the pseudo-time (before an amplitude's last change: a warning; the rest is not run)",
+                       "the end of the pseudo-time; one before an amplitude's last change leaves the rest out, with a "
+                       "warning",
                        above(0)),
                 of(Type::amplitude, "data_amplitude", "a ramp over 0 <= t <= 1",
                    "the history of every other prescribed value of the elastic bodies"),
