@@ -610,6 +610,12 @@ void advance(const HistoryData& data, double from, double to, double offset, con
     // first touch, the step cut by 8). Still redone down to the shortest step, so that the
     // changes that follow them are resolved, but not reported.
     if (redone && 2 * changes > too_fast_changes) changes_at_once = true;
+    // So do the first step of a stretch and a step from a corner of the amplitudes (the loads
+    // turn there): a repeated cycle's plan starts them at the shortest step already, with no
+    // longer try to compare with.
+    const bool from_corner = std::abs(t - from) <= 1e-12 * end ||
+                             (corner > 0 && std::abs(t - corners[corner - 1]) <= 1e-12 * end);
+    if (from_corner) changes_at_once = true;
     if (!fall_back && adaptive && changes > problem.max_state_changes) {
       if (h > (1.0 + 1e-9) * min_step) {  // redone shorter, down to the shortest step
         too_fast.emplace(t_next, trial);
@@ -1004,7 +1010,10 @@ ContactResult solve_on_meshes(const ContactProblem& problem, const bem::Progress
 
   start = Clock::now();
   result.warnings = model.prepared().warnings;
-  if (result.steps_at_shortest > 0) {
+  // A few such steps follow first touch and the corners (a zone growing as the square root of
+  // the load's change: 1 % of the 480-pair fretting cycle's steps, 1.6 % of the wear example's);
+  // past 5 % of the steps the shortest step is too long for the history.
+  if (result.steps_at_shortest > 0 && 20 * result.steps_at_shortest > result.steps_taken) {
     std::ostringstream text;
     text << result.steps_at_shortest << " load step" << (result.steps_at_shortest == 1 ? "" : "s")
          << " changed the state of more than max_state_changes = " << problem.max_state_changes

@@ -478,8 +478,11 @@ std::string contact_report_text(const contact::ContactProblem& problem, const co
     }
     if (result.steps_at_shortest > 0) {
       std::snprintf(line, sizeof line,
-                    "  %d step%s changed more pairs than max_state_changes at the shortest step (raise max_steps)\n",
-                    result.steps_at_shortest, result.steps_at_shortest == 1 ? "" : "s");
+                    "  %d of the steps changed more pairs than max_state_changes at the shortest step (%s)\n",
+                    result.steps_at_shortest,
+                    20 * result.steps_at_shortest > result.steps_taken
+                        ? "over 5 %: raise max_steps"
+                        : "a few, after first touch and the amplitudes' corners, are expected");
       out += line;
     }
   }
