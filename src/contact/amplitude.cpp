@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <cmath>
 
 #include "bemcontact/contact/contact_problem.hpp"
 
@@ -13,6 +14,13 @@ double Amplitude::at(double t) const {
   const Vec2& lo = *(after - 1);
   const double f = (t - lo.x()) / (hi.x() - lo.x());
   return (1.0 - f) * lo.y() + f * hi.y();
+}
+
+double Amplitude::peak() const {
+  if (points.empty()) return 1.0;
+  double out = 0.0;
+  for (const auto& p : points) out = std::max(out, std::abs(p.y()));
+  return out;
 }
 
 std::vector<double> Amplitude::corners() const {

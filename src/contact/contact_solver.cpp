@@ -423,9 +423,7 @@ void reject_runaway_motions(const HistoryData& data, StepOutput& trial) {
     for (std::size_t k = 0; k < problem.forces.size(); ++k) {
       const auto& load = problem.forces[k];
       message << (k ? ", " : " ") << load.name << " = " << forces[static_cast<Index>(k)] + 0.0;  // not -0
-      double peak = 0.0;
-      for (const Vec2& point : load.amplitude.points) peak = std::max(peak, std::abs(point.y() * load.force));
-      if (load.amplitude.points.empty()) peak = std::abs(load.force);
+      const double peak = load.amplitude.peak() * std::abs(load.force);
       const bool small = std::abs(forces[static_cast<Index>(k)]) < 0.01 * peak || peak == 0.0;
       near_zero = (k == 0 || near_zero) && small;
     }

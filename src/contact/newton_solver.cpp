@@ -98,10 +98,7 @@ StepInput step_input(const CondensedProblem& problem, double t) {
   in.force_scale = problem.force_at(t).cwiseAbs();
   in.force_floor = Vector::Zero(problem.motions);
   for (Index k = 0; k < problem.motions; ++k) {
-    double amplitude = problem.force_amplitude[static_cast<std::size_t>(k)].points.empty() ? 1.0 : 0.0;
-    for (const Vec2& point : problem.force_amplitude[static_cast<std::size_t>(k)].points)
-      amplitude = std::max(amplitude, std::abs(point.y()));
-    const double peak = amplitude * std::abs(problem.force[k]);
+    const double peak = problem.force_amplitude[static_cast<std::size_t>(k)].peak() * std::abs(problem.force[k]);
     in.force_floor[k] = 1e-9 * peak;
     double carrying = 0.0;  // the zone's length (area) that carries the force
     for (Index i = 0; i < problem.pairs; ++i) carrying += std::abs(problem.f(k, 2 * i));

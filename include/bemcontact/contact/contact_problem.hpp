@@ -66,6 +66,8 @@ struct Amplitude {
   double at(double t) const;
   // The times where the amplitude changes slope (the history steps through them).
   std::vector<double> corners() const;
+  // The largest |value| it reaches (1 for the default ramp).
+  double peak() const;
 };
 
 // A total force in one direction on a boundary of an elastic body, or on a rigid body,

@@ -691,51 +691,49 @@ void read_load_cycles(const TableReader& history, contact::ContactProblem& probl
   cycles.max_pressure_change = history.optional_number("max_pressure_change").value_or(0.05);
 }
 
+// Every amplitude of the problem's loads (force loads, rigid bodies, interferences, boundary
+// groups, the bodies' own data).
+std::vector<const contact::Amplitude*> load_amplitudes(const contact::ContactProblem& problem) {
+  std::vector<const contact::Amplitude*> out{&problem.data_amplitude};
+  for (const auto& force : problem.forces) out.push_back(&force.amplitude);
+  for (const auto& body : problem.bodies)
+    if (body.rigid) out.push_back(&body.rigid->amplitude);
+  for (const auto& contact : problem.contacts) out.push_back(&contact.interference_amplitude);
+  for (const auto& amplitude : problem.boundary_amplitudes) out.push_back(&amplitude);
+  return out;
+}
+
 // [history]: end_time and the amplitude of the bodies' own data.
 void read_history(const TableReader& root, FileContext& context, contact::ContactProblem& problem) {
-  double last = 1.0;
-  auto last_time = [&](const contact::Amplitude& a) {
-    if (!a.points.empty()) last = std::max(last, a.points.back().x());
-  };
-  for (const auto& force : problem.forces) last_time(force.amplitude);
-  for (const auto& body : problem.bodies)
-    if (body.rigid) last_time(body.rigid->amplitude);
-  for (const auto& contact : problem.contacts) last_time(contact.interference_amplitude);
-  for (const auto& amplitude : problem.boundary_amplitudes) last_time(amplitude);
-  if (const toml::table* table = root.optional_table("history", "[history]")) {
-    const TableReader history(*table, "history", context, root.line());
-    history.check_keys(schema::table("history"));
-    if (history.has("data_amplitude")) {
-      problem.data_amplitude = read_amplitude(history, "data_amplitude");
-      last_time(problem.data_amplitude);
-    }
-    problem.end_time = history.optional_number("end_time").value_or(last);
-    if (!(problem.end_time > 0.0 && std::isfinite(problem.end_time)))
-      history.fail("end_time", "the end of the history must be a finite time > 0");
-    // An end_time before an amplitude's last change cuts the history short (an unloading
-    // left out): allowed, and said.
-    if (problem.end_time < last) {
-      const double end = problem.end_time;
-      bool changes = false;
-      auto check = [&](const contact::Amplitude& a) {
-        for (const Vec2& point : a.points)
-          changes = changes || (point.x() > end && std::abs(point.y() - a.at(end)) > 1e-12 * std::abs(point.y()));
-      };
-      for (const auto& force : problem.forces) check(force.amplitude);
-      for (const auto& body : problem.bodies)
-        if (body.rigid) check(body.rigid->amplitude);
-      for (const auto& contact : problem.contacts) check(contact.interference_amplitude);
-      for (const auto& amplitude : problem.boundary_amplitudes) check(amplitude);
-      check(problem.data_amplitude);
-      if (changes)
-        context.warnings.push_back(history.where("end_time").describe() + ": the history stops at end_time = " +
-                                   format_number(end) + ", but the amplitudes change until t = " + format_number(last) +
-                                   ": the loads after end_time are not run (the last step is the state at end_time)");
-    }
-    read_load_cycles(history, problem);
-  } else {
-    problem.end_time = last;
+  const toml::table* table = root.optional_table("history", "[history]");
+  std::optional<TableReader> history;
+  if (table) {
+    history.emplace(*table, "history", context, root.line());
+    history->check_keys(schema::table("history"));
+    if (history->has("data_amplitude")) problem.data_amplitude = read_amplitude(*history, "data_amplitude");
   }
+  double last = 1.0;
+  for (const auto* a : load_amplitudes(problem))
+    if (!a->points.empty()) last = std::max(last, a->points.back().x());
+  if (!history) {
+    problem.end_time = last;
+    return;
+  }
+  problem.end_time = history->optional_number("end_time").value_or(last);
+  if (!(problem.end_time > 0.0 && std::isfinite(problem.end_time)))
+    history->fail("end_time", "the end of the history must be a finite time > 0");
+  // An end_time before an amplitude's last change cuts the history short (an unloading
+  // left out): allowed, and said.
+  const double end = problem.end_time;
+  bool changes = false;
+  for (const auto* a : load_amplitudes(problem))
+    for (const Vec2& point : a->points)
+      changes = changes || (point.x() > end && std::abs(point.y() - a->at(end)) > 1e-12 * std::abs(point.y()));
+  if (changes)
+    context.warnings.push_back(history->where("end_time").describe() + ": the history stops at end_time = " +
+                               format_number(end) + ", but the amplitudes change until t = " + format_number(last) +
+                               ": the loads after end_time are not run (the last step is the state at end_time)");
+  read_load_cycles(*history, problem);
 }
 
 // Side `side` (1 or 2) of a contact from its body and boundary names.
