@@ -125,23 +125,9 @@ void FactoredBody::build_compressed(const BodyDefinition& body, AnalysisType typ
     if (g == 0) b.tail(rows - dofs) = fixed_rhs_.tail(rows - dofs);
     group_rhs_.push_back(std::move(b));
   }
-  // A unit datum at a variable dof: -H e_d (displacement) or G e_d (traction); variable
-  // nodes are in the global frame.
-  const Index columns = variable_dofs(), node_columns = 2 * static_cast<Index>(variable_.size());
-  variable_rhs_ = Matrix::Zero(rows, columns);
-  for (Index first = 0; first < node_columns; first += kColumnBatch) {
-    const Index count = std::min(kColumnBatch, node_columns - first);
-    Matrix unit_u = Matrix::Zero(dofs, count), unit_p = Matrix::Zero(dofs, count);
-    for (Index col = first; col < first + count; ++col) {
-      const auto& v = variable_[static_cast<std::size_t>(col / 2)];
-      if (conditions_[v.node].on_axis && col % 2 == 0) continue;  // radial datum fixed at 0
-      (v.kind == ConditionKind::displacement ? unit_u : unit_p)(2 * v.node + col % 2, col - first) = 1.0;
-    }
-    variable_rhs_.block(0, first, dofs, count) = system.boundary_rhs(unit_u, unit_p);
-  }
+  // The variable data's right-hand sides are applied through the blocks (variable_rhs).
   const Index first_variable = static_cast<Index>(constraints_.size()) - variable_constraints_;
   for (Index q = 0; q < variable_constraints_; ++q) {
-    variable_rhs_(dofs + first_variable + q, 2 * static_cast<Index>(variable_.size()) + q) = 1.0;
     fixed_rhs_[dofs + first_variable + q] = 0.0;
     group_rhs_[0][dofs + first_variable + q] = 0.0;
   }
@@ -149,10 +135,32 @@ void FactoredBody::build_compressed(const BodyDefinition& body, AnalysisType typ
   factors_ = &compressed_->system;
 }
 
+Matrix FactoredBody::variable_rhs(const Matrix& variable_data) const {
+  if (!compressed_) return variable_rhs_ * variable_data;
+  // b = G p - H u of the data at the variable nodes (global frame), the radial datum on the
+  // axis fixed at 0; a variable constraint's datum in its equation's row.
+  const auto& system = compressed_->system;
+  const Index dofs = 2 * mesh_.node_count(), columns = variable_data.cols();
+  Matrix U = Matrix::Zero(dofs, columns), P = Matrix::Zero(dofs, columns);
+  for (std::size_t k = 0; k < variable_.size(); ++k)
+    for (int c = 0; c < 2; ++c) {
+      const auto& v = variable_[k];
+      if (conditions_[v.node].on_axis && c == 0) continue;
+      (v.kind == ConditionKind::displacement ? U : P).row(2 * v.node + c) =
+          variable_data.row(2 * static_cast<Index>(k) + c);
+    }
+  Matrix rhs = Matrix::Zero(system.size(), columns);
+  rhs.topRows(dofs) = system.boundary_rhs(U, P);
+  const Index first_variable = static_cast<Index>(constraints_.size()) - variable_constraints_;
+  for (Index q = 0; q < variable_constraints_; ++q)
+    rhs.row(dofs + first_variable + q) = variable_data.row(2 * static_cast<Index>(variable_.size()) + q);
+  return rhs;
+}
+
 Matrix FactoredBody::solve_unknowns(const Matrix& variable_data, bool with_fixed_data) const {
   if (variable_data.rows() != variable_dofs())
     throw Error("FactoredBody: expected " + std::to_string(variable_dofs()) + " variable data");
-  Matrix rhs = variable_rhs_ * variable_data;
+  Matrix rhs = variable_rhs(variable_data);
   if (with_fixed_data) rhs.colwise() += fixed_rhs_;
   factors_->solve_in_place(rhs);
   return rhs;
@@ -182,9 +190,44 @@ Matrix FactoredBody::unit_responses() const {
   Matrix out(columns, columns);
   for (Index first = 0; first < columns; first += kColumnBatch) {
     const Index count = std::min(kColumnBatch, columns - first);
-    Matrix y = variable_rhs_.middleCols(first, count);
+    Matrix y;
+    if (compressed_) {
+      Matrix unit = Matrix::Zero(columns, count);
+      for (Index j = 0; j < count; ++j) unit(first + j, j) = 1.0;
+      y = variable_rhs(unit);
+    } else {
+      y = variable_rhs_.middleCols(first, count);
+    }
     factors_->solve_in_place(y);
     out.middleCols(first, count) = complementary_of(y);
+  }
+  return out;
+}
+
+Matrix FactoredBody::complementary_columns(const Eigen::SparseMatrix<double>& variable_data) const {
+  if (variable_data.rows() != variable_dofs())
+    throw Error("FactoredBody: expected " + std::to_string(variable_dofs()) + " variable data");
+  // Only the columns with data are solved (a region meets the pairs of its own contacts).
+  std::vector<Index> columns;
+  for (Index j = 0; j < variable_data.outerSize(); ++j)
+    if (Eigen::SparseMatrix<double>::InnerIterator(variable_data, j)) columns.push_back(j);
+  Matrix out = Matrix::Zero(variable_dofs(), variable_data.cols());
+  for (std::size_t first = 0; first < columns.size(); first += static_cast<std::size_t>(kColumnBatch)) {
+    const Index count = std::min<Index>(kColumnBatch, static_cast<Index>(columns.size() - first));
+    Matrix batch = Matrix::Zero(variable_dofs(), count);
+    for (Index k = 0; k < count; ++k)
+      for (Eigen::SparseMatrix<double>::InnerIterator it(variable_data, columns[first + k]); it; ++it)
+        batch(it.row(), k) = it.value();
+    Matrix y;
+    if (compressed_) {
+      y = variable_rhs(batch);
+    } else {
+      const Eigen::SparseMatrix<double> sparse_batch = batch.sparseView();
+      y = variable_rhs_ * sparse_batch;
+    }
+    factors_->solve_in_place(y);
+    const Matrix response = complementary_of(y);
+    for (Index k = 0; k < count; ++k) out.col(columns[first + k]) = response.col(k);
   }
   return out;
 }
@@ -241,7 +284,7 @@ BoundarySolution FactoredBody::solve_with_amplitudes(const Vector& variable_data
                                                      const std::vector<double>& amplitudes) const {
   if (variable_data.size() != variable_dofs())
     throw Error("FactoredBody: expected " + std::to_string(variable_dofs()) + " variable data");
-  Vector rhs = variable_rhs_ * variable_data;
+  Vector rhs = variable_rhs(variable_data).col(0);
   for (std::size_t g = 0; g < group_rhs_.size(); ++g) rhs += amplitudes.at(g) * group_rhs_[g];
   {
     Matrix column = rhs;

@@ -95,7 +95,8 @@ struct ContactModel::Build {
   std::vector<dd::Connectivity> bonds;                          // per body
   std::vector<std::vector<bem::PointConstraint>> pins;          // per region: the free motions' pins
   std::vector<std::pair<int, Index>> pin_of_motion;             // per free motion: region, pin index
-  std::vector<Matrix> flexibility, G, own_response;             // per region (factor_regions)
+  std::vector<Matrix> flexibility, own_response;                // per region (factor_regions)
+  std::vector<Eigen::SparseMatrix<double>> G;                   // per region (factor_regions): dofs x nq
   std::vector<Matrix> response, response0;                      // per region (form_affine_responses)
   std::vector<int> load_of_body;                                // per body: its rigid motion's load, or -1
   std::vector<char> keep_flexibility;                          // per region: kept for with_added_responses
@@ -269,14 +270,22 @@ void ContactModel::factor_regions(Build& build, const bem::ProgressCallback& pro
                         error.failure());
     }
     const Index dofs = factored_[r]->variable_dofs();
-    flexibility[r] = factored_[r]->unit_responses();
+    // The flexibility C_r (dofs^2) only where the bonds' elimination or the elastoplastic
+    // coupling needs it; elsewhere form_affine_responses solves for C_r G_r directly.
+    if (variables[r].bond_dofs > 0 || build.keep_flexibility[r]) flexibility[r] = factored_[r]->unit_responses();
     own_response[r] = Matrix::Zero(dofs, groups);
     for (int g = 0; g < factored_[r]->load_groups(); ++g) own_response[r].col(g) = factored_[r]->group_complementary(g);
-    G[r] = Matrix::Zero(dofs, nq);
+    // G_r's entries (repeated ones sum): pair frames, the transfer, platens' and pins' ones.
+    std::vector<Eigen::Triplet<double>> entries;
+    const auto add_block = [&entries](Index row, Index col, const Mat2& block) {
+      for (int i = 0; i < 2; ++i)
+        for (int j = 0; j < 2; ++j)
+          if (block(i, j) != 0.0) entries.emplace_back(row + i, col + j, block(i, j));
+    };
     for (std::size_t m = 0; m < pin_of_motion.size(); ++m)
       if (pin_of_motion[m].first == static_cast<int>(r))
-        G[r](2 * static_cast<Index>(variables[r].nodes.size()) + pin_of_motion[m].second,
-             2 * n + force_motions + static_cast<Index>(m)) = 1.0;
+        entries.emplace_back(2 * static_cast<Index>(variables[r].nodes.size()) + pin_of_motion[m].second,
+                             2 * n + force_motions + static_cast<Index>(m), 1.0);
     for (const auto& block : variables[r].blocks) {
       if (block.kind == BlockKind::platen) {
         // The platen moves by the approach of each force load on it, in its component.
@@ -284,7 +293,7 @@ void ContactModel::factor_regions(Build& build, const bem::ProgressCallback& pro
           if (prepared_.platen_of_force[k] != static_cast<int>(block.contact)) continue;
           const auto& platen = prepared_.platens[block.contact];
           for (Index l = 0; l < static_cast<Index>(platen.nodes.size()); ++l)
-            G[r](block.offset + 2 * l + problem.forces[k].component, 2 * n + static_cast<Index>(k)) = 1.0;
+            entries.emplace_back(block.offset + 2 * l + problem.forces[k].component, 2 * n + static_cast<Index>(k), 1.0);
         }
         continue;
       }
@@ -293,15 +302,17 @@ void ContactModel::factor_regions(Build& build, const bem::ProgressCallback& pro
       for (Index i = 0; i < static_cast<Index>(contact.pairs.size()); ++i) {
         const Mat2 Ri = pairs_[first + i].traction_frame();
         if (block.kind == BlockKind::side1) {
-          G[r].block<2, 2>(block.offset + 2 * i, 2 * (first + i)) = Ri;
+          add_block(block.offset + 2 * i, 2 * (first + i), Ri);
         } else {
           // Side 2 carries -T p (the consistent transfer of pairing.hpp).
           for (Index k = 0; k < static_cast<Index>(contact.zone_nodes2.size()); ++k)
             if (contact.transfer(k, i) != 0.0)
-              G[r].block<2, 2>(block.offset + 2 * k, 2 * (first + i)) -= contact.transfer(k, i) * Ri;
+              add_block(block.offset + 2 * k, 2 * (first + i), -contact.transfer(k, i) * Ri);
         }
       }
     }
+    G[r].resize(dofs, nq);
+    G[r].setFromTriplets(entries.begin(), entries.end());
   }
 
 }
@@ -317,12 +328,16 @@ void ContactModel::eliminate_bonds(Build& build) {
   const auto& bonds = build.bonds;
   const auto& flexibility = build.flexibility;
   const auto& own_response = build.own_response;
-  // D_r starts as G_r (moved: it is not needed apart); a body's L below reads its regions'
-  // G_r before their bond rows change.
-  data_map_ = std::move(build.G);
-  const auto& G = data_map_;
+  // D_r is G_r (moved: it is not needed apart; zero in the bond rows) below its bond rows,
+  // which the elimination fills.
+  contact_data_map_ = std::move(build.G);
+  const auto& G = contact_data_map_;
+  bond_data_map_.assign(region_count, Matrix());
   data_offset_.assign(region_count, Matrix());
-  for (std::size_t r = 0; r < region_count; ++r) data_offset_[r] = Matrix::Zero(G[r].rows(), groups);
+  for (std::size_t r = 0; r < region_count; ++r) {
+    bond_data_map_[r] = Matrix::Zero(variables[r].bond_dofs, nq);
+    data_offset_[r] = Matrix::Zero(G[r].rows(), groups);
+  }
   build.bond_equations.assign(problem.bodies.size(), {});
   for (std::size_t b = 0; b < problem.bodies.size(); ++b) {
     const Index nb = bonds[b].unknowns;
@@ -334,9 +349,10 @@ void ContactModel::eliminate_bonds(Build& build) {
     for (const int r : prepared_.body_regions[b]) {
       const auto& v = variables[r];
       const Matrix bond_rows = flexibility[r].topRows(v.bond_dofs);
+      const Matrix bond_rows_G = bond_rows * G[r];
       for (Index i = 0; i < v.bond_dofs; ++i) {
         for (Index j = 0; j < v.bond_dofs; ++j) K(v.bond_unknown[i], v.bond_unknown[j]) += bond_rows(i, j);
-        L.row(v.bond_unknown[i]) += bond_rows.row(i) * G[r];
+        L.row(v.bond_unknown[i]) += bond_rows_G.row(i);
         l0.row(v.bond_unknown[i]) += own_response[r].row(i);
       }
     }
@@ -360,7 +376,7 @@ void ContactModel::eliminate_bonds(Build& build) {
     for (const int r : prepared_.body_regions[b]) {
       const auto& v = variables[r];
       for (Index i = 0; i < v.bond_dofs; ++i) {
-        data_map_[r].row(i) += Uq.row(v.bond_unknown[i]);
+        bond_data_map_[r].row(i) = Uq.row(v.bond_unknown[i]);
         data_offset_[r].row(i) = U0.row(v.bond_unknown[i]);
       }
     }
@@ -379,10 +395,16 @@ void ContactModel::form_affine_responses(Build& build) {
   response.assign(region_count, {});
   response0.assign(region_count, {});
   for (std::size_t r = 0; r < region_count; ++r) {
-    // The data map is 2x2 pair frames and the transfer's few entries (bond rows aside): a
+    if (flexibility[r].size() == 0 && build.variables[r].bond_dofs == 0) {
+      // No bonds: D_r = G_r, d0_r = 0, and C_r G_r is solved for column by column.
+      response[r] = factored_[r]->complementary_columns(contact_data_map_[r]);
+      response0[r] = own_response[r];
+      continue;
+    }
+    // Below the bond rows the data map is 2x2 pair frames and the transfer's few entries: a
     // sparse product, O(dofs x nonzeros) instead of O(dofs^2 x nq).
-    const Eigen::SparseMatrix<double> data_map = data_map_[r].sparseView();
-    response[r] = flexibility[r] * data_map;
+    response[r] = flexibility[r] * contact_data_map_[r];
+    if (bond_data_map_[r].rows() > 0) response[r] += flexibility[r].leftCols(bond_data_map_[r].rows()) * bond_data_map_[r];
     response0[r] = flexibility[r] * data_offset_[r] + own_response[r];
     if (!build.keep_flexibility[r]) flexibility[r] = Matrix();  // dofs^2: freed before the jumps
   }
@@ -598,9 +620,8 @@ ResponseChange ContactModel::with_added_responses(const std::vector<AddedRespons
         const Vector& u0 = *added_of[r]->offset;
         const auto& unknown = kept_->bond_unknown[r];
         const Index bond = bond_dofs_[r];
-        // The data before the bonds, G_r: D_r without its bond rows (G_r's are 0).
-        const Index rest = data_map_[r].rows() - bond;
-        const Matrix FG = F.topRows(bond).rightCols(rest) * data_map_[r].bottomRows(rest);
+        // The data before the bonds, G_r (its bond rows are 0).
+        const Matrix FG = F.topRows(bond) * contact_data_map_[r];
         for (Index i = 0; i < bond; ++i) {
           for (Index j = 0; j < bond; ++j) K(unknown[i], unknown[j]) += F(i, j);
           L.row(unknown[i]) += FG.row(i);
@@ -620,11 +641,11 @@ ResponseChange ContactModel::with_added_responses(const std::vector<AddedRespons
     for (const int r : members) {
       const auto& unknown = kept_->bond_unknown[r];
       const Index bond = bond_dofs_[r];
-      Matrix D = data_map_[r];  // its rows past the bonds' are G_r's, unchanged
+      Matrix D = Matrix(contact_data_map_[r]);  // its rows past the bonds' are G_r's, unchanged
       Vector d0 = Vector::Zero(D.rows());
       for (Index i = 0; i < bond; ++i) D.row(i) = Uq.row(unknown[i]), d0[i] = U0(unknown[i], 0);
       const Matrix& C = kept_->flexibility[r];
-      const Matrix dD = D.topRows(bond) - data_map_[r].topRows(bond);
+      const Matrix dD = D.topRows(bond) - bond_data_map_[r];
       const Vector dd0 = d0.head(bond) - data_offset_[r].topRows(bond) * a;
       Matrix response = C.leftCols(bond) * dD;
       Vector offset = C.leftCols(bond) * dd0;
@@ -667,7 +688,10 @@ bem::BoundarySolution ContactModel::region_solution(int r, const Vector& x, cons
   q << x, delta;
   const auto amplitudes = problem_.group_amplitudes(t);
   const Vector scale = Eigen::Map<const Vector>(amplitudes.data(), static_cast<Index>(amplitudes.size()));
-  return factored_[r]->solve_with_amplitudes(data_map_[r] * q + data_offset_[r] * scale, amplitudes);
+  Vector data = contact_data_map_[r] * q + data_offset_[r] * scale;
+  const Index bond = bond_data_map_[r].rows();
+  if (bond > 0) data.head(bond) += bond_data_map_[r] * q;
+  return factored_[r]->solve_with_amplitudes(data, amplitudes);
 }
 
 }  // namespace bemcontact::contact

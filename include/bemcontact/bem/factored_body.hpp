@@ -12,6 +12,8 @@
 #include <memory>
 #include <vector>
 
+#include <Eigen/Sparse>
+
 #include "bemcontact/bem/boundary_system.hpp"
 #include "bemcontact/bem/problem.hpp"
 #include "bemcontact/bem/progress.hpp"
@@ -60,6 +62,9 @@ class FactoredBody {
 
   // The same for several data vectors at once (columns).
   Matrix complementary_columns(const Matrix& variable_data, bool with_fixed_data) const;
+  // The same for sparse data without the body's own (columns, solved in batches): the
+  // response to a contact's pair tractions without the flexibility of every datum.
+  Matrix complementary_columns(const Eigen::SparseMatrix<double>& variable_data) const;
   // The complementary field of each unit variable datum (variable_dofs() columns): the
   // flexibility (or stiffness) map of the variable nodes, S or S^-1, without forming the
   // identity's product with the right-hand sides.
@@ -67,6 +72,8 @@ class FactoredBody {
 
  private:
   Matrix solve_unknowns(const Matrix& variable_data, bool with_fixed_data) const;
+  // The right-hand sides of variable data (columns), without the body's own data.
+  Matrix variable_rhs(const Matrix& variable_data) const;
   // The complementary rows of solved unknowns y (one column per data vector).
   Matrix complementary_of(const Matrix& y) const;
   BoundarySolution recover(const Vector& y, const Vector& variable_data, bool with_fixed_data) const;
@@ -80,7 +87,9 @@ class FactoredBody {
   std::vector<ConstraintEquation> constraints_;
   Vector fixed_rhs_;
   std::vector<Vector> group_rhs_;  // fixed_rhs_ split by load group (they sum to it)
-  Matrix variable_rhs_;  // columns: right-hand side per unit variable datum
+  // Dense path: the right-hand side per unit variable datum (columns). Compressed: empty,
+  // applied through the hierarchical blocks (it would be dense in the variable nodes).
+  Matrix variable_rhs_;
   std::unique_ptr<operators::DenseLU> lu_;  // dense path
   struct Compressed;       // the mesh copy, integrator and system it refers to
   std::unique_ptr<Compressed> compressed_;

@@ -164,7 +164,10 @@ class ContactModel {
   // components) as D_r q + d0_r of the contact unknowns q = (x, delta) and the load groups'
   // amplitudes (d0_r a column per group), and the pairs' jumps per unit complementary value
   // at those nodes (2N rows; w = sum_r of it times the region's complementary field).
-  std::vector<Matrix> data_map_;     // D_r
+  // D_r in two parts: its bond rows (the first bond_dofs, dense: the bond elimination's) and
+  // G_r (sparse, zero in the bond rows: pair frames, the transfer, platens' and pins' ones).
+  std::vector<Matrix> bond_data_map_;                         // D_r's bond rows
+  std::vector<Eigen::SparseMatrix<double>> contact_data_map_;  // G_r
   std::vector<Matrix> data_offset_;  // d0_r
   std::vector<Eigen::SparseMatrix<double>> jump_map_;  // J_r (2 x 2 blocks per pair)
   std::vector<Index> bond_dofs_;     // per region
