@@ -131,7 +131,9 @@ std::size_t InterfaceOperator::memory_bytes() const {
   for (const auto& body : bodies_) {
     if (!body) continue;
     const std::size_t n = 2 * static_cast<std::size_t>(body->mesh().node_count());
-    bytes += sizeof(double) * (n * n + n * static_cast<std::size_t>(body->variable_dofs()) + 2 * n);
+    // A compressed body applies its interface's right-hand sides through its blocks.
+    const std::size_t rhs_columns = body->compressed() ? 0 : static_cast<std::size_t>(body->variable_dofs());
+    bytes += sizeof(double) * (n * n + n * rhs_columns + 2 * n);
   }
   for (const auto& map : maps_) bytes += sizeof(double) * static_cast<std::size_t>(map.size());
   return bytes;

@@ -153,13 +153,14 @@ BodyCost body_cost_alone(const bem::BodyDefinition& body, AnalysisType type, con
 constexpr double compressed_column_seconds_per_nlogn = 3.5e-8;
 
 // `interface_dofs`: the variable data of a factored body (a subdomain's interface), whose
-// right-hand sides (2N each) and map (k x k) it holds.
+// right-hand sides (2N each: dense only; a compressed body applies them through its
+// blocks) and map (k x k) it holds.
 BodyCost body_cost(const bem::BodyDefinition& body, AnalysisType type, const geometry::MeshOptions& mesh,
                    std::size_t interior_points, const bem::OperatorChoice& choice, int threads,
                    std::int64_t interface_dofs = 0, bool transposed = false) {
   BodyCost cost = body_cost_alone(body, type, mesh, interior_points, choice, threads, transposed);
   const double n = static_cast<double>(cost.unknowns), k = static_cast<double>(interface_dofs);
-  const double interface_bytes = 8.0 * (n * k + 2.0 * k * k);
+  const double interface_bytes = 8.0 * ((cost.compressed ? 0.0 : n * k) + 2.0 * k * k);
   cost.held_bytes += interface_bytes;
   cost.peak_bytes += interface_bytes;
   if (cost.compressed) cost.seconds += k * n_log_n(cost.unknowns) * compressed_column_seconds_per_nlogn;
