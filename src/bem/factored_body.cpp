@@ -214,16 +214,18 @@ Matrix FactoredBody::complementary_columns(const Eigen::SparseMatrix<double>& va
   Matrix out = Matrix::Zero(variable_dofs(), variable_data.cols());
   for (std::size_t first = 0; first < columns.size(); first += static_cast<std::size_t>(kColumnBatch)) {
     const Index count = std::min<Index>(kColumnBatch, static_cast<Index>(columns.size() - first));
-    Matrix batch = Matrix::Zero(variable_dofs(), count);
-    for (Index k = 0; k < count; ++k)
-      for (Eigen::SparseMatrix<double>::InnerIterator it(variable_data, columns[first + k]); it; ++it)
-        batch(it.row(), k) = it.value();
     Matrix y;
     if (compressed_) {
+      Matrix batch = Matrix::Zero(variable_dofs(), count);
+      for (Index k = 0; k < count; ++k)
+        for (Eigen::SparseMatrix<double>::InnerIterator it(variable_data, columns[first + k]); it; ++it)
+          batch(it.row(), k) = it.value();
       y = variable_rhs(batch);
-    } else {
-      const Eigen::SparseMatrix<double> sparse_batch = batch.sparseView();
-      y = variable_rhs_ * sparse_batch;
+    } else {  // a few unit columns each: gathered, not multiplied
+      y = Matrix::Zero(variable_rhs_.rows(), count);
+      for (Index k = 0; k < count; ++k)
+        for (Eigen::SparseMatrix<double>::InnerIterator it(variable_data, columns[first + k]); it; ++it)
+          y.col(k) += it.value() * variable_rhs_.col(it.row());
     }
     factors_->solve_in_place(y);
     const Matrix response = complementary_of(y);
