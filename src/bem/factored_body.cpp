@@ -184,49 +184,31 @@ BoundarySolution FactoredBody::solve(const Vector& variable_data, bool with_fixe
 }
 
 Matrix FactoredBody::unit_responses() const {
-  // In batches of columns: a whole copy of the right-hand sides (2N x variable dofs) is
-  // what the solve would otherwise add to the body's memory.
-  const Index columns = variable_dofs();
-  Matrix out(columns, columns);
-  for (Index first = 0; first < columns; first += kColumnBatch) {
-    const Index count = std::min(kColumnBatch, columns - first);
-    Matrix y;
-    if (compressed_) {
-      Matrix unit = Matrix::Zero(columns, count);
-      for (Index j = 0; j < count; ++j) unit(first + j, j) = 1.0;
-      y = variable_rhs(unit);
-    } else {
-      y = variable_rhs_.middleCols(first, count);
-    }
-    factors_->solve_in_place(y);
-    out.middleCols(first, count) = complementary_of(y);
-  }
-  return out;
+  Eigen::SparseMatrix<double> identity(variable_dofs(), variable_dofs());
+  identity.setIdentity();
+  return complementary_columns(identity);
 }
 
 Matrix FactoredBody::complementary_columns(const Eigen::SparseMatrix<double>& variable_data) const {
   if (variable_data.rows() != variable_dofs())
     throw Error("FactoredBody: expected " + std::to_string(variable_dofs()) + " variable data");
-  // Only the columns with data are solved (a region meets the pairs of its own contacts).
+  // Only the columns with data are solved (a region meets the pairs of its own contacts), in
+  // batches: a whole copy of the right-hand sides (2N x columns) is what the solve would
+  // otherwise add to the body's memory.
   std::vector<Index> columns;
   for (Index j = 0; j < variable_data.outerSize(); ++j)
     if (Eigen::SparseMatrix<double>::InnerIterator(variable_data, j)) columns.push_back(j);
   Matrix out = Matrix::Zero(variable_dofs(), variable_data.cols());
   for (std::size_t first = 0; first < columns.size(); first += static_cast<std::size_t>(kColumnBatch)) {
     const Index count = std::min<Index>(kColumnBatch, static_cast<Index>(columns.size() - first));
-    Matrix y;
-    if (compressed_) {
-      Matrix batch = Matrix::Zero(variable_dofs(), count);
-      for (Index k = 0; k < count; ++k)
-        for (Eigen::SparseMatrix<double>::InnerIterator it(variable_data, columns[first + k]); it; ++it)
-          batch(it.row(), k) = it.value();
-      y = variable_rhs(batch);
-    } else {  // a few unit columns each: gathered, not multiplied
-      y = Matrix::Zero(variable_rhs_.rows(), count);
-      for (Index k = 0; k < count; ++k)
-        for (Eigen::SparseMatrix<double>::InnerIterator it(variable_data, columns[first + k]); it; ++it)
-          y.col(k) += it.value() * variable_rhs_.col(it.row());
-    }
+    // Dense: the data's few entries per column gather columns of the stored right-hand
+    // sides; compressed: the data go through the blocks.
+    Matrix y = Matrix::Zero(compressed_ ? variable_dofs() : variable_rhs_.rows(), count);
+    for (Index k = 0; k < count; ++k)
+      for (Eigen::SparseMatrix<double>::InnerIterator it(variable_data, columns[first + k]); it; ++it)
+        if (compressed_) y(it.row(), k) = it.value();
+        else y.col(k) += it.value() * variable_rhs_.col(it.row());
+    if (compressed_) y = variable_rhs(y);
     factors_->solve_in_place(y);
     const Matrix response = complementary_of(y);
     for (Index k = 0; k < count; ++k) out.col(columns[first + k]) = response.col(k);

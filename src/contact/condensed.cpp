@@ -100,6 +100,9 @@ struct ContactModel::Build {
   std::vector<Matrix> response, response0;                      // per region (form_affine_responses)
   std::vector<int> load_of_body;                                // per body: its rigid motion's load, or -1
   std::vector<char> keep_flexibility;                          // per region: kept for with_added_responses
+  // Whether region r forms its flexibility C_r (dofs^2): for its bonds' elimination or to
+  // keep it; any other region solves for C_r G_r directly (form_affine_responses).
+  bool forms_flexibility(std::size_t r) const { return variables[r].bond_dofs > 0 || keep_flexibility[r]; }
   // Per body (eliminate_bonds): its bond equations K U + L q + l0 = 0 (l0 per load group).
   struct BondEquations {
     Matrix K, L, l0;
@@ -270,9 +273,7 @@ void ContactModel::factor_regions(Build& build, const bem::ProgressCallback& pro
                         error.failure());
     }
     const Index dofs = factored_[r]->variable_dofs();
-    // The flexibility C_r (dofs^2) only where the bonds' elimination or the elastoplastic
-    // coupling needs it; elsewhere form_affine_responses solves for C_r G_r directly.
-    if (variables[r].bond_dofs > 0 || build.keep_flexibility[r]) flexibility[r] = factored_[r]->unit_responses();
+    if (build.forms_flexibility(r)) flexibility[r] = factored_[r]->unit_responses();
     own_response[r] = Matrix::Zero(dofs, groups);
     for (int g = 0; g < factored_[r]->load_groups(); ++g) own_response[r].col(g) = factored_[r]->group_complementary(g);
     // G_r's entries (repeated ones sum): pair frames, the transfer, platens' and pins' ones.
@@ -395,7 +396,7 @@ void ContactModel::form_affine_responses(Build& build) {
   response.assign(region_count, {});
   response0.assign(region_count, {});
   for (std::size_t r = 0; r < region_count; ++r) {
-    if (flexibility[r].size() == 0 && build.variables[r].bond_dofs == 0) {
+    if (!build.forms_flexibility(r)) {
       // No bonds: D_r = G_r, d0_r = 0, and C_r G_r is solved for column by column.
       response[r] = factored_[r]->complementary_columns(contact_data_map_[r]);
       response0[r] = own_response[r];
