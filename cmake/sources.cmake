@@ -81,6 +81,7 @@ set(BEMCONTACT_CONTACT_SOURCES
   src/contact/free_motions.cpp
   src/contact/halfspace_model.cpp
   src/contact/indentation.cpp
+  src/contact/matrix_free_step.cpp
   src/contact/newton_solver.cpp
   src/contact/plastic_coupling.cpp
   src/contact/nonlocal_friction.cpp

@@ -30,6 +30,13 @@ Vector CondensedProblem::force_at(double t) const {
   return out;
 }
 
+Vector CondensedProblem::apply_M(const Vector& x) const {
+  if (!matrix_free) return M * x;
+  Vector y;
+  matrix_free->M->apply(x, y);
+  return y;
+}
+
 bool CondensedProblem::half_model(Index first, Index last) const {
   if (half_models.empty()) return false;
   const auto all = pair_groups(*this);
@@ -100,6 +107,10 @@ struct ContactModel::Build {
   std::vector<Matrix> response, response0;                      // per region (form_affine_responses)
   std::vector<int> load_of_body;                                // per body: its rigid motion's load, or -1
   std::vector<char> keep_flexibility;                          // per region: kept for with_added_responses
+  // M is applied through the regions, not formed (choose_condensed_operator): the responses
+  // hold only the motions' columns, C_r G_r's last K.
+  bool matrix_free = false;
+  Index response_columns() const { return matrix_free ? K : nq; }
   // Whether region r forms its flexibility C_r (dofs^2): for its bonds' elimination or to
   // keep it; any other region solves for C_r G_r directly (form_affine_responses).
   bool forms_flexibility(std::size_t r) const { return variables[r].bond_dofs > 0 || keep_flexibility[r]; }
@@ -135,10 +146,12 @@ ContactModel::ContactModel(const ContactProblem& problem, const bem::ProgressCal
   number_pairs_and_motions(build);
   collect_region_variables(build);
   factor_regions(build, progress);
+  choose_condensed_operator(build);
   eliminate_bonds(build);
   form_affine_responses(build);
   assemble_jumps_and_loads(build);
   assemble_motion_equations(build);
+  if (build.matrix_free) form_matrix_free_operator(build);
   bond_dofs_.clear();
   for (const auto& v : build.variables) bond_dofs_.push_back(v.bond_dofs);
   pins_ = build.pins;
@@ -318,6 +331,73 @@ void ContactModel::factor_regions(Build& build, const bem::ProgressCallback& pro
 
 }
 
+// Step 4b: whether M is formed or applied through the regions (SolverOptions::contact_operator).
+void ContactModel::choose_condensed_operator(Build& build) {
+  const auto& solver = problem_.solver;
+  if (solver.contact_operator == CondensedOperatorKind::dense) return;
+  std::string obstacle = matrix_free_obstacle(problem_);
+  if (obstacle.empty() && !build.pin_of_motion.empty())
+    obstacle = "a body is held only by its contacts (its equilibrium is a row of the formed operator)";
+  if (solver.contact_operator == CondensedOperatorKind::matrix_free) {
+    if (!obstacle.empty())
+      throw InputError(solver.contact_operator_where, "the condensed operator cannot be applied matrix-free: " +
+                                                          obstacle + " (remove contact_operator, or set it to \"dense\")");
+    build.matrix_free = true;
+    return;
+  }
+  const bool compressed = std::all_of(factored_.begin(), factored_.end(), [](const auto& f) { return f->compressed(); });
+  build.matrix_free = obstacle.empty() && compressed && build.n >= SolverOptions::matrix_free_threshold;
+}
+
+namespace condensation {
+
+// M x = sum_r J_r C_r G_r x (docs/model.md, step 6 without forming M): one solve of each
+// region's factors per product, only the pairs' columns of G_r (x holds no motions).
+class RegionsCondensedOperator : public CondensedOperator {
+ public:
+  RegionsCondensedOperator(const std::vector<std::unique_ptr<bem::FactoredBody>>& regions,
+                           const std::vector<Eigen::SparseMatrix<double>>& data_map,
+                           const std::vector<Eigen::SparseMatrix<double>>& jump_map, Index pairs)
+      : regions_(regions), data_map_(data_map), jump_map_(jump_map), n_(pairs) {}
+  Index rows() const override { return 2 * n_; }
+  Index cols() const override { return 2 * n_; }
+  void apply(const Vector& x, Vector& y) const override {
+    y = Vector::Zero(2 * n_);
+    for (std::size_t r = 0; r < regions_.size(); ++r) {
+      const Vector data = data_map_[r].leftCols(2 * n_) * x;
+      if (data.isZero(0.0)) continue;
+      y += jump_map_[r] * regions_[r]->complementary(data, false);
+    }
+  }
+  Matrix apply_columns(const Eigen::SparseMatrix<double>& X) const override {
+    Matrix Y = Matrix::Zero(2 * n_, X.cols());
+    for (std::size_t r = 0; r < regions_.size(); ++r) {
+      const Eigen::SparseMatrix<double> data = data_map_[r].leftCols(2 * n_) * X;
+      if (data.nonZeros() == 0) continue;
+      Y += jump_map_[r] * regions_[r]->complementary_columns(data);
+    }
+    return Y;
+  }
+
+ private:
+  const std::vector<std::unique_ptr<bem::FactoredBody>>& regions_;
+  const std::vector<Eigen::SparseMatrix<double>>& data_map_;
+  const std::vector<Eigen::SparseMatrix<double>>& jump_map_;
+  Index n_;
+};
+
+}  // namespace condensation
+
+// Step 6b of the matrix-free route: M as an operator on the factored regions, with the
+// coarse space of its step solver's preconditioner.
+void ContactModel::form_matrix_free_operator(Build& build) {
+  auto op = std::make_shared<condensation::RegionsCondensedOperator>(factored_, contact_data_map_, jump_map_, build.n);
+  Vector weight(build.n);
+  for (Index g = 0; g < build.n; ++g) weight[g] = pairs_[g].weight;
+  condensed_.matrix_free = std::make_shared<const MatrixFreeCondensed>(
+      prepare_matrix_free(std::move(op), std::move(weight), pair_groups(condensed_)));
+}
+
 // Step 5: each body's bond unknowns eliminated by one dense solve of the bonds' nodal
 // equilibrium K U + L q + l0 = 0 (the conforming method's Schur complement): every region's
 // data becomes an affine function of the contact unknowns, D_r q + d0_r.
@@ -397,8 +477,11 @@ void ContactModel::form_affine_responses(Build& build) {
   response0.assign(region_count, {});
   for (std::size_t r = 0; r < region_count; ++r) {
     if (!build.forms_flexibility(r)) {
-      // No bonds: D_r = G_r, d0_r = 0, and C_r G_r is solved for column by column.
-      response[r] = factored_[r]->complementary_columns(contact_data_map_[r]);
+      // No bonds: D_r = G_r, d0_r = 0, and C_r G_r is solved for column by column (only the
+      // motions' on the matrix-free route).
+      const Index columns = build.response_columns();
+      response[r] = factored_[r]->complementary_columns(
+          Eigen::SparseMatrix<double>(contact_data_map_[r].rightCols(columns)));
       response0[r] = own_response[r];
       continue;
     }
@@ -426,7 +509,9 @@ void ContactModel::assemble_jumps_and_loads(Build& build) {
   // body's prescribed translation.
   auto& cp = condensed_;
   cp.pairs = n;
-  cp.M = Matrix::Zero(2 * n, 2 * n);
+  // The responses' columns: the pairs' (unless matrix-free), then the motions'.
+  const Index x_columns = build.response_columns() - K;
+  if (x_columns > 0) cp.M = Matrix::Zero(2 * n, 2 * n);
   cp.b = Matrix::Zero(2 * n, K);
   std::vector<std::vector<Eigen::Triplet<double>>> jump_entries(regions.size());
   const auto add_jump = [&](int r, Index row, Index col, const Mat2& block) {
@@ -483,7 +568,7 @@ void ContactModel::assemble_jumps_and_loads(Build& build) {
         // The rigid body translates by its force loads' approaches and its prescribed displacement.
         for (std::size_t k = 0; k < problem.forces.size(); ++k) {
           if (problem.forces[k].body != contact.rigid_body) continue;
-          const Index column = 2 * n + static_cast<Index>(k);
+          const Index column = x_columns + static_cast<Index>(k);
           if (problem.forces[k].component < 2) {
             u(problem.forces[k].component, column) -= 1.0;
           } else {  // a small rotation theta about the reference: theta (-arm_y, arm_x)
@@ -503,7 +588,7 @@ void ContactModel::assemble_jumps_and_loads(Build& build) {
         }
       }
       const Matrix w = Qg * u;
-      cp.M.middleRows(2 * (first + i), 2) = w.leftCols(2 * n);
+      if (x_columns > 0) cp.M.middleRows(2 * (first + i), 2) = w.leftCols(2 * n);
       cp.b.middleRows(2 * (first + i), 2) = w.rightCols(K);
       const Matrix w0 = Qg * u0;
       for (Index g = 0; g < groups; ++g) cp.loads[g].a.segment<2>(2 * (first + i)) = w0.col(g);
@@ -514,7 +599,8 @@ void ContactModel::assemble_jumps_and_loads(Build& build) {
     jump_map_[r].resize(2 * n, response[r].rows());
     jump_map_[r].setFromTriplets(jump_entries[r].begin(), jump_entries[r].end());  // sums repeated entries
   }
-  if (!problem.tangential_coupling) drop_tangential_coupling(cp);
+  // (Matrix-free: frictionless, tau = 0, so the normal jumps take nothing from it anyway.)
+  if (!problem.tangential_coupling && x_columns > 0) drop_tangential_coupling(cp);
   cp.gap.resize(n);
   cp.on_axis.resize(n);
   for (Index g = 0; g < n; ++g) {
@@ -579,7 +665,7 @@ void ContactModel::assemble_motion_equations(Build& build) {
   }
   for (std::size_t r = 0; r < motion_rows.size(); ++r) {
     if (motion_rows[r].isZero(0.0)) continue;
-    F += motion_rows[r] * response[r];
+    F.rightCols(response[r].cols()) += motion_rows[r] * response[r];
     F0 += motion_rows[r] * response0[r];
   }
   for (Index g = 0; g < groups; ++g) cp.loads[g].F0 = F0.col(g);

@@ -151,6 +151,7 @@ ContactSummary summarise(const std::vector<ContactPair>& geometry, const std::ve
   s.kalker_iterations = step.kalker_iterations;
   s.threshold_iterations = step.threshold_iterations;
   s.gmres_cycles = step.gmres_cycles;
+  s.matrix_free_products = step.krylov_iterations;
   return s;
 }
 
@@ -240,6 +241,7 @@ void add_iterations(ContactSummary& totals, const StepOutput& step) {
   totals.kalker_iterations += step.kalker_iterations;
   totals.threshold_iterations += step.threshold_iterations;
   totals.gmres_cycles += step.gmres_cycles;
+  totals.matrix_free_products += step.krylov_iterations;
 }
 
 // Records one step in a result of pairs [first, last).
@@ -273,6 +275,7 @@ void finish(ContactInterfaceResult& out, const ContactSummary& totals) {
   out.summary.kalker_iterations = totals.kalker_iterations;
   out.summary.threshold_iterations = totals.threshold_iterations;
   out.summary.gmres_cycles = totals.gmres_cycles;
+  out.summary.matrix_free_products = totals.matrix_free_products;
 }
 
 }  // namespace
@@ -983,6 +986,7 @@ ContactResult solve_on_meshes(const ContactProblem& problem, const bem::Progress
   result.timings.add("assembly, factorisation and condensation", seconds_since(start));
   std::vector<bem::InteriorSelection> selections = interior_selections(problem, model);
   result.unknowns = 2 * model.condensed().pairs + model.condensed().motions;
+  result.matrix_free = model.condensed().matrix_free != nullptr;
 
   std::unique_ptr<PlasticCoupling> coupling;
   if (const auto plastic = coupled_plastic_regions(problem, model); !plastic.empty()) {
@@ -1008,6 +1012,13 @@ ContactResult solve_on_meshes(const ContactProblem& problem, const bem::Progress
 
   start = Clock::now();
   result.warnings = model.prepared().warnings;
+  if (result.matrix_free && matrix_free_round_off(model.condensed().pairs) > problem.solver.tolerance) {
+    std::ostringstream text;
+    text << "tolerance = " << problem.solver.tolerance << " is below the round-off of the matrix-free products over "
+         << model.condensed().pairs << " pairs: the steps were converged to " << matrix_free_round_off(model.condensed().pairs)
+         << " (docs/contact.md, \"Large contact zones\")";
+    result.warnings.push_back(text.str());
+  }
   // A few such steps follow first touch and the corners (a zone growing as the square root of
   // the load's change: 1 % of the 480-pair fretting cycle's steps, 1.6 % of the wear example's);
   // past 5 % of the steps the shortest step is too long for the history.

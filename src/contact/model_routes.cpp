@@ -7,6 +7,7 @@
 #include "bemcontact/core/error.hpp"
 
 #include "bemcontact/contact/contact_problem.hpp"
+#include "bemcontact/contact/contact_solver.hpp"
 
 namespace bemcontact::contact {
 
@@ -58,6 +59,35 @@ SolverRoute route_of(const ContactProblem& model) {
         return SolverRoute::elastoplastic;
   if (!holds_one_body_alone(model)) return SolverRoute::condensed;
   return model.bodies[0].regions.size() == 1 ? SolverRoute::direct : SolverRoute::decomposition;
+}
+
+std::string matrix_free_obstacle(const ContactProblem& model) {
+  if (model.solver.algorithm == Algorithm::thesis) return "the thesis algorithm works on the formed operator";
+  for (const auto& contact : model.contacts) {
+    const auto& law = contact.law;
+    if (law.kind != ContactKind::unilateral)
+      return "contact '" + contact.name + "' is " + to_string(law.kind) + " (only unilateral contact is served)";
+    if (law.friction > 0.0) return "contact '" + contact.name + "' has friction (only frictionless contact is served)";
+  }
+  for (const auto& body : model.bodies) {
+    if (body.regions.size() > 1)
+      return "body '" + body.name + "' has several regions (their bonds are eliminated on the formed flexibility)";
+    for (const auto& region : body.regions)
+      if (region.body.plasticity) return "body '" + body.name + "' is elastoplastic";
+  }
+  for (const auto& load : model.forces)
+    if (!model.bodies[static_cast<std::size_t>(load.body)].rigid)
+      return "force load '" + load.name + "' presses an elastic body (a platen's force is a row of the formed operator)";
+  return "";
+}
+
+const char* to_string(CondensedOperatorKind kind) {
+  switch (kind) {
+    case CondensedOperatorKind::automatic: return "auto";
+    case CondensedOperatorKind::dense: return "dense";
+    case CondensedOperatorKind::matrix_free: return "matrix_free";
+  }
+  return "?";
 }
 
 const char* to_string(SolverRoute route) {

@@ -11,6 +11,10 @@ namespace bemcontact::contact {
 namespace {
 
 double penalty_scale(const CondensedProblem& p) {
+  if (p.matrix_free) {  // M_ii estimated as sigma w_i (MatrixFreeCondensed::fine_scale)
+    const double sum = std::abs(p.matrix_free->fine_scale) * p.matrix_free->weight.sum();
+    return sum > 0.0 ? static_cast<double>(p.pairs) / sum : 1.0;
+  }
   double sum = 0.0;
   for (Index k = 0; k < p.M.rows(); ++k) sum += std::abs(p.M(k, k));
   return sum > 0.0 ? p.M.rows() / sum : 1.0;
@@ -110,7 +114,7 @@ StepInput step_input(const CondensedProblem& problem, double t) {
 
 Vector relative_displacement(const StepInput& in, const Vector& x, const Vector& delta) {
   const auto& p = *in.problem;
-  Vector w = in.jump0 + p.M * x;
+  Vector w = in.jump0 + p.apply_M(x);
   if (p.motions > 0) w += p.b * delta;
   return w;
 }
@@ -532,10 +536,12 @@ double backtrack(const StepInput& in, const Vector& x, const Vector& delta, doub
 StepOutput solve_step_newton(const StepInput& in, const SolverOptions& options) {
   const auto& p = *in.problem;
   const Index n = p.pairs;
+  const double tolerance = p.matrix_free ? std::max(options.tolerance, matrix_free_round_off(n)) : options.tolerance;
   const double c = penalty_scale(p);
   StepOutput out;
   Vector x = in.x_start.size() == 2 * n ? in.x_start : Vector::Zero(2 * n);
   Vector delta = in.delta_start.size() == p.motions ? in.delta_start : Vector::Zero(p.motions);
+  if (p.matrix_free && in.state_start.empty() && x.isZero(0.0)) coarse_start(in, options, x, delta);
   Vector w = relative_displacement(in, x, delta);
   double residual = complementarity_residual(in, x, delta, w);
   std::set<ActiveSets> seen;
@@ -546,7 +552,28 @@ StepOutput solve_step_newton(const StepInput& in, const SolverOptions& options) 
     if (!damped && !seen.insert(state).second && iteration > 2) damped = true;  // the sets cycle
     NewtonSystem system = newton_system(in, x, w, state, c);
     Vector z;
-    if (!solve_newton_system(in, system, z)) {
+    if (p.matrix_free) {
+      NewtonSystemCache local;
+      NewtonSystemCache& cache = in.newton_cache ? *in.newton_cache : local;
+      const long before = cache.krylov_iterations;
+      std::string why;
+      // The gaps' rows to half what the residual allows: c |d - w_n| <= tolerance times
+      // the pressure scale (the iterate's; before any pressure, 1e-3 of the first solve's
+      // right-hand side, refined at the next iteration from its warm start).
+      // While the contact set still changes, 1e-6 of it (inexact Newton: the next set is
+      // what the solve decides).
+      double pressure = in.pressure_floor;
+      for (Index i = 0; i < n; ++i) pressure = std::max(pressure, std::abs(x[2 * i]));
+      const double gaps = system.rhs.head(static_cast<Index>(system.free_dofs.size())).norm();
+      double gap_goal = pressure > 0.0 ? 0.5 * tolerance * pressure / c : 1e-3 * gaps;
+      if (state != out.state) gap_goal = std::max(gap_goal, 1e-6 * gaps);
+      const bool solved = solve_matrix_free_system(p, system.free_dofs, system.rhs, gap_goal, delta, cache, z, why);
+      out.krylov_iterations += static_cast<int>(cache.krylov_iterations - before);
+      if (!solved) {
+        out.failure = "the Newton system of iteration " + std::to_string(iteration) + " (matrix-free): " + why;
+        break;
+      }
+    } else if (!solve_newton_system(in, system, z)) {
       out.failure = "the Newton system of iteration " + std::to_string(iteration) +
                     " is singular (no pair in contact can carry the load?)";
       break;
@@ -564,7 +591,7 @@ StepOutput solve_step_newton(const StepInput& in, const SolverOptions& options) 
     w = std::move(w_new);
     residual = new_residual;
     out.state = state;
-    if (residual <= options.tolerance) {
+    if (residual <= tolerance) {
       out.converged = true;
       break;
     }

@@ -22,6 +22,7 @@
 #include "bemcontact/bem/factored_body.hpp"
 #include "bemcontact/contact/free_motions.hpp"
 #include "bemcontact/contact/pairing.hpp"
+#include "bemcontact/operators/linear_operator.hpp"
 
 namespace bemcontact::contact {
 
@@ -33,9 +34,37 @@ struct CondensedLoad {
   Vector F0;  // K
 };
 
+// The condensed operator applied without being formed (ContactModel's matrix-free route):
+// M x = sum_r J_r C_r G_r x, one solve of every region's factors per product.
+class CondensedOperator : public operators::LinearOperator {
+ public:
+  // M X for the columns of a sparse X (the regions' solves batched).
+  virtual Matrix apply_columns(const Eigen::SparseMatrix<double>& X) const = 0;
+};
+
+// What the matrix-free step solver needs besides the product (matrix_free_step.cpp): the
+// coarse space of its two-level preconditioner and the scales of its fine level.
+struct MatrixFreeCondensed {
+  std::shared_ptr<const CondensedOperator> M;
+  // Per pair, the integral of its shape function (its share of the zone): the fine level
+  // scales a pair's residual by it.
+  Vector weight;
+  Eigen::SparseMatrix<double> coarse_basis;  // N x nc: hat functions over the pairs of each contact
+  Matrix coarse_image;                       // N x nc: the normal jumps of M times them
+  double fine_scale = 1.0;  // sigma: M's normal block on the highest frequency per unit weight (M_ii ~ sigma w_i)
+};
+
+// The matrix-free solver's data for M (matrix_free_step.cpp): `weight` per pair, `groups`
+// the contacts' pair offsets.
+MatrixFreeCondensed prepare_matrix_free(std::shared_ptr<const CondensedOperator> M, Vector weight,
+                                        const std::vector<Index>& groups);
+
 struct CondensedProblem {
   Index pairs = 0;
-  Matrix M;        // 2N x 2N
+  Matrix M;        // 2N x 2N; empty on the matrix-free route (then matrix_free.M applies it)
+  std::shared_ptr<const MatrixFreeCondensed> matrix_free;  // null: M is formed
+  // M x, whichever way M is held.
+  Vector apply_M(const Vector& x) const;
   Vector gap;      // N, d of (V.3)
   std::vector<bool> on_axis;  // N
   std::vector<CondensedLoad> loads;  // the bodies' own data, prescribed rigid displacements
@@ -148,10 +177,12 @@ class ContactModel {
   void number_pairs_and_motions(Build& build);
   void collect_region_variables(Build& build);
   void factor_regions(Build& build, const bem::ProgressCallback& progress);
+  void choose_condensed_operator(Build& build);
   void eliminate_bonds(Build& build);
   void form_affine_responses(Build& build);
   void assemble_jumps_and_loads(Build& build);
   void assemble_motion_equations(Build& build);
+  void form_matrix_free_operator(Build& build);
 
   ContactProblem problem_;
   PreparedContact prepared_;

@@ -105,8 +105,20 @@ enum class PairNormal {
            // Spence.
 };
 
+// How the condensed operator M is held: formed (a dense 2N x 2N matrix, the step solved by
+// dense factorisations), or applied through the factored regions without being formed
+// (frictionless unilateral contact between single-region bodies: the step solved by an
+// active set with preconditioned GMRES, matrix_free_step.cpp). automatic: matrix-free from
+// `matrix_free_threshold` pairs when every elastic region is compressed and nothing stands
+// in its way (matrix_free_obstacle).
+enum class CondensedOperatorKind { automatic, dense, matrix_free };
+const char* to_string(CondensedOperatorKind kind);
+
 struct SolverOptions {
   Algorithm algorithm = Algorithm::newton;
+  CondensedOperatorKind contact_operator = CondensedOperatorKind::automatic;
+  SourceLocation contact_operator_where;  // its key in the problem file, for messages
+  static constexpr Index matrix_free_threshold = 2000;
   double tolerance = 1e-10;  // Newton: relative residual of the complementarity functions
   int max_iterations = 100;  // Newton iterations per load step; Kalker loops (Alg V.3)
   // Thesis algorithm
@@ -310,6 +322,12 @@ ContactProblem model_of(const dd::DecompositionProblem& problem);
 enum class SolverRoute { direct, decomposition, condensed, elastoplastic };
 SolverRoute route_of(const ContactProblem& model);
 const char* to_string(SolverRoute route);
+
+// What keeps the condensed operator of a model from being applied matrix-free (empty:
+// nothing; SolverOptions::contact_operator): its step solver serves frictionless unilateral
+// contact between bodies of one elastic region each, pressed by rigid bodies and their own
+// data. (A body held only by its contacts is found when the model is built.)
+std::string matrix_free_obstacle(const ContactProblem& model);
 
 // A model of route direct as the direct solver's problem, and one of route decomposition
 // as the decomposition's (with its solver options; `region_word` names its parts in

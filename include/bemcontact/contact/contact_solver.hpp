@@ -73,6 +73,7 @@ struct ContactSummary {
   int contact_spots = 0;
   double mean_gap = 0.0;
   int newton_iterations = 0, kalker_iterations = 0, threshold_iterations = 0, gmres_cycles = 0;
+  long matrix_free_products = 0;  // the matrix-free route: products of M (SolverOptions::contact_operator)
   double residual = 0.0;        // relative complementarity residual
   double dissipated_energy = 0.0;  // by friction since the start: -sum weight p_t (slip increment)
   // Worn volume of side 1 and side 2 since the start (wear.hpp: sum weight h; an area per unit
@@ -160,6 +161,7 @@ struct ContactResult : ContactInterfaceResult {
   std::vector<ReportedMotion> free_motions;  // the motions of records after the force loads'
   int steps_taken = 0;
   int rejected_steps = 0;
+  bool matrix_free = false;  // the condensed operator was applied, not formed (SolverOptions::contact_operator)
   int rejected_jumps = 0;
   int steps_past_state_limit = 0;  // LoadHistory's
   int steps_at_shortest = 0;       // LoadHistory's

@@ -519,6 +519,11 @@ void read_solver(const TableReader& reader, contact::ContactProblem& problem) {
   problem.solver.algorithm = reader.choice("algorithm") == "thesis"
                                  ? contact::Algorithm::thesis
                                  : contact::Algorithm::newton;
+  const std::string contact_operator = reader.choice("contact_operator");
+  problem.solver.contact_operator = contact_operator == "dense"         ? contact::CondensedOperatorKind::dense
+                                    : contact_operator == "matrix_free" ? contact::CondensedOperatorKind::matrix_free
+                                                                        : contact::CondensedOperatorKind::automatic;
+  problem.solver.contact_operator_where = reader.where("contact_operator");
   problem.solver.gmres_restart = reader.integer_or("gmres_restart", problem.solver.gmres_restart);
   problem.solver.max_gmres_cycles = reader.integer_or("max_gmres_cycles", problem.solver.max_gmres_cycles);
   problem.solver.xi = reader.optional_number("xi").value_or(problem.solver.xi);
@@ -946,6 +951,16 @@ void check_rigid_bodies(const contact::ContactProblem& problem) {
   }
 }
 
+// contact_operator = "matrix_free" where its step solver does not serve the model.
+void check_contact_operator(const contact::ContactProblem& problem) {
+  if (problem.solver.contact_operator != contact::CondensedOperatorKind::matrix_free) return;
+  const std::string obstacle = contact::matrix_free_obstacle(problem);
+  if (!obstacle.empty())
+    throw InputError(problem.solver.contact_operator_where,
+                     "the condensed operator cannot be applied matrix-free: " + obstacle +
+                         " (remove contact_operator, or set it to \"dense\")");
+}
+
 ContactFile parse_contact_table(toml::table& root_table, const std::string& file_name,
                                 const ParameterOverrides& overrides, const ResourceLimits& limits) {
   ContactFile result;
@@ -989,6 +1004,7 @@ ContactFile parse_contact_table(toml::table& root_table, const std::string& file
   }
   read_history(root, context, problem);
   check_rigid_bodies(problem);
+  check_contact_operator(problem);
   // Pair the zones now, so that geometric errors point at the contact tables (those about
   // a body's own boundaries point at them).
   try {

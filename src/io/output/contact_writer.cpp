@@ -50,7 +50,8 @@ nlohmann::json summary_json(const contact::ContactSummary& s) {
            {{"newton", s.newton_iterations},
             {"kalker", s.kalker_iterations},
             {"threshold", s.threshold_iterations},
-            {"gmres_cycles", s.gmres_cycles}}},
+            {"gmres_cycles", s.gmres_cycles},
+            {"matrix_free_products", s.matrix_free_products}}},
           {"residual", s.residual}};
 }
 
@@ -469,6 +470,10 @@ std::string contact_report_text(const contact::ContactProblem& problem, const co
                   result.rejected_steps, s.newton_iterations,
                   s.kalker_iterations, s.threshold_iterations, s.gmres_cycles);
     out += line;
+    if (result.matrix_free) {
+      std::snprintf(line, sizeof line, "  condensed operator applied matrix-free: %ld products\n", s.matrix_free_products);
+      out += line;
+    }
     if (result.steps_past_state_limit > 0) {
       std::snprintf(line, sizeof line,
                     "  %d step%s changed more pairs than max_state_changes: %s halves did not converge\n",
@@ -674,6 +679,7 @@ void fill_contact_summary(RunSummary& summary, const contact::ContactProblem& pr
       {{"mesh", mesh_options_json(problem.mesh)},
        {"law", law_json(problem)},
        {"solver", {{"algorithm", contact::to_string(solver.algorithm)},
+                   {"contact_operator", contact::to_string(solver.contact_operator)},
                    {"tolerance", solver.tolerance},
                    {"max_iterations", solver.max_iterations},
                    {"gmres_restart", solver.gmres_restart},
