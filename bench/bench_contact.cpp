@@ -8,16 +8,19 @@
 // Counters: pairs, Newton iterations, Kalker (Alg V.3) and threshold (Alg V.2) iterations,
 // GMRES(m) cycles (Alg V.1), and the time of the contact iterations alone (the rest is
 // assembly and factorisation of the two bodies).
-//  - BM_RigidCylinder: a rigid cylinder (R = 1) pressed on a plane-strain block (16 x 8)
-//    with n elements on its contact zone |x| <= 0.1 (a = 0.07), frictionless, one step
-//    (examples/contact_compliant_cylinder.toml with the unilateral law).
+//  - BM_RigidCylinder/n/dense: a rigid cylinder (R = 1) pressed on a plane-strain block
+//    (16 x 8) with n elements on its contact zone |x| <= 0.1 (a = 0.05), frictionless, one
+//    step (examples/contact_compliant_cylinder.toml with the unilateral law); the condensed
+//    operator as the model chooses it (dense = 0: matrix-free on a compressed block) or
+//    formed (dense = 1).
 //  - BM_FrettingCycle: examples/fretting_cylinder.toml (P, then Q = 0.6 mu P forth, back
 //    and forth, adaptive steps) with n elements per contact zone.
 //  - BM_FrettingWear: examples/fretting_wear.toml (the same cylinder, Archard wear on both
 //    bodies, k = 1e-7) over 10^5 cycles with n elements per zone (n = 199: 200 pairs);
 //    counters: the computed cycles and the jumps undone.
 // Counters: pairs, the phases' seconds, Newton iterations and systems (factored, updated
-// through the last factors, reused), and the process's peak resident memory (MB).
+// through the last factors, reused), the matrix-free route's products of M, and the
+// process's peak resident memory (MB).
 #include <benchmark/benchmark.h>
 
 #include <fstream>
@@ -84,6 +87,7 @@ void add_counters(benchmark::State& state, const contact::ContactResult& result)
   state.counters["factored"] = static_cast<double>(result.newton_systems.factored);
   state.counters["updated"] = static_cast<double>(result.newton_systems.updated);
   state.counters["reused"] = static_cast<double>(result.newton_systems.reused);
+  state.counters["matrix_free_products"] = static_cast<double>(result.summary.matrix_free_products);
   for (const auto& phase : result.timings.phases) {
     if (phase.first == "contact iterations") state.counters["contact_seconds"] = phase.second;
     if (phase.first == "assembly, factorisation and condensation") state.counters["model_seconds"] = phase.second;
@@ -115,6 +119,9 @@ void BM_RigidCylinder(benchmark::State& state) {
                                     {{"n", static_cast<double>(state.range(0))}, {"rc", 0.1}, {"E_block", 70000.0},
                                      {"P", 148.0}});
   file.problem.contacts.front().law = contact::ContactLaw{};
+  // The second argument: 0 the route the model chooses (matrix-free from 2 000 pairs on a
+  // compressed block), 1 the formed operator.
+  if (state.range(1) != 0) file.problem.solver.contact_operator = contact::CondensedOperatorKind::dense;
   run_case(state, file.problem);
 }
 
@@ -141,7 +148,16 @@ void BM_FrettingWear(benchmark::State& state) {
 }  // namespace
 
 BENCHMARK(BM_FrettingWear)->Arg(59)->Arg(99)->Arg(199)->Unit(benchmark::kMillisecond)->Iterations(1);
-BENCHMARK(BM_RigidCylinder)->Arg(500)->Arg(1000)->Arg(2000)->Arg(4000)->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(BM_RigidCylinder)
+    ->Args({500, 0})
+    ->Args({1000, 0})
+    ->Args({2000, 0})
+    ->Args({4000, 1})
+    ->Args({4000, 0})
+    ->Args({8000, 0})
+    ->Args({16000, 0})
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
 BENCHMARK(BM_FrettingCycle)->Arg(60)->Arg(120)->Arg(240)->Arg(480)->Unit(benchmark::kMillisecond)->Iterations(1);
 
 BENCHMARK(BM_HertzSphere)

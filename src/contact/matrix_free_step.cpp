@@ -6,7 +6,7 @@
 // (K + 1 GMRES solves, each product one solve of every region's factors), then the K x K
 // Schur complement for delta.
 //
-// Preconditioner: two-level additive Schwarz for a first-kind operator ([StephanTran1998]:
+// Preconditioner: two-level additive Schwarz for a first-kind operator ([TranStephan1996]:
 // hat functions on a coarse grid of the pairs plus a local scaling; its condition number
 // grows with H / h, the coarse spacing over the pairs', not with their number):
 //   z = P_A M_c^-1 P_A^T r + (s D_A)^-1 (r - (M P)_A M_c^-1 P_A^T r),
