@@ -68,7 +68,8 @@ BodyResult solve_body(const ProblemDefinition& problem, const ProgressCallback& 
   if (use_compressed_operator(problem.operator_choice, result.report.unknowns,
                               geometry::symmetry_line_count(result.mesh.images))) {
     operators::HMatrixOptions options;
-    options.accuracy = problem.operator_choice.accuracy;
+    options.accuracy = compression_accuracy(problem.operator_choice, result.mesh);
+    result.report.compression_accuracy = options.accuracy;
     compressed.emplace(result.mesh, integrator, conditions, constraints, options, what, progress);
     clock.lap("assembly");
     compressed->factorize(rigid_only, progress);

@@ -402,6 +402,14 @@ double CompressedBoundarySystem::compression_ratio() const {
 
 namespace bemcontact::bem {
 
+double compression_accuracy(const OperatorChoice& choice, const geometry::BoundaryMesh& mesh) {
+  if (choice.accuracy > 0.0) return choice.accuracy;
+  double smallest = mesh.scale;
+  for (const auto& element : mesh.elements) smallest = std::min(smallest, element.length);
+  const double size = mesh.scale > 0.0 ? mesh.scale : 1.0;
+  return std::clamp(1e-6 * smallest / size, 1e-12, 1e-10);
+}
+
 const char* to_string(OperatorKind kind) {
   switch (kind) {
     case OperatorKind::automatic: return "auto";

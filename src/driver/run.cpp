@@ -340,6 +340,7 @@ RunOutput run_body(const io::ProblemInput& input, const bem::ProblemDefinition& 
   summary.results = {{"solve", {{"unknowns", result.report.unknowns},
                                 {"operator", result.report.operator_kind},
                                 {"compression_ratio", result.report.compression_ratio},
+                                {"compression_accuracy", result.report.compression_accuracy},
                                 {"reciprocal_condition_estimate", io::condition_json(result.report.reciprocal_condition)},
                                 {"relative_residual", result.report.relative_residual},
                                 {"constraints_fix_rigid_modes_only", result.report.constraints_fix_rigid_modes_only}}},
@@ -361,7 +362,7 @@ RunOutput run_body(const io::ProblemInput& input, const bem::ProblemDefinition& 
   append_transitions(report, result.mesh, "");
   if (result.report.operator_kind == "compressed")
     append(report, "  compressed operator (accuracy %.3g): %.3g %% of the dense values stored, relative residual = %.3g\n",
-           problem.operator_choice.accuracy, 100.0 * result.report.compression_ratio,
+           result.report.compression_accuracy, 100.0 * result.report.compression_ratio,
            result.report.relative_residual);
   else
     append(report, "  condition estimate 1/rcond = %.3g, relative residual = %.3g\n",

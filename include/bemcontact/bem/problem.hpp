@@ -79,12 +79,15 @@ struct InteriorPoint {
 enum class OperatorKind { automatic, dense, compressed };
 struct OperatorChoice {
   OperatorKind kind = OperatorKind::automatic;
-  double accuracy = 1e-10;  // relative accuracy of the compressed blocks and of the H-LU
+  // Relative accuracy of the compressed blocks and of the H-LU; 0: automatic
+  // (bem::compression_accuracy, compressed_system.hpp).
+  double accuracy = 0.0;
   // `automatic` compresses plane problems from this many unknowns on (measured crossover:
   // docs/problem-file.md, Limits).
   static constexpr Index automatic_threshold = 8000;
 };
 const char* to_string(OperatorKind kind);
+
 
 // What every problem starts with, whatever it holds (one body, a decomposition, bodies
 // and contacts).

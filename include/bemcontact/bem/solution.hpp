@@ -80,6 +80,7 @@ struct SolveReport {
   double reciprocal_condition = 0.0;  // LAPACK estimate of 1/cond_1(A); NaN: not estimated (H-LU)
   std::string operator_kind = "dense";  // "dense" or "compressed"
   double compression_ratio = 1.0;       // stored values / dense values (compressed)
+  double compression_accuracy = 0.0;    // the accuracy it was built to (compressed)
   double relative_residual = 0.0;     // ||H u - G p|| / ||G p||
   // Point constraints only fixed rigid modes: no reactions, and the residual is the
   // imbalance of the discretised loads.
