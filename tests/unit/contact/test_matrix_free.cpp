@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <fstream>
 #include <string>
 
 #include "bemcontact/contact/condensed.hpp"
@@ -108,57 +109,20 @@ TEST(MatrixFree, RefusedWhereItsStepSolverDoesNotServe) {
 }
 
 TEST(MatrixFree, ProblemFileKeyIsReadAndChecked) {
-  const std::string base = R"(
-analysis = "plane_strain"
-[[body]]
-name = "block"
-[body.material]
-E = 1.0
-nu = 0.3
-[body.vertices]
-A = [-2.0, -2.0]
-B = [2.0, -2.0]
-C = [2.0, 0.0]
-D = [-2.0, 0.0]
-[[body.boundary]]
-name = "base"
-from = "A"
-to = "B"
-elements = 8
-u1 = 0.0
-u2 = 0.0
-[[body.boundary]]
-name = "right"
-from = "B"
-to = "C"
-elements = 4
-[[body.boundary]]
-name = "top"
-from = "C"
-to = "D"
-elements = 40
-[[body.boundary]]
-name = "left"
-from = "D"
-to = "A"
-elements = 4
-[[body]]
-name = "ball"
-[body.rigid]
-profile = "cylinder"
-center = [0.0, 1.0]
-radius = 1.0
-[[contact]]
-body1 = "block"
-boundary1 = "top"
-body2 = "ball"
-)";
-  const std::string load = "[load]\nbody = \"ball\"\ncomponent = 2\nforce = -0.01\n";
-  const auto file = io::parse_contact_problem(base + load + "[solver]\ncontact_operator = \"matrix_free\"\n", "mf.toml");
+  // The rigid cylinder's example made unilateral, with the key; then with friction too.
+  std::ifstream in(std::string(BEMCONTACT_EXAMPLES_DIR) + "/contact_compliant_cylinder.toml");
+  std::string text, line;
+  while (std::getline(in, line))
+    if (line.rfind("kind = ", 0) != 0 && line.rfind("normal_", 0) != 0) text += line + "\n";
+  const std::string key = "[solver]\ncontact_operator = \"matrix_free\"\n";
+  const auto file = io::parse_contact_problem(text + key, "mf.toml");
   EXPECT_EQ(file.problem.solver.contact_operator, CondensedOperatorKind::matrix_free);
+  const std::string with_friction = "normal = \"body1\"\nfriction = 0.3\n";
+  const std::size_t at = text.find("normal = \"body1\"\n");
+  ASSERT_NE(at, std::string::npos);
+  text.replace(at, std::string("normal = \"body1\"\n").size(), with_friction);
   try {
-    io::parse_contact_problem(base + "friction = 0.3\n" + load + "[solver]\ncontact_operator = \"matrix_free\"\n",
-                              "mf.toml");
+    io::parse_contact_problem(text + key, "mf.toml");
     FAIL() << "friction with contact_operator = matrix_free was accepted";
   } catch (const InputError& error) {
     const std::string message = error.what();
