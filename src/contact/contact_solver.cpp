@@ -1012,7 +1012,8 @@ ContactResult solve_on_meshes(const ContactProblem& problem, const bem::Progress
 
   start = Clock::now();
   result.warnings = model.prepared().warnings;
-  if (result.matrix_free && matrix_free_round_off(model.condensed().pairs) > problem.solver.tolerance) {
+  if (result.matrix_free && problem.solver.tolerance_given &&
+      matrix_free_round_off(model.condensed().pairs) > problem.solver.tolerance) {
     std::ostringstream text;
     text << "tolerance = " << problem.solver.tolerance << " is below the round-off of the matrix-free products over "
          << model.condensed().pairs << " pairs: the steps were converged to " << matrix_free_round_off(model.condensed().pairs)

@@ -198,7 +198,7 @@ bool solve_matrix_free_system(const CondensedProblem& p, const std::vector<Index
       Vector x0(m);
       for (Index a = 0; a < m; ++a) x0[a] = cache.krylov_start(active[static_cast<std::size_t>(a)], j);
       // The gaps' residual within gap_goal; b's columns within it over the motion they are
-      // multiplied by (1e-12 of |b| when it is not known yet). GMRES's tolerance is relative
+      // multiplied by (when it is not known yet, to the floor). GMRES's tolerance is relative
       // to its first residual, which a warm start makes small.
       Vector r0;
       block.apply(x0, r0);

@@ -120,6 +120,7 @@ struct SolverOptions {
   SourceLocation contact_operator_where;  // its key in the problem file, for messages
   static constexpr Index matrix_free_threshold = 2000;
   double tolerance = 1e-10;  // Newton: relative residual of the complementarity functions
+  bool tolerance_given = false;  // by the problem file (a raise on the matrix-free route is then a warning)
   int max_iterations = 100;  // Newton iterations per load step; Kalker loops (Alg V.3)
   // Thesis algorithm
   int gmres_restart = 3;       // m of GMRES(m) (Alg V.1); the thesis used 1, or 2-3 when 1 diverged

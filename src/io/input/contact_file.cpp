@@ -528,6 +528,7 @@ void read_solver(const TableReader& reader, contact::ContactProblem& problem) {
   problem.solver.max_gmres_cycles = reader.integer_or("max_gmres_cycles", problem.solver.max_gmres_cycles);
   problem.solver.xi = reader.optional_number("xi").value_or(problem.solver.xi);
   problem.solver.tolerance = reader.optional_number("tolerance").value_or(problem.solver.tolerance);
+  problem.solver.tolerance_given = reader.has("tolerance");
   if (problem.solver.algorithm != contact::Algorithm::thesis)
     for (const char* thesis_key : {"gmres_restart", "max_gmres_cycles", "xi"})
       if (reader.has(thesis_key))
