@@ -26,6 +26,8 @@ namespace {
 
 // Pairs per coarse hat function: the preconditioned condition number grows with it, the
 // coarse image's memory (N x N / spacing) and its share of every iteration fall with it.
+// Rigid cylinder, 8 001 pairs (model + contact iterations): 4: 18.3 + 4.8 s (61 products);
+// 8: 10.8 + 4.0 s (94); 16: 10.6 + 13.3 s (275, 6 Newton iterations: a coarser start).
 constexpr Index kCoarseSpacing = 8;
 
 // The normal rows of a 2N-vector, and a pair vector spread on the normal dofs.
