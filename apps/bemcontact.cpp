@@ -409,7 +409,7 @@ int main(int argc, char** argv) {
   double validate_accuracy = 0.0;
   auto* accuracy_option =
       validate->add_option("--accuracy", validate_accuracy,
-                           "with --operator compressed: the compressed operator's accuracy (default: each problem's, 1e-10)")
+                           "with --operator compressed: the compressed operator's accuracy (default: each problem's, automatic)")
           ->check(CLI::Range(1e-14, 1e-2));
   std::string report_dir;
   validate->add_option("--report", report_dir, "write an HTML page with the table and one figure per case to this folder");

@@ -131,6 +131,7 @@ set(BEMCONTACT_VALIDATION_SOURCES
   src/validation/contact_cases.cpp
   src/validation/decomposition_cases.cpp
   src/validation/fretting_cases.cpp
+  src/validation/large_contact_cases.cpp
   src/validation/multibody_cases.cpp
   src/validation/plane_cases.cpp
   src/validation/records.cpp

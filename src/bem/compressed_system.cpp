@@ -407,7 +407,7 @@ double compression_accuracy(const OperatorChoice& choice, const geometry::Bounda
   double smallest = mesh.scale;
   for (const auto& element : mesh.elements) smallest = std::min(smallest, element.length);
   const double size = mesh.scale > 0.0 ? mesh.scale : 1.0;
-  return std::clamp(1e-6 * smallest / size, 1e-12, 1e-10);
+  return std::clamp(1e-6 * smallest / size, 1e-11, 1e-10);
 }
 
 const char* to_string(OperatorKind kind) {

@@ -21,12 +21,13 @@
 namespace bemcontact::bem {
 
 // The accuracy a compressed operator of `mesh` is built to: the choice's, or automatically
-// 1e-10, made smaller (down to 1e-12) by the smallest element's length against the body's
+// 1e-10, made smaller (down to 1e-11) by the smallest element's length against the body's
 // size, 1e-6 h_min / L (a fine contact zone on a large body). Measured on a rigid cylinder
 // on a block with 8 001 pairs (h_min / L = 1.4e-6): at 1e-10 the pressures carried a
-// pair-to-pair noise of 7e-4 of the peak (0.6 % at 20 001 pairs), at 1e-12 of 6e-6 for
-// 1.1 times the time. Below 1e-12 the assembly's ranks grow fast (20 001 pairs at 6e-13:
-// over 20 minutes, against 98 s at 1e-10).
+// pair-to-pair noise of 7e-4 of the peak (0.6 % at 20 001 pairs), at 1e-11 of 4e-5, at
+// 1e-12 of 6e-6. Near the entries' own quadrature accuracy the cross approximation stops
+// converging and its blocks' ranks grow to their size: at 1e-12 some meshes took over 10
+// minutes (20 001 pairs at 6e-13: over 20 minutes, against 98 s at 1e-10).
 double compression_accuracy(const OperatorChoice& choice, const geometry::BoundaryMesh& mesh);
 
 // H (zero on the diagonal node blocks) and G between a set of source nodes (rows) and a set

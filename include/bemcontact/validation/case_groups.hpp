@@ -10,6 +10,7 @@ std::vector<Case> contact_cases();        // src/validation/contact_cases.cpp
 std::vector<Case> multibody_cases();      // src/validation/multibody_cases.cpp
 std::vector<Case> fretting_cases();       // src/validation/fretting_cases.cpp
 std::vector<Case> rough_cases();          // src/validation/wavy_cases.cpp
+std::vector<Case> large_contact_cases();  // src/validation/large_contact_cases.cpp
 std::vector<Case> compliance_cases();     // src/validation/compliance_cases.cpp
 std::vector<Case> wear_cases();           // src/validation/wear_cases.cpp
 std::vector<Case> plasticity_cases();     // src/validation/plasticity_cases.cpp

@@ -145,7 +145,7 @@ std::vector<Key> operator_keys() {
       choice("operator", {"auto", "dense", "compressed"}, "auto",
              "dense (LU, condition estimate), compressed (hierarchical matrices, H-LU) or auto (compressed from "
              "8 000 unknowns on, plane or axisymmetric; dense with two symmetry lines or without hmat-oss)"),
-      number("accuracy", "1e-10 (smaller for fine elements on a large body)", "relative accuracy of the compressed blocks and of the H-LU (compressed only; by default 1e-6 h_min / L where that is smaller, down to 1e-12)",
+      number("accuracy", "1e-10 (smaller for fine elements on a large body)", "relative accuracy of the compressed blocks and of the H-LU (compressed only; by default 1e-6 h_min / L where that is smaller, down to 1e-11)",
              between(1e-14, 1e-2, false, false)),
   };
 }
