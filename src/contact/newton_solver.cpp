@@ -499,6 +499,22 @@ bool solve_newton_system(const StepInput& in, NewtonSystem& system, Vector& z) {
   return solves([&](const Vector& v) { return Vector(J * v); }, z, system.rhs, cache.J_norm);
 }
 
+// The matrix-free route's system (solve_matrix_free_system): the gaps' rows to half what the
+// residual allows, c |d - w_n| <= tolerance times the pressure scale (the iterate's; before
+// any pressure, 1e-3 of the right-hand side, refined at the next iteration from its warm
+// start), and to 1e-6 of them while the contact set still changes (inexact Newton: the next
+// set is what the solve decides).
+bool solve_matrix_free_newton_system(const StepInput& in, const NewtonSystem& system, const Vector& x,
+                                     const Vector& delta, bool set_changed, double tolerance, double c,
+                                     NewtonSystemCache& cache, Vector& z, std::string& why) {
+  double pressure = in.pressure_floor;
+  for (Index i = 0; i < in.problem->pairs; ++i) pressure = std::max(pressure, std::abs(x[2 * i]));
+  const double gaps = system.rhs.head(static_cast<Index>(system.free_dofs.size())).norm();
+  double gap_goal = pressure > 0.0 ? 0.5 * tolerance * pressure / c : 1e-3 * gaps;
+  if (set_changed) gap_goal = std::max(gap_goal, 1e-6 * gaps);
+  return solve_matrix_free_system(*in.problem, system.free_dofs, system.rhs, gap_goal, delta, cache, z, why);
+}
+
 // The iterate of the Newton solution z, the eliminated tau restored.
 void newton_iterate(const NewtonSystem& system, const Vector& z, Index n, Index K, Vector& x_new,
                     Vector& delta_new) {
@@ -546,6 +562,8 @@ StepOutput solve_step_newton(const StepInput& in, const SolverOptions& options) 
   double residual = complementarity_residual(in, x, delta, w);
   std::set<ActiveSets> seen;
   bool damped = false;
+  NewtonSystemCache local_cache;  // the matrix-free route's warm starts when the history keeps none
+  NewtonSystemCache& krylov_cache = in.newton_cache ? *in.newton_cache : local_cache;
   for (int iteration = 1; iteration <= options.max_iterations; ++iteration) {
     out.newton_iterations = iteration;
     const ActiveSets state = active_sets(in, x, w, c, iteration == 1);
@@ -553,22 +571,11 @@ StepOutput solve_step_newton(const StepInput& in, const SolverOptions& options) 
     NewtonSystem system = newton_system(in, x, w, state, c);
     Vector z;
     if (p.matrix_free) {
-      NewtonSystemCache local;
-      NewtonSystemCache& cache = in.newton_cache ? *in.newton_cache : local;
-      const long before = cache.krylov_iterations;
+      const long before = krylov_cache.krylov_iterations;
       std::string why;
-      // The gaps' rows to half what the residual allows: c |d - w_n| <= tolerance times
-      // the pressure scale (the iterate's; before any pressure, 1e-3 of the first solve's
-      // right-hand side, refined at the next iteration from its warm start).
-      // While the contact set still changes, 1e-6 of it (inexact Newton: the next set is
-      // what the solve decides).
-      double pressure = in.pressure_floor;
-      for (Index i = 0; i < n; ++i) pressure = std::max(pressure, std::abs(x[2 * i]));
-      const double gaps = system.rhs.head(static_cast<Index>(system.free_dofs.size())).norm();
-      double gap_goal = pressure > 0.0 ? 0.5 * tolerance * pressure / c : 1e-3 * gaps;
-      if (state != out.state) gap_goal = std::max(gap_goal, 1e-6 * gaps);
-      const bool solved = solve_matrix_free_system(p, system.free_dofs, system.rhs, gap_goal, delta, cache, z, why);
-      out.krylov_iterations += static_cast<int>(cache.krylov_iterations - before);
+      const bool solved =
+          solve_matrix_free_newton_system(in, system, x, delta, state != out.state, tolerance, c, krylov_cache, z, why);
+      out.krylov_iterations += static_cast<int>(krylov_cache.krylov_iterations - before);
       if (!solved) {
         out.failure = "the Newton system of iteration " + std::to_string(iteration) + " (matrix-free): " + why;
         break;
