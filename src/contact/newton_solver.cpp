@@ -203,9 +203,15 @@ ActiveSets active_sets(const StepInput& in, const Vector& x, const Vector& w, do
       state[2 * i + 1] = 0;  // tau = 0
       continue;
     }
-    const double g = g_all[i];
+    // The threshold of the augmented normal multiplier lambda - c (d - w_n) (equal to
+    // lambda at the solution): a pair just closing (lambda = 0) gets a threshold from its
+    // interpenetration instead of 0, which set every such pair slipping (Newton then moved the
+    // stick edge by one pair an iteration: 2 001 pairs did not converge in 100). The
+    // threshold of [HueberStadlerWohlmuth2008]'s complementarity function.
+    const bool augmented = !is_nonlocal(in, i) && in.kind[i] != ContactKind::compliant;
+    const double g = augmented ? in.friction[i] * threshold_measure(in, i, x[2 * i] - c * (in.gap[i] - w[2 * i]))
+                               : g_all[i];
     const double z = tau - c * (w[2 * i + 1] - in.previous_tangential_jump[i]);
-    // A pair just closing (lambda = 0: g = 0, z = 0) starts sticking.
     if (std::abs(z) <= g) state[2 * i + 1] = 1;  // stick
     else state[2 * i + 1] = z >= 0.0 ? 2 : 3;   // slip, tau = +g or -g
   }
