@@ -394,8 +394,10 @@ void ContactModel::form_matrix_free_operator(Build& build) {
   auto op = std::make_shared<condensation::RegionsCondensedOperator>(factored_, contact_data_map_, jump_map_, build.n);
   Vector weight(build.n);
   for (Index g = 0; g < build.n; ++g) weight[g] = pairs_[g].weight;
+  const bool friction = std::any_of(problem_.contacts.begin(), problem_.contacts.end(),
+                                    [](const auto& contact) { return contact.law.friction > 0.0; });
   condensed_.matrix_free = std::make_shared<const MatrixFreeCondensed>(
-      prepare_matrix_free(std::move(op), std::move(weight), pair_groups(condensed_)));
+      prepare_matrix_free(std::move(op), std::move(weight), pair_groups(condensed_), friction));
 }
 
 // Step 5: each body's bond unknowns eliminated by one dense solve of the bonds' nodal

@@ -67,7 +67,6 @@ std::string matrix_free_obstacle(const ContactProblem& model) {
     const auto& law = contact.law;
     if (law.kind != ContactKind::unilateral)
       return "contact '" + contact.name + "' is " + to_string(law.kind) + " (only unilateral contact is served)";
-    if (law.friction > 0.0) return "contact '" + contact.name + "' has friction (only frictionless contact is served)";
   }
   for (const auto& body : model.bodies) {
     if (body.regions.size() > 1)

@@ -50,14 +50,22 @@ struct MatrixFreeCondensed {
   // scales a pair's residual by it.
   Vector weight;
   Eigen::SparseMatrix<double> coarse_basis;  // N x nc: hat functions over the pairs of each contact
-  Matrix coarse_image;                       // N x nc: the normal jumps of M times them
-  double fine_scale = 1.0;  // sigma: M's normal block on the highest frequency per unit weight (M_ii ~ sigma w_i)
+  // Whether the coarse space has tangential functions (friction): then coarse_image is
+  // 2N x 2nc, M times the hats on the normal dofs then on the tangential ones; otherwise
+  // N x nc, the normal jumps of M times the hats on the normal dofs.
+  bool tangential = false;
+  Matrix coarse_image;
+  // M's diagonal (2N), exact at a few pairs per contact and interpolated between them.
+  Vector diagonal;
+  // The jump at `dof` of M times hat `hat` on the dofs of `direction` (0 normal, 1
+  // tangential; without the tangential space, normal dofs and direction only).
+  double image(Index dof, Index hat, int direction) const;
 };
 
 // The matrix-free solver's data for M (matrix_free_step.cpp): `weight` per pair, `groups`
-// the contacts' pair offsets.
+// the contacts' pair offsets, `tangential` whether any pair has friction.
 MatrixFreeCondensed prepare_matrix_free(std::shared_ptr<const CondensedOperator> M, Vector weight,
-                                        const std::vector<Index>& groups);
+                                        const std::vector<Index>& groups, bool tangential);
 
 struct CondensedProblem {
   Index pairs = 0;

@@ -41,6 +41,38 @@ StepInput step_input(const CondensedProblem& problem, double t);
 // Per pair, the (pair, coefficient) entries of a non-local slip threshold's coupling; empty: none.
 using SlipCoupling = std::vector<std::vector<std::pair<Index, double>>>;
 
+// The Newton system in the unknowns that are not fixed by their own row: lambda_n of the
+// pairs in contact, tau of the sticking pairs, delta. The others are eliminated:
+// lambda_n = 0 (open), tau = 0 (frictionless, on the axis), tau = +-beta lambda_n (slip),
+// whose column joins lambda_n's. Rows: w_n = d (contact), no slip increment (stick), the
+// force.
+struct NewtonSystem {
+  std::vector<Index> free_dofs;
+  // A slipping tau_i = slip_factor_i lambda_i + sum_j c_ij lambda_j, the sum over other
+  // pairs where the law is non-local (their mollified pressure): slip_rows[i] holds (j, c_ij),
+  // slip_columns[j] the same entries as (i, c_ij), for the column of lambda_j.
+  Vector slip_factor;
+  // A slipping tau whose threshold is not linear in lambda_n (normal compliance with m_t !=
+  // m_n) is its tangent at the iterate: tau_i = slip_factor_i lambda_i + slip_offset_i.
+  Vector slip_offset;
+  SlipCoupling slip_rows, slip_columns;
+  // A compliant pair in contact: its row w_n - lambda_n / k = ... with k the law's stiffness
+  // at the linearisation point pen0; normal_shift_i = 1 / k (0 for the other laws), and
+  // normal_offset_i = pen0 (1 - 1/m_n) its right-hand side's part beyond d.
+  Vector normal_shift, normal_offset;
+  Matrix J;   // formed on the dense route only
+  Vector rhs;  // the free unknowns' rows, then the motions'
+  // The 2N pair unknowns (lambda_n, tau) of a solution z of the system (its first
+  // free_dofs.size() entries): the free ones, and the slipping tau they carry.
+  Vector pair_unknowns(const Vector& z, Index pairs) const;
+};
+
+// The Jacobian's entry in the row of unknown `row` and the column of unknown `column`:
+// unknown ids are dofs (< 2N) and motions (2N + m). A row of (M | f) (M formed: the dense
+// route), with the slip column tau = slip_factor lambda folded into lambda's; the motions'
+// columns b and f_delta.
+double jacobian_entry(const CondensedProblem& p, const NewtonSystem& system, Index row, Index column);
+
 struct NewtonSystemCache {
   std::vector<Index> free_dofs;
   Vector slip_factor, normal_shift;
@@ -56,26 +88,29 @@ struct NewtonSystemCache {
   std::vector<Index> update_order;  // the update's unknowns (kept, then new) as positions in the system
   std::unique_ptr<operators::BorderedLU> update;
   long factored = 0, reused = 0, updated = 0;  // systems factored, solved with kept factors, updates built
-  // The matrix-free route (no factors): the last solutions per pair (the gaps' column, then
-  // b's), GMRES's starting point, and the products of M taken.
+  // The matrix-free route (no factors): the last solutions per dof (the right-hand side's
+  // column, then b's), GMRES's starting point, and the products of M taken.
   Matrix krylov_start;
   long krylov_iterations = 0;
+  // Whether the last system's GMRES stopped at the products' accuracy short of its goal.
+  bool krylov_floor = false;
 };
 
-// The Newton system of the matrix-free route (matrix_free_step.cpp): the normal unknowns of
-// the pairs in contact (free_dofs, all normal) and the motions, by GMRES until the gaps'
-// rows are met within gap_goal (2-norm; delta_guess, the motions' last values, sizes the
-// goal of b's columns). False with the reason in `failure` when GMRES fails or no pair in
-// contact carries a force load.
+// The Newton system of the matrix-free route (matrix_free_step.cpp): the free unknowns of
+// `system` (the normal unknowns of the pairs in contact with the slipping tau folded in, the
+// tangential ones of the sticking pairs) and the motions, by GMRES until the free rows are
+// met within `goal` (2-norm; delta_guess, the motions' last values, sizes the goal of b's
+// columns). False with the reason in `failure` when GMRES fails or no pair in contact
+// carries a force load.
+bool solve_matrix_free_system(const CondensedProblem& p, const NewtonSystem& system, double goal,
+                              const Vector& delta_guess, NewtonSystemCache& cache, Vector& z, std::string& failure);
+
 // The matrix-free route's first iterate for a step without a previous one: the contact
 // problem on the coarse space of the preconditioner (its hat functions as pressures, the
-// gaps averaged over them, M_c = R M P dense: solve_step_newton on nc pairs), prolonged.
+// gaps averaged over them, M_c = R M P dense: solve_step_newton on nc pairs, with friction
+// when the coarse space has tangential functions), prolonged.
 // x, delta unchanged when the coarse problem has no solution.
 void coarse_start(const StepInput& in, const SolverOptions& options, Vector& x, Vector& delta);
-
-bool solve_matrix_free_system(const CondensedProblem& p, const std::vector<Index>& free_dofs, const Vector& rhs,
-                              double gap_goal, const Vector& delta_guess, NewtonSystemCache& cache, Vector& z,
-                              std::string& failure);
 
 struct StepInput {
   const CondensedProblem* problem = nullptr;
