@@ -13,6 +13,9 @@
 //    step (examples/contact_compliant_cylinder.toml with the unilateral law); the condensed
 //    operator as the model chooses it (dense = 0: matrix-free on a compressed block) or
 //    formed (dense = 1).
+//  - BM_ShearedCylinder/n/dense: the same cylinder with friction (mu = 0.3) on a block of
+//    nu = 0.4999, pressed by P = 1.48 (a = 0.0045, zone |x| <= 0.01) then sheared by
+//    Q = 0.6 mu P, one step each (validate large-hertz's Cattaneo-Mindlin half).
 //  - BM_FrettingCycle: examples/fretting_cylinder.toml (P, then Q = 0.6 mu P forth, back
 //    and forth, adaptive steps) with n elements per contact zone.
 //  - BM_FrettingWear: examples/fretting_wear.toml (the same cylinder, Archard wear on both
@@ -125,6 +128,29 @@ void BM_RigidCylinder(benchmark::State& state) {
   run_case(state, file.problem);
 }
 
+void BM_ShearedCylinder(benchmark::State& state) {
+  auto file = io::read_contact_file(std::string(BEMCONTACT_EXAMPLES_DIR) + "/contact_compliant_cylinder.toml",
+                                    {{"n", static_cast<double>(state.range(0))}, {"rc", 0.01}, {"E_block", 70000.0},
+                                     {"P", 1.48}});
+  auto& problem = file.problem;
+  problem.contacts.front().law = contact::ContactLaw{};
+  problem.elastic(0).material.poisson_ratio = 0.4999;
+  problem.set_friction(0.3);
+  auto& P = problem.forces.front();
+  P.amplitude.points = {{0.0, 0.0}, {1.0, 1.0}};
+  contact::ForceLoad Q = P;
+  Q.name = "Q";
+  Q.component = 0;
+  Q.force = 0.6 * 0.3 * 1.48;
+  Q.amplitude.points = {{0.0, 0.0}, {1.0, 0.0}, {2.0, 1.0}};
+  problem.forces.push_back(Q);
+  problem.end_time = 2.0;
+  problem.increments = 2;
+  problem.adaptive = false;
+  if (state.range(1) != 0) problem.solver.contact_operator = contact::CondensedOperatorKind::dense;
+  run_case(state, problem);
+}
+
 // An example with n elements per contact zone, without its stress points.
 contact::ContactProblem example_with_zones(const std::string& name, benchmark::State& state) {
   std::ifstream in(std::string(BEMCONTACT_EXAMPLES_DIR) + "/" + name);
@@ -156,6 +182,15 @@ BENCHMARK(BM_RigidCylinder)
     ->Args({4000, 0})
     ->Args({8000, 0})
     ->Args({16000, 0})
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
+BENCHMARK(BM_ShearedCylinder)
+    ->Args({1250, 0})
+    ->Args({2500, 0})
+    ->Args({5000, 1})
+    ->Args({5000, 0})
+    ->Args({10000, 0})
+    ->Args({20000, 0})
     ->Unit(benchmark::kMillisecond)
     ->Iterations(1);
 BENCHMARK(BM_FrettingCycle)->Arg(60)->Arg(120)->Arg(240)->Arg(480)->Unit(benchmark::kMillisecond)->Iterations(1);

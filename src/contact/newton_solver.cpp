@@ -468,22 +468,29 @@ bool solve_newton_system(const StepInput& in, NewtonSystem& system, Vector& z) {
 }
 
 // The matrix-free route's system (solve_matrix_free_system): the free rows (gaps, sticking
-// pairs' slips) to what the residual allows, c |r| <= tolerance times the pressure scale (the
-// iterate's; before any pressure, 1e-3 of the right-hand side, refined at the next iteration
-// from its warm start), shared between the K + 1 solves whose sum makes the solution and
-// halved, times `tightening` (< 1 once a repeated set's solution fell short of the
-// tolerance: its warm start would otherwise return the same solution); to 1e-6 of them while
-// the contact set still changes (inexact Newton: the next set is what the solve decides).
+// pairs' slips) to half what the residual allows, c |r| <= tolerance times the pressure scale
+// (the iterate's; before any pressure, 1e-3 of the right-hand side, refined at the next
+// iteration from its warm start), and each force row to half its share of the residual
+// (complementarity_residual's scale), times `tightening` (< 1 once a repeated set's solution
+// fell short of the tolerance: its warm start would otherwise return the same solution); the
+// free rows to 1e-6 of them while the contact set still changes (inexact Newton: the next set
+// is what the solve decides).
 bool solve_matrix_free_newton_system(const StepInput& in, const NewtonSystem& system, const Vector& x,
                                      const Vector& delta, bool set_changed, double tolerance, double c,
                                      double tightening, NewtonSystemCache& cache, Vector& z, std::string& why) {
+  const auto& p = *in.problem;
   double pressure = in.pressure_floor;
-  for (Index i = 0; i < in.problem->pairs; ++i) pressure = std::max(pressure, std::abs(x[2 * i]));
+  for (Index i = 0; i < p.pairs; ++i) pressure = std::max(pressure, std::abs(x[2 * i]));
   const double gaps = system.rhs.head(static_cast<Index>(system.free_dofs.size())).norm();
-  const double share = 0.5 * tightening / static_cast<double>(in.problem->motions + 1);
-  double goal = pressure > 0.0 ? share * tolerance * pressure / c : 1e-3 * gaps;
+  const double share = 0.5 * tightening * tolerance;
+  double goal = pressure > 0.0 ? share * pressure / c : 1e-3 * gaps;
   if (set_changed) goal = std::max(goal, 1e-6 * gaps);
-  return solve_matrix_free_system(*in.problem, system, goal, delta, cache, z, why);
+  Vector force_goal(p.motions);
+  for (Index k = 0; k < p.motions; ++k) {
+    const double floor = in.force_floor.size() == p.motions ? in.force_floor[k] : 0.0;
+    force_goal[k] = share * std::max({in.force_scale[k], p.f.row(k).cwiseAbs().dot(x.cwiseAbs()), floor, 1e-300});
+  }
+  return solve_matrix_free_system(p, system, goal, force_goal, delta, cache, z, why);
 }
 
 // In each contact whose pairs in contact all slip, its pair carrying the largest pressure

@@ -107,8 +107,8 @@ enum class PairNormal {
 
 // How the condensed operator M is held: formed (a dense 2N x 2N matrix, the step solved by
 // dense factorisations), or applied through the factored regions without being formed
-// (frictionless unilateral contact between single-region bodies: the step solved by an
-// active set with preconditioned GMRES, matrix_free_step.cpp). automatic: matrix-free from
+// (unilateral contact, with or without friction, between single-region bodies: the step
+// solved by an active set with preconditioned GMRES, matrix_free_step.cpp). automatic: matrix-free from
 // `matrix_free_threshold` pairs when every elastic region is compressed and nothing stands
 // in its way (matrix_free_obstacle).
 enum class CondensedOperatorKind { automatic, dense, matrix_free };
@@ -325,8 +325,9 @@ SolverRoute route_of(const ContactProblem& model);
 const char* to_string(SolverRoute route);
 
 // What keeps the condensed operator of a model from being applied matrix-free (empty:
-// nothing; SolverOptions::contact_operator): its step solver serves frictionless unilateral
-// contact between bodies of one elastic region each, pressed by rigid bodies and their own
+// nothing; SolverOptions::contact_operator): its step solver serves unilateral contact,
+// frictionless or with Coulomb's law (local or non-local), between bodies of one elastic
+// region each, pressed by rigid bodies and their own
 // data. (A body held only by its contacts is found when the model is built.)
 std::string matrix_free_obstacle(const ContactProblem& model);
 

@@ -88,22 +88,25 @@ struct NewtonSystemCache {
   std::vector<Index> update_order;  // the update's unknowns (kept, then new) as positions in the system
   std::unique_ptr<operators::BorderedLU> update;
   long factored = 0, reused = 0, updated = 0;  // systems factored, solved with kept factors, updates built
-  // The matrix-free route (no factors): the last solutions per dof (the right-hand side's
-  // column, then b's), GMRES's starting point, and the products of M taken.
-  Matrix krylov_start;
+  // The matrix-free route (no factors): the last solution per dof, GMRES's starting point,
+  // and the products of M taken.
+  Vector krylov_start;
   long krylov_iterations = 0;
-  // Whether the last system's GMRES stopped at the products' accuracy short of its goal.
+  // Whether the last system's GMRES stopped at the products' accuracy short of its goal, and
+  // that accuracy (relative to the right-hand side) as the stagnations so far found it.
   bool krylov_floor = false;
+  double krylov_floor_level = 1e-15;
 };
 
 // The Newton system of the matrix-free route (matrix_free_step.cpp): the free unknowns of
 // `system` (the normal unknowns of the pairs in contact with the slipping tau folded in, the
-// tangential ones of the sticking pairs) and the motions, by GMRES until the free rows are
-// met within `goal` (2-norm; delta_guess, the motions' last values, sizes the goal of b's
-// columns). False with the reason in `failure` when GMRES fails or no pair in contact
-// carries a force load.
+// tangential ones of the sticking pairs) and the motions, by one GMRES until the free rows
+// are met within `goal` (2-norm) and each force row within force_goal[k] (from delta_guess,
+// the motions' last values). False with the reason in `failure` when GMRES fails or no pair
+// in contact carries a force load.
 bool solve_matrix_free_system(const CondensedProblem& p, const NewtonSystem& system, double goal,
-                              const Vector& delta_guess, NewtonSystemCache& cache, Vector& z, std::string& failure);
+                              const Vector& force_goal, const Vector& delta_guess, NewtonSystemCache& cache, Vector& z,
+                              std::string& failure);
 
 // The matrix-free route's first iterate for a step without a previous one: the contact
 // problem on the coarse space of the preconditioner (its hat functions as pressures, the
