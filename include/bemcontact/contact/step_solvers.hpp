@@ -11,9 +11,10 @@
 //      C_n = lambda_n - max(0, lambda_n - c (d - w_n))        (unilateral; c (d - w_n) bilateral;
 //            lambda_n - c_n <w_n - d>_+^m_n compliant)
 //      C_t = tau - proj_[-g, g](tau - c s)
-//    The slip direction is part of the solution. Each iteration solves one dense linear
-//    system in the unknowns not fixed by their own row (lambda_n in contact, tau sticking,
-//    delta); the step ends when max |C| <= tolerance * pressure scale.
+//    The slip direction is part of the solution. Each iteration solves one linear system
+//    in the unknowns not fixed by their own row (lambda_n in contact, tau sticking, delta):
+//    dense, or by GMRES on the matrix-free route; the step ends when max |C| <= tolerance *
+//    pressure scale.
 //  - solve_step_thesis: the thesis' algorithms (Alg V.1, V.2, V.3, section V.3.4).
 // Both return the residual max |C| (relative) so that a failure is never silent.
 #include <cmath>
