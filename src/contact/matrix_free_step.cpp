@@ -459,9 +459,20 @@ void coarse_start(const StepInput& in, const SolverOptions& options, Vector& x, 
   c.problem = &coarse;
   c.jump0 = coarse_dofs(in.jump0, false);
   c.gap = coarse.gap;
+  // Each hat's law: that of the pair it weighs most (a hat lies within one contact).
   c.kind.assign(static_cast<std::size_t>(nc), ContactKind::unilateral);
+  c.compliance.assign(static_cast<std::size_t>(nc), NormalCompliance{});
+  for (Index k = 0; k < nc; ++k) {
+    Index heaviest = -1;
+    double most = 0.0;
+    for (Eigen::SparseMatrix<double>::InnerIterator it(P, k); it; ++it)
+      if (it.value() > most) most = it.value(), heaviest = it.row();
+    if (heaviest < 0) continue;
+    c.kind[static_cast<std::size_t>(k)] = in.kind[static_cast<std::size_t>(heaviest)];
+    if (static_cast<std::size_t>(heaviest) < in.compliance.size())
+      c.compliance[static_cast<std::size_t>(k)] = in.compliance[static_cast<std::size_t>(heaviest)];
+  }
   c.friction = data.tangential ? mean(in.friction) : Vector::Zero(nc);
-  c.compliance.clear();
   c.mollifier = nullptr;
   c.previous_tangential_jump = mean(in.previous_tangential_jump);
   c.x_start.resize(0);

@@ -63,11 +63,6 @@ SolverRoute route_of(const ContactProblem& model) {
 
 std::string matrix_free_obstacle(const ContactProblem& model) {
   if (model.solver.algorithm == Algorithm::thesis) return "the thesis algorithm works on the formed operator";
-  for (const auto& contact : model.contacts) {
-    const auto& law = contact.law;
-    if (law.kind != ContactKind::unilateral)
-      return "contact '" + contact.name + "' is " + to_string(law.kind) + " (only unilateral contact is served)";
-  }
   for (const auto& body : model.bodies) {
     if (body.regions.size() > 1)
       return "body '" + body.name + "' has several regions (their bonds are eliminated on the formed flexibility)";

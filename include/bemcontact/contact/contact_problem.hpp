@@ -107,7 +107,7 @@ enum class PairNormal {
 
 // How the condensed operator M is held: formed (a dense 2N x 2N matrix, the step solved by
 // dense factorisations), or applied through the factored regions without being formed
-// (unilateral contact, with or without friction, between single-region bodies: the step
+// (contact of any law, with or without friction, between single-region bodies: the step
 // solved by an active set with preconditioned GMRES, matrix_free_step.cpp). automatic: matrix-free from
 // `matrix_free_threshold` pairs when every elastic region is compressed and nothing stands
 // in its way (matrix_free_obstacle).
@@ -325,7 +325,7 @@ SolverRoute route_of(const ContactProblem& model);
 const char* to_string(SolverRoute route);
 
 // What keeps the condensed operator of a model from being applied matrix-free (empty:
-// nothing; SolverOptions::contact_operator): its step solver serves unilateral contact,
+// nothing; SolverOptions::contact_operator): its step solver serves every contact law,
 // frictionless or with Coulomb's law (local or non-local), between bodies of one elastic
 // region each, pressed by rigid bodies and their own
 // data. (A body held only by its contacts is found when the model is built.)

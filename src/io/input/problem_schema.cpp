@@ -215,7 +215,7 @@ std::vector<Key> contact_solver_keys() {
                  "semi-smooth Newton, or the thesis' algorithms (V.1-V.3)"),
           choice("contact_operator", {"auto", "dense", "matrix_free"}, "auto",
                  "the condensed operator formed (dense) or applied through the regions' factors (matrix_free: "
-                 "unilateral contact, with or without friction; auto: from 2000 pairs on compressed regions)"),
+                 "any contact law, with or without friction; auto: from 2000 pairs on compressed regions)"),
           number("tolerance", "1e-10", "newton: relative residual of the complementarity functions (matrix-free: at least 1e-15 pairs^1.5)",
                  between(0, 1, true, true)),
           integer("max_iterations", "100", "newton iterations per step; Kalker iterations (thesis)", at_least(1)),

@@ -129,6 +129,33 @@ TEST(MatrixFree, FrictionalCylinderUnderTwoForcesMatchesTheFormedOperator) {
   EXPECT_LT(routes_differ(sheared_cylinder(200, 0.005), matrix_free), 1e-8);
 }
 
+TEST(MatrixFree, CompliantAndBilateralContactsMatchTheFormedOperator) {
+  ContactResult matrix_free;
+  // examples/contact_compliant_cylinder.toml (m = 1) on a softer block: a compliant pair's
+  // row less lambda / k.
+  auto file = io::read_contact_file(std::string(BEMCONTACT_EXAMPLES_DIR) + "/contact_compliant_cylinder.toml",
+                                    {{"n", 200.0}, {"E_block", 70000.0}, {"cn", 1e6}});
+  file.problem.drop_interior_points();
+  EXPECT_LT(routes_differ(file.problem, matrix_free), 1e-8);
+  // With friction (m_t = m_n) and Q = 0.1 P after P, adaptive steps (71 of them).
+  file.problem.set_friction(0.3);
+  file.problem.forces.front().amplitude.points = {{0.0, 0.0}, {1.0, 1.0}};
+  ForceLoad Q = file.problem.forces.front();
+  Q.name = std::string("Q");
+  Q.component = 0;
+  Q.force = 0.1 * -Q.force;
+  Q.amplitude.points = {{0.0, 0.0}, {1.0, 0.0}, {2.0, 1.0}};
+  file.problem.forces.push_back(Q);
+  file.problem.end_time = 2.0;
+  file.problem.increments = 2;
+  file.problem.adaptive = true;
+  EXPECT_LT(routes_differ(file.problem, matrix_free), 1e-8);
+  // Bilateral: every pair's row is a gap row.
+  auto bonded = pressed_cylinder(60);
+  bonded.contacts.front().law.kind = ContactKind::bilateral;
+  EXPECT_LT(routes_differ(bonded, matrix_free), 1e-8);
+}
+
 TEST(MatrixFree, TwoElasticBodiesUnderDisplacementMatchTheFormedOperator) {
   ContactResult matrix_free;
   EXPECT_LT(routes_differ(pressed_cylinder(60), matrix_free), 1e-8);
@@ -137,8 +164,8 @@ TEST(MatrixFree, TwoElasticBodiesUnderDisplacementMatchTheFormedOperator) {
 TEST(MatrixFree, RefusedWhereItsStepSolverDoesNotServe) {
   auto problem = rigid_cylinder(40);
   problem.solver.contact_operator = CondensedOperatorKind::matrix_free;
-  problem.contacts.front().law.kind = ContactKind::bilateral;
-  EXPECT_NE(matrix_free_obstacle(problem).find("bilateral"), std::string::npos);
+  problem.solver.algorithm = Algorithm::thesis;
+  EXPECT_NE(matrix_free_obstacle(problem).find("thesis"), std::string::npos);
   EXPECT_THROW(ContactModel{problem}, InputError);
   auto platen = pressed_cylinder(20);
   platen.forces = {testing::platen_force(0, 2, 1, -0.01)};
@@ -146,12 +173,12 @@ TEST(MatrixFree, RefusedWhereItsStepSolverDoesNotServe) {
   // auto keeps the formed operator where something stands in the way, and below the threshold.
   problem.solver.contact_operator = CondensedOperatorKind::automatic;
   EXPECT_FALSE(ContactModel(problem).condensed().matrix_free);
-  problem.contacts.front().law.kind = ContactKind::unilateral;
+  problem.solver.algorithm = Algorithm::newton;
   EXPECT_FALSE(ContactModel(problem).condensed().matrix_free);
 }
 
 TEST(MatrixFree, ProblemFileKeyIsReadAndChecked) {
-  // The rigid cylinder's example made unilateral, with the key; then made bilateral.
+  // The rigid cylinder's example made unilateral, with the key; then with the thesis algorithm.
   std::ifstream in(std::string(BEMCONTACT_EXAMPLES_DIR) + "/contact_compliant_cylinder.toml");
   std::string text, line;
   while (std::getline(in, line))
@@ -159,18 +186,14 @@ TEST(MatrixFree, ProblemFileKeyIsReadAndChecked) {
   const std::string key = "[solver]\ncontact_operator = \"matrix_free\"\n";
   const auto file = io::parse_contact_problem(text + key, "mf.toml");
   EXPECT_EQ(file.problem.solver.contact_operator, CondensedOperatorKind::matrix_free);
-  const std::string bilateral = "normal = \"body1\"\nkind = \"bilateral\"\n";
-  const std::size_t at = text.find("normal = \"body1\"\n");
-  ASSERT_NE(at, std::string::npos);
-  text.replace(at, std::string("normal = \"body1\"\n").size(), bilateral);
   try {
-    io::parse_contact_problem(text + key, "mf.toml");
-    FAIL() << "bilateral contact with contact_operator = matrix_free was accepted";
+    io::parse_contact_problem(text + key + "algorithm = \"thesis\"\n", "mf.toml");
+    FAIL() << "the thesis algorithm with contact_operator = matrix_free was accepted";
   } catch (const InputError& error) {
     const std::string message = error.what();
     EXPECT_NE(message.find("mf.toml"), std::string::npos) << message;
     EXPECT_NE(message.find("contact_operator"), std::string::npos) << message;
-    EXPECT_NE(message.find("bilateral"), std::string::npos) << message;
+    EXPECT_NE(message.find("thesis"), std::string::npos) << message;
   }
 }
 
