@@ -150,6 +150,16 @@ TEST(MatrixFree, CompliantAndBilateralContactsMatchTheFormedOperator) {
   file.problem.increments = 2;
   file.problem.adaptive = true;
   EXPECT_LT(routes_differ(file.problem, matrix_free), 1e-8);
+  // m_n = 2.2, m_t = 1.5 (test_normal_compliance.cpp's law): the slipping tau's offsets
+  // enter the right-hand side through one product; 16 equal steps.
+  auto& law = file.problem.contacts.front().law.compliance;
+  law.stiffness = 5.8e6;
+  law.exponent = 2.2;
+  law.friction_stiffness = 1.515e5;
+  law.friction_exponent = 1.5;
+  file.problem.adaptive = false;
+  file.problem.increments = 16;
+  EXPECT_LT(routes_differ(file.problem, matrix_free), 1e-8);
   // Bilateral: every pair's row is a gap row.
   auto bonded = pressed_cylinder(60);
   bonded.contacts.front().law.kind = ContactKind::bilateral;
