@@ -106,19 +106,10 @@ class TwoLevel : public operators::LinearOperator {
         image_(static_cast<Index>(a), l) = v;
       }
       if (fn.direction == 0)  // a compliant pair's -lambda / k on the diagonal
-        for (Eigen::SparseMatrix<double>::InnerIterator it(P, fn.hat); it; ++it) {
-          const Index at = position_[static_cast<std::size_t>(2 * it.row())];
-          if (at >= 0) image_(at, l) -= system.normal_shift[it.row()] * it.value();
-        }
+        on_support(l, [&](Index at, double weight, Index pair) { image_(at, l) -= system.normal_shift[pair] * weight; });
     }
     Matrix Jc = Matrix::Zero(c, c);
-    for (Index l = 0; l < c; ++l) {
-      const auto& fn = functions_[static_cast<std::size_t>(l)];
-      for (Eigen::SparseMatrix<double>::InnerIterator it(P, fn.hat); it; ++it) {
-        const Index at = position_[static_cast<std::size_t>(2 * it.row() + fn.direction)];
-        if (at >= 0) Jc.row(l) += it.value() * image_.row(at);
-      }
-    }
+    for (Index l = 0; l < c; ++l) on_support(l, [&](Index at, double weight, Index) { Jc.row(l) += weight * image_.row(at); });
     // LAPACK's blocked LU on the dense coarse operator (Eigen's PartialPivLU took most of an
     // iteration at 10^4 pairs with friction, c ~ 2 000). Singular to working precision (a
     // coarse space cut badly by the contact set): none, the fine level alone.
@@ -131,16 +122,9 @@ class TwoLevel : public operators::LinearOperator {
   Index rows() const override { return static_cast<Index>(system_.free_dofs.size()); }
   Index cols() const override { return rows(); }
   void apply(const Vector& r, Vector& z) const override {
-    const auto& P = data_.coarse_basis;
     const Index c = static_cast<Index>(functions_.size());
     Vector rc = Vector::Zero(c);  // Q^T r
-    for (Index l = 0; l < c; ++l) {
-      const auto& fn = functions_[static_cast<std::size_t>(l)];
-      for (Eigen::SparseMatrix<double>::InnerIterator it(P, fn.hat); it; ++it) {
-        const Index at = position_[static_cast<std::size_t>(2 * it.row() + fn.direction)];
-        if (at >= 0) rc[l] += it.value() * r[at];
-      }
-    }
+    for (Index l = 0; l < c; ++l) on_support(l, [&](Index at, double weight, Index) { rc[l] += weight * r[at]; });
     const Vector e = c > 0 ? Vector(coarse_.solve(rc)) : Vector();
     const Vector image_e = c > 0 ? Vector(image_ * e) : Vector::Zero(rows());
     z.resize(rows());
@@ -149,13 +133,7 @@ class TwoLevel : public operators::LinearOperator {
       const double local = data_.diagonal[dof] - (dof % 2 == 0 ? system_.normal_shift[i] : 0.0);  // J_aa's estimate
       z[a] = local != 0.0 ? (r[a] - image_e[a]) / local : 0.0;
     }
-    for (Index l = 0; l < c; ++l) {
-      const auto& fn = functions_[static_cast<std::size_t>(l)];
-      for (Eigen::SparseMatrix<double>::InnerIterator it(P, fn.hat); it; ++it) {
-        const Index at = position_[static_cast<std::size_t>(2 * it.row() + fn.direction)];
-        if (at >= 0) z[at] += it.value() * e[l];
-      }
-    }
+    for (Index l = 0; l < c; ++l) on_support(l, [&](Index at, double weight, Index) { z[at] += weight * e[l]; });
   }
 
  private:
@@ -164,6 +142,16 @@ class TwoLevel : public operators::LinearOperator {
     int direction;  // 0 normal, 1 tangential
     double slip;    // a normal function's mean slip factor
   };
+  // f(at, weight, pair) over coarse function l's free unknowns: their place among the free
+  // unknowns, the hat's weight there, the pair.
+  template <class F>
+  void on_support(Index l, F&& f) const {
+    const auto& fn = functions_[static_cast<std::size_t>(l)];
+    for (Eigen::SparseMatrix<double>::InnerIterator it(data_.coarse_basis, fn.hat); it; ++it) {
+      const Index at = position_[static_cast<std::size_t>(2 * it.row() + fn.direction)];
+      if (at >= 0) f(at, it.value(), it.row());
+    }
+  }
   const MatrixFreeCondensed& data_;
   const NewtonSystem& system_;
   std::vector<Index> position_;  // per dof: its place among the free unknowns, or -1
@@ -433,9 +421,12 @@ void coarse_start(const StepInput& in, const SolverOptions& options, Vector& x, 
   const int directions = data.tangential ? 2 : 1;
   for (int row = 0; row < directions; ++row)
     for (int column = 0; column < directions; ++column) {
-      Matrix rows(p.pairs, nc);
-      for (Index i = 0; i < p.pairs; ++i)
-        for (Index l = 0; l < nc; ++l) rows(i, l) = data.image(2 * i + row, l, column);
+      // The image's rows of direction `row` and columns of `column`, in place (no copy: N x nc).
+      const Matrix& image = data.coarse_image;
+      const Index stride = data.tangential ? 2 : 1;
+      const Eigen::Map<const Matrix, 0, Eigen::Stride<Eigen::Dynamic, Eigen::Dynamic>> rows(
+          image.data() + (data.tangential ? row + column * nc * image.rows() : 0), p.pairs, nc,
+          Eigen::Stride<Eigen::Dynamic, Eigen::Dynamic>(image.rows(), stride));
       const Matrix block = mass.cwiseInverse().asDiagonal() * (P.transpose() * rows);
       for (Index k = 0; k < nc; ++k)
         for (Index l = 0; l < nc; ++l) coarse.M(2 * k + row, 2 * l + column) = block(k, l);
