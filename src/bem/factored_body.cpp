@@ -201,14 +201,25 @@ Matrix FactoredBody::complementary_columns(const Eigen::SparseMatrix<double>& va
   Matrix out = Matrix::Zero(variable_dofs(), variable_data.cols());
   for (std::size_t first = 0; first < columns.size(); first += static_cast<std::size_t>(kColumnBatch)) {
     const Index count = std::min<Index>(kColumnBatch, static_cast<Index>(columns.size() - first));
-    // Dense: the data's few entries per column gather columns of the stored right-hand
-    // sides; compressed: the data go through the blocks.
-    Matrix y = Matrix::Zero(compressed_ ? variable_dofs() : variable_rhs_.rows(), count);
-    for (Index k = 0; k < count; ++k)
-      for (Eigen::SparseMatrix<double>::InnerIterator it(variable_data, columns[first + k]); it; ++it)
-        if (compressed_) y(it.row(), k) = it.value();
-        else y.col(k) += it.value() * variable_rhs_.col(it.row());
-    if (compressed_) y = variable_rhs(y);
+    // Compressed: the data go through the blocks. Dense: the data's few entries per column
+    // gather columns of the stored right-hand sides, or when the data fill their columns
+    // (a side 2's consistent transfer: 463 000 entries at 481 pairs, gathered in 0.2 s) one
+    // matrix product.
+    Index entries = 0;
+    for (Index k = 0; k < count; ++k) entries += variable_data.col(columns[first + k]).nonZeros();
+    Matrix y;
+    if (compressed_ || entries > variable_dofs() * count / 16) {
+      Matrix data = Matrix::Zero(variable_dofs(), count);
+      for (Index k = 0; k < count; ++k)
+        for (Eigen::SparseMatrix<double>::InnerIterator it(variable_data, columns[first + k]); it; ++it)
+          data(it.row(), k) = it.value();
+      y = compressed_ ? variable_rhs(data) : Matrix(variable_rhs_ * data);
+    } else {
+      y = Matrix::Zero(variable_rhs_.rows(), count);
+      for (Index k = 0; k < count; ++k)
+        for (Eigen::SparseMatrix<double>::InnerIterator it(variable_data, columns[first + k]); it; ++it)
+          y.col(k) += it.value() * variable_rhs_.col(it.row());
+    }
     factors_->solve_in_place(y);
     const Matrix response = complementary_of(y);
     for (Index k = 0; k < count; ++k) out.col(columns[first + k]) = response.col(k);

@@ -1,39 +1,71 @@
 #include "bemcontact/operators/bordered_lu.hpp"
 
+#include <stdexcept>
 #include <string>
 #include <utility>
 
 namespace bemcontact::operators {
 
+namespace {
+
+std::vector<Index> not_kept(Index n, const std::vector<Index>& kept) {
+  std::vector<bool> is_kept(static_cast<std::size_t>(n), false);
+  for (const Index k : kept) is_kept[static_cast<std::size_t>(k)] = true;
+  std::vector<Index> dropped;
+  for (Index k = 0; k < n; ++k)
+    if (!is_kept[static_cast<std::size_t>(k)]) dropped.push_back(k);
+  return dropped;
+}
+
+}  // namespace
+
 BorderedLU::BorderedLU(const Matrix& base, const DenseLU& base_lu, std::vector<Index> kept, Matrix Q, Matrix R,
                        Matrix T)
-    : base_(&base), base_lu_(&base_lu), kept_(std::move(kept)), Q_(std::move(Q)), R_(std::move(R)), T_(std::move(T)) {
-  const Index n = base.rows();
-  std::vector<bool> is_kept(static_cast<std::size_t>(n), false);
-  for (const Index k : kept_) is_kept[static_cast<std::size_t>(k)] = true;
-  for (Index k = 0; k < n; ++k)
-    if (!is_kept[static_cast<std::size_t>(k)]) dropped_.push_back(k);
+    : base_(&base), base_lu_(&base_lu), kept_(std::move(kept)), dropped_(not_kept(base.rows(), kept_)),
+      Q_(std::move(Q)), R_(std::move(R)), T_(std::move(T)) {
+  const Index n = base.rows(), d = static_cast<Index>(dropped_.size());
+  W_ = Matrix::Zero(n, d);
+  for (Index j = 0; j < d; ++j) W_(dropped_[static_cast<std::size_t>(j)], j) = 1.0;
+  if (d > 0) base_lu.solve_in_place(W_);
+  Matrix Z = Matrix::Zero(n, Q_.cols());
+  for (std::size_t a = 0; a < kept_.size(); ++a) Z.row(kept_[a]) = Q_.row(static_cast<Index>(a));
+  if (Z.cols() > 0) base_lu.solve_in_place(Z);
+  factor_small_blocks(Z);
+}
+
+BorderedLU::BorderedLU(const Matrix& base, const DenseLU& base_lu, std::vector<Index> kept, Matrix W, Matrix Q,
+                       Matrix R, Matrix T, Matrix Z)
+    : base_(&base), base_lu_(&base_lu), kept_(std::move(kept)), dropped_(not_kept(base.rows(), kept_)),
+      W_(std::move(W)), Q_(std::move(Q)), R_(std::move(R)), T_(std::move(T)) {
+  if (W_.rows() != base.rows() || W_.cols() != static_cast<Index>(dropped_.size()) || Z.rows() != base.rows() ||
+      Z.cols() != Q_.cols())
+    throw std::logic_error("BorderedLU: solves of the wrong size");
+  factor_small_blocks(Z);
+}
+
+void BorderedLU::factor_small_blocks(const Matrix& Z) {
   const Index d = static_cast<Index>(dropped_.size());
   if (d > 0) {
-    W_ = Matrix::Zero(n, d);
-    for (Index j = 0; j < d; ++j) W_(dropped_[static_cast<std::size_t>(j)], j) = 1.0;
-    base_lu.solve_in_place(W_);
     Matrix WD(d, d);
     for (Index i = 0; i < d; ++i) WD.row(i) = W_.row(dropped_[static_cast<std::size_t>(i)]);
     dropped_lu_ = DenseLU(std::move(WD), "the dropped block of an updated Newton system");
   }
   const Index m = T_.rows();
   if (m > 0) {
-    kept_inverse_Q_ = solve_kept(Q_);
+    kept_inverse_Q_ = kept_part(Z);
     schur_lu_ = DenseLU(Matrix(T_ - R_ * kept_inverse_Q_), "the Schur complement of an updated Newton system");
   }
 }
 
 Matrix BorderedLU::solve_kept(const Matrix& r) const {
-  const Index n = base_->rows(), columns = r.cols();
-  Matrix full = Matrix::Zero(n, columns);
+  Matrix full = Matrix::Zero(base_->rows(), r.cols());
   for (std::size_t a = 0; a < kept_.size(); ++a) full.row(kept_[a]) = r.row(static_cast<Index>(a));
   base_lu_->solve_in_place(full);
+  return kept_part(std::move(full));
+}
+
+Matrix BorderedLU::kept_part(Matrix full) const {
+  const Index columns = full.cols();
   if (!dropped_.empty()) {
     Matrix zd(static_cast<Index>(dropped_.size()), columns);
     for (std::size_t i = 0; i < dropped_.size(); ++i) zd.row(static_cast<Index>(i)) = full.row(dropped_[i]);

@@ -178,7 +178,9 @@ void DenseLU::solve_transposed_in_place(Matrix& rhs) const {
 void DenseLU::solve_columns(char transpose, Matrix& rhs) const {
   use_single_threaded_blas();
   const Index n = factors_.rows(), columns = rhs.cols();
-  constexpr Index block = 16;
+  // Blocks of at most 16 columns, at least two blocks from two columns (a Newton update's
+  // few right-hand sides share the threads): a function of the column count alone.
+  const Index block = std::clamp<Index>((columns + 1) / 2, 1, 16);
   const Index blocks = (columns + block - 1) / block;
 #pragma omp parallel for schedule(dynamic, 1) if (blocks > 1 && n >= 200)
   for (Index b = 0; b < blocks; ++b) {

@@ -20,6 +20,7 @@
 #include <cmath>
 #include <memory>
 #include <string>
+#include <unordered_map>
 
 #include "bemcontact/contact/condensed.hpp"
 #include "bemcontact/contact/nonlocal_friction.hpp"
@@ -88,6 +89,14 @@ struct NewtonSystemCache {
   SlipCoupling update_slip_columns;
   std::vector<Index> update_order;  // the update's unknowns (kept, then new) as positions in the system
   std::unique_ptr<operators::BorderedLU> update;
+  // Solves with the factors above, kept until they are replaced (the updates of one
+  // factorisation share most of them): J^-1 e_k by position k, and J^-1 u for an update's
+  // new column u (at the factored system's rows) by its unknown's id, with u.
+  std::unordered_map<Index, Vector> unit_solves;
+  struct ColumnSolve {
+    Vector column, solution;
+  };
+  std::unordered_map<Index, ColumnSolve> column_solves;
   long factored = 0, reused = 0, updated = 0;  // systems factored, solved with kept factors, updates built
   // The matrix-free route (no factors): the last solution per dof, GMRES's starting point,
   // and the products of M taken.
@@ -97,6 +106,9 @@ struct NewtonSystemCache {
   // that accuracy (relative to the right-hand side) as the stagnations so far found it.
   bool krylov_floor = false;
   double krylov_floor_level = 1e-15;
+  // The last iterate whose M x was taken, and M x: a step starts from the last step's
+  // solution, whose product its last iteration took (one product of M per step saved).
+  Vector product_of, product;
 };
 
 // The Newton system of the matrix-free route (matrix_free_step.cpp): the free unknowns of

@@ -24,6 +24,11 @@ class BorderedLU {
   // Throws SolverError when a small matrix (W(D, :) or S) is singular: J1 is then
   // singular, or too far from J0 for the update (the caller factors J1 itself).
   BorderedLU(const Matrix& base, const DenseLU& base_lu, std::vector<Index> kept, Matrix Q, Matrix R, Matrix T);
+  // The same from the solves with the base factors, taken by the caller (successive updates
+  // of one factorisation share most of them): W = J0^-1 E_D (D the indices not kept,
+  // increasing) and Z = J0^-1 [Q on C; 0 on D].
+  BorderedLU(const Matrix& base, const DenseLU& base_lu, std::vector<Index> kept, Matrix W, Matrix Q, Matrix R,
+             Matrix T, Matrix Z);
 
   Index size() const { return static_cast<Index>(kept_.size()) + T_.rows(); }
   // J1^-1 rhs and J1 z, in J1's order (kept, then new).
@@ -32,6 +37,8 @@ class BorderedLU {
 
  private:
   Matrix solve_kept(const Matrix& r) const;  // J0(C, C)^-1 r, column by column
+  Matrix kept_part(Matrix full) const;       // the same from full = J0^-1 [r on C; 0 on D]
+  void factor_small_blocks(const Matrix& Z);  // W(D, :) and S
 
   const Matrix* base_ = nullptr;
   const DenseLU* base_lu_ = nullptr;

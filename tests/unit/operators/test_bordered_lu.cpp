@@ -2,6 +2,7 @@
 // and columns through the factors, against a direct solve of the new matrix assembled.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 
 #include "bemcontact/core/error.hpp"
@@ -48,6 +49,22 @@ TEST(BorderedLU, SolvesTheUpdatedMatrixAsADirectSolve) {
       const Vector z = updated.solve(rhs);
       EXPECT_LT((z - direct).norm(), 1e-11 * direct.norm()) << "dropped " << dropped << ", added " << added;
       EXPECT_LT((updated.apply(z) - J1 * z).norm(), 1e-12 * (J1 * z).norm());
+      // The same from the caller's solves: W = J0^-1 E_D, and Z = J0^-1 U - W U(D, :) for the
+      // new columns U at every row of J0 (their values at the dropped rows arbitrary).
+      std::vector<Index> dropped_rows;
+      for (Index k = 0; k < n; ++k)
+        if (std::find(kept.begin(), kept.end(), k) == kept.end()) dropped_rows.push_back(k);
+      const Index d = static_cast<Index>(dropped_rows.size());
+      Matrix W = Matrix::Zero(n, d), U = random_matrix(n, added, engine), UD(d, added);
+      for (Index j = 0; j < d; ++j) W(dropped_rows[static_cast<std::size_t>(j)], j) = 1.0;
+      for (Index a = 0; a < c; ++a) U.row(kept[static_cast<std::size_t>(a)]) = Q.row(a);
+      for (Index j = 0; j < d; ++j) UD.row(j) = U.row(dropped_rows[static_cast<std::size_t>(j)]);
+      base_lu.solve_in_place(W);
+      Matrix Z = U;
+      base_lu.solve_in_place(Z);
+      Z -= W * UD;
+      const BorderedLU from_solves(base, base_lu, kept, W, Q, R, T, Z);
+      EXPECT_LT((from_solves.solve(rhs) - direct).norm(), 1e-11 * direct.norm()) << "dropped " << dropped << ", added " << added;
     }
   }
 }
