@@ -96,20 +96,23 @@ class TwoLevel : public operators::LinearOperator {
     const Index c = static_cast<Index>(functions_.size());
     if (c == 0) return;
     // J Q's rows at the free unknowns, and J_c = Q^T (J Q).
-    image_ = Matrix::Zero(static_cast<Index>(free.size()), c);
+    image_ = Eigen::MatrixXf::Zero(static_cast<Index>(free.size()), c);
     for (Index l = 0; l < c; ++l) {
       const auto& fn = functions_[static_cast<std::size_t>(l)];
       for (std::size_t a = 0; a < free.size(); ++a) {
         const Index dof = free[a];
         double v = data.image(dof, fn.hat, fn.direction);
         if (fn.direction == 0 && fn.slip != 0.0) v += fn.slip * data.image(dof, fn.hat, 1);
-        image_(static_cast<Index>(a), l) = v;
+        image_(static_cast<Index>(a), l) = static_cast<float>(v);
       }
       if (fn.direction == 0)  // a compliant pair's -lambda / k on the diagonal
-        on_support(l, [&](Index at, double weight, Index pair) { image_(at, l) -= system.normal_shift[pair] * weight; });
+        on_support(l, [&](Index at, double weight, Index pair) {
+          image_(at, l) = static_cast<float>(image_(at, l) - system.normal_shift[pair] * weight);
+        });
     }
     Matrix Jc = Matrix::Zero(c, c);
-    for (Index l = 0; l < c; ++l) on_support(l, [&](Index at, double weight, Index) { Jc.row(l) += weight * image_.row(at); });
+    for (Index l = 0; l < c; ++l)
+      on_support(l, [&](Index at, double weight, Index) { Jc.row(l) += weight * image_.row(at).cast<double>(); });
     // LAPACK's blocked LU on the dense coarse operator (Eigen's PartialPivLU took most of an
     // iteration at 10^4 pairs with friction, c ~ 2 000). Singular to working precision (a
     // coarse space cut badly by the contact set): none, the fine level alone.
@@ -126,7 +129,8 @@ class TwoLevel : public operators::LinearOperator {
     Vector rc = Vector::Zero(c);  // Q^T r
     for (Index l = 0; l < c; ++l) on_support(l, [&](Index at, double weight, Index) { rc[l] += weight * r[at]; });
     const Vector e = c > 0 ? Vector(coarse_.solve(rc)) : Vector();
-    const Vector image_e = c > 0 ? Vector(image_ * e) : Vector::Zero(rows());
+    Vector image_e = Vector::Zero(rows());  // (J Q) e, in double
+    for (Index l = 0; l < c; ++l) image_e += image_.col(l).cast<double>() * e[l];
     z.resize(rows());
     for (Index a = 0; a < rows(); ++a) {
       const Index dof = system_.free_dofs[static_cast<std::size_t>(a)], i = dof / 2;
@@ -156,7 +160,7 @@ class TwoLevel : public operators::LinearOperator {
   const NewtonSystem& system_;
   std::vector<Index> position_;  // per dof: its place among the free unknowns, or -1
   std::vector<CoarseFunction> functions_;
-  Matrix image_;  // J Q at the free unknowns
+  Eigen::MatrixXf image_;  // J Q at the free unknowns (single precision: a fixed matrix, applied in double)
   operators::DenseLU coarse_;
 };
 
@@ -266,7 +270,7 @@ Vector sampled_diagonal(const CondensedOperator& M, const Vector& weight, const 
 
 double MatrixFreeCondensed::image(Index dof, Index hat, int direction) const {
   const Index nc = coarse_basis.cols();
-  return tangential ? coarse_image(dof, direction * nc + hat) : coarse_image(dof / 2, hat);
+  return tangential ? coarse_image(dof, direction * nc + hat) : coarse_image(dof / 2, hat);  // (float to double)
 }
 
 MatrixFreeCondensed prepare_matrix_free(std::shared_ptr<const CondensedOperator> M, Vector weight,
@@ -301,13 +305,18 @@ MatrixFreeCondensed prepare_matrix_free(std::shared_ptr<const CondensedOperator>
     for (const auto& h : hats) spread.emplace_back(2 * h.row() + direction, direction * column + h.col(), h.value());
   Eigen::SparseMatrix<double> on_dofs_matrix(2 * n, directions * column);
   on_dofs_matrix.setFromTriplets(spread.begin(), spread.end());
-  Matrix image = M->apply_columns(on_dofs_matrix);
+  // In batches of columns, each rounded to single precision as it comes (the whole image in
+  // double is what the rounding saves); without friction only the normal rows serve.
   data.tangential = tangential;
-  if (tangential) {
-    data.coarse_image = std::move(image);
-  } else {  // only the normal rows serve
-    data.coarse_image.resize(n, column);
-    for (Index i = 0; i < n; ++i) data.coarse_image.row(i) = image.row(2 * i);
+  data.coarse_image.resize(tangential ? 2 * n : n, directions * column);
+  constexpr Index kImageBatch = 256;
+  for (Index first = 0; first < on_dofs_matrix.cols(); first += kImageBatch) {
+    const Index count = std::min(kImageBatch, on_dofs_matrix.cols() - first);
+    const Matrix image = M->apply_columns(Eigen::SparseMatrix<double>(on_dofs_matrix.middleCols(first, count)));
+    if (tangential)
+      data.coarse_image.middleCols(first, count) = image.cast<float>();
+    else
+      for (Index i = 0; i < n; ++i) data.coarse_image.row(i).segment(first, count) = image.row(2 * i).cast<float>();
   }
   data.diagonal = sampled_diagonal(*M, weight, groups);
   data.weight = std::move(weight);
@@ -422,12 +431,13 @@ void coarse_start(const StepInput& in, const SolverOptions& options, Vector& x, 
   for (int row = 0; row < directions; ++row)
     for (int column = 0; column < directions; ++column) {
       // The image's rows of direction `row` and columns of `column`, in place (no copy: N x nc).
-      const Matrix& image = data.coarse_image;
+      const Eigen::MatrixXf& image = data.coarse_image;
       const Index stride = data.tangential ? 2 : 1;
-      const Eigen::Map<const Matrix, 0, Eigen::Stride<Eigen::Dynamic, Eigen::Dynamic>> rows(
+      const Eigen::Map<const Eigen::MatrixXf, 0, Eigen::Stride<Eigen::Dynamic, Eigen::Dynamic>> rows(
           image.data() + (data.tangential ? row + column * nc * image.rows() : 0), p.pairs, nc,
           Eigen::Stride<Eigen::Dynamic, Eigen::Dynamic>(image.rows(), stride));
-      const Matrix block = mass.cwiseInverse().asDiagonal() * (P.transpose() * rows);
+      Matrix block(nc, nc);  // R (the image's rows), column by column in double
+      for (Index l = 0; l < nc; ++l) block.col(l) = mass.cwiseInverse().asDiagonal() * (P.transpose() * rows.col(l).cast<double>());
       for (Index k = 0; k < nc; ++k)
         for (Index l = 0; l < nc; ++l) coarse.M(2 * k + row, 2 * l + column) = block(k, l);
     }
