@@ -1004,6 +1004,8 @@ ContactResult solve_on_meshes(const ContactProblem& problem, const bem::Progress
                                              : "elastoplastic contact steps",
                      seconds_since(start));
   take_history(problem, history, result);
+  if (const auto& data = model.condensed().matrix_free)
+    result.matrix_free_images = data->coarse.formed() + data->start.formed();
   if (finish_pass && !finish_pass(result)) return result;
   if (coupling) {
     const auto regions = coupling->regions();

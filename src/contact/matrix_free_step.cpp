@@ -11,12 +11,14 @@
 // grows with H / h, the coarse spacing over the pairs', not with their number):
 //   z = Q J_c^-1 Q^T r + D^-1 (r - (J Q) J_c^-1 Q^T r),
 // Q the hat functions on the free normal unknowns (and, with friction, on the free
-// tangential ones), J Q from M's images of the hats on the normal and tangential dofs formed
-// once per model (one batched solve per coarse function; a slipping column's tau enters as
-// the hat's mean slip factor times the tangential image), J_c = Q^T (J Q), D J's diagonal
-// from M's, sampled (sampled_diagonal).
+// tangential ones), J Q from M's images of the hats on the normal and tangential dofs,
+// each formed when the contact set first reaches its hat (HatImages: one batched solve per
+// coarse function; a slipping column's tau enters as the hat's mean slip factor times the
+// tangential image), J_c = Q^T (J Q), D J's diagonal from M's, sampled (sampled_diagonal).
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <utility>
 
 #include "bemcontact/contact/step_solvers.hpp"
 #include "bemcontact/core/error.hpp"
@@ -31,6 +33,11 @@ namespace {
 // Rigid cylinder, 8 001 pairs (model + contact iterations): 4: 18.3 + 4.8 s (61 products);
 // 8: 10.8 + 4.0 s (94); 16: 10.6 + 13.3 s (275, 6 Newton iterations: a coarser start).
 constexpr Index kCoarseSpacing = 8;
+// The start's first stage (coarse_start): hats every 8 coarse ones, whose contact problem
+// tells which of the coarse hats the second stage needs (their images are then formed, and
+// the preconditioner's are those it keeps, not every hat of the declared zones).
+constexpr Index kStartSpacing = 8 * kCoarseSpacing;
+constexpr Index kStagedHats = 256;
 
 // The normal (or tangential) rows of a 2N-vector, and a pair vector spread on those dofs.
 Vector dof_rows(const Vector& v, int direction) {
@@ -73,7 +80,7 @@ class NewtonBlock : public operators::LinearOperator {
 class TwoLevel : public operators::LinearOperator {
  public:
   TwoLevel(const MatrixFreeCondensed& data, const NewtonSystem& system) : data_(data), system_(system) {
-    const auto& P = data.coarse_basis;
+    const auto& P = data.coarse.basis();
     const Index n = P.rows(), nc = P.cols();
     const auto& free = system.free_dofs;
     position_.assign(static_cast<std::size_t>(2 * n), -1);
@@ -95,14 +102,21 @@ class TwoLevel : public operators::LinearOperator {
       }
     const Index c = static_cast<Index>(functions_.size());
     if (c == 0) return;
-    // J Q's rows at the free unknowns, and J_c = Q^T (J Q).
+    // The images of the functions kept (those the contact set reaches for the first time
+    // formed now), J Q's rows at the free unknowns, and J_c = Q^T (J Q).
+    std::vector<Index> needed;
+    for (const auto& fn : functions_) {
+      needed.push_back(fn.direction * nc + fn.hat);
+      if (fn.direction == 0 && fn.slip != 0.0) needed.push_back(nc + fn.hat);
+    }
+    data.coarse.form(needed);
     image_ = Eigen::MatrixXf::Zero(static_cast<Index>(free.size()), c);
     for (Index l = 0; l < c; ++l) {
       const auto& fn = functions_[static_cast<std::size_t>(l)];
       for (std::size_t a = 0; a < free.size(); ++a) {
         const Index dof = free[a];
-        double v = data.image(dof, fn.hat, fn.direction);
-        if (fn.direction == 0 && fn.slip != 0.0) v += fn.slip * data.image(dof, fn.hat, 1);
+        double v = data.coarse.image(dof, fn.hat, fn.direction);
+        if (fn.direction == 0 && fn.slip != 0.0) v += fn.slip * data.coarse.image(dof, fn.hat, 1);
         image_(static_cast<Index>(a), l) = static_cast<float>(v);
       }
       if (fn.direction == 0)  // a compliant pair's -lambda / k on the diagonal
@@ -151,7 +165,7 @@ class TwoLevel : public operators::LinearOperator {
   template <class F>
   void on_support(Index l, F&& f) const {
     const auto& fn = functions_[static_cast<std::size_t>(l)];
-    for (Eigen::SparseMatrix<double>::InnerIterator it(data_.coarse_basis, fn.hat); it; ++it) {
+    for (Eigen::SparseMatrix<double>::InnerIterator it(data_.coarse.basis(), fn.hat); it; ++it) {
       const Index at = position_[static_cast<std::size_t>(2 * it.row() + fn.direction)];
       if (at >= 0) f(at, it.value(), it.row());
     }
@@ -268,22 +282,67 @@ Vector sampled_diagonal(const CondensedOperator& M, const Vector& weight, const 
 
 }  // namespace
 
-double MatrixFreeCondensed::image(Index dof, Index hat, int direction) const {
-  const Index nc = coarse_basis.cols();
-  return tangential ? coarse_image(dof, direction * nc + hat) : coarse_image(dof / 2, hat);  // (float to double)
+HatImages::HatImages(std::shared_ptr<const CondensedOperator> M, Eigen::SparseMatrix<double> basis, bool tangential)
+    : M_(std::move(M)), basis_(std::move(basis)), tangential_(tangential),
+      images_(static_cast<std::size_t>((tangential ? 2 : 1) * basis_.cols())) {}
+
+void HatImages::form(const std::vector<Index>& functions) const {
+  const Index n = basis_.rows(), hats = basis_.cols();
+  std::vector<Index> missing;
+  for (const Index f : functions)
+    if (images_.at(static_cast<std::size_t>(f)).size() == 0) missing.push_back(f);
+  std::sort(missing.begin(), missing.end());
+  missing.erase(std::unique(missing.begin(), missing.end()), missing.end());
+  // In batches of columns, each rounded to single precision as it comes (the whole batch in
+  // double is what the rounding saves).
+  constexpr std::size_t kImageBatch = 256;
+  for (std::size_t first = 0; first < missing.size(); first += kImageBatch) {
+    const std::size_t count = std::min(kImageBatch, missing.size() - first);
+    std::vector<Eigen::Triplet<double>> spread;
+    for (std::size_t j = 0; j < count; ++j) {
+      const Index f = missing[first + j], direction = f / hats, hat = f % hats;
+      for (Eigen::SparseMatrix<double>::InnerIterator it(basis_, hat); it; ++it)
+        spread.emplace_back(2 * it.row() + direction, static_cast<Index>(j), it.value());
+    }
+    Eigen::SparseMatrix<double> columns(2 * n, static_cast<Index>(count));
+    columns.setFromTriplets(spread.begin(), spread.end());
+    const Matrix image = M_->apply_columns(columns);
+    for (std::size_t j = 0; j < count; ++j) {
+      auto& out = images_[static_cast<std::size_t>(missing[first + j])];
+      if (tangential_) {
+        out = image.col(static_cast<Index>(j)).cast<float>();
+      } else {  // only the normal rows serve
+        out.resize(n);
+        for (Index i = 0; i < n; ++i) out[i] = static_cast<float>(image(2 * i, static_cast<Index>(j)));
+      }
+    }
+  }
 }
 
-MatrixFreeCondensed prepare_matrix_free(std::shared_ptr<const CondensedOperator> M, Vector weight,
-                                        const std::vector<Index>& groups, bool tangential) {
-  MatrixFreeCondensed data;
-  const Index n = weight.size();
-  // Hat functions over each contact's pairs, every kCoarseSpacing pairs (its ends included).
-  std::vector<Eigen::Triplet<double>> hats, spread;
+const Eigen::VectorXf& HatImages::image_of(Index function) const {
+  const auto& image = images_.at(static_cast<std::size_t>(function));
+  if (image.size() == 0) throw std::logic_error("HatImages: an image asked for before it was formed");
+  return image;
+}
+
+double HatImages::image(Index dof, Index hat, int direction) const {
+  return tangential_ ? image_of(direction * hats() + hat)[dof] : image_of(hat)[dof / 2];  // (float to double)
+}
+
+Index HatImages::formed() const {
+  return static_cast<Index>(std::count_if(images_.begin(), images_.end(), [](const auto& v) { return v.size() > 0; }));
+}
+
+namespace {
+
+// Hat functions over each contact's pairs, every `spacing` pairs (its ends included): N x hats.
+Eigen::SparseMatrix<double> hat_basis(Index n, const std::vector<Index>& groups, Index spacing) {
+  std::vector<Eigen::Triplet<double>> hats;
   Index column = 0;
   for (std::size_t g = 0; g + 1 < groups.size(); ++g) {
     const Index first = groups[g], count = groups[g + 1] - groups[g];
     if (count == 0) continue;
-    const Index functions = count < 2 ? 1 : std::max<Index>(2, (count - 1 + kCoarseSpacing - 1) / kCoarseSpacing + 1);
+    const Index functions = count < 2 ? 1 : std::max<Index>(2, (count - 1 + spacing - 1) / spacing + 1);
     for (Index i = 0; i < count; ++i) {
       if (functions == 1) {
         hats.emplace_back(first + i, column, 1.0);
@@ -297,27 +356,20 @@ MatrixFreeCondensed prepare_matrix_free(std::shared_ptr<const CondensedOperator>
     }
     column += functions;
   }
-  data.coarse_basis.resize(n, column);
-  data.coarse_basis.setFromTriplets(hats.begin(), hats.end());
-  // The hats on the normal dofs (and on the tangential ones), M times them batched.
-  const int directions = tangential ? 2 : 1;
-  for (int direction = 0; direction < directions; ++direction)
-    for (const auto& h : hats) spread.emplace_back(2 * h.row() + direction, direction * column + h.col(), h.value());
-  Eigen::SparseMatrix<double> on_dofs_matrix(2 * n, directions * column);
-  on_dofs_matrix.setFromTriplets(spread.begin(), spread.end());
-  // In batches of columns, each rounded to single precision as it comes (the whole image in
-  // double is what the rounding saves); without friction only the normal rows serve.
+  Eigen::SparseMatrix<double> basis(n, column);
+  basis.setFromTriplets(hats.begin(), hats.end());
+  return basis;
+}
+
+}  // namespace
+
+MatrixFreeCondensed prepare_matrix_free(std::shared_ptr<const CondensedOperator> M, Vector weight,
+                                        const std::vector<Index>& groups, bool tangential) {
+  MatrixFreeCondensed data;
+  const Index n = weight.size();
   data.tangential = tangential;
-  data.coarse_image.resize(tangential ? 2 * n : n, directions * column);
-  constexpr Index kImageBatch = 256;
-  for (Index first = 0; first < on_dofs_matrix.cols(); first += kImageBatch) {
-    const Index count = std::min(kImageBatch, on_dofs_matrix.cols() - first);
-    const Matrix image = M->apply_columns(Eigen::SparseMatrix<double>(on_dofs_matrix.middleCols(first, count)));
-    if (tangential)
-      data.coarse_image.middleCols(first, count) = image.cast<float>();
-    else
-      for (Index i = 0; i < n; ++i) data.coarse_image.row(i).segment(first, count) = image.row(2 * i).cast<float>();
-  }
+  data.coarse = HatImages(M, hat_basis(n, groups, kCoarseSpacing), tangential);
+  data.start = HatImages(M, hat_basis(n, groups, kStartSpacing), tangential);
   data.diagonal = sampled_diagonal(*M, weight, groups);
   data.weight = std::move(weight);
   data.M = std::move(M);
@@ -409,12 +461,28 @@ bool solve_matrix_free_system(const CondensedProblem& p, const NewtonSystem& sys
   return z.allFinite();
 }
 
-void coarse_start(const StepInput& in, const SolverOptions& options, Vector& x, Vector& delta) {
+namespace {
+
+// The contact problem on hats `selected` of `hats` (their images formed here): the hats as
+// pressures and shears, the gaps averaged over them, M_c = R M P dense (R = diag(1 / column
+// sums) P^T: a hat's mean over its pairs), solved by solve_step_newton with the contact's
+// law and friction; its solution prolonged into x, delta. False when it has none.
+bool solve_on_hats(const StepInput& in, const SolverOptions& options, const HatImages& hats,
+                   const std::vector<Index>& selected, Vector& x, Vector& delta) {
   const auto& p = *in.problem;
-  const auto& data = *p.matrix_free;
-  const auto& P = data.coarse_basis;
-  const Index nc = P.cols(), K = p.motions;
-  // R = diag(1 / column sums) P^T: a coarse function's mean over its pairs.
+  const Index nc = static_cast<Index>(selected.size()), K = p.motions, all = hats.hats();
+  if (nc == 0) return false;
+  const int directions = hats.tangential() ? 2 : 1;
+  std::vector<Index> functions;
+  for (int direction = 0; direction < directions; ++direction)
+    for (const Index k : selected) functions.push_back(direction * all + k);
+  hats.form(functions);
+  std::vector<Eigen::Triplet<double>> entries;
+  for (Index l = 0; l < nc; ++l)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(hats.basis(), selected[static_cast<std::size_t>(l)]); it; ++it)
+      entries.emplace_back(it.row(), l, it.value());
+  Eigen::SparseMatrix<double> P(p.pairs, nc);
+  P.setFromTriplets(entries.begin(), entries.end());
   Vector mass = Vector::Zero(nc);
   for (Index k = 0; k < nc; ++k)
     for (Eigen::SparseMatrix<double>::InnerIterator it(P, k); it; ++it) mass[k] += it.value();
@@ -426,22 +494,18 @@ void coarse_start(const StepInput& in, const SolverOptions& options, Vector& x, 
   coarse.pairs = nc;
   coarse.motions = K;
   coarse.M = Matrix::Zero(2 * nc, 2 * nc);
-  // M_c's block (row direction, column direction) = R (M's images of the hats)'s rows.
-  const int directions = data.tangential ? 2 : 1;
+  // M_c's block (row direction, column direction): R times the rows of direction `row` of
+  // the images of the hats on the dofs of `column`, column by column in double.
   for (int row = 0; row < directions; ++row)
-    for (int column = 0; column < directions; ++column) {
-      // The image's rows of direction `row` and columns of `column`, in place (no copy: N x nc).
-      const Eigen::MatrixXf& image = data.coarse_image;
-      const Index stride = data.tangential ? 2 : 1;
-      const Eigen::Map<const Eigen::MatrixXf, 0, Eigen::Stride<Eigen::Dynamic, Eigen::Dynamic>> rows(
-          image.data() + (data.tangential ? row + column * nc * image.rows() : 0), p.pairs, nc,
-          Eigen::Stride<Eigen::Dynamic, Eigen::Dynamic>(image.rows(), stride));
-      Matrix block(nc, nc);  // R (the image's rows), column by column in double
-      for (Index l = 0; l < nc; ++l) block.col(l) = mass.cwiseInverse().asDiagonal() * (P.transpose() * rows.col(l).cast<double>());
-      for (Index k = 0; k < nc; ++k)
-        for (Index l = 0; l < nc; ++l) coarse.M(2 * k + row, 2 * l + column) = block(k, l);
-    }
-  if (!data.tangential)
+    for (int column = 0; column < directions; ++column)
+      for (Index l = 0; l < nc; ++l) {
+        const Eigen::VectorXf& image = hats.image_of(column * all + selected[static_cast<std::size_t>(l)]);
+        const Eigen::Map<const Eigen::VectorXf, 0, Eigen::InnerStride<>> rows(
+            image.data() + (hats.tangential() ? row : 0), p.pairs, Eigen::InnerStride<>(hats.tangential() ? 2 : 1));
+        const Vector block = mean(rows.cast<double>());
+        for (Index k = 0; k < nc; ++k) coarse.M(2 * k + row, 2 * l + column) = block[k];
+      }
+  if (!hats.tangential())
     for (Index k = 0; k < nc; ++k) coarse.M(2 * k + 1, 2 * k + 1) = coarse.M(2 * k, 2 * k);  // (tau stays 0: frictionless)
   // b averaged, f summed over the hats (the coarse pressures are the hats' amplitudes).
   const auto coarse_dofs = [&](const Vector& fine, bool sum) {
@@ -481,7 +545,7 @@ void coarse_start(const StepInput& in, const SolverOptions& options, Vector& x, 
     if (static_cast<std::size_t>(heaviest) < in.compliance.size())
       c.compliance[static_cast<std::size_t>(k)] = in.compliance[static_cast<std::size_t>(heaviest)];
   }
-  c.friction = data.tangential ? mean(in.friction) : Vector::Zero(nc);
+  c.friction = hats.tangential() ? mean(in.friction) : Vector::Zero(nc);
   c.mollifier = nullptr;
   c.previous_tangential_jump = mean(in.previous_tangential_jump);
   c.x_start.resize(0);
@@ -490,9 +554,49 @@ void coarse_start(const StepInput& in, const SolverOptions& options, Vector& x, 
   SolverOptions coarse_options = options;
   coarse_options.tolerance = std::max(options.tolerance, 1e-8);
   const StepOutput out = solve_step_newton(c, coarse_options);
-  if (!out.converged) return;  // the fine iteration starts from zero as it would have
+  if (!out.converged) return false;
   x = on_dofs(P * dof_rows(out.x, 0).cwiseMax(0.0), 0) + on_dofs(P * dof_rows(out.x, 1), 1);
   delta = out.delta;
+  return true;
+}
+
+std::vector<Index> every_hat(const HatImages& hats) {
+  std::vector<Index> all(static_cast<std::size_t>(hats.hats()));
+  for (Index k = 0; k < hats.hats(); ++k) all[static_cast<std::size_t>(k)] = k;
+  return all;
+}
+
+}  // namespace
+
+void coarse_start(const StepInput& in, const SolverOptions& options, Vector& x, Vector& delta) {
+  const auto& p = *in.problem;
+  const auto& data = *p.matrix_free;
+  // First stage (from kStagedHats coarse hats: below, their images cost little and a start
+  // hat spans much of a contact): every start hat. Its pairs in contact, widened by a
+  // start hat's spacing each way within their contact, choose the coarse hats of the second
+  // stage; without a solution there, every coarse hat.
+  Vector x1, delta1;
+  std::vector<Index> selected;
+  if (data.coarse.hats() >= kStagedHats && solve_on_hats(in, options, data.start, every_hat(data.start), x1, delta1)) {
+    std::vector<bool> near(static_cast<std::size_t>(p.pairs), false);
+    const auto groups = pair_groups(p);
+    for (std::size_t g = 0; g + 1 < groups.size(); ++g)
+      for (Index i = groups[g]; i < groups[g + 1]; ++i) {
+        if (!(x1[2 * i] > 0.0)) continue;
+        for (Index j = std::max(groups[g], i - kStartSpacing); j < std::min(groups[g + 1], i + kStartSpacing + 1); ++j)
+          near[static_cast<std::size_t>(j)] = true;
+      }
+    for (Index k = 0; k < data.coarse.hats(); ++k)
+      for (Eigen::SparseMatrix<double>::InnerIterator it(data.coarse.basis(), k); it; ++it)
+        if (near[static_cast<std::size_t>(it.row())]) {
+          selected.push_back(k);
+          break;
+        }
+  } else {
+    selected = every_hat(data.coarse);
+  }
+  if (solve_on_hats(in, options, data.coarse, selected, x, delta)) return;
+  if (x1.size() == x.size()) x = x1, delta = delta1;  // (else from zero, as it would have)
 }
 
 }  // namespace bemcontact::contact

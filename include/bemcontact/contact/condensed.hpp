@@ -42,27 +42,49 @@ class CondensedOperator : public operators::LinearOperator {
   virtual Matrix apply_columns(const Eigen::SparseMatrix<double>& X) const = 0;
 };
 
+// Hat functions over the pairs of each contact and M's images of them, each image formed
+// (one batched solve) when a caller first asks for it: the coarse space of the matrix-free
+// step solver's preconditioner and its start. With `tangential` (friction) the functions
+// are the hats on the normal dofs then on the tangential ones, function direction * hats +
+// hat, and an image is M's whole column (2N); otherwise the hats on the normal dofs and the
+// normal rows of their images (N). Images are kept in single precision (half the memory:
+// 1.6 GB in double at 20 001 frictional pairs): they make the preconditioner and the start,
+// a fixed matrix whatever its rounding, applied in double; the products of M are not rounded.
+class HatImages {
+ public:
+  HatImages() = default;
+  HatImages(std::shared_ptr<const CondensedOperator> M, Eigen::SparseMatrix<double> basis, bool tangential);
+  const Eigen::SparseMatrix<double>& basis() const { return basis_; }  // N x hats
+  Index hats() const { return basis_.cols(); }
+  bool tangential() const { return tangential_; }
+  // The images of these functions that are not formed yet, formed.
+  void form(const std::vector<Index>& functions) const;
+  const Eigen::VectorXf& image_of(Index function) const;  // formed
+  // The jump at `dof` of M times hat `hat` on the dofs of `direction` (0 normal, 1
+  // tangential; without the tangential space, normal dofs and direction only); formed.
+  double image(Index dof, Index hat, int direction) const;
+  Index formed() const;  // images formed so far
+
+ private:
+  std::shared_ptr<const CondensedOperator> M_;
+  Eigen::SparseMatrix<double> basis_;
+  bool tangential_ = false;
+  mutable std::vector<Eigen::VectorXf> images_;  // per function; empty until formed
+};
+
 // What the matrix-free step solver needs besides the product (matrix_free_step.cpp): the
-// coarse space of its two-level preconditioner and the scales of its fine level.
+// coarse space of its two-level preconditioner, a coarser one for the start of a history,
+// and the scales of its fine level.
 struct MatrixFreeCondensed {
   std::shared_ptr<const CondensedOperator> M;
   // Per pair, the integral of its shape function (its share of the zone): the fine level
   // scales a pair's residual by it.
   Vector weight;
-  Eigen::SparseMatrix<double> coarse_basis;  // N x nc: hat functions over the pairs of each contact
-  // Whether the coarse space has tangential functions (friction): then coarse_image is
-  // 2N x 2nc, M times the hats on the normal dofs then on the tangential ones; otherwise
-  // N x nc, the normal jumps of M times the hats on the normal dofs.
-  bool tangential = false;
-  // In single precision (half the memory: 1.6 GB in double at 20 001 frictional pairs): it
-  // makes the preconditioner and the start, a fixed matrix whatever its rounding, applied in
-  // double; the products of M are not rounded.
-  Eigen::MatrixXf coarse_image;
+  HatImages coarse;  // the preconditioner's hats (and the start's second stage)
+  HatImages start;   // 8 times coarser: the start's first stage, which finds where contact is
+  bool tangential = false;  // whether the hats have tangential functions (friction)
   // M's diagonal (2N), exact at a few pairs per contact and interpolated between them.
   Vector diagonal;
-  // The jump at `dof` of M times hat `hat` on the dofs of `direction` (0 normal, 1
-  // tangential; without the tangential space, normal dofs and direction only).
-  double image(Index dof, Index hat, int direction) const;
 };
 
 // The matrix-free solver's data for M (matrix_free_step.cpp): `weight` per pair, `groups`

@@ -162,6 +162,7 @@ struct ContactResult : ContactInterfaceResult {
   int steps_taken = 0;
   int rejected_steps = 0;
   bool matrix_free = false;  // the condensed operator was applied, not formed (SolverOptions::contact_operator)
+  long matrix_free_images = 0;  // then: M's images of coarse hat functions formed (one batched solve each)
   int rejected_jumps = 0;
   int steps_past_state_limit = 0;  // LoadHistory's
   int steps_at_shortest = 0;       // LoadHistory's

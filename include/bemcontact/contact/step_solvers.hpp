@@ -124,8 +124,9 @@ bool solve_matrix_free_system(const CondensedProblem& p, const NewtonSystem& sys
 // The matrix-free route's first iterate for a step without a previous one: the contact
 // problem on the coarse space of the preconditioner (its hat functions as pressures, the
 // gaps averaged over them, M_c = R M P dense: solve_step_newton on nc pairs, with friction
-// when the coarse space has tangential functions), prolonged.
-// x, delta unchanged when the coarse problem has no solution.
+// when the coarse space has tangential functions), prolonged. From 256 coarse hats in two
+// stages: first on hats 8 times coarser, then on the coarse hats near where that found
+// contact (only their images are formed). x, delta unchanged when no stage has a solution.
 void coarse_start(const StepInput& in, const SolverOptions& options, Vector& x, Vector& delta);
 
 struct StepInput {

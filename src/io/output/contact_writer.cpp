@@ -373,6 +373,7 @@ nlohmann::json contact_summary_json(const contact::ContactProblem& problem, cons
                     {"updated", result.newton_systems.updated},
                     {"reused", result.newton_systems.reused}}}};
   j["unknowns"] = result.unknowns;
+  if (result.matrix_free) j["matrix_free_images"] = result.matrix_free_images;
   // The closed form the plots draw next to the pressure (Hertz: p0 sqrt(1 - (r/a)^2)).
   if (const auto hertz = hertz_reference(problem))
     j["reference"] = {{"name", "hertz_sphere"}, {"R", hertz->R}, {"a", hertz->a}, {"p0", hertz->p0},
@@ -471,7 +472,8 @@ std::string contact_report_text(const contact::ContactProblem& problem, const co
                   s.kalker_iterations, s.threshold_iterations, s.gmres_cycles);
     out += line;
     if (result.matrix_free) {
-      std::snprintf(line, sizeof line, "  condensed operator applied matrix-free: %ld products\n", s.matrix_free_products);
+      std::snprintf(line, sizeof line, "  condensed operator applied matrix-free: %ld products, %ld coarse images\n",
+                    s.matrix_free_products, result.matrix_free_images);
       out += line;
     }
     if (result.steps_past_state_limit > 0) {
