@@ -88,7 +88,7 @@ class TwoLevel : public operators::LinearOperator {
     // The coarse functions (hat k, direction) that keep at least half their mass on free
     // unknowns (one cut to a sliver at the zone's edge would make J_c nearly singular), and a
     // normal function's mean slip factor over its pairs.
-    const int directions = data.tangential ? 2 : 1;
+    const int directions = data.coarse.tangential() ? 2 : 1;
     for (int direction = 0; direction < directions; ++direction)
       for (Index k = 0; k < nc; ++k) {
         double mass = 0.0, kept = 0.0, slip = 0.0;
@@ -367,7 +367,6 @@ MatrixFreeCondensed prepare_matrix_free(std::shared_ptr<const CondensedOperator>
                                         const std::vector<Index>& groups, bool tangential) {
   MatrixFreeCondensed data;
   const Index n = weight.size();
-  data.tangential = tangential;
   data.coarse = HatImages(M, hat_basis(n, groups, kCoarseSpacing), tangential);
   data.start = HatImages(M, hat_basis(n, groups, kStartSpacing), tangential);
   data.diagonal = sampled_diagonal(*M, weight, groups);
@@ -384,7 +383,7 @@ bool solve_matrix_free_system(const CondensedProblem& p, const NewtonSystem& sys
   const auto& free = system.free_dofs;
   const Index m = static_cast<Index>(free.size());
   for (const Index dof : free)
-    if (dof % 2 != 0 && !data.tangential)
+    if (dof % 2 != 0 && !data.coarse.tangential())
       throw std::logic_error("solve_matrix_free_system: a tangential unknown without the tangential coarse space");
   // The motions' columns b_F and rows f_F (the slipping tau folded in as in J).
   Matrix bF(m, K), fF(K, m);

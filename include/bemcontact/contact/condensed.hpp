@@ -82,7 +82,6 @@ struct MatrixFreeCondensed {
   Vector weight;
   HatImages coarse;  // the preconditioner's hats (and the start's second stage)
   HatImages start;   // 8 times coarser: the start's first stage, which finds where contact is
-  bool tangential = false;  // whether the hats have tangential functions (friction)
   // M's diagonal (2N), exact at a few pairs per contact and interpolated between them.
   Vector diagonal;
 };
