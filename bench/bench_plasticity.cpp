@@ -63,7 +63,8 @@ void BM_ElastoplasticTube(benchmark::State& state) {
 
 // The Brinell cycle of examples/brinell.toml (axisymmetric, rigid ball 0.06 in and out, 22
 // steps) at cell size range(0) / 1000 (the example: 160), on rectangles (range(1) = 0) or
-// crossed triangles (1), with range(2) elements on the contact zone (the example: 36):
+// crossed triangles (1), with range(2) elements on the contact zone (the example: 36), the
+// cells' operator dense (range(3) = 0) or compressed (1):
 // the contact history with the elastoplastic region (contact/plastic_coupling.hpp). The
 // issue's case: 2 182 crossed cells and 200 pairs (113, 1, 200).
 // Counters: cells, the cells' set-up and the steps' seconds (the run's phases), Newton
@@ -72,7 +73,9 @@ void BM_BrinellCycle(benchmark::State& state) {
   const double cell = static_cast<double>(state.range(0)) / 1000.0;
   auto file = io::read_contact_file(std::string(BEMCONTACT_EXAMPLES_DIR) + "/brinell.toml",
                                     {{"cell", cell}, {"n", static_cast<double>(state.range(2))}});
-  file.problem.bodies.front().regions.front().body.plasticity->cells.crossed = state.range(1) != 0;
+  auto& plasticity = *file.problem.bodies.front().regions.front().body.plasticity;
+  plasticity.cells.crossed = state.range(1) != 0;
+  plasticity.cell_operator = state.range(3) != 0 ? bem::OperatorKind::compressed : bem::OperatorKind::dense;
   double setup = 0.0, steps = 0.0;
   int iterations = 0;
   std::size_t cells = 0;
@@ -99,15 +102,19 @@ void BM_BrinellCycle(benchmark::State& state) {
 }  // namespace
 
 BENCHMARK(BM_BrinellCycle)
-    ->ArgNames({"cell_per_mille", "crossed", "n"})
-    ->Args({320, 0, 36})
-    ->Args({160, 0, 36})
-    ->Args({80, 0, 36})
-    ->Args({320, 1, 36})
-    ->Args({160, 1, 36})
-    ->Args({113, 1, 200})
-    ->Args({80, 1, 200})
-    ->Args({57, 1, 200})  // about 8 000 cells: 20 min, 5 GB (run it alone)
+    ->ArgNames({"cell_per_mille", "crossed", "n", "compressed"})
+    ->Args({320, 0, 36, 0})
+    ->Args({160, 0, 36, 0})
+    ->Args({80, 0, 36, 0})
+    ->Args({320, 1, 36, 0})
+    ->Args({160, 1, 36, 0})
+    ->Args({160, 1, 36, 1})
+    ->Args({113, 1, 200, 0})
+    ->Args({113, 1, 200, 1})
+    ->Args({80, 1, 200, 0})
+    ->Args({80, 1, 200, 1})
+    ->Args({57, 1, 200, 0})  // about 8 000 cells: 20 min, 5 GB (run it alone)
+    ->Args({57, 1, 200, 1})
     ->Unit(benchmark::kMillisecond)
     ->Iterations(1);
 BENCHMARK(BM_ElastoplasticTube)->Arg(4)->Arg(8)->Arg(16)->Arg(32)->Arg(64)->Unit(benchmark::kMillisecond)->Iterations(1);

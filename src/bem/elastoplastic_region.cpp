@@ -4,7 +4,10 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <cstdint>
+#include <mutex>
 #include <sstream>
+#include <unordered_map>
 
 #include "bemcontact/bem/assembly.hpp"
 #include "bemcontact/bem/boundary_system.hpp"
@@ -13,6 +16,7 @@
 #include "bemcontact/integration/plane_element.hpp"
 #include "bemcontact/plasticity/ring_initial_stress.hpp"
 #include "bemcontact/operators/dense_lu.hpp"
+#include "bemcontact/operators/hmatrix.hpp"
 
 namespace bemcontact::bem {
 
@@ -203,37 +207,73 @@ std::vector<CellImage> cell_and_images(const Cell& cell, const std::vector<geome
   return out;
 }
 
-// Adds the direct fields of the cells `sources` (and their images') to their columns of K:
-// C E averaged over cell c per unit initial stress of cell e. A cell far from cell e
-// (centroids more than kFarCells sizes apart) takes the field at its centroid for its mean:
-// the difference is of order (size / distance)^2 of a small term. Each row block by one
-// thread: deterministic for any thread count.
-void add_cell_fields(const CellKernels& kernels, const std::vector<Cell>& cells, const std::vector<MeanPoints>& means,
-                     const std::vector<geometry::ImageMap>& images, const std::vector<Index>& columns,
-                     std::vector<Matrix>& K) {
-  constexpr double kFarCells = 6.25;  // not a lattice distance of equal cells (12.5 sizes): no tie on a grid
-  const std::size_t m = cells.size();
-  const Index d = kernels.d;
-  std::vector<Vec2> centroid(m);
-  std::vector<double> size(m);
-  for (std::size_t e = 0; e < m; ++e) centroid[e] = cells[e].centroid(), size[e] = std::sqrt(std::abs(cells[e].area()));
-  std::vector<std::vector<CellImage>> sources;
-  for (const Index e : columns) sources.push_back(cell_and_images(cells[static_cast<std::size_t>(e)], images, kernels.d));
-#pragma omp parallel for schedule(dynamic, 1)
-  for (std::size_t c = 0; c < m; ++c) {
-    const auto& points = means[c];
-    for (std::size_t j = 0; j < columns.size(); ++j) {
-      const auto e = static_cast<std::size_t>(columns[j]);
-      auto block = K[e].middleRows(d * static_cast<Index>(c), d);
-      for (const auto& source : sources[j]) {
-        if ((source.cell.centroid() - centroid[c]).norm() > kFarCells * (size[c] + size[e])) {
-          block += kernels.stress(centroid[c], source.cell) * source.stress_map;
-          continue;
-        }
-        for (const auto& [x, weight] : points) block += weight * kernels.stress(x, source.cell) * source.stress_map;
-      }
+}  // namespace
+
+// The direct field of one cell (and its images) averaged over another: C E over cell c per
+// unit initial stress of cell e (d x d), K's part besides the boundary's (R V). For the dense
+// operator a cell far from cell e (centroids more than kFarCells sizes apart) takes the field
+// at its centroid for its mean: the difference is of order (size / distance)^2 of a small
+// term. The compressed operator (`smooth`) takes the mean everywhere: that switch is a jump
+// of about 1e-3 of the far blocks, which kept their ranks high (compression ratio 0.86 at
+// 1 039 cells against 0.49 without it). Pure: called from several threads at once.
+class CellFieldBlocks {
+ public:
+  CellFieldBlocks(const CellKernels& kernels, const std::vector<Cell>& cells, std::vector<MeanPoints> means,
+                  const std::vector<geometry::ImageMap>& images, bool smooth)
+      : kernels_(kernels), means_(std::move(means)), smooth_(smooth) {
+    for (const auto& cell : cells) {
+      sources_.push_back(cell_and_images(cell, images, kernels.d));
+      centroid_.push_back(cell.centroid());
+      size_.push_back(std::sqrt(std::abs(cell.area())));
     }
   }
+  Matrix block(std::size_t c, std::size_t e) const {
+    constexpr double kFarCells = 6.25;  // not a lattice distance of equal cells (12.5 sizes): no tie on a grid
+    Matrix out = Matrix::Zero(kernels_.d, kernels_.d);
+    for (const auto& source : sources_[e]) {
+      if (!smooth_ && (source.cell.centroid() - centroid_[c]).norm() > kFarCells * (size_[c] + size_[e])) {
+        out += kernels_.stress(centroid_[c], source.cell) * source.stress_map;
+        continue;
+      }
+      for (const auto& [x, weight] : means_[c]) out += weight * kernels_.stress(x, source.cell) * source.stress_map;
+    }
+    return out;
+  }
+  const std::vector<Vec2>& centroids() const { return centroid_; }
+
+ private:
+  CellKernels kernels_;
+  std::vector<MeanPoints> means_;
+  bool smooth_;
+  std::vector<std::vector<CellImage>> sources_;
+  std::vector<Vec2> centroid_;
+  std::vector<double> size_;
+};
+
+// The cells' direct fields: their blocks, and with the compressed cell operator
+// ([cells] operator = "compressed") D as a hierarchical matrix over all cells, for the
+// products K x = R (V x) + D x, and K's block on the cells that have yielded (`kept`, grown
+// as cells first yield: O(p^2), where the dense operator keeps their whole columns, O(m p)),
+// for the Newton system.
+struct ElastoplasticRegion::DirectFields {
+  explicit DirectFields(CellFieldBlocks b) : blocks(std::move(b)) {}
+  CellFieldBlocks blocks;
+  std::unique_ptr<operators::HMatrix> compressed;
+  std::vector<Index> kept;      // cells of the kept block, in the order they joined
+  std::vector<Index> position;  // each cell's place in `kept` (-1: not there)
+  Matrix block;                 // K on the kept cells' components
+};
+
+namespace {
+
+// Adds the direct fields of the cells `columns` to their columns of K. Each row block by
+// one thread: deterministic for any thread count.
+void add_cell_fields(const CellFieldBlocks& blocks, Index d, const std::vector<Index>& columns, std::vector<Matrix>& K) {
+  const std::size_t m = blocks.centroids().size();
+#pragma omp parallel for schedule(dynamic, 1)
+  for (std::size_t c = 0; c < m; ++c)
+    for (const Index e : columns)
+      K[static_cast<std::size_t>(e)].middleRows(d * static_cast<Index>(c), d) += blocks.block(c, static_cast<std::size_t>(e));
 }
 
 }  // namespace
@@ -330,17 +370,22 @@ ElastoplasticRegion::ElastoplasticRegion(const geometry::BoundaryMesh& mesh, con
   }
   for (Index j = 0; j < k2; ++j)  // the unit datum itself
     if (carries_datum(j)) values((is_displacement(j) ? 0 : 2 * n) + 2 * surface_of(j).node + j % 2, g + j) = 1.0;
-  mean_points_ = cell_mean_points(mesh_, cells_);
+  auto means = cell_mean_points(mesh_, cells_);
   // K = R V + the cells' direct fields, R Somigliana's rows at the cells' means and V the
   // boundary values per unit initial stress: only the columns of cells whose initial stress
   // is not zero are ever used (cell_fields_of, the Newton system's plastic columns), made
   // when a cell first yields (ensure_columns). The O(m^2) operator of the cells that stay
   // elastic is never made: its boundary part is kept as R and V, O(m n).
-  boundary_rows_ = mean_somigliana_rows(mesh_, kernels, mean_points_);
+  boundary_rows_ = mean_somigliana_rows(mesh_, kernels, means);
   load_stress_ = boundary_rows_ * values.leftCols(g);
   data_stress_ = boundary_rows_ * values.middleCols(g, k2);
   cell_values_ = values.rightCols(d * m);
-  cell_columns_.assign(static_cast<std::size_t>(m), Matrix());
+  const bool compress = body.plasticity && body.plasticity->cell_operator == OperatorKind::compressed;
+  direct_ = std::make_unique<DirectFields>(CellFieldBlocks(kernels, cells_, std::move(means), mesh_.images, compress));
+  if (compress)
+    compress_direct_fields(body.name);
+  else
+    cell_columns_.assign(static_cast<std::size_t>(m), Matrix());
   // The complementary value: traction at a displacement datum, a constraint's reaction.
   surface_response_.resize(k2, d * m);
   for (Index j = 0; j < k2; ++j)
@@ -398,24 +443,144 @@ struct ElastoplasticRegion::Evaluation {
   Index worst = 0;    // the cell where it is largest
 };
 
+// The cells' direct fields D as a hierarchical matrix: rows and columns at the cells'
+// centroids (d unknowns each), each block's entries from the cells' d x d blocks. Its
+// accuracy is that of the kernels' own quadrature (their far rules switch at steps of about
+// 1e-8 to 1e-6): 1e-10 kept ranks 1.5 times as high (compression ratio 0.20 against 0.14 at
+// 4 162 cells) for no accuracy the kernels have.
+void ElastoplasticRegion::compress_direct_fields(const std::string& name) {
+  constexpr double kCellAccuracy = 1e-8;
+  const Index d = components_, m = static_cast<Index>(cells_.size());
+  std::vector<Vec2> points;
+  for (const auto& centroid : direct_->blocks.centroids())
+    for (Index k = 0; k < d; ++k) points.push_back(centroid);
+  // hmat-oss asks for single rows and columns (ACA+), each entry of which is one of a d x d
+  // block, made whole by one kernel call: the blocks made are kept (up to kKeptBlocks, then
+  // forgotten all at once) for the rows and columns of the same cells that follow.
+  constexpr std::size_t kKeptBlocks = 1 << 16;
+  struct BlockMemo {
+    std::mutex mutex;
+    std::unordered_map<std::uint64_t, Matrix> blocks;
+  } memo;
+  const CellFieldBlocks& blocks = direct_->blocks;
+  const operators::BlockFunction entries = [&blocks, &memo, d, m](const std::vector<Index>& rows,
+                                                                  const std::vector<Index>& cols, double* out) {
+    // The distinct cells of the rows and columns.
+    const auto distinct = [d](const std::vector<Index>& unknowns, std::vector<Index>& slot) {
+      std::vector<Index> cells;
+      for (const Index u : unknowns) {
+        if (cells.empty() || cells.back() != u / d) cells.push_back(u / d);
+        slot.push_back(static_cast<Index>(cells.size()) - 1);
+      }
+      return cells;
+    };
+    std::vector<Index> row_slot, col_slot;
+    const auto row_cells = distinct(rows, row_slot), col_cells = distinct(cols, col_slot);
+    const auto pairs = static_cast<Index>(row_cells.size() * col_cells.size());
+    std::vector<Matrix> pair_blocks(static_cast<std::size_t>(pairs));
+    std::vector<Index> missing;
+    {
+      std::lock_guard<std::mutex> lock(memo.mutex);
+      for (Index k = 0; k < pairs; ++k) {
+        const auto key = static_cast<std::uint64_t>(row_cells[static_cast<std::size_t>(k) % row_cells.size()]) *
+                             static_cast<std::uint64_t>(m) +
+                         static_cast<std::uint64_t>(col_cells[static_cast<std::size_t>(k) / row_cells.size()]);
+        const auto found = memo.blocks.find(key);
+        if (found != memo.blocks.end()) pair_blocks[static_cast<std::size_t>(k)] = found->second;
+        else missing.push_back(k);
+      }
+    }
+#pragma omp parallel for schedule(dynamic, 4)
+    for (std::size_t j = 0; j < missing.size(); ++j) {
+      const auto k = static_cast<std::size_t>(missing[j]);
+      pair_blocks[k] = blocks.block(static_cast<std::size_t>(row_cells[k % row_cells.size()]),
+                                    static_cast<std::size_t>(col_cells[k / row_cells.size()]));
+    }
+    {
+      std::lock_guard<std::mutex> lock(memo.mutex);
+      if (memo.blocks.size() + missing.size() > kKeptBlocks) memo.blocks.clear();
+      for (const Index k : missing) {
+        const auto key = static_cast<std::uint64_t>(row_cells[static_cast<std::size_t>(k) % row_cells.size()]) *
+                             static_cast<std::uint64_t>(m) +
+                         static_cast<std::uint64_t>(col_cells[static_cast<std::size_t>(k) / row_cells.size()]);
+        memo.blocks.emplace(key, pair_blocks[static_cast<std::size_t>(k)]);
+      }
+    }
+    const auto R = static_cast<Index>(rows.size());
+    for (Index c = 0; c < static_cast<Index>(cols.size()); ++c)
+      for (Index r = 0; r < R; ++r) {
+        const auto k = static_cast<std::size_t>(row_slot[static_cast<std::size_t>(r)]) +
+                       row_cells.size() * static_cast<std::size_t>(col_slot[static_cast<std::size_t>(c)]);
+        out[r + c * R] = pair_blocks[k](rows[static_cast<std::size_t>(r)] % d, cols[static_cast<std::size_t>(c)] % d);
+      }
+  };
+  direct_->compressed = std::make_unique<operators::HMatrix>(points, points, entries, operators::HMatrixOptions{kCellAccuracy},
+                                                             "the cells' direct fields of body '" + name + "'");
+  direct_->position.assign(static_cast<std::size_t>(m), -1);
+}
+
+bool ElastoplasticRegion::compressed_cells() const { return direct_->compressed != nullptr; }
+
 void ElastoplasticRegion::ensure_columns(const std::vector<Index>& cells) const {
   const Index d = components_;
   std::vector<Index> missing;
   for (const Index e : cells)
-    if (cell_columns_[static_cast<std::size_t>(e)].size() == 0) missing.push_back(e);
+    if (compressed_cells() ? direct_->position[static_cast<std::size_t>(e)] < 0
+                           : cell_columns_[static_cast<std::size_t>(e)].size() == 0)
+      missing.push_back(e);
   if (missing.empty()) return;
-  // The boundary's part of all of them in one product (R times their columns of V).
-  Matrix V(cell_values_.rows(), d * static_cast<Index>(missing.size()));
-  for (std::size_t j = 0; j < missing.size(); ++j)
-    V.middleCols(d * static_cast<Index>(j), d) = cell_values_.middleCols(d * missing[j], d);
-  const Matrix RV = boundary_rows_ * V;
-  for (std::size_t j = 0; j < missing.size(); ++j)
-    cell_columns_[static_cast<std::size_t>(missing[j])] = RV.middleCols(d * static_cast<Index>(j), d);
-  add_cell_fields(CellKernels(type_, material_), cells_, mean_points_, mesh_.images, missing, cell_columns_);
+  if (!compressed_cells()) {
+    // The boundary's part of all of them in one product (R times their columns of V).
+    Matrix V(cell_values_.rows(), d * static_cast<Index>(missing.size()));
+    for (std::size_t j = 0; j < missing.size(); ++j)
+      V.middleCols(d * static_cast<Index>(j), d) = cell_values_.middleCols(d * missing[j], d);
+    const Matrix RV = boundary_rows_ * V;
+    for (std::size_t j = 0; j < missing.size(); ++j)
+      cell_columns_[static_cast<std::size_t>(missing[j])] = RV.middleCols(d * static_cast<Index>(j), d);
+    add_cell_fields(direct_->blocks, d, missing, cell_columns_);
+    return;
+  }
+  // The kept block grown by the missing cells' rows and columns: R_kept V_new and
+  // R_new V_old, plus the direct fields as the hierarchical matrix holds them (no kernel
+  // call: the Newton system then has the products' own D).
+  DirectFields& f = *direct_;
+  const auto old = static_cast<Index>(f.kept.size());
+  for (const Index e : missing) {
+    f.position[static_cast<std::size_t>(e)] = static_cast<Index>(f.kept.size());
+    f.kept.push_back(e);
+  }
+  const auto total = static_cast<Index>(f.kept.size());
+  Matrix R(d * total, boundary_rows_.cols()), V(cell_values_.rows(), d * total);
+  for (Index i = 0; i < total; ++i) {
+    const Index e = f.kept[static_cast<std::size_t>(i)];
+    R.middleRows(d * i, d) = boundary_rows_.middleRows(d * e, d);
+    V.middleCols(d * i, d) = cell_values_.middleCols(d * e, d);
+  }
+  Matrix grown(d * total, d * total);
+  grown.topLeftCorner(d * old, d * old) = f.block;
+  f.block = Matrix();
+  grown.rightCols(d * (total - old)).noalias() = R * V.rightCols(d * (total - old));
+  grown.bottomLeftCorner(d * (total - old), d * old).noalias() = R.bottomRows(d * (total - old)) * V.leftCols(d * old);
+  std::vector<Index> unknowns;  // of the kept cells, in their order
+  for (const Index e : f.kept)
+    for (Index k = 0; k < d; ++k) unknowns.push_back(d * e + k);
+  const std::vector<Index> old_unknowns(unknowns.begin(), unknowns.begin() + d * old),
+      new_unknowns(unknowns.begin() + d * old, unknowns.end());
+  grown.rightCols(d * (total - old)) += f.compressed->entries(unknowns, new_unknowns);
+  grown.bottomLeftCorner(d * (total - old), d * old) += f.compressed->entries(new_unknowns, old_unknowns);
+  f.block = std::move(grown);
+}
+
+Eigen::Ref<const Matrix> ElastoplasticRegion::operator_block(Index c, Index e) const {
+  const Index d = components_;
+  if (!compressed_cells()) return cell_columns_[static_cast<std::size_t>(e)].middleRows(d * c, d);
+  const auto& f = *direct_;
+  return f.block.block(d * f.position[static_cast<std::size_t>(c)], d * f.position[static_cast<std::size_t>(e)], d, d);
 }
 
 Matrix ElastoplasticRegion::cell_operator() const {
   const Index d = components_, m = static_cast<Index>(cells_.size());
+  if (compressed_cells()) return boundary_rows_ * cell_values_ + direct_->compressed->apply(Matrix::Identity(d * m, d * m));
   std::vector<Index> all(cells_.size());
   for (std::size_t e = 0; e < all.size(); ++e) all[e] = static_cast<Index>(e);
   ensure_columns(all);
@@ -429,6 +594,13 @@ Vector ElastoplasticRegion::cell_fields_of(const Vector& sigma0) const {
   std::vector<Index> sources;
   for (Index e = 0; e < static_cast<Index>(cells_.size()); ++e)
     if (!sigma0.segment(d * e, d).isZero(0.0)) sources.push_back(e);
+  if (compressed_cells()) {  // R (V sigma0) + D sigma0
+    Vector values = Vector::Zero(cell_values_.rows());
+    for (const Index e : sources) values.noalias() += cell_values_.middleCols(d * e, d) * sigma0.segment(d * e, d);
+    Vector out = boundary_rows_ * values;
+    if (!sources.empty()) out += direct_->compressed->apply(sigma0).col(0);
+    return out;
+  }
   ensure_columns(sources);
   Vector out = Vector::Zero(d * static_cast<Index>(cells_.size()));
   for (const Index e : sources) out.noalias() += cell_columns_[static_cast<std::size_t>(e)] * sigma0.segment(d * e, d);
@@ -605,8 +777,7 @@ bool ElastoplasticIncrement::linearise(std::string& failure) {
   for (Index j = 0; j < p; ++j) {
     const Index e = s.plastic[static_cast<std::size_t>(j)];
     for (Index i = 0; i < p; ++i)
-      J.block(d * i, d * j, d, d) =
-          region.cell_columns_[static_cast<std::size_t>(e)].middleRows(d * s.plastic[static_cast<std::size_t>(i)], d);
+      J.block(d * i, d * j, d, d) = region.operator_block(s.plastic[static_cast<std::size_t>(i)], e);
     J.middleCols(d * j, d) = J.middleCols(d * j, d) * s.slopes[static_cast<std::size_t>(j)];
   }
   for (Index i = 0; i < p; ++i) J.middleRows(d * i, d) = -s.compliance * J.middleRows(d * i, d);
@@ -677,10 +848,10 @@ void ElastoplasticIncrement::step(const Vector& next) {
   }
   // dE_Q = r_Q - (J - I)_QP dE_P = r_Q + C^-1 (K_QP S_P dE_P): one product over the
   // plastic cells' columns.
-  Vector moved = Vector::Zero(s.m * d);
+  Vector sources = Vector::Zero(s.m * d);
   for (std::size_t j = 0; j < s.plastic.size(); ++j)
-    moved.noalias() += region.cell_columns_[static_cast<std::size_t>(s.plastic[j])] *
-                       (s.slopes[j] * s.step_plastic.segment(d * static_cast<Index>(j), d));
+    sources.segment(d * s.plastic[j], d) = s.slopes[j] * s.step_plastic.segment(d * static_cast<Index>(j), d);
+  const Vector moved = region.cell_fields_of(sources);
   Matrix step = s.rhs;
   for (Index c = 0; c < s.m; ++c) step.middleRows(d * c, d) += s.compliance * moved.segment(d * c, d);
   for (std::size_t i = 0; i < s.plastic.size(); ++i)

@@ -127,7 +127,8 @@ ElastoplasticHistory elastoplastic_history(const ContactProblem& model) {
     throw InputError(plasticity.where, "an elastoplastic region " + what +
                                            " is not in the model yet (docs/plasticity.md, Limits)");
   };
-  if (model.operator_choice.kind == bem::OperatorKind::compressed) refuse("on compressed operators (dense only)");
+  if (model.operator_choice.kind == bem::OperatorKind::compressed) refuse("on compressed boundary operators (its boundary system is dense; its cells are compressed by [cells] "
+           "operator = \"compressed\")");
 
   ElastoplasticHistory history;
   static_cast<bem::ProblemHeader&>(history.problem) = model;

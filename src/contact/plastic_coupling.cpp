@@ -37,7 +37,8 @@ PlasticCoupling::PlasticCoupling(const ContactProblem& problem, const ContactMod
     region.region = r;
     region.cells = bem::region_cells_of(prepared.mesh, body, problem.analysis, memory_limit_bytes, used_bytes);
     used_bytes += bem::elastoplastic_region_bytes(static_cast<Index>(region.cells.size()), prepared.mesh.node_count(),
-                                                  problem.analysis);
+                                                  problem.analysis,
+                                                  body.plasticity->cell_operator == bem::OperatorKind::compressed);
     region.plastic = std::make_unique<bem::ElastoplasticRegion>(prepared.mesh, body, problem.analysis,
                                                                  body.plasticity->hardening, region.cells,
                                                                  model.region(r).variable_nodes(), model.pins(r));
@@ -47,8 +48,8 @@ PlasticCoupling::PlasticCoupling(const ContactProblem& problem, const ContactMod
   clock.lap("elastoplastic set-up");
   if (problem.operator_choice.kind == bem::OperatorKind::compressed)
     warnings_.push_back("[solver] operator = \"compressed\" serves the regions' elastic systems; the cells of the "
-                        "elastoplastic regions and their incremental systems stay dense (compressed domain operators "
-                        "are not built yet: docs/plasticity.md, Limits)");
+                        "elastoplastic regions follow their [cells] operator (dense unless set), and their incremental "
+                        "systems stay dense (docs/plasticity.md, Cost)");
 }
 
 std::vector<int> PlasticCoupling::regions() const {

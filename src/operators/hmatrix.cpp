@@ -251,6 +251,25 @@ Matrix HMatrix::apply(const Matrix& x) const {
   return out;
 }
 
+Matrix HMatrix::entries(const std::vector<Index>& rows, const std::vector<Index>& cols) const {
+  if (factorized_) throw Error("HMatrix: entries after factorisation");
+  Matrix out(static_cast<Index>(rows.size()), static_cast<Index>(cols.size()));
+  if (rows.empty() || cols.empty()) return out;
+  // hmat-oss numbers the query from 1 (its "natural" numbering: the caller's plus one).
+  std::vector<int> row_query(rows.size()), col_query(cols.size());
+  for (std::size_t r = 0; r < rows.size(); ++r) row_query[r] = static_cast<int>(rows[r]) + 1;
+  for (std::size_t c = 0; c < cols.size(); ++c) col_query[c] = static_cast<int>(cols[c]) + 1;
+  hmat_get_values_context_t context{};
+  context.matrix = handle_->matrix;
+  context.values = out.data();
+  context.row_size = static_cast<int>(rows.size());
+  context.col_size = static_cast<int>(cols.size());
+  context.row_indices = row_query.data();
+  context.col_indices = col_query.data();
+  if (hmat_interface().get_values(&context) != 0) throw SolverError("hmat-oss failed to read entries of " + what_);
+  return out;
+}
+
 void HMatrix::factorize(bool keep_transposed, const FractionCallback& progress) {
   if (rows_ != cols_) throw Error("HMatrix: factorisation of a rectangular matrix");
   hmat_interface_t& hi = hmat_interface();

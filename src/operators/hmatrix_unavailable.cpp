@@ -19,6 +19,7 @@ HMatrix::~HMatrix() = default;
 HMatrix::HMatrix(HMatrix&&) noexcept = default;
 HMatrix& HMatrix::operator=(HMatrix&&) noexcept = default;
 Matrix HMatrix::apply(const Matrix&) const { return {}; }
+Matrix HMatrix::entries(const std::vector<Index>&, const std::vector<Index>&) const { return {}; }
 void HMatrix::factorize(bool, const FractionCallback&) {}
 void HMatrix::solve_in_place(Matrix&) const {}
 void HMatrix::solve_transposed_in_place(Matrix&) const {}

@@ -53,11 +53,12 @@ std::vector<StressTensor> elastoplastic_boundary_stresses(const geometry::Bounda
                                                           const std::vector<plasticity::Cell>& cells,
                                                           const std::vector<plasticity::J2State>& states);
 
-// The dense matrices' bytes of an elastoplastic region of `cells` cells and `nodes` nodes:
-// the cell operator, the boundary's [b | B] and its solution, Somigliana's means, and the
-// Newton system at worst (every cell plastic); 3 components per cell in plane problems, 4 in
-// axisymmetry.
-double elastoplastic_region_bytes(Index cells, Index nodes, AnalysisType type);
+// The matrices' bytes of an elastoplastic region of `cells` cells and `nodes` nodes: the
+// boundary's [b | B] and its solution, Somigliana's means, and the cell operator and Newton
+// system: dense, at worst (every cell plastic); compressed ([cells] operator), the
+// hierarchical matrix and the plastic block of a quarter of the cells. 3 components per cell
+// in plane problems, 4 in axisymmetry.
+double elastoplastic_region_bytes(Index cells, Index nodes, AnalysisType type, bool compressed_cells = false);
 
 // The record of a step that has just ended in `region`: its report, the yielded cells and
 // the largest equivalent plastic strain, each boundary's resultant and mean displacement;

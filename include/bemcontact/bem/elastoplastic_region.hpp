@@ -137,6 +137,7 @@ class ElastoplasticIncrement {
 
 class ElastoplasticRegion {
  public:
+  // The cells' operator follows body.plasticity's cell_operator (dense without it).
   // Throws Error for a bad hardening (the reader checks it first), SolverError for a
   // singular system. `surface_nodes` carry data set from outside, in place of the body's
   // own conditions there: tractions (a contact) or displacements (a bond, a platen);
@@ -158,6 +159,8 @@ class ElastoplasticRegion {
   void restore(const ElastoplasticState& state);
 
   const std::vector<plasticity::Cell>& cells() const { return cells_; }
+  // True when the cells' direct fields are a hierarchical matrix (DirectFields).
+  bool compressed_cells() const;
   // C E averaged over each cell per unit initial stress component of each cell, at zero
   // load (the cell-to-cell operator K; components_ rows and columns per cell), made whole
   // (tests: the run makes only the columns of cells that yield).
@@ -176,8 +179,12 @@ class ElastoplasticRegion {
   Vector initial_stresses() const;  // of every cell, from the committed plastic strains
   // K sigma0, over the cells whose initial stress is not zero.
   Vector cell_fields_of(const Vector& sigma0) const;
-  // The columns of K of these cells (R V and their direct fields), if not made yet.
+  // K's blocks on these cells, if not made yet: dense, their columns (R V and their direct
+  // fields); compressed, their rows and columns of the block of the cells kept so far.
   void ensure_columns(const std::vector<Index>& cells) const;
+  // K's d x d block of cell c's rows, cell e's columns (both made by ensure_columns).
+  Eigen::Ref<const Matrix> operator_block(Index c, Index e) const;
+  void compress_direct_fields(const std::string& name);
   // The committed initial stresses of an increment and their fields K sigma0.
   struct CommittedFields {
     Vector sigma0, field;
@@ -206,8 +213,9 @@ class ElastoplasticRegion {
   // fields, its columns made when first needed (a cache: filled by const members).
   Matrix boundary_rows_;  // R: Somigliana's rows of C E at the cells' mean points, per nodal (u, t)
   Matrix cell_values_;    // V: the nodal (u, t) per unit initial stress of each cell
-  mutable std::vector<Matrix> cell_columns_;  // per cell: its columns of K (empty until used)
-  std::vector<std::vector<std::pair<Vec2, double>>> mean_points_;  // each cell's (point, weight)
+  mutable std::vector<Matrix> cell_columns_;  // dense: per cell, its columns of K (empty until used)
+  struct DirectFields;
+  mutable std::unique_ptr<DirectFields> direct_;
   // G: the surface nodes' complementary values (displacement at a traction datum, traction at
   // a displacement datum) per unit initial stress
   Matrix surface_response_;

@@ -46,6 +46,9 @@ struct PointConstraint {
   SourceLocation where;
 };
 
+// Dense matrices and LU, or hierarchical matrices and H-LU (bem/compressed_system.hpp).
+enum class OperatorKind { automatic, dense, compressed };
+
 // An elastoplastic region (docs/plasticity.md): the J2 material's yield stress and
 // hardening ([material] yield_stress, hardening, kinematic_hardening) and the cells that
 // cover where it may yield ([cells]).
@@ -57,6 +60,9 @@ struct RegionPlasticity {
   // The boundary's elements given end points where the cells' vertices lie on it
   // (body_conforming_to_cells in bem/elastoplastic_analysis.hpp); false: the mesh as given.
   bool nodes_at_cells = true;
+  // The cells' operator ([cells] operator): dense, or compressed (a hierarchical matrix of
+  // their direct fields: bem/elastoplastic_region.hpp).
+  OperatorKind cell_operator = OperatorKind::dense;
 };
 
 struct BodyDefinition {
@@ -75,8 +81,6 @@ struct InteriorPoint {
   std::array<int, 2> grid_index = {-1, -1};  // column, row in its [interior] grid (-1: listed)
 };
 
-// Dense matrices and LU, or hierarchical matrices and H-LU (bem/compressed_system.hpp).
-enum class OperatorKind { automatic, dense, compressed };
 struct OperatorChoice {
   OperatorKind kind = OperatorKind::automatic;
   // Relative accuracy of the compressed blocks and of the H-LU; 0: automatic

@@ -47,6 +47,9 @@ class HMatrix {
   Index cols() const { return cols_; }
   // y = A x (columns of x are separate vectors); before factorize() only.
   Matrix apply(const Matrix& x) const;
+  // The entries A(rows[r], cols[c]) as the compressed blocks hold them (a rank-k block's in
+  // k operations each); before factorize() only.
+  Matrix entries(const std::vector<Index>& rows, const std::vector<Index>& cols) const;
 
   // H-LU in place (square only). keep_transposed also factors A^T, for
   // solve_transposed_in_place (twice the memory). Throws SolverError when a pivot

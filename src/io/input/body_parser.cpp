@@ -13,6 +13,7 @@
 #include "bemcontact/io/input/problem_schema.hpp"
 #include "bemcontact/io/input/suggestions.hpp"
 #include "bemcontact/io/text_format.hpp"
+#include "bemcontact/operators/hmatrix.hpp"
 
 namespace bemcontact::io {
 
@@ -589,6 +590,12 @@ std::optional<bem::RegionPlasticity> read_plasticity(const TableReader& body, co
   options.size = cells.number("size");
   options.crossed = cells.optional_string("shape").value_or("rectangles") == "crossed";
   plasticity.nodes_at_cells = cells.boolean_or("nodes_at_cells", true);
+  plasticity.cell_operator = cells.optional_string("operator").value_or("dense") == "compressed"
+                                 ? bem::OperatorKind::compressed
+                                 : bem::OperatorKind::dense;
+  if (plasticity.cell_operator == bem::OperatorKind::compressed && !operators::hmatrix_available())
+    cells.fail("operator", "\"compressed\" needs hmat-oss, which this build was made without (install "
+                           "libhmat-oss-dev and build with BEMCONTACT_WITH_HMAT=ON), or use \"dense\"");
   if (cells.has("box")) {
     const auto corners = read_point_list(cells, "box", 2, "[[x0, y0], [x1, y1]] (lower-left, upper-right)");
     if (!(corners[1].x() > corners[0].x() && corners[1].y() > corners[0].y()))
