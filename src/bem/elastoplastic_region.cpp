@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <limits>
 #include <cstdint>
+#include <limits>
 #include <mutex>
 #include <sstream>
 #include <unordered_map>
@@ -478,14 +478,16 @@ void ElastoplasticRegion::compress_direct_fields(const std::string& name) {
     const auto row_cells = distinct(rows, row_slot), col_cells = distinct(cols, col_slot);
     const auto pairs = static_cast<Index>(row_cells.size() * col_cells.size());
     std::vector<Matrix> pair_blocks(static_cast<std::size_t>(pairs));
+    const auto key_of = [&](Index k) {  // pair k: row cell k % rows, column cell k / rows
+      const auto u = static_cast<std::size_t>(k);
+      return static_cast<std::uint64_t>(row_cells[u % row_cells.size()]) * static_cast<std::uint64_t>(m) +
+             static_cast<std::uint64_t>(col_cells[u / row_cells.size()]);
+    };
     std::vector<Index> missing;
     {
       std::lock_guard<std::mutex> lock(memo.mutex);
       for (Index k = 0; k < pairs; ++k) {
-        const auto key = static_cast<std::uint64_t>(row_cells[static_cast<std::size_t>(k) % row_cells.size()]) *
-                             static_cast<std::uint64_t>(m) +
-                         static_cast<std::uint64_t>(col_cells[static_cast<std::size_t>(k) / row_cells.size()]);
-        const auto found = memo.blocks.find(key);
+        const auto found = memo.blocks.find(key_of(k));
         if (found != memo.blocks.end()) pair_blocks[static_cast<std::size_t>(k)] = found->second;
         else missing.push_back(k);
       }
@@ -500,10 +502,7 @@ void ElastoplasticRegion::compress_direct_fields(const std::string& name) {
       std::lock_guard<std::mutex> lock(memo.mutex);
       if (memo.blocks.size() + missing.size() > kKeptBlocks) memo.blocks.clear();
       for (const Index k : missing) {
-        const auto key = static_cast<std::uint64_t>(row_cells[static_cast<std::size_t>(k) % row_cells.size()]) *
-                             static_cast<std::uint64_t>(m) +
-                         static_cast<std::uint64_t>(col_cells[static_cast<std::size_t>(k) / row_cells.size()]);
-        memo.blocks.emplace(key, pair_blocks[static_cast<std::size_t>(k)]);
+        memo.blocks.emplace(key_of(k), pair_blocks[static_cast<std::size_t>(k)]);
       }
     }
     const auto R = static_cast<Index>(rows.size());
