@@ -178,10 +178,13 @@ void DenseLU::solve_transposed_in_place(Matrix& rhs) const {
 void DenseLU::solve_columns(char transpose, Matrix& rhs) const {
   use_single_threaded_blas();
   const Index n = factors_.rows(), columns = rhs.cols();
-  // Blocks of at most 16 columns, at least two blocks from two columns (a Newton update's
-  // few right-hand sides share the threads): a function of the column count alone.
-  const Index block = std::clamp<Index>((columns + 1) / 2, 1, 16);
-  const Index blocks = (columns + block - 1) / block;
+  // Equal blocks of at most kBlock columns, at least two blocks from two columns (a Newton
+  // update's few right-hand sides share the threads): a function of the column count alone.
+  // Below about 64 columns a block's triangular solves are bound by reading the factors
+  // (n = 6 000, 410 columns, 2 threads: 0.65 s in blocks of 16, 0.31 s in blocks of 103).
+  constexpr Index kBlock = 128;
+  const Index blocks = std::max<Index>(std::min<Index>(columns, 2), (columns + kBlock - 1) / kBlock);
+  const Index block = (columns + blocks - 1) / blocks;
 #pragma omp parallel for schedule(dynamic, 1) if (blocks > 1 && n >= 200)
   for (Index b = 0; b < blocks; ++b) {
     const Index first = b * block, count = std::min(block, columns - first);
