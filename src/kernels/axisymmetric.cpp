@@ -206,9 +206,11 @@ RingKernels ring_kernel_log_parts(const KelvinAxisymmetric& kelvin, const Vec2& 
 // (e_i.e_Y) n_Y = n_r sin^2 (i = r); mixed rY, zY components integrate to zero.
 namespace {
 
-// D always, S when asked (it needs the ring integrals one order higher).
+// D always, S when asked (it needs the ring integrals one order higher). A template
+// parameter: the cells' fields take D alone, by the million.
+template <bool with_s>
 RingStressKernels stress_kernels(const KelvinAxisymmetric& kelvin, const Vec2& source, const Vec2& field,
-                                 const Vec2& normal, bool with_s) {
+                                 const Vec2& normal) {
   const RingPair g(source, field);
   const RingWeights W = weights(g, with_s ? 3 : 2);
   const RingFactors f(g, normal);
@@ -235,7 +237,7 @@ RingStressKernels stress_kernels(const KelvinAxisymmetric& kelvin, const Vec2& s
       const Poly<2> dadb = da * db;
       out.D[i][component] =
           cd * ((1.0 - 2.0 * nu) * W.at<1>(dja * db + djb * da - dab * dj) + 3.0 * W.at<2>(dj * dadb));
-      if (!with_s) continue;
+      if constexpr (!with_s) continue;
       const Linear& na = f.n_source[a];
       const Linear& nb = f.n_source[b];
       out.S[i][component] =
@@ -251,7 +253,7 @@ RingStressKernels stress_kernels(const KelvinAxisymmetric& kelvin, const Vec2& s
     const Poly<2> ejY_nY = (i == 0 ? normal.x() : 0.0) * sin_squared;
     out.D[i][stress_tt] =
         cd * ((1.0 - 2.0 * nu) * W.at<1>(2.0 * ejY_dY - dj) + 3.0 * W.at<2>(dj * dY_dY));
-    if (!with_s) continue;
+    if constexpr (!with_s) continue;
     out.S[i][stress_tt] =
         cs * (3.0 * W.at<2>(dn * ((1.0 - 2.0 * nu) * dj + 2.0 * nu * ejY_dY)) -
               15.0 * W.at<3>(dn * dY_dY * dj) + 6.0 * nu * W.at<2>(nY_dY * dj) +
@@ -265,11 +267,11 @@ RingStressKernels stress_kernels(const KelvinAxisymmetric& kelvin, const Vec2& s
 
 RingStressKernels ring_stress_kernels(const KelvinAxisymmetric& kelvin, const Vec2& source, const Vec2& field,
                                       const Vec2& normal) {
-  return stress_kernels(kelvin, source, field, normal, true);
+  return stress_kernels<true>(kelvin, source, field, normal);
 }
 
 RingStressKernel ring_stress_from_traction(const KelvinAxisymmetric& kelvin, const Vec2& source, const Vec2& field) {
-  return stress_kernels(kelvin, source, field, Vec2(1.0, 0.0), false).D;
+  return stress_kernels<false>(kelvin, source, field, Vec2(1.0, 0.0)).D;
 }
 
 }  // namespace bemcontact::kernels

@@ -178,6 +178,7 @@ void DenseLU::solve_transposed_in_place(Matrix& rhs) const {
 void DenseLU::solve_columns(char transpose, Matrix& rhs) const {
   use_single_threaded_blas();
   const Index n = factors_.rows(), columns = rhs.cols();
+  if (columns == 0) return;
   // Equal blocks of at most kBlock columns, at least two blocks from two columns (a Newton
   // update's few right-hand sides share the threads): a function of the column count alone.
   // Below about 64 columns a block's triangular solves are bound by reading the factors

@@ -23,6 +23,13 @@ constexpr double kNearCells = 1.25;
 // pairs of cells are that far apart, and the area term was 3/4 of their cost.
 constexpr double kDistantCells = 4.0;
 constexpr int kDistantPoints = 4;
+// Beyond kRemoteCells sizes, kRemotePoints: the same order of error as kDistantPoints at
+// kDistantCells ((1/16)^6 against (1/8)^8 of the area term), and most of the yielding
+// cells' columns are that far (the cells near the contact are the small ones). Two points
+// even at 30-50 sizes left 1e-6 to 7e-6 of the cell's field (its terms cancel to a
+// dipole): not taken.
+constexpr double kRemoteCells = 8.0;
+constexpr int kRemotePoints = 3;
 
 // The traction sigma0 n per unit component (rr, zz, rz, tt) on an edge of outward normal n.
 Matrix24 ring_traction_of_components(const Vec2& n) {
@@ -76,7 +83,8 @@ void for_each_area_point(const Cell& cell, const Vec2& x, Add&& add) {
     return;
   }
   static const std::vector<double> whole{0.0, 1.0};
-  const int points = (cell.centroid() - x).norm() > kDistantCells * size ? kDistantPoints : kFarPoints;
+  const double distance = (cell.centroid() - x).norm() / size;
+  const int points = distance > kRemoteCells ? kRemotePoints : distance > kDistantCells ? kDistantPoints : kFarPoints;
   for (const auto& [a, b, c] : cell.triangles()) for_each_triangle_point(a, b, c, whole, points, points, add);
 }
 
