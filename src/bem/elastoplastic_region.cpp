@@ -655,6 +655,65 @@ ElastoplasticRegion::Evaluation ElastoplasticRegion::evaluate(const Vector& E, c
   return out;
 }
 
+namespace {
+
+// The plastic cells' slopes S_e = d sigma0 / d E as P_e Q_e^T of their ranks r_e (by their
+// singular values; below 1e-12 of the largest or 1e-14 |C|, dropped). J2 leaves a
+// volumetric strain elastic, so in axisymmetry (d = 4) r_e = 3; in plane strain and
+// plane stress r_e = d.
+struct SlopeFactors {
+  std::vector<Matrix> P, Q;
+  std::vector<Index> offset;  // of each plastic cell's reduced unknowns; back(): their count
+};
+
+SlopeFactors factor_slopes(const std::vector<Matrix>& slopes, const std::vector<Index>& plastic,
+                           const Matrix& compliance) {
+  const double stiffness = compliance.inverse().norm();
+  SlopeFactors out;
+  out.offset.assign(plastic.size() + 1, 0);
+  for (std::size_t k = 0; k < plastic.size(); ++k) {
+    const Eigen::JacobiSVD<Matrix> svd(slopes[static_cast<std::size_t>(plastic[k])],
+                                       Eigen::ComputeFullU | Eigen::ComputeFullV);
+    const Vector& sigma = svd.singularValues();
+    const double floor = std::max(1e-12 * sigma[0], 1e-14 * stiffness);
+    Index rank = 0;
+    while (rank < sigma.size() && sigma[rank] > floor) ++rank;
+    out.P.push_back(svd.matrixU().leftCols(rank) * sigma.head(rank).asDiagonal());
+    out.Q.push_back(svd.matrixV().leftCols(rank));
+    out.offset[k + 1] = out.offset[k] + rank;
+  }
+  return out;
+}
+
+// I - Q^T C^-1 K_PP P, K_PP's d x d blocks from block(i, j) (plastic cells i, j), in
+// panels of columns: C^-1 K_PP P_j first, then Q_i^T times the panel's rows.
+template <class Block>
+Matrix reduced_newton_matrix(const SlopeFactors& factors, const Matrix& compliance, Block&& block) {
+  constexpr Index kPanelCells = 64;
+  const Index p = static_cast<Index>(factors.P.size()), d = compliance.rows(), reduced = factors.offset.back();
+  std::vector<Matrix> W;  // Q_i^T C^-1
+  for (const Matrix& Q : factors.Q) W.push_back(Q.transpose() * compliance);
+  Matrix J = Matrix::Identity(reduced, reduced);
+  for (Index j0 = 0; j0 < p; j0 += kPanelCells) {
+    const Index j1 = std::min(p, j0 + kPanelCells);
+    const Index first = factors.offset[static_cast<std::size_t>(j0)];
+    const Index columns = factors.offset[static_cast<std::size_t>(j1)] - first;
+    Matrix panel(d * p, columns);
+    for (Index j = j0; j < j1; ++j) {
+      const Matrix& P = factors.P[static_cast<std::size_t>(j)];
+      for (Index i = 0; i < p; ++i)
+        panel.block(d * i, factors.offset[static_cast<std::size_t>(j)] - first, d, P.cols()).noalias() = block(i, j) * P;
+    }
+    for (Index i = 0; i < p; ++i) {
+      const auto k = static_cast<std::size_t>(i);
+      J.block(factors.offset[k], first, W[k].rows(), columns).noalias() -= W[k] * panel.middleRows(d * i, d);
+    }
+  }
+  return J;
+}
+
+}  // namespace
+
 // Newton from the elastic predictor, with a backtracking line search on |F| (the radial
 // return's kinks make full steps cycle near the elastic-plastic boundary). With a contact,
 // each iteration solves it on the linearised plastic response (Newton's step in the
@@ -767,47 +826,16 @@ bool ElastoplasticIncrement::linearise(std::string& failure) {
     if (!s.current.slope[static_cast<std::size_t>(e)].isZero(0.0)) s.plastic.push_back(e);
   const Index p = static_cast<Index>(s.plastic.size());
   region.ensure_columns(s.plastic);
-  // Each slope as S_e = P_e Q_e^T of its rank r_e: J2 leaves a volumetric strain elastic,
-  // so in axisymmetry (d = 4) r_e = 3. With y = Q^T dE_P, J_PP dE_P = r_P is
-  // (I - Q^T C^-1 K_PP P) y = Q^T r_P, of size sum r_e (3/4 of d p: 0.42 of the LU's
-  // flops), and S_P dE_P = P y is all the step needs.
-  const double stiffness = (s.compliance.inverse()).norm();
-  std::vector<Matrix> P(static_cast<std::size_t>(p)), Q(static_cast<std::size_t>(p));
-  std::vector<Index> offset(static_cast<std::size_t>(p) + 1, 0);
-  for (Index j = 0; j < p; ++j) {
-    const auto k = static_cast<std::size_t>(j);
-    const Eigen::JacobiSVD<Matrix> svd(s.current.slope[static_cast<std::size_t>(s.plastic[k])],
-                                       Eigen::ComputeFullU | Eigen::ComputeFullV);
-    const Vector& sigma = svd.singularValues();
-    const double floor = std::max(1e-12 * sigma[0], 1e-14 * stiffness);
-    Index rank = 0;
-    while (rank < d && sigma[rank] > floor) ++rank;
-    P[k] = svd.matrixU().leftCols(rank) * sigma.head(rank).asDiagonal();
-    Q[k] = svd.matrixV().leftCols(rank);
-    offset[k + 1] = offset[k] + rank;
-  }
+  // With S_P = P Q^T and y = Q^T dE_P, J_PP dE_P = r_P is (I - Q^T C^-1 K_PP P) y = Q^T r_P:
+  // sum r_e unknowns (3/4 of d p in axisymmetry, 0.42 of the LU's flops), and S_P dE_P = P y
+  // is all the step needs.
+  const SlopeFactors factors = factor_slopes(s.current.slope, s.plastic, s.compliance);
+  const std::vector<Matrix>&P = factors.P, &Q = factors.Q;
+  const std::vector<Index>& offset = factors.offset;
   const Index reduced = offset.back();
-  // The reduced matrix in panels of columns: C^-1 K_PP P_j, then Q_i^T times its rows.
-  constexpr Index kPanelCells = 64;
-  Matrix J = Matrix::Identity(reduced, reduced);
-  std::vector<Matrix> W(static_cast<std::size_t>(p));  // Q_i^T C^-1
-  for (Index i = 0; i < p; ++i) W[static_cast<std::size_t>(i)] = Q[static_cast<std::size_t>(i)].transpose() * s.compliance;
-  for (Index j0 = 0; j0 < p; j0 += kPanelCells) {
-    const Index j1 = std::min(p, j0 + kPanelCells);
-    const Index first = offset[static_cast<std::size_t>(j0)], columns = offset[static_cast<std::size_t>(j1)] - first;
-    Matrix panel(d * p, columns);
-    for (Index j = j0; j < j1; ++j) {
-      const auto k = static_cast<std::size_t>(j);
-      const Index e = s.plastic[k];
-      for (Index i = 0; i < p; ++i)
-        panel.block(d * i, offset[k] - first, d, P[k].cols()).noalias() =
-            region.operator_block(s.plastic[static_cast<std::size_t>(i)], e) * P[k];
-    }
-    for (Index i = 0; i < p; ++i) {
-      const auto k = static_cast<std::size_t>(i);
-      J.block(offset[k], first, W[k].rows(), columns).noalias() -= W[k] * panel.middleRows(d * i, d);
-    }
-  }
+  Matrix J = reduced_newton_matrix(factors, s.compliance, [&](Index i, Index j) {
+    return region.operator_block(s.plastic[static_cast<std::size_t>(i)], s.plastic[static_cast<std::size_t>(j)]);
+  });
   const Index surface = s.in_contact ? region.surface_dofs_ : 0;
   Matrix reduced_rhs(reduced, 1 + surface);  // Q^T [-F | C^-1 H] on the plastic rows
   for (Index i = 0; i < p; ++i) {
@@ -834,7 +862,8 @@ bool ElastoplasticIncrement::linearise(std::string& failure) {
     // The cells' complementary values at the surface as the step moves the data from t to t':
     // G (sigma0 + S dE_P(t')), S dE_P(t') = S dE_P(t) + SZ (t' - t).
     Matrix G(surface, d * p);
-    for (Index j = 0; j < p; ++j) G.middleCols(d * j, d) = region.surface_response_.middleCols(d * s.plastic[static_cast<std::size_t>(j)], d);
+    for (Index j = 0; j < p; ++j)
+      G.middleCols(d * j, d) = region.surface_response_.middleCols(d * s.plastic[static_cast<std::size_t>(j)], d);
     s.SZ = sources.rightCols(surface);
     s.F = G * s.SZ;
     s.u0 = region.surface_response_ * s.current.sigma0 + G * (s.source_step - s.SZ * s.data);
