@@ -269,8 +269,8 @@ std::vector<Table> build_tables() {
                        "crossed: each rectangle cut by its diagonals into four triangles (docs/plasticity.md, Cells)"),
                 choice("operator", {"dense", "compressed"}, "dense",
                        "the cells' operator: dense (the yielding cells' whole columns) or compressed (a hierarchical "
-                       "matrix of the cells' direct fields, hmat-oss: less memory and faster increments from about 8 000 "
-                       "cells, but a costly set-up: slower in all up to about 15 000; docs/plasticity.md, Cost)"),
+                       "matrix of the cells' direct fields, hmat-oss: less memory and faster increments at 8 000 cells, "
+                       "but a costly set-up: slower in all up to about 15 000; docs/plasticity.md, Cost)"),
                 of(Type::boolean, "nodes_at_cells", "true",
                    "the boundary's elements get end points where the cells' vertices lie on it, so that a collapse "
                    "mechanism leaves no stress (docs/plasticity.md, Cells); false keeps the mesh as given")}});
