@@ -194,7 +194,7 @@ BENCHMARK(BM_ShearedCylinder)
     ->Args({20000, 0})
     ->Unit(benchmark::kMillisecond)
     ->Iterations(1);
-BENCHMARK(BM_FrettingCycle)->Arg(60)->Arg(120)->Arg(240)->Arg(480)->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(BM_FrettingCycle)->Arg(60)->Arg(120)->Arg(240)->Arg(480)->Arg(960)->Arg(1920)->Arg(3999)->Unit(benchmark::kMillisecond)->Iterations(1);
 
 BENCHMARK(BM_HertzSphere)
     ->ArgsProduct({{30, 120, 480}, {0, 1}, {0, 1}})

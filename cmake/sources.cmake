@@ -28,7 +28,8 @@ set(BEMCONTACT_OPERATORS_SOURCES
   src/operators/dense_lu.cpp
   src/operators/dense_subspaces.cpp
   src/operators/gmres.cpp
-  src/operators/hmatrix.cpp)  # or hmatrix_unavailable.cpp without hmat-oss (CMakeLists.txt)
+  src/operators/hmatrix.cpp  # or hmatrix_unavailable.cpp without hmat-oss (CMakeLists.txt)
+  src/operators/row_partitioned_hmatrix.cpp)
 set(BEMCONTACT_REFERENCE_SOURCES
   src/reference/cantilever.cpp
   src/reference/circular_inclusion.cpp

@@ -127,9 +127,9 @@ void CompressedBoundarySystem::factorize(bool keep_transposed, const ProgressCal
   phase.finish();
 }
 
-operators::HMatrix CompressedBoundarySystem::assemble_influence(const operators::HMatrixOptions& options,
-                                                                const std::string& what,
-                                                                const ProgressCallback& progress) {
+operators::RowPartitionedHMatrix CompressedBoundarySystem::assemble_influence(const operators::HMatrixOptions& options,
+                                                                              const std::string& what,
+                                                                              const ProgressCallback& progress) {
   const Index n = mesh_.node_count();
   for (const auto& element : mesh_.elements)
     for (int a = 0; a < element.node_count; ++a) node_scale_[element.nodes[a]] += element.length;
@@ -162,7 +162,7 @@ operators::HMatrix CompressedBoundarySystem::assemble_influence(const operators:
     }
   };
   PhaseProgress phase(progress, "assembly of H and G");
-  operators::HMatrix influence(row_points, col_points, entries, options, what, phase.fractions());
+  operators::RowPartitionedHMatrix influence(row_points, col_points, entries, options, what, phase.fractions());
   phase.finish();
   return influence;
 }

@@ -16,7 +16,7 @@
 #include "bemcontact/integration/plane_element.hpp"
 #include "bemcontact/plasticity/ring_initial_stress.hpp"
 #include "bemcontact/operators/dense_lu.hpp"
-#include "bemcontact/operators/hmatrix.hpp"
+#include "bemcontact/operators/row_partitioned_hmatrix.hpp"
 
 namespace bemcontact::bem {
 
@@ -258,7 +258,7 @@ class CellFieldBlocks {
 struct ElastoplasticRegion::DirectFields {
   explicit DirectFields(CellFieldBlocks b) : blocks(std::move(b)) {}
   CellFieldBlocks blocks;
-  std::unique_ptr<operators::HMatrix> compressed;
+  std::unique_ptr<operators::RowPartitionedHMatrix> compressed;
   std::vector<Index> kept;      // cells of the kept block, in the order they joined
   std::vector<Index> position;  // each cell's place in `kept` (-1: not there)
   Matrix block;                 // K on the kept cells' components
@@ -456,7 +456,8 @@ void ElastoplasticRegion::compress_direct_fields(const std::string& name) {
     for (Index k = 0; k < d; ++k) points.push_back(centroid);
   // hmat-oss asks for single rows and columns (ACA+), each entry of which is one of a d x d
   // block, made whole by one kernel call: the blocks made are kept (up to kKeptBlocks, then
-  // forgotten all at once) for the rows and columns of the same cells that follow.
+  // forgotten all at once) for the rows and columns of the same cells that follow. The
+  // row pieces assemble on separate threads and share them (the blocks are pure).
   constexpr std::size_t kKeptBlocks = 1 << 16;
   struct BlockMemo {
     std::mutex mutex;
@@ -513,7 +514,7 @@ void ElastoplasticRegion::compress_direct_fields(const std::string& name) {
         out[r + c * R] = pair_blocks[k](rows[static_cast<std::size_t>(r)] % d, cols[static_cast<std::size_t>(c)] % d);
       }
   };
-  direct_->compressed = std::make_unique<operators::HMatrix>(points, points, entries, operators::HMatrixOptions{kCellAccuracy},
+  direct_->compressed = std::make_unique<operators::RowPartitionedHMatrix>(points, points, entries, operators::HMatrixOptions{kCellAccuracy},
                                                              "the cells' direct fields of body '" + name + "'");
   direct_->position.assign(static_cast<std::size_t>(m), -1);
 }

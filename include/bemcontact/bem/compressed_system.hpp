@@ -17,6 +17,7 @@
 #include "bemcontact/bem/progress.hpp"
 #include "bemcontact/operators/factorization.hpp"
 #include "bemcontact/operators/hmatrix.hpp"
+#include "bemcontact/operators/row_partitioned_hmatrix.hpp"
 
 namespace bemcontact::bem {
 
@@ -101,13 +102,13 @@ class CompressedBoundarySystem : public operators::Factorization {
   std::vector<ConstraintEquation> constraints_;
   AnalysisType type_;
   InfluenceBlocks blocks_;
-  operators::HMatrix influence_;  // [H' | G]
+  operators::RowPartitionedHMatrix influence_;  // [H' | G]: applied only, so in row pieces
   std::vector<Mat2> diagonal_;    // H_ii
   operators::HMatrix system_;     // A
   Vector rhs_;
 
-  operators::HMatrix assemble_influence(const operators::HMatrixOptions& options, const std::string& what,
-                                        const ProgressCallback& progress);
+  operators::RowPartitionedHMatrix assemble_influence(const operators::HMatrixOptions& options, const std::string& what,
+                                                      const ProgressCallback& progress);
   std::vector<Mat2> diagonal_blocks(const operators::HMatrixOptions& options, const std::string& what,
                                     const ProgressCallback& progress) const;
   Vector radial_traction_integral(const operators::HMatrixOptions& options, const std::string& what,
