@@ -57,9 +57,10 @@ double relative_difference(const bem::BoundarySolution& a, const bem::BoundarySo
 }  // namespace
 
 // The compressed [H' | G] and A act on vectors as the dense H, G and A do, to about the
-// accuracy asked (ACA+ stops when its next cross is below it, relative to the block).
+// accuracy asked (ACA+ stops when its next cross is below it, relative to the block). 600
+// nodes: [H' | G]'s 1 200 rows are assembled in row pieces (operators/row_partitioned_hmatrix.hpp).
 TEST(CompressedSystem, OperatorsMatchTheDenseMatrices) {
-  auto problem = strip(40);
+  auto problem = strip(60);
   const auto mesh = bem::mesh_body(problem);
   const auto conditions = bem::resolve_node_conditions(mesh, problem.body, problem.analysis);
   const auto constraints = bem::resolve_point_constraints(mesh, problem.body, conditions);
