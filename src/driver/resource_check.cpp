@@ -85,7 +85,8 @@ double n_log_n(std::int64_t unknowns) {
 // linear and quadratic, a thick ring, a cantilever; axisymmetric thick spheres, linear and
 // quadratic: docs/problem-file.md, Limits), all within 1.3 times the time and 1.05 times
 // the peak memory measured. hmat-oss assembles and factors block after block on one
-// thread, so the time does not divide by the threads. The time grows as N log2(N)^2:
+// thread, so the time does not divide by the threads (fitted before [H' | G] was
+// assembled in row pieces on separate threads: an upper bound on two). The time grows as N log2(N)^2:
 // per unit of it, 0.85 us and twice the kernel's time per node pair (pair_seconds times
 // elements per node) for the two assemblies ([H' | G] and A), and 0.47 us for the H-LU,
 // twice over when A^T is factored too (`transposed`: a one-body solve whose point
