@@ -31,6 +31,13 @@ std::vector<Index> unique_nodes(std::vector<Index> nodes) {
   return nodes;
 }
 
+// The component of unknown i (x, y, x, y, ...), for HMatrixOptions.
+std::vector<int> alternating_components(Index count) {
+  std::vector<int> out(static_cast<std::size_t>(count));
+  for (Index i = 0; i < count; ++i) out[static_cast<std::size_t>(i)] = static_cast<int>(i % 2);
+  return out;
+}
+
 }  // namespace
 
 InfluenceBlocks::InfluenceBlocks(const geometry::BoundaryMesh& mesh, const ElementIntegrator& integrator)
@@ -161,8 +168,10 @@ operators::RowPartitionedHMatrix CompressedBoundarySystem::assemble_influence(co
         out[r + static_cast<Index>(c) * m] = scale * source(2 * row_index.find(rows[r] / 2) + rows[r] % 2, lc);
     }
   };
+  operators::HMatrixOptions by_component = options;  // the rows by component (HMatrixOptions)
+  by_component.row_component = alternating_components(2 * n);
   PhaseProgress phase(progress, "assembly of H and G");
-  operators::RowPartitionedHMatrix influence(row_points, col_points, entries, options, what, phase.fractions());
+  operators::RowPartitionedHMatrix influence(row_points, col_points, entries, by_component, what, phase.fractions());
   phase.finish();
   return influence;
 }
@@ -215,8 +224,10 @@ Vector CompressedBoundarySystem::radial_traction_integral(const operators::HMatr
         out[r + static_cast<Index>(c) * m] =
             values(2 * row_index.find(rows[r] / 2) + rows[r] % 2, static_cast<Index>(c)) / lengths(cols[c], 0);
   };
+  operators::HMatrixOptions by_component = options;  // the rows by component (HMatrixOptions)
+  by_component.row_component = alternating_components(2 * n);
   PhaseProgress phase(progress, "diagonal blocks");
-  const operators::HMatrix integrals(row_points, col_points, entries, options,
+  const operators::HMatrix integrals(row_points, col_points, entries, by_component,
                                      "the radial expansion's traction integrals of " + what, phase.fractions());
   Vector integral = integrals.apply(lengths).col(0);
   phase.finish();
@@ -289,8 +300,12 @@ operators::HMatrix CompressedBoundarySystem::assemble_system(const operators::HM
       }
     }
   };
+  // The nodes' rows by component, the constraints' rows with the first.
+  operators::HMatrixOptions by_component = options;
+  by_component.row_component = alternating_components(dofs + extra);
+  for (Index q = 0; q < extra; ++q) by_component.row_component[static_cast<std::size_t>(dofs + q)] = 0;
   PhaseProgress phase(progress, "system assembly");
-  operators::HMatrix system(points, points, entries, options, what, phase.fractions());
+  operators::HMatrix system(points, points, entries, by_component, what, phase.fractions());
   phase.finish();
   return system;
 }

@@ -514,7 +514,10 @@ void ElastoplasticRegion::compress_direct_fields(const std::string& name) {
         out[r + c * R] = pair_blocks[k](rows[static_cast<std::size_t>(r)] % d, cols[static_cast<std::size_t>(c)] % d);
       }
   };
-  direct_->compressed = std::make_unique<operators::RowPartitionedHMatrix>(points, points, entries, operators::HMatrixOptions{kCellAccuracy},
+  auto options = operators::HMatrixOptions::with_accuracy(kCellAccuracy);  // the d components' rows apart (HMatrixOptions)
+  options.row_component.resize(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) options.row_component[i] = static_cast<int>(i % static_cast<std::size_t>(d));
+  direct_->compressed = std::make_unique<operators::RowPartitionedHMatrix>(points, points, entries, options,
                                                              "the cells' direct fields of body '" + name + "'");
   direct_->position.assign(static_cast<std::size_t>(m), -1);
 }

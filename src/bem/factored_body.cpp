@@ -24,7 +24,7 @@ struct FactoredBody::Compressed {
              const OperatorChoice& choice, const std::string& what, const ProgressCallback& progress)
       : mesh(m),
         integrator(type, material),
-        system(mesh, integrator, conditions, constraints, operators::HMatrixOptions{compression_accuracy(choice, m)}, what, progress) {}
+        system(mesh, integrator, conditions, constraints, operators::HMatrixOptions::with_accuracy(compression_accuracy(choice, m)), what, progress) {}
 };
 
 FactoredBody::FactoredBody(FactoredBody&&) noexcept = default;

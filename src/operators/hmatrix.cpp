@@ -2,13 +2,21 @@
 
 #include <hmat/hmat.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <exception>
 #include <mutex>
+#include <numeric>
+#include <unordered_map>
+#include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "bemcontact/core/error.hpp"
+#include "bemcontact/operators/dense_lu.hpp"
+#include "bemcontact/operators/dense_lu.hpp"
 
 namespace bemcontact::operators {
 
@@ -29,6 +37,10 @@ namespace {
 // global too, so they are set under a lock just before a cluster tree is built.
 hmat_interface_t& hmat_interface() {
   static hmat_interface_t* instance = [] {
+    // hmat-oss calls BLAS on small blocks from one thread: OpenBLAS's own threads only
+    // spin there (35 % of a 4 001-pair rigid cylinder's samples in sched_yield, 9.6 s
+    // against 6.2 s), so BLAS runs on one thread, as the command sets it at its start.
+    use_single_threaded_blas();
     auto* i = new hmat_interface_t;  // never finalized: other matrices may still live
     hmat_init_default_interface(i, HMAT_DOUBLE_PRECISION);
     if (i->init() != 0) throw Error("hmat-oss failed to initialise");
@@ -59,6 +71,12 @@ struct DeferredError {
 // The data of one assembly, shared by the prepare, compute and release callbacks.
 struct AssemblyContext {
   const BlockFunction* entries = nullptr;
+  // The rows' components (HMatrixOptions::row_component; null: one), their count (the
+  // strata), and the row and column points (a node's unknowns share one).
+  const std::vector<int>* row_component = nullptr;
+  int row_components = 1;
+  const std::vector<Vec2>* row_points = nullptr;
+  const std::vector<Vec2>* col_points = nullptr;
   DeferredError error;
   // Progress: hmat-oss assembles leaf by leaf (release_block ends each one). A leaf's time
   // lies between a constant (small dense blocks near the diagonal) and its area (the
@@ -70,10 +88,54 @@ struct AssemblyContext {
   std::atomic<std::uint64_t> leaves_done{0}, area_done{0};
 };
 
-struct BlockData {
-  AssemblyContext* context;
-  std::vector<Index> rows, cols;  // caller's numbering of the block's rows and columns
+// The unknowns of a block that share a point (the components of a node), as groups of
+// block-local indices: group g is order[start[g] .. start[g + 1]).
+struct PointGroups {
+  std::vector<int> order, start, group_of;
+  PointGroups() = default;
+  PointGroups(const std::vector<Index>& unknowns, const std::vector<Vec2>& points) {
+    const int n = static_cast<int>(unknowns.size());
+    order.resize(static_cast<std::size_t>(n));
+    std::iota(order.begin(), order.end(), 0);
+    const auto at = [&](int k) -> const Vec2& {
+      return points[static_cast<std::size_t>(unknowns[static_cast<std::size_t>(k)])];
+    };
+    std::sort(order.begin(), order.end(), [&](int a, int b) {
+      const Vec2 &p = at(a), &q = at(b);
+      return p.x() != q.x() ? p.x() < q.x() : p.y() != q.y() ? p.y() < q.y() : a < b;
+    });
+    group_of.resize(static_cast<std::size_t>(n));
+    for (int k = 0; k < n; ++k) {
+      if (k == 0 || at(order[static_cast<std::size_t>(k)]) != at(order[static_cast<std::size_t>(k - 1)]))
+        start.push_back(k);
+      group_of[static_cast<std::size_t>(order[static_cast<std::size_t>(k)])] = static_cast<int>(start.size()) - 1;
+    }
+    start.push_back(n);
+  }
+  std::vector<int> members(int local) const {
+    const auto g = static_cast<std::size_t>(group_of[static_cast<std::size_t>(local)]);
+    return {order.begin() + start[g], order.begin() + start[g + 1]};
+  }
 };
+
+struct BlockData {
+  AssemblyContext* context = nullptr;
+  std::vector<Index> rows, cols;  // caller's numbering of the block's rows and columns
+  // With strata: the point groups, and the whole rows and columns computed so far. Each
+  // stratum's ACA+ asks for its own rows and columns, but a node's kernel block gives all
+  // its components at once: they are kept for the strata to come.
+  PointGroups row_groups, col_groups;
+  std::unordered_map<int, std::vector<double>> row_cache, col_cache;
+};
+
+int row_component_of(const BlockData& block, int row) {
+  const auto* labels = block.context->row_component;
+  return labels ? (*labels)[static_cast<std::size_t>(block.rows[static_cast<std::size_t>(row)])] : 0;
+}
+// Stratum s holds the rows of component s.
+char null_row_in_stratum(const hmat_block_info_t* info, int row, int stratum) {
+  return row_component_of(*static_cast<const BlockData*>(info->user_data), row) != stratum ? 1 : 0;
+}
 
 void release_block(void* data) {
   auto* block = static_cast<BlockData*>(data);
@@ -93,7 +155,8 @@ void release_block(void* data) {
 void prepare_block(int row_start, int row_count, int col_start, int col_count, int* row_hmat2client,
                    int* /*row_client2hmat*/, int* col_hmat2client, int* /*col_client2hmat*/, void* context,
                    hmat_block_info_t* info) {
-  auto* data = new BlockData{static_cast<AssemblyContext*>(context), {}, {}};
+  auto* data = new BlockData;
+  data->context = static_cast<AssemblyContext*>(context);
   data->rows.resize(row_count);
   data->cols.resize(col_count);
   for (int r = 0; r < row_count; ++r) data->rows[r] = row_hmat2client[row_start + r];
@@ -101,23 +164,83 @@ void prepare_block(int row_start, int row_count, int col_start, int col_count, i
   info->user_data = data;
   info->release_user_data = release_block;
   info->block_type = hmat_block_full;
+  const AssemblyContext& assembly = *data->context;
+  if (assembly.row_components > 1) {
+    info->number_of_strata = assembly.row_components;
+    info->is_guaranteed_null_row = null_row_in_stratum;
+    data->row_groups = PointGroups(data->rows, *assembly.row_points);
+    data->col_groups = PointGroups(data->cols, *assembly.col_points);
+  }
 }
 
-void compute_block(void* v_data, int row_start, int row_count, int col_start, int col_count, void* block) {
-  auto* data = static_cast<BlockData*>(v_data);
-  double* out = static_cast<double*>(block);
-  const std::vector<Index> rows(data->rows.begin() + row_start, data->rows.begin() + row_start + row_count);
-  const std::vector<Index> cols(data->cols.begin() + col_start, data->cols.begin() + col_start + col_count);
-  if (!data->context->error.failed) {
-    try {
+// The whole row (along_rows) or column k of a block, with those of the other unknowns at its
+// point, computed once and kept.
+const std::vector<double>& whole_line(BlockData& data, bool along_rows, int k) {
+  auto& cache = along_rows ? data.row_cache : data.col_cache;
+  if (const auto found = cache.find(k); found != cache.end()) return found->second;
+  const std::vector<int> mates = (along_rows ? data.row_groups : data.col_groups).members(k);
+  std::vector<Index> lines(mates.size());
+  for (std::size_t i = 0; i < mates.size(); ++i)
+    lines[i] = (along_rows ? data.rows : data.cols)[static_cast<std::size_t>(mates[i])];
+  const std::vector<Index>& across = along_rows ? data.cols : data.rows;
+  const std::size_t m = mates.size(), n = across.size();
+  std::vector<double> values(m * n);
+  if (along_rows)
+    (*data.context->entries)(lines, across, values.data());  // m x n, column-major
+  else
+    (*data.context->entries)(across, lines, values.data());  // n x m
+  for (std::size_t i = 0; i < m; ++i) {
+    std::vector<double> line(n);
+    for (std::size_t j = 0; j < n; ++j) line[j] = along_rows ? values[i + j * m] : values[j + i * n];
+    cache[mates[i]] = std::move(line);
+  }
+  return cache[k];
+}
+
+// The entries of rows x cols of a block (hmat-oss's numbering within it) in one stratum (the
+// rows of one component; -1: all), zero in the other rows.
+void compute_block(hmat_block_compute_context_t* request) {
+  auto* data = static_cast<BlockData*>(request->user_data);
+  double* out = static_cast<double*>(request->block);
+  const int row_count = request->row_count, col_count = request->col_count, stratum = request->stratum;
+  std::fill(out, out + static_cast<std::size_t>(row_count) * col_count, 0.0);
+  // After a failure the remaining blocks stay zeros, so that the assembly ends fast.
+  if (data->context->error.failed) return;
+  const auto in_stratum = [&](int r) { return stratum < 0 || row_component_of(*data, r) == stratum; };
+  try {
+    if (stratum >= 0 && row_count == 1 && col_count == static_cast<int>(data->cols.size())) {  // ACA+'s row
+      if (!in_stratum(request->row_start)) return;
+      const std::vector<double>& line = whole_line(*data, true, request->row_start);
+      std::copy(line.begin(), line.end(), out);
+      return;
+    }
+    if (stratum >= 0 && col_count == 1 && row_count == static_cast<int>(data->rows.size())) {  // ACA+'s column
+      const std::vector<double>& line = whole_line(*data, false, request->col_start);
+      for (int r = 0; r < row_count; ++r)
+        if (in_stratum(r)) out[r] = line[static_cast<std::size_t>(r)];
+      return;
+    }
+    std::vector<int> row_at;  // the request's rows in the stratum
+    for (int r = 0; r < row_count; ++r)
+      if (in_stratum(request->row_start + r)) row_at.push_back(r);
+    if (row_at.empty()) return;
+    std::vector<Index> rows(row_at.size()), cols(static_cast<std::size_t>(col_count));
+    for (std::size_t r = 0; r < row_at.size(); ++r)
+      rows[r] = data->rows[static_cast<std::size_t>(request->row_start + row_at[r])];
+    for (int c = 0; c < col_count; ++c) cols[static_cast<std::size_t>(c)] = data->cols[static_cast<std::size_t>(request->col_start + c)];
+    if (row_at.size() == static_cast<std::size_t>(row_count)) {
       (*data->context->entries)(rows, cols, out);
       return;
-    } catch (...) {
-      data->context->error.keep_current();
     }
+    std::vector<double> part(rows.size() * cols.size());
+    (*data->context->entries)(rows, cols, part.data());
+    for (std::size_t c = 0; c < cols.size(); ++c)
+      for (std::size_t r = 0; r < rows.size(); ++r)
+        out[static_cast<std::size_t>(row_at[r]) + c * static_cast<std::size_t>(row_count)] = part[r + c * rows.size()];
+  } catch (...) {
+    data->context->error.keep_current();
+    std::fill(out, out + static_cast<std::size_t>(row_count) * col_count, 0.0);
   }
-  // After a failure the remaining blocks are zeros, so that the assembly ends fast.
-  std::fill(out, out + static_cast<std::size_t>(row_count) * col_count, 0.0);
 }
 
 void build_tree(ClusterTree& out, const std::vector<Vec2>& points) {
@@ -212,6 +335,15 @@ HMatrix::HMatrix(const std::vector<Vec2>& row_points, const std::vector<Vec2>& c
 
   AssemblyContext context;
   context.entries = &entries;
+  if (!options.row_component.empty()) {
+    if (static_cast<Index>(options.row_component.size()) != rows_) throw std::logic_error("HMatrix: a component per row");
+    if (*std::min_element(options.row_component.begin(), options.row_component.end()) < 0)
+      throw std::logic_error("HMatrix: a negative component");
+    context.row_component = &options.row_component;
+    context.row_components = *std::max_element(options.row_component.begin(), options.row_component.end()) + 1;
+  }
+  context.row_points = &row_points;
+  context.col_points = &col_points;
   if (progress) {
     hmat_info_t structure;  // of the empty matrix: its leaves
     hi.get_info(handle_->matrix, &structure);
@@ -224,7 +356,7 @@ HMatrix::HMatrix(const std::vector<Vec2>& row_points, const std::vector<Vec2>& c
   hmat_assemble_context_init(&assemble);
   assemble.user_context = &context;
   assemble.prepare = prepare_block;
-  assemble.block_compute = compute_block;
+  assemble.advanced_compute = compute_block;
   assemble.compression = hmat_create_compression_aca_plus(options.accuracy);
   assemble.lower_symmetric = 0;
   assemble.factorization = hmat_factorization_none;

@@ -4,6 +4,7 @@
 #include <atomic>
 #include <exception>
 #include <numeric>
+#include <stdexcept>
 
 #include <omp.h>
 
@@ -44,6 +45,8 @@ RowPartitionedHMatrix::RowPartitionedHMatrix(const std::vector<Vec2>& row_points
                                              const HMatrixOptions& options, const std::string& what,
                                              const FractionCallback& progress)
     : rows_(static_cast<Index>(row_points.size())), cols_(static_cast<Index>(col_points.size())) {
+  if (!options.row_component.empty() && static_cast<Index>(options.row_component.size()) != rows_)
+    throw std::logic_error("RowPartitionedHMatrix: a component per row");
   const auto split = split_rows_by_position(row_points, rows_ < kSmallestSplit ? 1 : kRowPieces);
   const auto count = static_cast<int>(split.size());
   piece_of_.assign(static_cast<std::size_t>(rows_), 0);
@@ -89,9 +92,14 @@ RowPartitionedHMatrix::RowPartitionedHMatrix(const std::vector<Vec2>& row_points
             mean += done[static_cast<std::size_t>(q)] * static_cast<double>(split[static_cast<std::size_t>(q)].size());
           progress(mean / static_cast<double>(rows_));
         };
+      HMatrixOptions piece_options = options;  // the piece's rows' components
+      if (!options.row_component.empty()) {
+        piece_options.row_component.clear();
+        for (const Index r : rows) piece_options.row_component.push_back(options.row_component[static_cast<std::size_t>(r)]);
+      }
       const std::string piece_name = count == 1 ? what : what + " (rows " + std::to_string(p + 1) + " of " + std::to_string(count) + ")";
       pieces_[static_cast<std::size_t>(p)] =
-          std::make_unique<Piece>(Piece{rows, HMatrix(points, col_points, piece_entries, options, piece_name, report)});
+          std::make_unique<Piece>(Piece{rows, HMatrix(points, col_points, piece_entries, piece_options, piece_name, report)});
     } catch (const Stopped&) {
     } catch (...) {
       errors[static_cast<std::size_t>(p)] = std::current_exception();

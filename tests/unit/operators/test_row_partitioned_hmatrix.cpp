@@ -114,10 +114,10 @@ TEST(RowPartitionedHMatrix, ResultsDoNotDependOnTheThreadCount) {
   const int threads = omp_get_max_threads();
   Matrix x = Matrix::Ones(static_cast<Index>(problem.cols.size()), 1);
   omp_set_num_threads(1);
-  const RowPartitionedHMatrix one(problem.rows, problem.cols, problem.entries(), HMatrixOptions{1e-6}, "one thread");
+  const RowPartitionedHMatrix one(problem.rows, problem.cols, problem.entries(), HMatrixOptions::with_accuracy(1e-6), "one thread");
   const Matrix y_one = one.apply(x);
   omp_set_num_threads(2);
-  const RowPartitionedHMatrix two(problem.rows, problem.cols, problem.entries(), HMatrixOptions{1e-6}, "two threads");
+  const RowPartitionedHMatrix two(problem.rows, problem.cols, problem.entries(), HMatrixOptions::with_accuracy(1e-6), "two threads");
   const Matrix y_two = two.apply(x), y_one_on_two = one.apply(x);
   omp_set_num_threads(threads);
   EXPECT_EQ(one.stored_values(), two.stored_values());
@@ -135,7 +135,7 @@ TEST(RowPartitionedHMatrix, ProgressOnTheCallingThreadAndErrorsRethrown) {
   const auto caller = std::this_thread::get_id();
   std::vector<double> heard;
   bool elsewhere = false;
-  const RowPartitionedHMatrix H(problem.rows, problem.cols, problem.entries(), HMatrixOptions{1e-6}, "with progress",
+  const RowPartitionedHMatrix H(problem.rows, problem.cols, problem.entries(), HMatrixOptions::with_accuracy(1e-6), "with progress",
                                 [&](double f) {
                                   elsewhere = elsewhere || std::this_thread::get_id() != caller;
                                   heard.push_back(f);
@@ -153,7 +153,7 @@ TEST(RowPartitionedHMatrix, ProgressOnTheCallingThreadAndErrorsRethrown) {
     entries(r, c, out);
   };
   try {
-    const RowPartitionedHMatrix bad(problem.rows, problem.cols, failing, HMatrixOptions{1e-6}, "failing");
+    const RowPartitionedHMatrix bad(problem.rows, problem.cols, failing, HMatrixOptions::with_accuracy(1e-6), "failing");
     ADD_FAILURE() << "no error";
   } catch (const std::runtime_error& e) {
     EXPECT_STREQ(e.what(), "no entries at the first node");
