@@ -158,14 +158,16 @@ operators::RowPartitionedHMatrix CompressedBoundarySystem::assemble_influence(co
     blocks_.evaluate(row_nodes, col_nodes, H, G);
     const NodeIndex row_index(row_nodes), col_index(col_nodes);
     const Index m = static_cast<Index>(rows.size());
+    std::vector<Index> local_row(rows.size());  // each row's place in H and G, found once
+    for (std::size_t r = 0; r < rows.size(); ++r) local_row[r] = 2 * row_index.find(rows[r] / 2) + rows[r] % 2;
     for (std::size_t c = 0; c < cols.size(); ++c) {
       const Index dof = cols[c] % (2 * n);
       const bool g_column = cols[c] >= 2 * n;
       const Matrix& source = g_column ? G : H;
       const double scale = (g_column ? traction_scale_ : 1.0) * node_scale_[dof / 2];
       const Index lc = 2 * col_index.find(dof / 2) + dof % 2;
-      for (Index r = 0; r < m; ++r)
-        out[r + static_cast<Index>(c) * m] = scale * source(2 * row_index.find(rows[r] / 2) + rows[r] % 2, lc);
+      const double* column = source.col(lc).data();
+      for (Index r = 0; r < m; ++r) out[r + static_cast<Index>(c) * m] = scale * column[local_row[static_cast<std::size_t>(r)]];
     }
   };
   operators::HMatrixOptions by_component = options;  // the rows by component (HMatrixOptions)
@@ -234,6 +236,31 @@ Vector CompressedBoundarySystem::radial_traction_integral(const operators::HMatr
   return integral;
 }
 
+// H and G of these nodes (rows) against those (columns), as InfluenceBlocks::evaluate gives
+// them, read from the compressed [H' | G] (its columns' scales taken out): the system's
+// assembly then costs no kernel integral, where it took half of the model's.
+void CompressedBoundarySystem::influence_blocks(const std::vector<Index>& row_nodes, const std::vector<Index>& col_nodes,
+                                                Matrix& H, Matrix& G) const {
+  const Index n = mesh_.node_count(), r = static_cast<Index>(row_nodes.size()), c = static_cast<Index>(col_nodes.size());
+  std::vector<Index> rows(static_cast<std::size_t>(2 * r)), cols(static_cast<std::size_t>(4 * c));
+  for (Index i = 0; i < r; ++i)
+    for (int k = 0; k < 2; ++k) rows[static_cast<std::size_t>(2 * i + k)] = 2 * row_nodes[static_cast<std::size_t>(i)] + k;
+  for (Index j = 0; j < c; ++j)
+    for (int k = 0; k < 2; ++k) {
+      const Index dof = 2 * col_nodes[static_cast<std::size_t>(j)] + k;
+      cols[static_cast<std::size_t>(2 * j + k)] = dof;
+      cols[static_cast<std::size_t>(2 * c + 2 * j + k)] = 2 * n + dof;
+    }
+  const Matrix values = influence_.entries(rows, cols);
+  H.resize(2 * r, 2 * c);
+  G.resize(2 * r, 2 * c);
+  for (Index j = 0; j < c; ++j) {
+    const double scale = node_scale_[col_nodes[static_cast<std::size_t>(j)]];
+    H.middleCols(2 * j, 2) = values.middleCols(2 * j, 2) / scale;
+    G.middleCols(2 * j, 2) = values.middleCols(2 * c + 2 * j, 2) / (traction_scale_ * scale);
+  }
+}
+
 operators::HMatrix CompressedBoundarySystem::assemble_system(const operators::HMatrixOptions& options,
                                                              const std::string& what,
                                                              const ProgressCallback& progress) const {
@@ -259,8 +286,11 @@ operators::HMatrix CompressedBoundarySystem::assemble_system(const operators::HM
     row_nodes = unique_nodes(std::move(row_nodes));
     col_nodes = unique_nodes(std::move(col_nodes));
     Matrix H, G;
-    if (!row_nodes.empty()) blocks_.evaluate(row_nodes, col_nodes, H, G);
+    if (!row_nodes.empty()) influence_blocks(row_nodes, col_nodes, H, G);
     const NodeIndex row_index(row_nodes), col_index(col_nodes);
+    std::vector<Index> local_row(rows.size(), -1);  // each node row's place in H and G, found once
+    for (std::size_t r = 0; r < rows.size(); ++r)
+      if (rows[r] < dofs) local_row[r] = 2 * row_index.find(rows[r] / 2) + rows[r] % 2;
     for (std::size_t cc = 0; cc < cols.size(); ++cc) {
       const Index col = cols[cc];
       double* column = out + static_cast<Index>(cc) * m;
@@ -288,7 +318,7 @@ operators::HMatrix CompressedBoundarySystem::assemble_system(const operators::HM
           column[rr] = col == row ? scale : 0.0;
           continue;
         }
-        const Index lr = 2 * row_index.find(i) + row % 2;
+        const Index lr = local_row[static_cast<std::size_t>(rr)];
         if (traction_column) {
           column[rr] = -scale * (G(lr, lc) * weights[0] + G(lr, lc + 1) * weights[1]);
         } else {

@@ -109,6 +109,8 @@ class CompressedBoundarySystem : public operators::Factorization {
 
   operators::RowPartitionedHMatrix assemble_influence(const operators::HMatrixOptions& options, const std::string& what,
                                                       const ProgressCallback& progress);
+  void influence_blocks(const std::vector<Index>& row_nodes, const std::vector<Index>& col_nodes, Matrix& H,
+                        Matrix& G) const;
   std::vector<Mat2> diagonal_blocks(const operators::HMatrixOptions& options, const std::string& what,
                                     const ProgressCallback& progress) const;
   Vector radial_traction_integral(const operators::HMatrixOptions& options, const std::string& what,
