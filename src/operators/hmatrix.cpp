@@ -16,7 +16,6 @@
 
 #include "bemcontact/core/error.hpp"
 #include "bemcontact/operators/dense_lu.hpp"
-#include "bemcontact/operators/dense_lu.hpp"
 
 namespace bemcontact::operators {
 
@@ -38,8 +37,9 @@ namespace {
 hmat_interface_t& hmat_interface() {
   static hmat_interface_t* instance = [] {
     // hmat-oss calls BLAS on small blocks from one thread: OpenBLAS's own threads only
-    // spin there (35 % of a 4 001-pair rigid cylinder's samples in sched_yield, 9.6 s
-    // against 6.2 s), so BLAS runs on one thread, as the command sets it at its start.
+    // spin there (a third of a 4 001-pair rigid cylinder's samples in sched_yield and the
+    // scheduler; its model 7.0 s against 4.1 s with one BLAS thread), so BLAS runs on one
+    // thread, as the command sets it at its start (benchmarks and tests did not).
     use_single_threaded_blas();
     auto* i = new hmat_interface_t;  // never finalized: other matrices may still live
     hmat_init_default_interface(i, HMAT_DOUBLE_PRECISION);
@@ -168,8 +168,6 @@ void prepare_block(int row_start, int row_count, int col_start, int col_count, i
   if (assembly.row_components > 1) {
     info->number_of_strata = assembly.row_components;
     info->is_guaranteed_null_row = null_row_in_stratum;
-    data->row_groups = PointGroups(data->rows, *assembly.row_points);
-    data->col_groups = PointGroups(data->cols, *assembly.col_points);
   }
 }
 
@@ -178,7 +176,11 @@ void prepare_block(int row_start, int row_count, int col_start, int col_count, i
 const std::vector<double>& whole_line(BlockData& data, bool along_rows, int k) {
   auto& cache = along_rows ? data.row_cache : data.col_cache;
   if (const auto found = cache.find(k); found != cache.end()) return found->second;
-  const std::vector<int> mates = (along_rows ? data.row_groups : data.col_groups).members(k);
+  PointGroups& groups = along_rows ? data.row_groups : data.col_groups;
+  if (groups.order.empty())  // made at the first request (dense leaves never ask)
+    groups = PointGroups(along_rows ? data.rows : data.cols,
+                         along_rows ? *data.context->row_points : *data.context->col_points);
+  const std::vector<int> mates = groups.members(k);
   std::vector<Index> lines(mates.size());
   for (std::size_t i = 0; i < mates.size(); ++i)
     lines[i] = (along_rows ? data.rows : data.cols)[static_cast<std::size_t>(mates[i])];
