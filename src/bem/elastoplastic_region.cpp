@@ -514,10 +514,12 @@ void ElastoplasticRegion::compress_direct_fields(const std::string& name) {
         out[r + c * R] = pair_blocks[k](rows[static_cast<std::size_t>(r)] % d, cols[static_cast<std::size_t>(c)] % d);
       }
   };
-  auto options = operators::HMatrixOptions::with_accuracy(kCellAccuracy);  // the d components' rows apart (HMatrixOptions)
-  options.row_component.resize(points.size());
-  for (std::size_t i = 0; i < points.size(); ++i) options.row_component[i] = static_cast<int>(i % static_cast<std::size_t>(d));
-  direct_->compressed = std::make_unique<operators::RowPartitionedHMatrix>(points, points, entries, options,
+  // The cells' components interleaved, not apart (HMatrixOptions::row_component): hmat-oss's
+  // check of every block of the 1 090-cell Brinell D found none above 10 times the accuracy
+  // (the worst 9.9e-8 at 1e-8; 3.8e-8 apart), where apart cost 50 % more set-up at 4 162
+  // cells (145 s against 97 s). The boundary's blocks, with their collinear nodes, need it.
+  direct_->compressed = std::make_unique<operators::RowPartitionedHMatrix>(points, points, entries,
+                                                             operators::HMatrixOptions::with_accuracy(kCellAccuracy),
                                                              "the cells' direct fields of body '" + name + "'");
   direct_->position.assign(static_cast<std::size_t>(m), -1);
 }
