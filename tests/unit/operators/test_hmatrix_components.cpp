@@ -8,6 +8,9 @@
 #include <vector>
 
 #include "bemcontact/operators/hmatrix.hpp"
+
+// OpenBLAS's thread count (weak: another BLAS links too).
+extern "C" int openblas_get_num_threads(void) __attribute__((weak));
 #include "bemcontact/operators/row_partitioned_hmatrix.hpp"
 
 namespace bemcontact::operators {
@@ -111,6 +114,16 @@ TEST(HMatrixComponents, RowPiecesKeepTheRowsComponents) {
   ASSERT_GT(H.pieces(), 1);
   const Matrix AH = H.apply(Matrix::Identity(A.cols(), A.cols()));
   EXPECT_LT((AH - A).norm() / A.norm(), 1e-7);
+}
+
+// hmat-oss calls BLAS on small blocks from one thread: OpenBLAS's own threads would only spin
+// (a third of a rigid cylinder's time), so a matrix sets BLAS to one thread, as the command
+// does, for library callers (benchmarks, tests) too.
+TEST(HMatrixComponents, BlasRunsOnOneThreadOnceAMatrixIsMade) {
+  if (!openblas_get_num_threads) GTEST_SKIP() << "not OpenBLAS";
+  const TensorCase problem;
+  const HMatrix H(problem.rows, problem.cols, problem.entries(), problem.options(1e-4), "threads");
+  EXPECT_EQ(openblas_get_num_threads(), 1);
 }
 
 TEST(HMatrixComponents, RefusesALabelCountThatIsNotTheUnknowns) {
