@@ -9,8 +9,9 @@
 //   - A, whose columns are those of H or -G by each unknown's kind in its node's frame,
 //     plus the point constraints' rows and reaction columns (as in build_boundary_system),
 //     is compressed and factored by H-LU.
-// Entries are integrated on demand (InfluenceBlocks), only for the blocks the adaptive
-// cross approximation asks for.
+// The entries of [H' | G] are integrated on demand (InfluenceBlocks), only for the blocks the
+// adaptive cross approximation asks for; A reads its H and G from the compressed [H' | G].
+// Both are compressed one component's rows at a time (HMatrixOptions::row_component).
 #include <vector>
 
 #include "bemcontact/bem/boundary_system.hpp"
