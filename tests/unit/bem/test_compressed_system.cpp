@@ -65,7 +65,7 @@ TEST(CompressedSystem, OperatorsMatchTheDenseMatrices) {
   const auto conditions = bem::resolve_node_conditions(mesh, problem.body, problem.analysis);
   const auto constraints = bem::resolve_point_constraints(mesh, problem.body, conditions);
   const bem::ElementIntegrator integrator(problem.analysis, problem.body.material);
-  for (double accuracy : {1e-4, 1e-6, 1e-8}) {
+  for (double accuracy : {1e-4, 1e-6, 1e-8, 1e-10}) {
     operators::HMatrixOptions options;
     options.accuracy = accuracy;
     bem::CompressedBoundarySystem compressed(mesh, integrator, conditions, constraints, options, "the strip");
