@@ -31,10 +31,20 @@ std::vector<Index> unique_nodes(std::vector<Index> nodes) {
   return nodes;
 }
 
-// The component of unknown i (x, y, x, y, ...), for HMatrixOptions.
-std::vector<int> alternating_components(Index count) {
-  std::vector<int> out(static_cast<std::size_t>(count));
-  for (Index i = 0; i < count; ++i) out[static_cast<std::size_t>(i)] = static_cast<int>(i % 2);
+// `options` with the rows by component (HMatrixOptions::row_component): a node's rows x, y,
+// x, y, ..., then `extra` rows (the constraints') with the first.
+operators::HMatrixOptions rows_by_component(operators::HMatrixOptions options, Index node_rows, Index extra = 0) {
+  options.row_component.assign(static_cast<std::size_t>(node_rows + extra), 0);
+  for (Index i = 0; i < node_rows; ++i) options.row_component[static_cast<std::size_t>(i)] = static_cast<int>(i % 2);
+  return options;
+}
+
+// The place of each node row (2 node + component, below `node_rows`) in a matrix of the
+// nodes `index` holds, found once per request rather than once per entry; -1 elsewhere.
+std::vector<Index> node_row_places(const std::vector<Index>& rows, const NodeIndex& index, Index node_rows) {
+  std::vector<Index> out(rows.size(), -1);
+  for (std::size_t r = 0; r < rows.size(); ++r)
+    if (rows[r] < node_rows) out[r] = 2 * index.find(rows[r] / 2) + rows[r] % 2;
   return out;
 }
 
@@ -158,8 +168,7 @@ operators::RowPartitionedHMatrix CompressedBoundarySystem::assemble_influence(co
     blocks_.evaluate(row_nodes, col_nodes, H, G);
     const NodeIndex row_index(row_nodes), col_index(col_nodes);
     const Index m = static_cast<Index>(rows.size());
-    std::vector<Index> local_row(rows.size());  // each row's place in H and G, found once
-    for (std::size_t r = 0; r < rows.size(); ++r) local_row[r] = 2 * row_index.find(rows[r] / 2) + rows[r] % 2;
+    const std::vector<Index> local_row = node_row_places(rows, row_index, 2 * n);
     for (std::size_t c = 0; c < cols.size(); ++c) {
       const Index dof = cols[c] % (2 * n);
       const bool g_column = cols[c] >= 2 * n;
@@ -170,10 +179,9 @@ operators::RowPartitionedHMatrix CompressedBoundarySystem::assemble_influence(co
       for (Index r = 0; r < m; ++r) out[r + static_cast<Index>(c) * m] = scale * column[local_row[static_cast<std::size_t>(r)]];
     }
   };
-  operators::HMatrixOptions by_component = options;  // the rows by component (HMatrixOptions)
-  by_component.row_component = alternating_components(2 * n);
   PhaseProgress phase(progress, "assembly of H and G");
-  operators::RowPartitionedHMatrix influence(row_points, col_points, entries, by_component, what, phase.fractions());
+  operators::RowPartitionedHMatrix influence(row_points, col_points, entries, rows_by_component(options, 2 * n), what,
+                                             phase.fractions());
   phase.finish();
   return influence;
 }
@@ -214,22 +222,20 @@ Vector CompressedBoundarySystem::radial_traction_integral(const operators::HMatr
     col_points[e] = centre / element.node_count;
     lengths(e, 0) = element.length;
   }
-  const auto entries = [this, &lengths](const std::vector<Index>& rows, const std::vector<Index>& cols, double* out) {
+  const auto entries = [this, n, &lengths](const std::vector<Index>& rows, const std::vector<Index>& cols, double* out) {
     std::vector<Index> row_nodes(rows.size());
     for (std::size_t r = 0; r < rows.size(); ++r) row_nodes[r] = rows[r] / 2;
     row_nodes = unique_nodes(std::move(row_nodes));
     const Matrix values = blocks_.radial_traction(row_nodes, cols);
-    const NodeIndex row_index(row_nodes);
+    const std::vector<Index> local_row = node_row_places(rows, NodeIndex(row_nodes), 2 * n);
     const Index m = static_cast<Index>(rows.size());
     for (std::size_t c = 0; c < cols.size(); ++c)
       for (Index r = 0; r < m; ++r)
         out[r + static_cast<Index>(c) * m] =
-            values(2 * row_index.find(rows[r] / 2) + rows[r] % 2, static_cast<Index>(c)) / lengths(cols[c], 0);
+            values(local_row[static_cast<std::size_t>(r)], static_cast<Index>(c)) / lengths(cols[c], 0);
   };
-  operators::HMatrixOptions by_component = options;  // the rows by component (HMatrixOptions)
-  by_component.row_component = alternating_components(2 * n);
   PhaseProgress phase(progress, "diagonal blocks");
-  const operators::HMatrix integrals(row_points, col_points, entries, by_component,
+  const operators::HMatrix integrals(row_points, col_points, entries, rows_by_component(options, 2 * n),
                                      "the radial expansion's traction integrals of " + what, phase.fractions());
   Vector integral = integrals.apply(lengths).col(0);
   phase.finish();
@@ -288,9 +294,7 @@ operators::HMatrix CompressedBoundarySystem::assemble_system(const operators::HM
     Matrix H, G;
     if (!row_nodes.empty()) influence_blocks(row_nodes, col_nodes, H, G);
     const NodeIndex row_index(row_nodes), col_index(col_nodes);
-    std::vector<Index> local_row(rows.size(), -1);  // each node row's place in H and G, found once
-    for (std::size_t r = 0; r < rows.size(); ++r)
-      if (rows[r] < dofs) local_row[r] = 2 * row_index.find(rows[r] / 2) + rows[r] % 2;
+    const std::vector<Index> local_row = node_row_places(rows, row_index, dofs);
     for (std::size_t cc = 0; cc < cols.size(); ++cc) {
       const Index col = cols[cc];
       double* column = out + static_cast<Index>(cc) * m;
@@ -330,12 +334,8 @@ operators::HMatrix CompressedBoundarySystem::assemble_system(const operators::HM
       }
     }
   };
-  // The nodes' rows by component, the constraints' rows with the first.
-  operators::HMatrixOptions by_component = options;
-  by_component.row_component = alternating_components(dofs + extra);
-  for (Index q = 0; q < extra; ++q) by_component.row_component[static_cast<std::size_t>(dofs + q)] = 0;
   PhaseProgress phase(progress, "system assembly");
-  operators::HMatrix system(points, points, entries, by_component, what, phase.fractions());
+  operators::HMatrix system(points, points, entries, rows_by_component(options, dofs, extra), what, phase.fractions());
   phase.finish();
   return system;
 }
