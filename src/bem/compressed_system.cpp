@@ -39,6 +39,42 @@ operators::HMatrixOptions rows_by_component(operators::HMatrixOptions options, I
   return options;
 }
 
+// The straight line parallel to an axis (an id >= 0) that all of each node's elements lie on,
+// -1 for none: a node where two lines meet, on an arc or an oblique element. On such a line,
+// between a point of it and elements of it, r is along the line and n across: the plane
+// kernels' T_xx = T_yy = 0 and U_xy = U_yx = 0 ((II.11), (II.12): dr/dn = 0 and r_x r_y = 0),
+// the zeros of HMatrixOptions::col_null_components. None in axisymmetry (ring kernels) or on
+// a body with symmetry images (an element's image leaves its line).
+std::vector<int> node_lines(const geometry::BoundaryMesh& mesh, AnalysisType type) {
+  std::vector<int> line(static_cast<std::size_t>(mesh.node_count()), -1);
+  if (type == AnalysisType::axisymmetric || !mesh.images.empty()) return line;
+  std::vector<std::pair<int, double>> keys;  // (0: y = c, 1: x = c; c) of each id
+  const auto id_of = [&keys](int axis, double level) {
+    for (std::size_t k = 0; k < keys.size(); ++k)
+      if (keys[k].first == axis && keys[k].second == level) return static_cast<int>(k);
+    keys.emplace_back(axis, level);
+    return static_cast<int>(keys.size()) - 1;
+  };
+  std::vector<char> seen(static_cast<std::size_t>(mesh.node_count()), 0);
+  for (const auto& element : mesh.elements) {
+    int id = -1;
+    if (!element.arc && element.start.y() == element.end.y()) id = id_of(0, element.start.y());
+    else if (!element.arc && element.start.x() == element.end.x()) id = id_of(1, element.start.x());
+    for (int a = 0; a < element.node_count; ++a) {
+      const auto node = static_cast<std::size_t>(element.nodes[static_cast<std::size_t>(a)]);
+      line[node] = seen[node] && line[node] != id ? -1 : id;
+      seen[node] = 1;
+    }
+  }
+  for (std::size_t i = 0; i < line.size(); ++i) {  // the node's own point on the line too
+    if (line[i] < 0) continue;
+    const auto& [axis, level] = keys[static_cast<std::size_t>(line[i])];
+    const Vec2& p = mesh.nodes[i].position;
+    if ((axis == 0 ? p.y() : p.x()) != level) line[i] = -1;
+  }
+  return line;
+}
+
 // The place of each node row (2 node + component, below `node_rows`) in a matrix of the
 // nodes `index` holds, found once per request rather than once per entry; -1 elsewhere.
 std::vector<Index> node_row_places(const std::vector<Index>& rows, const NodeIndex& index, Index node_rows) {
@@ -179,9 +215,21 @@ operators::RowPartitionedHMatrix CompressedBoundarySystem::assemble_influence(co
       for (Index r = 0; r < m; ++r) out[r + static_cast<Index>(c) * m] = scale * column[local_row[static_cast<std::size_t>(r)]];
     }
   };
+  // On a line, a u column is zero in its own component's rows (T_xx = T_yy = 0), a p column
+  // in the other's (U_xy = 0).
+  operators::HMatrixOptions by_component = rows_by_component(options, 2 * n);
+  const std::vector<int> line = node_lines(mesh_, type_);
+  by_component.row_line.resize(static_cast<std::size_t>(2 * n));
+  by_component.col_line.resize(static_cast<std::size_t>(4 * n));
+  by_component.col_null_components.resize(static_cast<std::size_t>(4 * n));
+  for (Index d = 0; d < 2 * n; ++d) {
+    const auto at = static_cast<std::size_t>(d);
+    by_component.row_line[at] = by_component.col_line[at] = by_component.col_line[at + 2 * n] = line[at / 2];
+    by_component.col_null_components[at] = static_cast<unsigned char>(1 << (d % 2));
+    by_component.col_null_components[at + 2 * n] = static_cast<unsigned char>(1 << (1 - d % 2));
+  }
   PhaseProgress phase(progress, "assembly of H and G");
-  operators::RowPartitionedHMatrix influence(row_points, col_points, entries, rows_by_component(options, 2 * n), what,
-                                             phase.fractions());
+  operators::RowPartitionedHMatrix influence(row_points, col_points, entries, by_component, what, phase.fractions());
   phase.finish();
   return influence;
 }
@@ -334,8 +382,26 @@ operators::HMatrix CompressedBoundarySystem::assemble_system(const operators::HM
       }
     }
   };
+  // On a line (as [H' | G]'s): a displacement column (H times its frame axis w) is zero in
+  // the rows of component k when w's other component is 0, a traction column (-G w) when w's
+  // own is; constraint rows lie on no line.
+  operators::HMatrixOptions by_component = rows_by_component(options, dofs, extra);
+  const std::vector<int> line = node_lines(mesh_, type_);
+  by_component.row_line.assign(static_cast<std::size_t>(dofs + extra), -1);
+  by_component.col_line.resize(static_cast<std::size_t>(dofs + extra));
+  by_component.col_null_components.assign(static_cast<std::size_t>(dofs + extra), 0);
+  for (Index col = 0; col < dofs + extra; ++col) {
+    const auto at = static_cast<std::size_t>(col);
+    if (col < dofs) by_component.row_line[at] = line[at / 2];
+    by_component.col_line[at] = line[static_cast<std::size_t>(column_node(col))];
+    const Vec2 w = col < dofs ? Vec2(conditions_[col / 2].frame.col(col % 2))
+                              : constraints_[col - dofs].reaction_component == 0 ? Vec2(1.0, 0.0) : Vec2(0.0, 1.0);
+    const bool traction = traction_column_of(col);
+    for (int k = 0; k < 2; ++k)
+      if ((traction ? w[k] : w[1 - k]) == 0.0) by_component.col_null_components[at] |= static_cast<unsigned char>(1 << k);
+  }
   PhaseProgress phase(progress, "system assembly");
-  operators::HMatrix system(points, points, entries, rows_by_component(options, dofs, extra), what, phase.fractions());
+  operators::HMatrix system(points, points, entries, by_component, what, phase.fractions());
   phase.finish();
   return system;
 }

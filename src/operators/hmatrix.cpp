@@ -75,6 +75,7 @@ struct AssemblyContext {
   // strata), and the row and column points (a node's unknowns share one).
   const std::vector<int>* row_component = nullptr;
   int row_components = 1;
+  const HMatrixOptions* lines = nullptr;  // row_line, col_line, col_null_components (null: none)
   const std::vector<Vec2>* row_points = nullptr;
   const std::vector<Vec2>* col_points = nullptr;
   DeferredError error;
@@ -126,7 +127,15 @@ struct BlockData {
   // its components at once: they are kept for the strata to come.
   PointGroups row_groups, col_groups;
   std::unordered_map<int, std::vector<double>> row_cache, col_cache;
+  std::vector<double> scratch;  // a line computed alone, once a cache is full
+  int line = -1;                // the line all the block's rows lie on (HMatrixOptions::row_line)
 };
+
+// Lines kept per side of a block. ACA+ asks for one per rank of each stratum, but where a
+// stratum's part of the block is exactly zero or of exact low rank it looks for a nonzero
+// reference column through every free column (hmat-oss, findCol): kept, those were the whole
+// block (4.1 GB in one block of the rigid cylinder's [H' | G] at 32 001 pairs).
+constexpr std::size_t kMaxCachedLines = 256;
 
 int row_component_of(const BlockData& block, int row) {
   const auto* labels = block.context->row_component;
@@ -135,6 +144,15 @@ int row_component_of(const BlockData& block, int row) {
 // Stratum s holds the rows of component s.
 char null_row_in_stratum(const hmat_block_info_t* info, int row, int stratum) {
   return row_component_of(*static_cast<const BlockData*>(info->user_data), row) != stratum ? 1 : 0;
+}
+
+// Column `col` of a block whose rows lie on one line, zero in the rows of `stratum`.
+char null_column_in_stratum(const hmat_block_info_t* info, int col, int stratum) {
+  const auto& block = *static_cast<const BlockData*>(info->user_data);
+  if (stratum < 0) return 0;
+  const auto& lines = *block.context->lines;
+  const auto c = static_cast<std::size_t>(block.cols[static_cast<std::size_t>(col)]);
+  return lines.col_line[c] == block.line && ((lines.col_null_components[c] >> stratum) & 1) != 0 ? 1 : 0;
 }
 
 void release_block(void* data) {
@@ -168,14 +186,31 @@ void prepare_block(int row_start, int row_count, int col_start, int col_count, i
   if (assembly.row_components > 1) {
     info->number_of_strata = assembly.row_components;
     info->is_guaranteed_null_row = null_row_in_stratum;
+    if (assembly.lines && !data->rows.empty()) {
+      const auto& row_line = assembly.lines->row_line;
+      data->line = row_line[static_cast<std::size_t>(data->rows.front())];
+      for (const Index r : data->rows)
+        if (row_line[static_cast<std::size_t>(r)] != data->line) data->line = -1;
+      if (data->line >= 0) info->is_guaranteed_null_col = null_column_in_stratum;
+    }
   }
 }
 
 // The whole row (along_rows) or column k of a block, with those of the other unknowns at its
-// point, computed once and kept.
+// point, computed once and kept (up to kMaxCachedLines; then the line alone, not kept).
 const std::vector<double>& whole_line(BlockData& data, bool along_rows, int k) {
   auto& cache = along_rows ? data.row_cache : data.col_cache;
   if (const auto found = cache.find(k); found != cache.end()) return found->second;
+  if (cache.size() >= kMaxCachedLines) {
+    const std::vector<Index> line{(along_rows ? data.rows : data.cols)[static_cast<std::size_t>(k)]};
+    const std::vector<Index>& across = along_rows ? data.cols : data.rows;
+    data.scratch.resize(across.size());
+    if (along_rows)
+      (*data.context->entries)(line, across, data.scratch.data());
+    else
+      (*data.context->entries)(across, line, data.scratch.data());
+    return data.scratch;
+  }
   PointGroups& groups = along_rows ? data.row_groups : data.col_groups;
   if (groups.order.empty())  // made at the first request (dense leaves never ask)
     groups = PointGroups(along_rows ? data.rows : data.cols,
@@ -343,6 +378,12 @@ HMatrix::HMatrix(const std::vector<Vec2>& row_points, const std::vector<Vec2>& c
       throw std::logic_error("HMatrix: a negative component");
     context.row_component = &options.row_component;
     context.row_components = *std::max_element(options.row_component.begin(), options.row_component.end()) + 1;
+  }
+  if (!options.row_line.empty() || !options.col_line.empty() || !options.col_null_components.empty()) {
+    if (static_cast<Index>(options.row_line.size()) != rows_ || static_cast<Index>(options.col_line.size()) != cols_ ||
+        static_cast<Index>(options.col_null_components.size()) != cols_ || options.row_component.empty())
+      throw std::logic_error("HMatrix: a line per row and column, a null mask per column, and the rows' components");
+    context.lines = &options;
   }
   context.row_points = &row_points;
   context.col_points = &col_points;

@@ -92,10 +92,14 @@ RowPartitionedHMatrix::RowPartitionedHMatrix(const std::vector<Vec2>& row_points
             mean += done[static_cast<std::size_t>(q)] * static_cast<double>(split[static_cast<std::size_t>(q)].size());
           progress(mean / static_cast<double>(rows_));
         };
-      HMatrixOptions piece_options = options;  // the piece's rows' components
+      HMatrixOptions piece_options = options;  // the piece's rows' components and lines
       if (!options.row_component.empty()) {
         piece_options.row_component.clear();
         for (const Index r : rows) piece_options.row_component.push_back(options.row_component[static_cast<std::size_t>(r)]);
+      }
+      if (!options.row_line.empty()) {
+        piece_options.row_line.clear();
+        for (const Index r : rows) piece_options.row_line.push_back(options.row_line.at(static_cast<std::size_t>(r)));
       }
       const std::string piece_name = count == 1 ? what : what + " (rows " + std::to_string(p + 1) + " of " + std::to_string(count) + ")";
       pieces_[static_cast<std::size_t>(p)] =

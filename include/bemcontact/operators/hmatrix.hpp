@@ -31,6 +31,16 @@ struct HMatrixOptions {
   // 4 001-pair rigid cylinder's system at 7e-6 against the 1e-11 asked, and its pressures
   // 2.8e-4 of p0 off the dense operator's (3e-6 by component).
   std::vector<int> row_component;
+  // Exact zeros the caller knows from the geometry (optional, with row_component; empty:
+  // none): the straight line (an id >= 0, -1 none) each row's point and each column's support
+  // lie on, and per column the components (bit k) of whose rows it is zero on its own line.
+  // Then in a compressed block whose rows all lie on one line, those columns are not
+  // computed. Without them, ACA+ by component looks through every column that is zero in its
+  // rows for a nonzero one, computing each: on a straight boundary (plane kernels: H's xx and
+  // yy, G's xy and yx vanish there) the whole block, where it could take hours and held 4.1 GB
+  // (the rigid cylinder's [H' | G] at 32 001 pairs).
+  std::vector<int> row_line, col_line;
+  std::vector<unsigned char> col_null_components;
 
   static HMatrixOptions with_accuracy(double accuracy) {
     HMatrixOptions out;

@@ -126,6 +126,59 @@ TEST(HMatrixComponents, BlasRunsOnOneThreadOnceAMatrixIsMade) {
   EXPECT_EQ(openblas_get_num_threads(), 1);
 }
 
+// Collinear nodes (y = 0) with the zeros of the line declared (HMatrixOptions::row_line):
+// ACA+ by component no longer computes every column that is zero in its stratum's rows
+// looking for a nonzero one. Kelvin's displacement tensor there has U_12 = U_21 = 0 (a column
+// is zero in the other component's rows), its traction tensor T_11 = T_22 = 0 (in its own).
+// Entries computed over the matrix's (1 800 x 1 400; the dense blocks near the diagonal take
+// about a quarter), displacement / traction tensor: undeclared 0.85 / 0.67, declared 0.36 /
+// 0.29, interleaved components (one stratum, less accurate) 0.28 / 0.26.
+TEST(HMatrixComponents, ZerosOfALineAreNotComputed) {
+  for (const bool traction : {false, true}) {
+    TensorCase problem;
+    problem.traction = traction;
+    const auto on_line = [](int n) {
+      std::vector<Vec2> out;
+      for (int k = 0; k < n; ++k) {
+        const Vec2 p(std::pow(static_cast<double>(k) / n, 2.0), 0.0);
+        out.push_back(p);
+        out.push_back(p);
+      }
+      return out;
+    };
+    problem.rows = on_line(900);
+    problem.cols = on_line(700);
+    const Matrix A = problem.dense();
+    std::size_t computed = 0;
+    const BlockFunction entries = problem.entries();
+    const BlockFunction counted = [&](const std::vector<Index>& r, const std::vector<Index>& c, double* out) {
+#pragma omp atomic
+      computed += r.size() * c.size();
+      entries(r, c, out);
+    };
+    const double area = static_cast<double>(A.size());
+    HMatrixOptions options = problem.options(1e-9);
+    const HMatrix plain(problem.rows, problem.cols, counted, options, "undeclared");
+    const double undeclared = static_cast<double>(computed) / area;
+    options.row_line.assign(problem.rows.size(), 0);
+    options.col_line.assign(problem.cols.size(), 0);
+    for (std::size_t c = 0; c < problem.cols.size(); ++c)
+      options.col_null_components.push_back(static_cast<unsigned char>(1 << (traction ? c % 2 : 1 - c % 2)));
+    computed = 0;
+    const HMatrix interleaved(problem.rows, problem.cols, counted, HMatrixOptions::with_accuracy(1e-9), "interleaved");
+    const double one_stratum = static_cast<double>(computed) / area;
+    computed = 0;
+    const HMatrix declared(problem.rows, problem.cols, counted, options, "declared");
+    const double with_zeros = static_cast<double>(computed) / area;
+    EXPECT_LT(relative_error(declared, A), 1e-9) << traction;
+    EXPECT_LT(with_zeros, 0.5 * undeclared) << traction << ": " << with_zeros << " against " << undeclared;
+    EXPECT_LT(with_zeros, 1.5 * one_stratum) << traction << ": " << with_zeros << " against " << one_stratum;
+    // A line per row and column and a mask per column, or none.
+    options.col_line.pop_back();
+    EXPECT_THROW(HMatrix(problem.rows, problem.cols, counted, options, "short"), std::logic_error);
+  }
+}
+
 TEST(HMatrixComponents, RefusesALabelCountThatIsNotTheUnknowns) {
   const TensorCase problem;
   HMatrixOptions options = problem.options(1e-6);
