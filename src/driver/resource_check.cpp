@@ -193,16 +193,68 @@ std::int64_t most_steps(const contact::ContactProblem& problem) {
   return problem.increments + static_cast<std::int64_t>(corners);
 }
 
+// Nodes of a contact side's zone (its pieces, or its region's whole contour); 0 on a rigid body.
+std::int64_t zone_nodes(const contact::ContactProblem& problem, const contact::BoundaryRef& side,
+                        const geometry::MeshOptions& mesh) {
+  const auto& body = problem.bodies.at(static_cast<std::size_t>(side.body));
+  if (body.rigid || body.regions.empty()) return 0;
+  const bem::BodyDefinition& region = problem.region(side).body;
+  if (side.whole_contour()) return body_nodes(region, mesh);
+  bem::BodyDefinition zone;
+  for (const int piece : side.pieces) zone.pieces.push_back(region.pieces.at(static_cast<std::size_t>(piece)));
+  return body_nodes(zone, mesh);
+}
+
 // Pairs of a contact: one per node of its side-1 zone at most.
 std::int64_t most_pairs(const contact::ContactProblem& problem, const geometry::MeshOptions& mesh) {
   std::int64_t pairs = 0;
-  for (const auto& contact : problem.contacts) {
-    bem::BodyDefinition zone;
-    for (const int piece : contact.side1.pieces)
-      zone.pieces.push_back(problem.region(contact.side1).body.pieces.at(static_cast<std::size_t>(piece)));
-    pairs += body_nodes(zone, mesh);
-  }
+  for (const auto& contact : problem.contacts) pairs += zone_nodes(problem, contact.side1, mesh);
   return pairs;
+}
+
+// The condensed operator of the contacts' n pairs (docs/model.md, steps 4b-6), by route
+// (contact::ContactModel::choose_condensed_operator; a body held only by its contacts, which
+// forces the formed operator, is not known before meshing and is taken as matrix-free).
+// Formed: M (2n x 2n) and each region's responses to the pairs (its zones' 2 nodes x 2n),
+// held together. Matrix-free: the coarse images of the preconditioner (matrix_free_step.cpp:
+// a hat every 8 pairs, each image n floats, 2n with friction; J's rows of them, the free
+// unknowns x the hats, again; the start's hats 8 times coarser), all of them formed at most,
+// and the batches of 64 images in flight: about 10 copies of the largest region's unknowns and
+// 2 of the pairs' per column. Measured (peak resident memory above the bodies' estimate) on the
+// rigid cylinder, contact_compliant_cylinder.toml unilateral, one thread: formed, 2 001 / 4 001
+// pairs, 280 MB / 1.01 GB against 256 MB / 1.02 GB; matrix-free, 8 001 / 16 001 pairs, 147 / 297
+// MB against 167 / 469 MB (the images of the half of the zone out of contact never formed).
+struct ContactRouteCost {
+  std::int64_t pairs = 0;
+  bool matrix_free = false;
+  double bytes = 0.0;
+};
+constexpr double matrix_free_batch_columns = 64.0;  // matrix_free_step.cpp, HatImages::form
+
+ContactRouteCost contact_route_cost(const contact::ContactProblem& problem, bool regions_compressed,
+                                    std::int64_t largest_unknowns) {
+  ContactRouteCost cost;
+  std::int64_t zone_dofs = 0;
+  for (const auto& contact : problem.contacts) {
+    cost.pairs += zone_nodes(problem, contact.side1, problem.mesh);
+    zone_dofs += 2 * (zone_nodes(problem, contact.side1, problem.mesh) + zone_nodes(problem, contact.side2, problem.mesh));
+  }
+  if (cost.pairs == 0) return cost;
+  using Kind = contact::CondensedOperatorKind;
+  const Kind kind = problem.solver.contact_operator;
+  cost.matrix_free = kind == Kind::matrix_free ||
+                     (kind == Kind::automatic && regions_compressed && contact::matrix_free_obstacle(problem).empty() &&
+                      cost.pairs >= contact::SolverOptions::matrix_free_threshold);
+  const double n = static_cast<double>(cost.pairs);
+  if (!cost.matrix_free) {
+    cost.bytes = 8.0 * (2.0 * n) * (2.0 * n) + 8.0 * static_cast<double>(zone_dofs) * 2.0 * n;
+    return cost;
+  }
+  const double d = problem.has_friction() ? 2.0 : 1.0;  // rows of an image per pair
+  const double images = 4.0 * (n / 8.0) * d * n * (1.0 + d) + 4.0 * (n / 64.0) * d * n;
+  const double batch = matrix_free_batch_columns * 8.0 * (10.0 * static_cast<double>(largest_unknowns) + 4.0 * n);
+  cost.bytes = images + batch;
+  return cost;
 }
 
 double recording_bytes(const contact::ContactProblem& problem, std::int64_t steps) {
@@ -238,6 +290,11 @@ std::string describe(const ResourceEstimate& estimate) {
          " in the largest body), about " + format_bytes(estimate.bytes) + " of memory and " + time + " on " +
          std::to_string(estimate.threads) + (estimate.threads == 1 ? " thread" : " threads") +
          " for one solve" + (estimate.compressed ? " (compressed)" : " (dense)") +
+         (estimate.contact_pairs > 0
+              ? ", the contacts' " + std::to_string(estimate.contact_pairs) + " pairs " +
+                    (estimate.contact_matrix_free ? "matrix-free" : "on the formed operator") + " included (" +
+                    format_bytes(estimate.contact_bytes) + ")"
+              : "") +
          (estimate.elastoplastic_regions > 0
               ? "; the cells of the elastoplastic region" + std::string(estimate.elastoplastic_regions > 1 ? "s" : "") +
                     " not included (their operators are checked against the memory limit once the cells are made; "
@@ -267,6 +324,19 @@ void check_memory(const ResourceEstimate& estimate, const ResourceLimits& limits
                                     format_bytes(compressed_bytes(estimate.unknowns, false)) +
                                     " for the largest body), or "
                               : "";
+  if (systems > limit && estimate.contact_bytes > 0.5 * systems)
+    throw InputError(SourceLocation{file, 0, ""},
+                     "the contacts' condensed operator (" + std::to_string(estimate.contact_pairs) + " pairs, " +
+                         (estimate.contact_matrix_free ? "applied matrix-free" : "formed") + ") needs about " +
+                         format_bytes(estimate.contact_bytes) + " of memory, " + format_bytes(systems) +
+                         " with the boundary systems, over the limit of " + format_bytes(limit) + "; " +
+                         (estimate.contact_matrix_free || !estimate.matrix_free_obstacle.empty()
+                              ? std::string("use fewer elements on the contact zones")
+                              : std::string("use fewer elements on the contact zones, or apply the operator through "
+                                            "the regions with [solver] operator = \"compressed\" and "
+                                            "contact_operator = \"matrix_free\" (docs/contact.md, Large contact "
+                                            "zones)")) +
+                         ", or raise the limit with --max-memory (GB) on a larger machine");
   if (systems > limit)
     throw InputError(SourceLocation{file, 0, ""},
                      std::string(estimate.compressed ? "the compressed" : "the dense") +
@@ -338,17 +408,29 @@ ResourceEstimate estimate_resources(const dd::DecompositionProblem& problem) {
 }
 
 ResourceEstimate estimate_resources(const contact::ContactProblem& problem) {
+  // Every region stays factored while the contacts are solved, one at a time is at its
+  // assembly peak; then the contacts' condensed operator.
   ResourceEstimate estimate;
   estimate.threads = omp_get_max_threads();
+  double held = 0.0, extra_peak = 0.0;
+  bool all_compressed = true;
   for (const auto& body : problem.bodies)
     for (const auto& region : body.regions) {
       const auto cost = body_cost(region.body, problem.analysis, problem.mesh, region.interior_points.size(),
                                   problem.operator_choice, estimate.threads);
       add_body(estimate, cost);
-      estimate.bytes += cost.peak_bytes;
+      held += cost.held_bytes;
+      extra_peak = std::max(extra_peak, cost.peak_bytes - cost.held_bytes);
+      all_compressed = all_compressed && cost.compressed;
       estimate.could_compress = estimate.could_compress || cost.could_compress;
       estimate.elastoplastic_regions += region.body.plasticity ? 1 : 0;
     }
+  const ContactRouteCost contacts = contact_route_cost(problem, all_compressed, estimate.unknowns);
+  estimate.contact_pairs = contacts.pairs;
+  estimate.contact_matrix_free = contacts.matrix_free;
+  estimate.contact_bytes = contacts.bytes;
+  estimate.matrix_free_obstacle = contact::matrix_free_obstacle(problem);
+  estimate.bytes = held + extra_peak + contacts.bytes;
   if (problem.record_steps && !problem.contacts.empty()) {
     estimate.recorded_steps = most_steps(problem);
     estimate.recording_bytes = recording_bytes(problem, estimate.recorded_steps);

@@ -165,6 +165,10 @@ void check_read(const Problem& problem, const io::ProblemInput& input, const Run
                      {"largest_body_unknowns", estimate.unknowns},
                      {"memory_bytes", estimate.bytes},
                      {"recorded_steps_bytes", estimate.recording_bytes},
+                     {"contact_pairs", estimate.contact_pairs},
+                     {"contact_operator_bytes", estimate.contact_bytes},
+                     {"contact_operator", estimate.contact_pairs == 0 ? "none"
+                                          : estimate.contact_matrix_free ? "matrix_free" : "dense"},
                      {"seconds", estimate.seconds},
                      {"threads", estimate.threads},
                      {"elastoplastic_regions_not_included", estimate.elastoplastic_regions}};

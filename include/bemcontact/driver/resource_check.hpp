@@ -27,6 +27,12 @@ struct ResourceEstimate {
   // (included in `bytes`), for at most `recorded_steps` steps.
   double recording_bytes = 0.0;
   std::int64_t recorded_steps = 0;
+  // Contact runs: the condensed operator of the contacts' pairs (included in `bytes`),
+  // formed or applied matrix-free as the model will choose (contact::SolverOptions).
+  std::int64_t contact_pairs = 0;
+  bool contact_matrix_free = false;
+  double contact_bytes = 0.0;
+  std::string matrix_free_obstacle;  // why the operator cannot be applied matrix-free ("": it can)
   // Regions with a yield stress: their cells' operators and Newton iterations are not in
   // `bytes` and `seconds` (the cells are made after meshing; their memory is checked then).
   int elastoplastic_regions = 0;

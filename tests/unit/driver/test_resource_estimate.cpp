@@ -8,10 +8,12 @@
 #include <omp.h>
 
 #include "bemcontact/bem/analysis.hpp"
+#include "bemcontact/contact/condensed.hpp"
 #include "bemcontact/core/error.hpp"
 #include "bemcontact/dd/plate_strips.hpp"
 #include "bemcontact/driver/resource_check.hpp"
 #include "bemcontact/driver/run.hpp"
+#include "bemcontact/io/input/contact_file.hpp"
 #include "bemcontact/io/input/problem_file.hpp"
 #include "support/example_text.hpp"
 
@@ -51,9 +53,9 @@ TEST(ResourceEstimate, TimeGrowsWithTheCubeOfTheUnknownsAndIsDescribed) {
 }
 
 // Above the threshold a body goes to hierarchical matrices by default, and its estimate
-// follows the documented law: memory 14 MB + 1 200 B per N log2 N (20 % more when point
+// follows the documented law: memory 14 MB + 1 450 B per N log2 N (20 % more when point
 // constraints make the H-LU factor A^T too, as the plate's does), time N log2(N)^2 times
-// 0.85 us + two kernel pairs per node pair + 0.47 us per factorisation, on one thread.
+// 1.45 us + two kernel pairs per node pair + 0.47 us per factorisation, on one thread.
 TEST(ResourceEstimate, LargeBodiesAreCompressedByDefault) {
   auto problem = io::parse_problem(test_support::example_text("plate_tension.toml"), "plate.toml").problem;
   problem.interior_points.clear();
@@ -118,6 +120,62 @@ TEST(ResourceEstimate, LargeSubdomainsAreCompressedAndTheRefusalNamesTheOption) 
     ADD_FAILURE() << "a 20 000-unknown dense pair of subdomains fits in 8 GB?";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("operator = \"compressed\""), std::string::npos) << e.what();
+  }
+}
+
+// A rigid cylinder pressed on a block (contact_compliant_cylinder.toml, unilateral) with n
+// elements on its contact zone, the block's other boundaries as the example has them.
+contact::ContactProblem rigid_cylinder(int n) {
+  std::string text = test_support::example_text("contact_compliant_cylinder.toml");
+  for (const char* key : {"kind = \"compliant\"\n", "normal_stiffness = \"cn\"\n", "normal_exponent = \"m\"\n"})
+    text = test_support::replaced(text, key, "");
+  return io::parse_contact_problem(text, "cylinder.toml", {{"n", static_cast<double>(n)}}).problem;
+}
+
+// A contact run's estimate holds its condensed operator, on the route the model takes: the
+// formed M (2n x 2n) and the block's responses to the pairs, or the matrix-free route's
+// coarse images and batches; a zone too fine for the formed operator is refused with the
+// matrix-free route named, and passes on it.
+TEST(ResourceEstimate, ContactOperatorIsCountedOnTheRouteTheModelTakes) {
+  const auto small = rigid_cylinder(40);
+  const auto formed = estimate_resources(small);
+  EXPECT_EQ(formed.contact_pairs, 41);
+  EXPECT_FALSE(formed.contact_matrix_free);
+  const double pairs = 41.0;
+  EXPECT_DOUBLE_EQ(formed.contact_bytes, 2.0 * 8.0 * (2.0 * pairs) * (2.0 * pairs));
+  const contact::ContactModel model(small);
+  EXPECT_EQ(model.condensed().matrix_free, nullptr);
+  EXPECT_EQ(model.condensed().M.rows(), 2 * 41);
+  EXPECT_GE(formed.contact_bytes, 8.0 * static_cast<double>(model.condensed().M.size()));
+  EXPECT_NE(describe(formed).find("the contacts' 41 pairs on the formed operator included"), std::string::npos)
+      << describe(formed);
+  // Asked matrix-free, the model and the estimate agree.
+  auto asked = small;
+  asked.solver.contact_operator = contact::CondensedOperatorKind::matrix_free;
+  EXPECT_TRUE(estimate_resources(asked).contact_matrix_free);
+  EXPECT_NE(contact::ContactModel(asked).condensed().matrix_free, nullptr);
+
+  // 16 001 pairs on the compressed block: matrix-free by default (about 0.5 GB, measured
+  // 0.3 GB above the block's), formed 8 GB for M and the responses.
+  auto large = rigid_cylinder(16000);
+  const auto automatic = estimate_resources(large);
+  EXPECT_TRUE(automatic.compressed);
+  EXPECT_TRUE(automatic.contact_matrix_free);
+  EXPECT_LT(automatic.contact_bytes, 0.6e9);
+  ResourceLimits limits;
+  limits.max_memory_bytes = 4e9;
+  EXPECT_NO_THROW(check_resources(large, limits));
+  large.solver.contact_operator = contact::CondensedOperatorKind::dense;
+  const auto dense = estimate_resources(large);
+  EXPECT_FALSE(dense.contact_matrix_free);
+  EXPECT_GT(dense.contact_bytes, 8e9);
+  try {
+    check_resources(large, limits);
+    ADD_FAILURE() << "a formed operator of 16 001 pairs fits in 4 GB?";
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("the contacts' condensed operator (16001 pairs, formed)"), std::string::npos) << message;
+    EXPECT_NE(message.find("contact_operator = \"matrix_free\""), std::string::npos) << message;
   }
 }
 
