@@ -43,11 +43,14 @@ operators::HMatrixOptions rows_by_component(operators::HMatrixOptions options, I
 // -1 for none: a node where two lines meet, on an arc or an oblique element. On such a line,
 // between a point of it and elements of it, r is along the line and n across: the plane
 // kernels' T_xx = T_yy = 0 and U_xy = U_yx = 0 ((II.11), (II.12): dr/dn = 0 and r_x r_y = 0),
-// the zeros of HMatrixOptions::col_null_components. None in axisymmetry (ring kernels) or on
-// a body with symmetry images (an element's image leaves its line).
+// the zeros of HMatrixOptions::col_null_components. In axisymmetry on the lines z = const
+// only (the plane of the ring loads: Kelvin's tractions on a plane through the point force
+// and its displacements across it vanish the same way; a line r = const is a cylinder);
+// none on a body with symmetry images (an element's image leaves its line).
 std::vector<int> node_lines(const geometry::BoundaryMesh& mesh, AnalysisType type) {
   std::vector<int> line(static_cast<std::size_t>(mesh.node_count()), -1);
-  if (type == AnalysisType::axisymmetric || !mesh.images.empty()) return line;
+  if (!mesh.images.empty()) return line;
+  const bool axisymmetric = type == AnalysisType::axisymmetric;
   std::vector<std::pair<int, double>> keys;  // (0: y = c, 1: x = c; c) of each id
   const auto id_of = [&keys](int axis, double level) {
     for (std::size_t k = 0; k < keys.size(); ++k)
@@ -59,7 +62,7 @@ std::vector<int> node_lines(const geometry::BoundaryMesh& mesh, AnalysisType typ
   for (const auto& element : mesh.elements) {
     int id = -1;
     if (!element.arc && element.start.y() == element.end.y()) id = id_of(0, element.start.y());
-    else if (!element.arc && element.start.x() == element.end.x()) id = id_of(1, element.start.x());
+    else if (!element.arc && !axisymmetric && element.start.x() == element.end.x()) id = id_of(1, element.start.x());
     for (int a = 0; a < element.node_count; ++a) {
       const auto node = static_cast<std::size_t>(element.nodes[static_cast<std::size_t>(a)]);
       line[node] = seen[node] && line[node] != id ? -1 : id;
