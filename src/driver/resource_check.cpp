@@ -324,8 +324,10 @@ void check_memory(const ResourceEstimate& estimate, const ResourceLimits& limits
                                     format_bytes(compressed_bytes(estimate.unknowns, false)) +
                                     " for the largest body), or "
                               : "";
+  SourceLocation contact_where = estimate.contact_where;
+  if (contact_where.file.empty()) contact_where.file = file;
   if (systems > limit && estimate.contact_bytes > 0.5 * systems)
-    throw InputError(SourceLocation{file, 0, ""},
+    throw InputError(contact_where,
                      "the contacts' condensed operator (" + std::to_string(estimate.contact_pairs) + " pairs, " +
                          (estimate.contact_matrix_free ? "applied matrix-free" : "formed") + ") needs about " +
                          format_bytes(estimate.contact_bytes) + " of memory, " + format_bytes(systems) +
@@ -430,6 +432,14 @@ ResourceEstimate estimate_resources(const contact::ContactProblem& problem) {
   estimate.contact_matrix_free = contacts.matrix_free;
   estimate.contact_bytes = contacts.bytes;
   estimate.matrix_free_obstacle = contact::matrix_free_obstacle(problem);
+  // Where a refusal points: the route's key when the file sets it, else the first contact
+  // zone (its elements).
+  if (problem.solver.contact_operator_where.line > 0)
+    estimate.contact_where = problem.solver.contact_operator_where;
+  else if (!problem.contacts.empty() && !problem.contacts.front().side1.pieces.empty()) {
+    const auto& side = problem.contacts.front().side1;
+    estimate.contact_where = problem.region(side).body.pieces.at(static_cast<std::size_t>(side.pieces.front())).where;
+  }
   estimate.bytes = held + extra_peak + contacts.bytes;
   if (problem.record_steps && !problem.contacts.empty()) {
     estimate.recorded_steps = most_steps(problem);

@@ -117,7 +117,7 @@ const char* to_string(CondensedOperatorKind kind);
 struct SolverOptions {
   Algorithm algorithm = Algorithm::newton;
   CondensedOperatorKind contact_operator = CondensedOperatorKind::automatic;
-  SourceLocation contact_operator_where;  // its key in the problem file, for messages
+  SourceLocation contact_operator_where;  // its key in the problem file, for messages (line 0: not in the file)
   static constexpr Index matrix_free_threshold = 2000;
   double tolerance = 1e-10;  // Newton: relative residual of the complementarity functions
   bool tolerance_given = false;  // by the problem file (a raise on the matrix-free route is then a warning)

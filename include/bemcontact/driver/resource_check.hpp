@@ -33,6 +33,7 @@ struct ResourceEstimate {
   bool contact_matrix_free = false;
   double contact_bytes = 0.0;
   std::string matrix_free_obstacle;  // why the operator cannot be applied matrix-free ("": it can)
+  SourceLocation contact_where;      // contact_operator's key, else the first contact zone's table
   // Regions with a yield stress: their cells' operators and Newton iterations are not in
   // `bytes` and `seconds` (the cells are made after meshing; their memory is checked then).
   int elastoplastic_regions = 0;

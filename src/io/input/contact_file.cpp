@@ -523,7 +523,7 @@ void read_solver(const TableReader& reader, contact::ContactProblem& problem) {
   problem.solver.contact_operator = contact_operator == "dense"         ? contact::CondensedOperatorKind::dense
                                     : contact_operator == "matrix_free" ? contact::CondensedOperatorKind::matrix_free
                                                                         : contact::CondensedOperatorKind::automatic;
-  problem.solver.contact_operator_where = reader.where("contact_operator");
+  if (reader.has("contact_operator")) problem.solver.contact_operator_where = reader.where("contact_operator");
   problem.solver.gmres_restart = reader.integer_or("gmres_restart", problem.solver.gmres_restart);
   problem.solver.max_gmres_cycles = reader.integer_or("max_gmres_cycles", problem.solver.max_gmres_cycles);
   problem.solver.xi = reader.optional_number("xi").value_or(problem.solver.xi);

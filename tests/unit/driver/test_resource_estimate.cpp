@@ -177,6 +177,8 @@ TEST(ResourceEstimate, ContactOperatorIsCountedOnTheRouteTheModelTakes) {
   EXPECT_FALSE(dense.contact_matrix_free);
   EXPECT_GT(dense.contact_bytes, 8e9);
   const std::string message = refusal(large, limits);
+  EXPECT_EQ(message.rfind("cylinder.toml:", 0), 0u) << message;  // at the contact zone's boundary
+  EXPECT_NE(message.find("key 'body[1].boundary[4]'"), std::string::npos) << message;  // "contact"
   EXPECT_NE(message.find("the contacts' condensed operator (16001 pairs, formed)"), std::string::npos) << message;
   EXPECT_NE(message.find("contact_operator = \"matrix_free\""), std::string::npos) << message;
 }
