@@ -41,12 +41,14 @@ operators::HMatrixOptions rows_by_component(operators::HMatrixOptions options, I
 
 // The straight line parallel to an axis (an id >= 0) that all of each node's elements lie on,
 // -1 for none: a node where two lines meet, on an arc or an oblique element. On such a line,
-// between a point of it and elements of it, r is along the line and n across: the plane
-// kernels' T_xx = T_yy = 0 and U_xy = U_yx = 0 ((II.11), (II.12): dr/dn = 0 and r_x r_y = 0),
+// between a point of it and elements of it, s is along the line and n across: ds/dn = 0 and
+// s_x s_y = 0, so the plane kernels (Annex A, dimension 2; kernels/kelvin2d.cpp) have
+// T_xx = T_yy = 0 (what is left, s_i n_j - s_j n_i, vanishes for i = j) and U_xy = U_yx = 0:
 // the zeros of HMatrixOptions::col_null_components. In axisymmetry on the lines z = const
-// only (the plane of the ring loads: Kelvin's tractions on a plane through the point force
-// and its displacements across it vanish the same way; a line r = const is a cylinder);
-// none on a body with symmetry images (an element's image leaves its line).
+// only (the plane of the ring loads, Annex B: Kelvin's tractions on a plane through the point
+// force and its displacements across it vanish the same way; a line r = const is a
+// cylinder). Checked on the integrated H and G (CompressedSystem.KernelsVanishWhereTheLinesSayTheyDo).
+// None on a body with symmetry images (an element's image leaves its line).
 std::vector<int> node_lines(const geometry::BoundaryMesh& mesh, AnalysisType type) {
   std::vector<int> line(static_cast<std::size_t>(mesh.node_count()), -1);
   if (!mesh.images.empty()) return line;
