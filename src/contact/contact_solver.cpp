@@ -632,6 +632,10 @@ void advance(const HistoryData& data, double from, double to, double offset, con
     }
     changes_at_once = false;
     if (hooks.check_step) hooks.check_step(run.taken + 1, t_next + offset, trial_state);
+    if (trial.at_round_off) {
+      ++history.steps_at_round_off;
+      history.round_off_residual = std::max(history.round_off_residual, trial.residual);
+    }
     run.step = trial;
     add_dissipation(data, run.step, run.previous.previous_tangential_jump, run.dissipated);
     add_wear(data, run);
@@ -887,6 +891,8 @@ void take_history(const ContactProblem& problem, LoadHistory& history, ContactRe
   result.steps_past_state_limit = history.steps_past_state_limit;
   result.steps_at_shortest = history.steps_at_shortest;
   result.shortest_step_times = history.shortest_step_times;
+  result.steps_at_round_off = history.steps_at_round_off;
+  result.round_off_residual = history.round_off_residual;
   result.newton_systems = history.newton_systems;
   for (std::size_t c = 0; c < result.contacts.size(); ++c) result.contacts[c].name = problem.contacts[c].name;
   if (!result.contacts.empty()) static_cast<ContactInterfaceResult&>(result) = result.contacts.front();
@@ -1020,6 +1026,14 @@ ContactResult solve_on_meshes(const ContactProblem& problem, const bem::Progress
     text << "tolerance = " << problem.solver.tolerance << " is below the round-off of the matrix-free products over "
          << model.condensed().pairs << " pairs: the steps were converged to " << matrix_free_round_off(model.condensed().pairs)
          << " (docs/contact.md, \"Large contact zones\")";
+    result.warnings.push_back(text.str());
+  }
+  if (result.steps_at_round_off > 0 && !result.matrix_free) {
+    std::ostringstream text;
+    text << result.steps_at_round_off << " load step" << (result.steps_at_round_off == 1 ? "" : "s")
+         << " stopped at the round-off of the Newton solves, residual up to " << result.round_off_residual
+         << " against tolerance = " << problem.solver.tolerance
+         << " (the contact set repeated and the residual no longer fell; docs/contact.md, \"Tolerance\")";
     result.warnings.push_back(text.str());
   }
   // A few such steps follow first touch and the corners (a zone growing as the square root of

@@ -167,6 +167,8 @@ struct ContactResult : ContactInterfaceResult {
   int steps_past_state_limit = 0;  // LoadHistory's
   int steps_at_shortest = 0;       // LoadHistory's
   std::vector<double> shortest_step_times;  // LoadHistory's
+  int steps_at_round_off = 0;      // LoadHistory's
+  double round_off_residual = 0.0;  // LoadHistory's
   NewtonSystemCounts newton_systems;
   // When record_steps: per step, every region's boundary solution with stresses.
   std::vector<std::vector<bem::BoundarySolution>> step_boundary;
@@ -205,6 +207,10 @@ struct LoadHistory : ContactInterfaceResult {
   // at the shortest step, end_time / max_steps.
   int steps_at_shortest = 0;
   std::vector<double> shortest_step_times;  // the first three
+  // Steps taken above the tolerance at their solves' round-off (StepOutput::at_round_off), and
+  // the largest such residual.
+  int steps_at_round_off = 0;
+  double round_off_residual = 0.0;
   NewtonSystemCounts newton_systems;
   Vector x;                             // final (lambda_n, tau) per pair
   Vector delta;                         // final motions (CondensedProblem::motions)

@@ -166,6 +166,9 @@ struct StepOutput {
   std::vector<int> state;  // Newton: the active sets of the last iteration
   double residual = 0.0;  // relative complementarity residual
   bool converged = false;
+  // Converged above the tolerance, within 100 times it, where the iteration could not improve
+  // (the set repeating at its solves' round-off: solve_step_newton).
+  bool at_round_off = false;
   std::string failure;    // why not, when not converged
   int newton_iterations = 0;
   int kalker_iterations = 0;     // Alg V.3 (and the frictionless pass of V.3.4)

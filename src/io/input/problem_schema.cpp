@@ -216,7 +216,10 @@ std::vector<Key> contact_solver_keys() {
           choice("contact_operator", {"auto", "dense", "matrix_free"}, "auto",
                  "the condensed operator formed (dense) or applied through the regions' factors (matrix_free: "
                  "any contact law, with or without friction; auto: from 2000 pairs on compressed regions)"),
-          number("tolerance", "1e-10", "newton: relative residual of the complementarity functions (matrix-free: at least 1e-15 pairs^1.5)",
+          number("tolerance", "1e-10",
+                 "newton: relative residual of the complementarity functions (matrix-free: at least 1e-15 "
+                 "pairs^1.5; a step whose contact set repeats at its solves' round-off is taken within 100 times "
+                 "it, with a warning: docs/contact.md, Tolerance)",
                  between(0, 1, true, true)),
           integer("max_iterations", "100", "newton iterations per step; Kalker iterations (thesis)", at_least(1)),
           integer("gmres_restart", "3", "thesis only: m of GMRES(m) (Alg V.1)", at_least(1)),
