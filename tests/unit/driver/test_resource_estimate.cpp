@@ -20,6 +20,12 @@
 namespace bemcontact::driver {
 namespace {
 
+ResourceLimits memory_limit(double bytes) {
+  ResourceLimits limits;
+  limits.max_memory_bytes = bytes;
+  return limits;
+}
+
 // The message of check_resources' refusal, "" when it passes.
 template <class Problem>
 std::string refusal(const Problem& problem, const ResourceLimits& limits) {
@@ -119,8 +125,7 @@ TEST(ResourceEstimate, LargeSubdomainsAreCompressedAndTheRefusalNamesTheOption) 
   const double n = static_cast<double>(estimate.unknowns), k = 2.0 * 2501.0;
   EXPECT_NEAR(estimate.bytes, 3.0 * (14e6 + 1450.0 * n * std::log2(n) + 8.0 * (2.0 * k * k)),
               1e-6 * estimate.bytes);
-  ResourceLimits limits;
-  limits.max_memory_bytes = 8e9;
+  const ResourceLimits limits = memory_limit(8e9);
   EXPECT_EQ(refusal(problem, limits), "");
   problem.operator_choice.kind = bem::OperatorKind::dense;
   const auto dense = estimate_resources(problem);
@@ -169,8 +174,7 @@ TEST(ResourceEstimate, ContactOperatorIsCountedOnTheRouteTheModelTakes) {
   EXPECT_TRUE(automatic.compressed);
   EXPECT_TRUE(automatic.contact_matrix_free);
   EXPECT_LT(automatic.contact_bytes, 0.6e9);
-  ResourceLimits limits;
-  limits.max_memory_bytes = 4e9;
+  const ResourceLimits limits = memory_limit(4e9);
   EXPECT_EQ(refusal(large, limits), "");
   large.solver.contact_operator = contact::CondensedOperatorKind::dense;
   const auto dense = estimate_resources(large);
