@@ -174,6 +174,7 @@ CompressedBoundarySystem::CompressedBoundarySystem(const geometry::BoundaryMesh&
       constraints_(std::move(constraints)),
       type_(integrator.type()),
       blocks_(mesh, integrator),
+      node_line_(node_lines(mesh, integrator.type())),
       influence_(assemble_influence(options, "the influence matrices of " + what, progress)),
       diagonal_(diagonal_blocks(options, what, progress)),
       system_(assemble_system(options, what, progress)),
@@ -223,7 +224,7 @@ operators::RowPartitionedHMatrix CompressedBoundarySystem::assemble_influence(co
   // On a line, a u column is zero in its own component's rows (T_xx = T_yy = 0), a p column
   // in the other's (U_xy = 0).
   operators::HMatrixOptions by_component = rows_by_component(options, 2 * n);
-  const std::vector<int> line = node_lines(mesh_, type_);
+  const std::vector<int>& line = node_line_;
   by_component.row_line.resize(static_cast<std::size_t>(2 * n));
   by_component.col_line.resize(static_cast<std::size_t>(4 * n));
   by_component.col_null_components.resize(static_cast<std::size_t>(4 * n));
@@ -391,7 +392,7 @@ operators::HMatrix CompressedBoundarySystem::assemble_system(const operators::HM
   // the rows of component k when w's other component is 0, a traction column (-G w) when w's
   // own is; constraint rows lie on no line.
   operators::HMatrixOptions by_component = rows_by_component(options, dofs, extra);
-  const std::vector<int> line = node_lines(mesh_, type_);
+  const std::vector<int>& line = node_line_;
   by_component.row_line.assign(static_cast<std::size_t>(dofs + extra), -1);
   by_component.col_line.resize(static_cast<std::size_t>(dofs + extra));
   by_component.col_null_components.assign(static_cast<std::size_t>(dofs + extra), 0);

@@ -295,7 +295,7 @@ void HatImages::form(const std::vector<Index>& functions) const {
   missing.erase(std::unique(missing.begin(), missing.end()), missing.end());
   // In batches of columns, each rounded to single precision as it comes (the whole batch in
   // double is what the rounding saves).
-  constexpr std::size_t kImageBatch = 64;
+  constexpr auto kImageBatch = static_cast<std::size_t>(HatImages::kBatch);
   for (std::size_t first = 0; first < missing.size(); first += kImageBatch) {
     const std::size_t count = std::min(kImageBatch, missing.size() - first);
     std::vector<Eigen::Triplet<double>> spread;

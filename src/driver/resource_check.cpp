@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 #include <string_view>
 
+#include "bemcontact/contact/condensed.hpp"
 #include "bemcontact/core/error.hpp"
 #include "bemcontact/operators/hmatrix.hpp"
 
@@ -229,21 +230,18 @@ struct ContactRouteCost {
   bool matrix_free = false;
   double bytes = 0.0;
 };
-constexpr double matrix_free_batch_columns = 64.0;  // matrix_free_step.cpp, HatImages::form
-
+// `obstacle`: contact::matrix_free_obstacle's.
 ContactRouteCost contact_route_cost(const contact::ContactProblem& problem, bool regions_compressed,
-                                    std::int64_t largest_unknowns) {
+                                    std::int64_t largest_unknowns, const std::string& obstacle) {
   ContactRouteCost cost;
-  std::int64_t zone_dofs = 0;
-  for (const auto& contact : problem.contacts) {
-    cost.pairs += zone_nodes(problem, contact.side1, problem.mesh);
-    zone_dofs += 2 * (zone_nodes(problem, contact.side1, problem.mesh) + zone_nodes(problem, contact.side2, problem.mesh));
-  }
+  cost.pairs = most_pairs(problem, problem.mesh);
   if (cost.pairs == 0) return cost;
+  std::int64_t zone_dofs = 2 * cost.pairs;  // side 1's, then side 2's
+  for (const auto& contact : problem.contacts) zone_dofs += 2 * zone_nodes(problem, contact.side2, problem.mesh);
   using Kind = contact::CondensedOperatorKind;
   const Kind kind = problem.solver.contact_operator;
   cost.matrix_free = kind == Kind::matrix_free ||
-                     (kind == Kind::automatic && regions_compressed && contact::matrix_free_obstacle(problem).empty() &&
+                     (kind == Kind::automatic && regions_compressed && obstacle.empty() &&
                       cost.pairs >= contact::SolverOptions::matrix_free_threshold);
   const double n = static_cast<double>(cost.pairs);
   if (!cost.matrix_free) {
@@ -252,7 +250,8 @@ ContactRouteCost contact_route_cost(const contact::ContactProblem& problem, bool
   }
   const double d = problem.has_friction() ? 2.0 : 1.0;  // rows of an image per pair
   const double images = 4.0 * (n / 8.0) * d * n * (1.0 + d) + 4.0 * (n / 64.0) * d * n;
-  const double batch = matrix_free_batch_columns * 8.0 * (10.0 * static_cast<double>(largest_unknowns) + 4.0 * n);
+  const double batch = static_cast<double>(contact::HatImages::kBatch) * 8.0 *
+                       (10.0 * static_cast<double>(largest_unknowns) + 4.0 * n);
   cost.bytes = images + batch;
   return cost;
 }
@@ -427,11 +426,12 @@ ResourceEstimate estimate_resources(const contact::ContactProblem& problem) {
       estimate.could_compress = estimate.could_compress || cost.could_compress;
       estimate.elastoplastic_regions += region.body.plasticity ? 1 : 0;
     }
-  const ContactRouteCost contacts = contact_route_cost(problem, all_compressed, estimate.unknowns);
+  estimate.matrix_free_obstacle = contact::matrix_free_obstacle(problem);
+  const ContactRouteCost contacts =
+      contact_route_cost(problem, all_compressed, estimate.unknowns, estimate.matrix_free_obstacle);
   estimate.contact_pairs = contacts.pairs;
   estimate.contact_matrix_free = contacts.matrix_free;
   estimate.contact_bytes = contacts.bytes;
-  estimate.matrix_free_obstacle = contact::matrix_free_obstacle(problem);
   // Where a refusal points: the route's key when the file sets it, else the first contact
   // zone (its elements).
   if (problem.solver.contact_operator_where.line > 0)

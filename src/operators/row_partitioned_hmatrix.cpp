@@ -93,14 +93,14 @@ RowPartitionedHMatrix::RowPartitionedHMatrix(const std::vector<Vec2>& row_points
           progress(mean / static_cast<double>(rows_));
         };
       HMatrixOptions piece_options = options;  // the piece's rows' components and lines
-      if (!options.row_component.empty()) {
-        piece_options.row_component.clear();
-        for (const Index r : rows) piece_options.row_component.push_back(options.row_component[static_cast<std::size_t>(r)]);
-      }
-      if (!options.row_line.empty()) {
-        piece_options.row_line.clear();
-        for (const Index r : rows) piece_options.row_line.push_back(options.row_line.at(static_cast<std::size_t>(r)));
-      }
+      const auto piece_rows = [&rows](const std::vector<int>& per_row) {
+        std::vector<int> out;
+        if (!per_row.empty())
+          for (const Index r : rows) out.push_back(per_row.at(static_cast<std::size_t>(r)));
+        return out;
+      };
+      piece_options.row_component = piece_rows(options.row_component);
+      piece_options.row_line = piece_rows(options.row_line);
       const std::string piece_name = count == 1 ? what : what + " (rows " + std::to_string(p + 1) + " of " + std::to_string(count) + ")";
       pieces_[static_cast<std::size_t>(p)] =
           std::make_unique<Piece>(Piece{rows, HMatrix(points, col_points, piece_entries, piece_options, piece_name, report)});

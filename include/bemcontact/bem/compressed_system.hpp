@@ -103,6 +103,7 @@ class CompressedBoundarySystem : public operators::Factorization {
   std::vector<ConstraintEquation> constraints_;
   AnalysisType type_;
   InfluenceBlocks blocks_;
+  std::vector<int> node_line_;  // the straight line each node's elements lie on (-1: none)
   operators::RowPartitionedHMatrix influence_;  // [H' | G]: applied only, so in row pieces
   std::vector<Mat2> diagonal_;    // H_ii
   operators::HMatrix system_;     // A
