@@ -7,7 +7,7 @@
 #   install-deps.sh --mpi    plus OpenMPI and PETSc (`make test-mpi`, distributed runs)
 set -euo pipefail
 cd "$(dirname "$0")/.."
-packages=(g++ cmake make pkg-config libeigen3-dev libopenblas-dev libhmat-oss-dev
+packages=(g++ cmake make ninja-build pkg-config libeigen3-dev libopenblas-dev libhmat-oss-dev
   libtomlplusplus-dev libcli11-dev nlohmann-json3-dev)
 if [ "${1:-}" != "--core" ]; then
   packages+=(libgtest-dev libbenchmark-dev

@@ -351,6 +351,14 @@ struct HistoryRun {
   WearDepths wear;     // empty without wear; its slip path since the cycle started
   std::vector<double> step_ends;  // the last stretch's accepted steps (a repeated cycle's plan)
   int taken = 0;
+  // The last accepted steps since the loads last turned (a corner of their amplitudes, the
+  // start of a stretch), at most two: the next step starts on the line through them
+  // (predicted_start).
+  struct Point {
+    double t = 0.0;
+    Vector x, delta, product;  // product: M x
+  };
+  std::vector<Point> line;
 };
 
 // The state before the first step: no force, no jump, every pair open, nothing worn.
@@ -376,8 +384,39 @@ HistoryRun history_start(const HistoryData& data) {
   return run;
 }
 
+// Between two corners of the amplitudes the loads are affine in t, and so is the solution
+// while no pair changes state (the Newton system's matrix is the state's, its right-hand side
+// affine in t). The next step's Newton iteration therefore starts on the line through the last
+// two steps, its first active sets those of that point instead of the last step's: a step in
+// which one pair changes state then takes one iteration, not two (the first solving with the
+// old sets, the second with the new). The product M x of the start is the same line's through
+// theirs. The semi-smooth Newton route alone (the thesis algorithm and the plastic coupling
+// start from the last step).
+void predicted_start(const HistoryData& data, const std::vector<HistoryRun::Point>& line, double t_next,
+                     StepInput& input) {
+  if (line.size() < 2 || data.coupling || data.problem.solver.algorithm != Algorithm::newton) return;
+  const auto &a = line[0], &b = line[1];
+  const double rate = (t_next - b.t) / (b.t - a.t);
+  input.x_start = b.x + rate * (b.x - a.x);
+  input.delta_start = b.delta + rate * (b.delta - a.delta);
+  input.product_start = b.product + rate * (b.product - a.product);
+  input.state_start.clear();
+}
+
+// The accepted step at t as a point of the line (predicted_start), after a corner of the
+// amplitudes its first.
+void add_to_line(const HistoryData& data, const StepOutput& step, double t, bool at_corner, HistoryRun& run) {
+  const auto& condensed = data.condensed;
+  if (at_corner) run.line.clear();
+  if (run.line.size() == 2) run.line.erase(run.line.begin());
+  Vector product = step.w - condensed.jump_at(t);
+  if (condensed.motions > 0) product -= condensed.b * step.delta;
+  run.line.push_back({t, step.x, step.delta, std::move(product)});
+}
+
 // The step to t_next, from the solution at the end of the previous step.
-StepOutput solve_step(const HistoryData& data, const StepInput& previous, double t_next) {
+StepOutput solve_step(const HistoryData& data, const StepInput& previous, double t_next,
+                      const std::vector<HistoryRun::Point>& line = {}) {
   StepInput input = step_input(data.condensed, t_next);
   input.gap = previous.gap;
   input.kind = data.laws.kind;
@@ -388,6 +427,7 @@ StepOutput solve_step(const HistoryData& data, const StepInput& previous, double
   input.x_start = previous.x_start;
   input.delta_start = previous.delta_start;
   input.state_start = previous.state_start;
+  predicted_start(data, line, t_next, input);
   input.newton_cache = data.newton_cache.get();
   const SolverOptions& solver = data.problem.solver;
   if (data.coupling) return data.coupling->solve_step(input, solver);
@@ -571,6 +611,7 @@ void advance(const HistoryData& data, double from, double to, double offset, con
   std::size_t corner = 0, planned = 0;
   int taken = 0;  // in this stretch (max_steps bounds each cycle)
   run.step_ends.clear();
+  run.line.clear();  // a stretch's steps start from the last one before it (a cycle jump lies between)
   // The last step redone shorter for changing too many pairs: taken after all when its
   // halves do not converge (a normal compliance whose friction exponent is below the
   // pressure's fails at the small loads halving leads to).
@@ -582,7 +623,7 @@ void advance(const HistoryData& data, double from, double to, double offset, con
     while (planned < plan.size() && plan[planned] <= t + 1e-12 * end) ++planned;
     double t_next = std::min(t + dt, corners[corner]);
     if (planned < plan.size()) t_next = std::min(t_next, plan[planned]);
-    StepOutput trial = solve_step(data, run.previous, t_next);
+    StepOutput trial = solve_step(data, run.previous, t_next, run.line);
     add_iterations(run.totals, trial);
     double h = t_next - t;
     reject_runaway_motions(data, trial);
@@ -647,6 +688,7 @@ void advance(const HistoryData& data, double from, double to, double offset, con
     record_history_step(data, run, t, offset, hooks.report, history);
     run.step_ends.push_back(t);
     carry_over(run.step, run.previous);
+    add_to_line(data, run.step, t, corner < corners.size() && std::abs(corners[corner] - t) <= 1e-12 * end, run);
     // The next step: from this one's state changes (adaptive), or grown again by 2 after a
     // shortened one. A plan's steps are the last cycle's, already sized by their changes:
     // sizing them again would split some in every cycle, so there a step shortened for too

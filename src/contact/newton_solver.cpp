@@ -636,6 +636,10 @@ StepOutput solve_step_newton(const StepInput& in, const SolverOptions& options) 
     if (p.motions > 0) jump += p.b * dv;
     return jump;
   };
+  if (in.product_start.size() == 2 * n && x.size() == 2 * n) {
+    krylov_cache.product = in.product_start;
+    krylov_cache.product_of = x;
+  }
   Vector w = jumps(x, delta);
   double residual = complementarity_residual(in, x, delta, w);
   std::set<ActiveSets> seen;

@@ -156,6 +156,9 @@ struct StepInput {
   // then moves the bodies as the previous contact state allows (a bulk strain carries a
   // sticking body along) before the sets are updated. Empty: from x_start.
   std::vector<int> state_start;
+  // Newton: M x_start when it is known without a product (a start predicted from two steps:
+  // the same line through their products); empty: computed.
+  Vector product_start;
   NewtonSystemCache* newton_cache = nullptr;  // optional: reuse of the last Newton system
 };
 
