@@ -642,6 +642,15 @@ StepOutput solve_step_newton(const StepInput& in, const SolverOptions& options) 
   }
   Vector w = jumps(x, delta);
   double residual = complementarity_residual(in, x, delta, w);
+  if (in.start_may_solve && residual <= tolerance) {  // a step in which no pair changed state
+    out.converged = true;
+    out.state = active_sets(in, x, w, c, false);
+    out.x = x;
+    out.delta = delta;
+    out.w = std::move(w);
+    out.residual = residual;
+    return out;
+  }
   std::set<ActiveSets> seen;
   bool damped = false;
   double tightening = 1.0;  // the matrix-free solves' goal factor (solve_matrix_free_newton_system)

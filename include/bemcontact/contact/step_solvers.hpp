@@ -159,6 +159,9 @@ struct StepInput {
   // Newton: M x_start when it is known without a product (a start predicted from two steps:
   // the same line through their products); empty: computed.
   Vector product_start;
+  // Newton: x_start is such a prediction and may be the step's solution as it stands: taken,
+  // with no iteration, when its residual meets the tolerance (the state has not changed).
+  bool start_may_solve = false;
   NewtonSystemCache* newton_cache = nullptr;  // optional: reuse of the last Newton system
 };
 

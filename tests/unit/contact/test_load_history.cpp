@@ -142,21 +142,24 @@ TEST(LoadHistory, StepsThatChangeTooManyPairsAtTheShortestStepAreReported) {
 TEST(LoadHistory, AStepStartsOnTheLineThroughTheLastTwo) {
   // Between the amplitudes' corners the solution is affine in t while no pair changes state,
   // so a step that starts on the line through the last two steps, with that point's active
-  // sets, takes one Newton iteration where a pair closes, starts to slip or sticks. Measured on
-  // the fretting cycle with 60 elements per zone: 78 of its 99 steps take one iteration (41
-  // when each step started from the last one's solution and sets, 52 taking two).
+  // sets, takes one Newton iteration where a pair closes, starts to slip or sticks, and none
+  // where no pair changes state (the point is the solution). Measured on the fretting cycle
+  // with 60 elements per zone: 78 of its 99 steps take one iteration or none (41 when each
+  // step started from the last one's solution and sets, 52 taking two).
   const auto file = io::parse_contact_problem(fretting_text(), "fretting.toml", {{"n", 60.0}});
   auto problem = file.problem;
   problem.drop_interior_points();
   const auto result = solve_contact(problem);
-  int one = 0, steps = 0;
+  int one = 0, none = 0, steps = 0;
   for (const auto& step : result.steps) {
     ++steps;
-    one += step.newton_iterations == 1;
+    one += step.newton_iterations <= 1;
+    none += step.newton_iterations == 0;
     EXPECT_LE(step.newton_iterations, 3) << "at t = " << step.time;
   }
   ASSERT_EQ(steps, result.steps_taken);
-  EXPECT_GE(one, 0.7 * steps) << one << " of " << steps << " steps in one iteration";
+  EXPECT_GE(one, 0.7 * steps) << one << " of " << steps << " steps in one iteration or none";
+  EXPECT_GT(none, 0);
 }
 
 TEST(LoadHistory, AHistoryUnloadedToZeroOrNearlyEndsConverged) {
