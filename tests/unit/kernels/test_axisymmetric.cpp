@@ -265,6 +265,35 @@ TEST(KernelsAxisymmetric, StressKernelsAreHookeOfSourceDerivatives) {
   std::printf("  stress kernels vs Hooke of finite differences: max relative error %.2e\n", worst);
 }
 
+TEST(KernelsAxisymmetric, TractionStressKernelWrittenOutIsTheGeneralOne) {
+  // ring_stress_from_traction (D alone, its numerators expanded by hand for the cells' fields)
+  // against ring_stress_kernels' D (the numerators as polynomial products, checked above against
+  // Hooke's law), from far to s = 1e-3 R, on the axis and at the axis.
+  const KelvinAxisymmetric kelvin{0.9, 0.27};
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  double worst = 0.0;
+  for (int t = 0; t < 400; ++t) {
+    Vec2 x(t % 40 == 0 ? 0.0 : 0.05 + 2 * uniform(random), 2 * uniform(random) - 1);
+    const double distance = std::max(x.x(), 0.3) * std::pow(10.0, -3.0 + 4.0 * uniform(random));
+    const double angle = 2 * pi * uniform(random);
+    Vec2 y = x + distance * Vec2(std::cos(angle), std::sin(angle));
+    y.x() = t % 40 == 1 ? 0.0 : std::abs(y.x());
+    const RingStressKernels general = ring_stress_kernels(kelvin, x, y, Vec2(0.6, 0.8));
+    const RingStressKernel D = ring_stress_from_traction(kelvin, x, y);
+    double scale = 0.0;
+    for (int i = 0; i < 2; ++i)
+      for (int c = 0; c < 4; ++c) scale = std::max(scale, std::abs(general.D[i][c]));
+    for (int i = 0; i < 2; ++i)
+      for (int c = 0; c < 4; ++c) {
+        const double error = std::abs(D[i][c] - general.D[i][c]) / scale;
+        worst = std::max(worst, error);
+        EXPECT_LT(error, 1e-13) << "i=" << i << " c=" << c << " x=" << x.transpose() << " y=" << y.transpose();
+      }
+  }
+  std::printf("  written-out D against the general one: max relative error %.2e\n", worst);
+}
+
 TEST(KernelsAxisymmetric, StressKernelsOnAxisAreContinuous) {
   // At a point on the axis sigma_rr = sigma_tt, and the kernels are the limit R -> 0.
   const KelvinAxisymmetric kelvin{1.0, 0.25};
