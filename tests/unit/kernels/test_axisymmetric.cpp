@@ -230,6 +230,15 @@ std::array<std::array<double, 4>, 2> hooke_of_source_gradient(const KelvinAxisym
   return sigma;
 }
 
+// A field point at `distance` from x in a random direction, mirrored into r >= 0.
+Vec2 field_point_at(const Vec2& x, double distance, std::mt19937& random) {
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  const double angle = 2 * pi * uniform(random);
+  Vec2 y = x + distance * Vec2(std::cos(angle), std::sin(angle));
+  y.x() = std::abs(y.x());
+  return y;
+}
+
 TEST(KernelsAxisymmetric, StressKernelsAreHookeOfSourceDerivatives) {
   const KelvinAxisymmetric kelvin{1.1, 0.3};
   std::mt19937 random(7);
@@ -239,9 +248,7 @@ TEST(KernelsAxisymmetric, StressKernelsAreHookeOfSourceDerivatives) {
     const Vec2 x(0.2 + 2 * uniform(random), 2 * uniform(random) - 1);
     // Field points from far to s = 0.01 R, both regimes of the ring integrals.
     const double distance = x.x() * std::pow(10.0, -2.0 + 2.5 * uniform(random));
-    const double angle = 2 * pi * uniform(random);
-    Vec2 y = x + distance * Vec2(std::cos(angle), std::sin(angle));
-    y.x() = std::abs(y.x());
+    const Vec2 y = field_point_at(x, distance, random);
     const double normal_angle = 2 * pi * uniform(random);
     const Vec2 n(std::cos(normal_angle), std::sin(normal_angle));
     const RingStressKernels k = ring_stress_kernels(kelvin, x, y, n);
@@ -276,9 +283,8 @@ TEST(KernelsAxisymmetric, TractionStressKernelWrittenOutIsTheGeneralOne) {
   for (int t = 0; t < 400; ++t) {
     Vec2 x(t % 40 == 0 ? 0.0 : 0.05 + 2 * uniform(random), 2 * uniform(random) - 1);
     const double distance = std::max(x.x(), 0.3) * std::pow(10.0, -3.0 + 4.0 * uniform(random));
-    const double angle = 2 * pi * uniform(random);
-    Vec2 y = x + distance * Vec2(std::cos(angle), std::sin(angle));
-    y.x() = t % 40 == 1 ? 0.0 : std::abs(y.x());
+    Vec2 y = field_point_at(x, distance, random);
+    if (t % 40 == 1) y.x() = 0.0;
     const RingStressKernels general = ring_stress_kernels(kelvin, x, y, Vec2(0.6, 0.8));
     const RingStressKernel D = ring_stress_from_traction(kelvin, x, y);
     double scale = 0.0;
