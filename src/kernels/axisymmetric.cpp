@@ -206,13 +206,12 @@ RingKernels ring_kernel_log_parts(const KelvinAxisymmetric& kelvin, const Vec2& 
 // (e_i.e_Y) n_Y = n_r sin^2 (i = r); mixed rY, zY components integrate to zero.
 namespace {
 
-// D always, S when asked (it needs the ring integrals one order higher). A template
-// parameter: the cells' fields take D alone, by the million.
-template <bool with_s>
+// D and S as polynomial products; D alone, which the cells' fields take by the million, is
+// written out in ring_stress_from_traction below.
 RingStressKernels stress_kernels(const KelvinAxisymmetric& kelvin, const Vec2& source, const Vec2& field,
                                  const Vec2& normal) {
   const RingPair g(source, field);
-  const RingWeights W = weights(g, with_s ? 3 : 2);
+  const RingWeights W = weights(g, 3);
   const RingFactors f(g, normal);
   const double nu = kelvin.poisson_ratio;
   const double cd = 1.0 / (8.0 * pi * (1.0 - nu));
@@ -237,7 +236,6 @@ RingStressKernels stress_kernels(const KelvinAxisymmetric& kelvin, const Vec2& s
       const Poly<2> dadb = da * db;
       out.D[i][component] =
           cd * ((1.0 - 2.0 * nu) * W.at<1>(dja * db + djb * da - dab * dj) + 3.0 * W.at<2>(dj * dadb));
-      if constexpr (!with_s) continue;
       const Linear& na = f.n_source[a];
       const Linear& nb = f.n_source[b];
       out.S[i][component] =
@@ -253,7 +251,6 @@ RingStressKernels stress_kernels(const KelvinAxisymmetric& kelvin, const Vec2& s
     const Poly<2> ejY_nY = (i == 0 ? normal.x() : 0.0) * sin_squared;
     out.D[i][stress_tt] =
         cd * ((1.0 - 2.0 * nu) * W.at<1>(2.0 * ejY_dY - dj) + 3.0 * W.at<2>(dj * dY_dY));
-    if constexpr (!with_s) continue;
     out.S[i][stress_tt] =
         cs * (3.0 * W.at<2>(dn * ((1.0 - 2.0 * nu) * dj + 2.0 * nu * ejY_dY)) -
               15.0 * W.at<3>(dn * dY_dY * dj) + 6.0 * nu * W.at<2>(nY_dY * dj) +
@@ -267,16 +264,16 @@ RingStressKernels stress_kernels(const KelvinAxisymmetric& kelvin, const Vec2& s
 
 RingStressKernels ring_stress_kernels(const KelvinAxisymmetric& kelvin, const Vec2& source, const Vec2& field,
                                       const Vec2& normal) {
-  return stress_kernels<true>(kelvin, source, field, normal);
+  return stress_kernels(kelvin, source, field, normal);
 }
 
-// stress_kernels' D written out (the cells' fields call it by the million: the polynomial
+// stress_kernels' D written out [BrebbiaDominguez1992] (the cells' fields call it by the million: the polynomial
 // algebra above took 3/4 of its time). With d_a the source factors (b - 2 r u, c), d_j the
 // field factors (b + 2 R u, c), e_a.e_j = cos theta = 1 - 2u (rr) or 1 (zz), and
 // sin^2 theta = 4u - 4u^2, the numerators
 //   (1 - 2 nu) (delta_ja d_b + delta_jb d_a - delta_ab d_j) / rho^3 + 3 d_j d_a d_b / rho^5
 // contracted with W1 = H(1, .), W2 = H(2, .) (and the hoop's out-of-plane factors, as in
-// stress_kernels). Equal to stress_kernels<true>'s D to round-off (unit test).
+// stress_kernels). Equal to stress_kernels' D to round-off (unit test).
 RingStressKernel ring_stress_from_traction(const KelvinAxisymmetric& kelvin, const Vec2& source, const Vec2& field) {
   const RingPair g(source, field);
   const RingWeights W = weights(g, 2);
@@ -312,7 +309,7 @@ RingStressKernel ring_stress_from_traction(const KelvinAxisymmetric& kelvin, con
   // i = 1: d_j = c, e_X.e_j = 0, e_Z.e_j = 1, no hoop factor.
   {
     D[1][stress_rr] = a * w1(-c, 0.0, 0.0) + three * c * w2(xx0, xx1, xx2, 0.0);
-    D[1][stress_zz] = a * w1(2.0 * c - c, 0.0, 0.0) + three * c * c * c * W2[0];
+    D[1][stress_zz] = a * w1(c, 0.0, 0.0) + three * c * c * c * W2[0];  // 2c - c;  c c^2
     D[1][stress_rz] = a * w1(p0, p1, 0.0) + three * c * c * w2(p0, p1, 0.0, 0.0);
     D[1][stress_tt] = a * w1(-c, 0.0, 0.0) + three * c * r * r * w2(0.0, 4.0, -4.0, 0.0);
   }
