@@ -349,6 +349,26 @@ bool same_coupling(const SlipCoupling& a, const SlipCoupling& b, Index j) {
   return x == y;
 }
 
+// J z through the product of M (jacobian_entry's columns: a slipping pair's tau folded into
+// its lambda_n's column, a compliant pair's shift on its diagonal, the motions' columns b and
+// f_delta): one product instead of the formed J's, where M is compressed (M_products).
+Vector apply_newton_matrix(const CondensedProblem& p, const NewtonSystem& system, const Vector& z) {
+  const Index n = p.pairs, K = p.motions, reduced = static_cast<Index>(system.free_dofs.size());
+  Vector x = system.pair_unknowns(z, n);
+  for (Index i = 0; i < n; ++i) x[2 * i + 1] -= system.slip_factor[i] != 0.0 || system.slip_offset[i] != 0.0
+                                                    ? system.slip_offset[i] : 0.0;
+  const Vector delta = z.tail(K);
+  Vector w = p.apply_M(x);
+  if (K > 0) w += p.b * delta;
+  Vector out(reduced + K);
+  for (Index a = 0; a < reduced; ++a) {
+    const Index dof = system.free_dofs[static_cast<std::size_t>(a)];
+    out[a] = w[dof] - (dof % 2 == 0 ? system.normal_shift[dof / 2] * z[a] : 0.0);
+  }
+  for (Index k = 0; k < K; ++k) out[reduced + k] = p.f.row(k).dot(x) + p.f_delta.row(k).dot(delta);
+  return out;
+}
+
 // Whether z solves the system (J z = rhs to a relative 1e-6, J z computed by `apply`).
 template <class Apply>
 bool solves(const Apply& apply, const Vector& z, const Vector& rhs, double J_norm) {
@@ -461,14 +481,13 @@ bool solve_by_update(const StepInput& in, NewtonSystem& system, NewtonSystemCach
   Vector rhs(size);
   for (Index j = 0; j < size; ++j) rhs[j] = system.rhs[order[static_cast<std::size_t>(j)]];
   const Vector y = cache.update->solve(rhs);
-  const auto apply = [&](const Vector& v) { return cache.update->apply(v); };
-  if (!solves(apply, y, rhs, cache.J_norm)) {
-    cache.update.reset();
-    return false;
-  }
   z.resize(size);
   for (Index j = 0; j < size; ++j) z[order[static_cast<std::size_t>(j)]] = y[j];
-  return true;
+  const bool solved =
+      p.M_products ? solves([&](const Vector& v) { return apply_newton_matrix(p, system, v); }, z, system.rhs, cache.J_norm)
+                   : solves([&](const Vector& v) { return cache.update->apply(v); }, y, rhs, cache.J_norm);
+  if (!solved) cache.update.reset();
+  return solved;
 }
 
 // Solves the Newton system into z; false when it is singular (or the solution does not
@@ -510,6 +529,9 @@ bool solve_newton_system(const StepInput& in, NewtonSystem& system, Vector& z) {
   }
   const Matrix& J = cache.J;
   z = cache.lu.solve(system.rhs);
+  if (in.problem->M_products)
+    return solves([&](const Vector& v) { return apply_newton_matrix(*in.problem, system, v); }, z, system.rhs,
+                  cache.J_norm);
   return solves([&](const Vector& v) { return Vector(J * v); }, z, system.rhs, cache.J_norm);
 }
 

@@ -22,6 +22,7 @@
 #include "bemcontact/bem/factored_body.hpp"
 #include "bemcontact/contact/free_motions.hpp"
 #include "bemcontact/contact/pairing.hpp"
+#include "bemcontact/operators/hmatrix.hpp"
 #include "bemcontact/operators/linear_operator.hpp"
 
 namespace bemcontact::contact {
@@ -98,6 +99,10 @@ struct CondensedProblem {
   Index pairs = 0;
   Matrix M;        // 2N x 2N; empty on the matrix-free route (then matrix_free.M applies it)
   std::shared_ptr<const MatrixFreeCondensed> matrix_free;  // null: M is formed
+  // A formed M of many pairs held also as a hierarchical matrix (ContactModel's
+  // compress_formed_operator), for the products of the iterations; the Newton systems take
+  // their entries from M. Whoever changes M drops it. Null: the products are M's.
+  std::shared_ptr<const operators::HMatrix> M_products;
   // M x, whichever way M is held.
   Vector apply_M(const Vector& x) const;
   Vector gap;      // N, d of (V.3)
@@ -218,6 +223,7 @@ class ContactModel {
   void assemble_jumps_and_loads(Build& build);
   void assemble_motion_equations(Build& build);
   void form_matrix_free_operator(Build& build);
+  void compress_formed_operator(const Build& build);
 
   ContactProblem problem_;
   PreparedContact prepared_;

@@ -119,6 +119,9 @@ struct SolverOptions {
   CondensedOperatorKind contact_operator = CondensedOperatorKind::automatic;
   SourceLocation contact_operator_where;  // its key in the problem file, for messages (line 0: not in the file)
   static constexpr Index matrix_free_threshold = 2000;
+  // Formed by the automatic choice from this many pairs, M is also held compressed for the
+  // products of the iterations (ContactModel::compress_formed_operator).
+  static constexpr Index compressed_products_threshold = 400;
   double tolerance = 1e-10;  // Newton: relative residual of the complementarity functions
   bool tolerance_given = false;  // by the problem file (a raise on the matrix-free route is then a warning)
   int max_iterations = 100;  // Newton iterations per load step; Kalker loops (Alg V.3)

@@ -215,7 +215,9 @@ std::vector<Key> contact_solver_keys() {
                  "semi-smooth Newton, or the thesis' algorithms (V.1-V.3)"),
           choice("contact_operator", {"auto", "dense", "matrix_free"}, "auto",
                  "the condensed operator formed (dense) or applied through the regions' factors (matrix_free: "
-                 "any contact law, with or without friction; auto: from 2000 pairs on compressed regions)"),
+                 "any contact law, with or without friction; auto: from 2000 pairs on compressed regions, and a formed "
+                 "operator of 400 pairs or more also compressed for the iterations' products; dense: its products "
+                 "are the formed matrix's)"),
           number("tolerance", "1e-10",
                  "newton: relative residual of the complementarity functions (matrix-free: at least 1e-15 "
                  "pairs^1.5; a step whose contact set repeats at its solves' round-off is taken within 100 times "
