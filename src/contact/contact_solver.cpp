@@ -1045,6 +1045,7 @@ ContactResult solve_on_meshes(const ContactProblem& problem, const bem::Progress
   std::vector<bem::InteriorSelection> selections = interior_selections(problem, model);
   result.unknowns = 2 * model.condensed().pairs + model.condensed().motions;
   result.matrix_free = model.condensed().matrix_free != nullptr;
+  if (model.condensed().M_products) result.products_compression = model.condensed().M_products->compression_ratio();
 
   std::unique_ptr<PlasticCoupling> coupling;
   if (const auto plastic = coupled_plastic_regions(problem, model); !plastic.empty()) {

@@ -163,6 +163,9 @@ struct ContactResult : ContactInterfaceResult {
   int rejected_steps = 0;
   bool matrix_free = false;  // the condensed operator was applied, not formed (SolverOptions::contact_operator)
   long matrix_free_images = 0;  // then: M's images of coarse hat functions formed (one batched solve each)
+  // The formed route: the size of M's compressed copy that took the products over M's (0: M's
+  // own products; CondensedProblem::M_products).
+  double products_compression = 0.0;
   int rejected_jumps = 0;
   int steps_past_state_limit = 0;  // LoadHistory's
   int steps_at_shortest = 0;       // LoadHistory's

@@ -374,6 +374,7 @@ nlohmann::json contact_summary_json(const contact::ContactProblem& problem, cons
                     {"reused", result.newton_systems.reused}}}};
   j["unknowns"] = result.unknowns;
   if (result.matrix_free) j["matrix_free_images"] = result.matrix_free_images;
+  if (result.products_compression > 0.0) j["products_compression"] = result.products_compression;
   // The closed form the plots draw next to the pressure (Hertz: p0 sqrt(1 - (r/a)^2)).
   if (const auto hertz = hertz_reference(problem))
     j["reference"] = {{"name", "hertz_sphere"}, {"R", hertz->R}, {"a", hertz->a}, {"p0", hertz->p0},
@@ -474,6 +475,10 @@ std::string contact_report_text(const contact::ContactProblem& problem, const co
     if (result.matrix_free) {
       std::snprintf(line, sizeof line, "  condensed operator applied matrix-free: %ld products, %ld coarse images\n",
                     s.matrix_free_products, result.matrix_free_images);
+      out += line;
+    } else if (result.products_compression > 0.0) {
+      std::snprintf(line, sizeof line, "  condensed operator formed, its products through a compressed copy (%.3g of its size)\n",
+                    result.products_compression);
       out += line;
     }
     if (result.steps_past_state_limit > 0) {
