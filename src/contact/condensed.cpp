@@ -370,12 +370,11 @@ namespace {
 
 // Of M's products in a long history (the 961-pair fretting cycle: 1 698 iterations, each
 // one product): the dense product reads M whole, 2N x 2N, which leaves the caches from about
-// 1 000 pairs; the compressed M is 0.34 / 0.21 / 0.12 of it at 481 / 961 / 1 921 pairs and
-// its product 2.6 / 9 / 7 times faster on one thread (1e-12: errors 6e-13 / 3e-13 / 1e-12).
-// At 1e-12 that error put the residual of 1 195 of the 2 106 steps of the 1 921-pair cycle
-// above the tolerance 1e-10 (one iteration more each: 4 619 against 3 320); at 1e-14 the
-// products are within 3e-15 of M's, the copy 0.38 / 0.24 / 0.15 of M, and the cycle takes
-// M's own iterations (3 320), 108 -> 94 s on 2 threads (dense products: 106 s).
+// 1 000 pairs; the compressed M is 0.38 / 0.24 / 0.15 of it at 481 / 961 / 1 921 pairs, its
+// products within 3e-15 of M's. At 1e-12 (2.6 / 9 / 7 times faster than M's on one thread)
+// the error, 1e-12 at 1 921 pairs, put the residual of 1 195 of that cycle's 2 106 steps above
+// the tolerance 1e-10: one iteration more each (4 619 against M's 3 320); at 1e-14 the cycle
+// takes M's 3 320, 108 -> 94 s on 2 threads (M's own products: 106 s).
 constexpr double kProductAccuracy = 1e-14;
 
 }  // namespace

@@ -195,6 +195,11 @@ TEST(LoadHistory, ManyPairsTakeTheirProductsFromTheCompressedOperator) {
   ASSERT_EQ(compressed.steps_taken, formed.steps_taken);
   EXPECT_EQ(compressed.summary.newton_iterations, formed.summary.newton_iterations);
   EXPECT_EQ(compressed.steps_at_round_off, formed.steps_at_round_off);
+  // The copy's size is reported (terminal, summary.json's products_compression), and only
+  // where it took the products.
+  EXPECT_GT(compressed.products_compression, 0.0);
+  EXPECT_LT(compressed.products_compression, 1.0);
+  EXPECT_EQ(formed.products_compression, 0.0);
   double peak = 0.0, worst = 0.0;
   for (const auto& pair : formed.pairs) peak = std::max(peak, std::abs(pair.p_n));
   for (std::size_t i = 0; i < formed.pairs.size(); ++i)
