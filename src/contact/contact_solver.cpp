@@ -106,7 +106,9 @@ Vector interference_at(const std::vector<ContactPair>& pairs, const ContactProbl
 std::vector<PairResult> pair_results(const std::vector<ContactPair>& pairs, const StepOutput& step,
                                      const PairLaws& laws, const Vector& interference, Index first,
                                      const Vector& wear = {}) {
-  double scale = 0.0;
+  // A pressure below 1e-12 of the step's largest, or of the residual's floor (a history
+  // unloaded to 0: its pressures are round-off), is an open pair's.
+  double scale = step.pressure_floor;
   for (Index i = 0; i < static_cast<Index>(pairs.size()); ++i) scale = std::max(scale, std::abs(step.x[2 * i]));
   const bool side_face = zone_faces_sideways(pairs);
   std::vector<PairResult> out;
@@ -439,8 +441,11 @@ StepOutput solve_step(const HistoryData& data, const StepInput& previous, double
   if (run) predicted_start(data, *run, t_next, input);
   input.newton_cache = data.newton_cache.get();
   const SolverOptions& solver = data.problem.solver;
-  if (data.coupling) return data.coupling->solve_step(input, solver);
-  return solver.algorithm == Algorithm::newton ? solve_step_newton(input, solver) : solve_step_thesis(input, solver);
+  StepOutput out = data.coupling                          ? data.coupling->solve_step(input, solver)
+                   : solver.algorithm == Algorithm::newton ? solve_step_newton(input, solver)
+                                                           : solve_step_thesis(input, solver);
+  out.pressure_floor = input.pressure_floor;
+  return out;
 }
 
 // A force that nothing carries (a tangential force without friction) leaves its body free

@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cmath>
 #include <set>
+#include <unordered_map>
 
 #include "bemcontact/contact/step_solvers.hpp"
 #include "bemcontact/core/error.hpp"
@@ -375,119 +376,194 @@ bool solves(const Apply& apply, const Vector& z, const Vector& rhs, double J_nor
   return z.allFinite() && (apply(z) - rhs).norm() <= 1e-6 * (rhs.norm() + 1e-300) + 1e-12 * J_norm * z.norm();
 }
 
+// The element of a bordered update (NewtonSystemCache::UpdateElement) for the new unknown
+// `id` of `system`: its id and its column's definition.
+NewtonSystemCache::UpdateElement new_unknown(const CondensedProblem& p, const NewtonSystem& system, Index id) {
+  NewtonSystemCache::UpdateElement e;
+  e.id = id;
+  if (id < 2 * p.pairs && id % 2 == 0) {
+    e.slip_factor = system.slip_factor[id / 2];
+    e.normal_shift = system.normal_shift[id / 2];
+    if (!system.slip_columns.empty()) e.coupling = system.slip_columns[static_cast<std::size_t>(id / 2)];
+  }
+  return e;
+}
+
 // The system through the cache's factors: an update of them (operators/bordered_lu.hpp)
-// when the system differs from the factored one at few unknowns. False when it differs at
-// many, or the update is singular or inaccurate (the caller factors the system).
+// when the system differs from the factored one at few unknowns, its elements kept from the
+// last update where they repeat. False when it differs at many, or the update is singular
+// or inaccurate (the caller factors the system).
 bool solve_by_update(const StepInput& in, NewtonSystem& system, NewtonSystemCache& cache, Vector& z) {
+  using Element = NewtonSystemCache::UpdateElement;
   const auto& p = *in.problem;
-  const bool same_update = cache.update && cache.update_free_dofs == system.free_dofs &&
-                           cache.update_slip_factor == system.slip_factor &&
-                           cache.update_normal_shift == system.normal_shift &&
-                           cache.update_slip_columns == system.slip_columns;
-  if (!same_update) {
-    cache.update.reset();
-    // Kept: the factored system's unknowns that stay free with the same column.
-    const auto column_same = [&](Index id) {
-      return id >= 2 * p.pairs || id % 2 == 1 ||
-             (cache.slip_factor[id / 2] == system.slip_factor[id / 2] &&
-              cache.normal_shift[id / 2] == system.normal_shift[id / 2] &&
-              same_coupling(cache.slip_columns, system.slip_columns, id / 2));
-    };
-    const std::vector<Index> base_ids = unknown_ids(p, cache.free_dofs), ids = unknown_ids(p, system.free_dofs);
-    std::vector<Index> kept, order, added;
+  const NewtonSystem& factored = cache.factored_system;
+  // Kept: the factored system's unknowns that stay free with the same column.
+  const auto column_same = [&](Index id) {
+    return id >= 2 * p.pairs || id % 2 == 1 ||
+           (factored.slip_factor[id / 2] == system.slip_factor[id / 2] &&
+            factored.normal_shift[id / 2] == system.normal_shift[id / 2] &&
+            same_coupling(factored.slip_columns, system.slip_columns, id / 2));
+  };
+  const std::vector<Index> base_ids = unknown_ids(p, factored.free_dofs), ids = unknown_ids(p, system.free_dofs);
+  const Index base = static_cast<Index>(base_ids.size()), size = static_cast<Index>(ids.size());
+  // position_of[b]: the system's position of the factored system's unknown b (-1: dropped);
+  // the elements: the dropped unknowns, then the new ones, with their positions in the system.
+  std::vector<Index> position_of(static_cast<std::size_t>(base), -1), added;
+  std::vector<Element> elements;
+  {
     std::size_t b = 0;
-    for (std::size_t a = 0; a < ids.size(); ++a) {
+    for (Index a = 0; a < size; ++a) {
       while (b < base_ids.size() && base_ids[b] < ids[a]) ++b;
-      if (b < base_ids.size() && base_ids[b] == ids[a] && column_same(ids[a])) {
-        kept.push_back(static_cast<Index>(b));
-        order.push_back(static_cast<Index>(a));
-      } else {
-        added.push_back(static_cast<Index>(a));
+      if (b < base_ids.size() && base_ids[b] == ids[a] && column_same(ids[a])) position_of[b] = a;
+      else added.push_back(a);
+    }
+  }
+  for (Index b = 0; b < base; ++b)
+    if (position_of[b] < 0) {
+      elements.emplace_back();
+      elements.back().position = b;
+    }
+  for (const Index a : added) elements.push_back(new_unknown(p, system, ids[a]));
+  if (elements.size() > std::max<std::size_t>(8, static_cast<std::size_t>(kUpdateShare * static_cast<double>(size))))
+    return false;
+  if (!cache.update) cache.update = std::make_unique<operators::BorderedLU>(cache.J, cache.lu);
+  auto& update = *cache.update;
+  // The last update's elements that stay (in their order) and those to add.
+  std::vector<bool> keep(cache.update_elements.size(), false), present(elements.size(), false);
+  {
+    std::vector<Index> dropped_element(static_cast<std::size_t>(base), -1);
+    std::unordered_map<Index, std::size_t> added_element;
+    for (std::size_t e = 0; e < elements.size(); ++e) {
+      if (elements[e].position >= 0) dropped_element[static_cast<std::size_t>(elements[e].position)] = static_cast<Index>(e);
+      else added_element[elements[e].id] = e;
+    }
+    for (std::size_t e = 0; e < cache.update_elements.size(); ++e) {
+      const Element& old = cache.update_elements[e];
+      Index match = -1;
+      if (old.position >= 0) {
+        match = dropped_element[static_cast<std::size_t>(old.position)];
+      } else if (const auto it = added_element.find(old.id); it != added_element.end()) {
+        match = static_cast<Index>(it->second);
       }
+      if (match < 0 || !(elements[static_cast<std::size_t>(match)] == old)) continue;
+      keep[e] = true;
+      present[static_cast<std::size_t>(match)] = true;
     }
-    const std::size_t changes = (base_ids.size() - kept.size()) + added.size();
-    if (changes > std::max<std::size_t>(8, static_cast<std::size_t>(kUpdateShare * static_cast<double>(ids.size()))))
-      return false;
-    const Index c = static_cast<Index>(kept.size()), m = static_cast<Index>(added.size());
-    const Index base = static_cast<Index>(base_ids.size());
-    // The new columns at every row of the factored system (U), its rows at the kept unknowns
-    // (Q), the new rows (R, T).
-    Matrix U(base, m), Q(c, m), R(m, c), T(m, m);
-    for (Index j = 0; j < m; ++j) {
-      const Index column = ids[static_cast<std::size_t>(added[static_cast<std::size_t>(j)])];
-      for (Index r = 0; r < base; ++r) U(r, j) = jacobian_entry(p, system, base_ids[static_cast<std::size_t>(r)], column);
-      for (Index a = 0; a < c; ++a) {
-        Q(a, j) = U(kept[static_cast<std::size_t>(a)], j);
-        R(j, a) = jacobian_entry(p, system, column, ids[static_cast<std::size_t>(order[static_cast<std::size_t>(a)])]);
-      }
-      for (Index i = 0; i < m; ++i)
-        T(i, j) = jacobian_entry(p, system, ids[static_cast<std::size_t>(added[static_cast<std::size_t>(i)])], column);
-    }
-    // W = J^-1 E_D and Z = J^-1 [Q; 0] = J^-1 U - W U(D, :), from the solves kept with the
-    // factors, the missing ones in one batch each.
-    std::vector<Index> dropped;
-    for (std::size_t k = 0, a = 0; k < base_ids.size(); ++k) {
-      if (a < kept.size() && kept[a] == static_cast<Index>(k)) ++a;
-      else dropped.push_back(static_cast<Index>(k));
-    }
-    const Index d = static_cast<Index>(dropped.size());
+  }
+  const bool unchanged = std::find(keep.begin(), keep.end(), false) == keep.end() &&
+                         std::find(present.begin(), present.end(), false) == present.end();
+  if (!unchanged) {
+    std::vector<Element> order;
+    for (std::size_t e = 0; e < cache.update_elements.size(); ++e)
+      if (keep[e]) order.push_back(cache.update_elements[e]);
+    update.keep_only(keep);
+    // The new columns at the factored system's rows; the solves missing, in one batch.
+    std::vector<std::size_t> fresh;
+    std::vector<Vector> columns(elements.size());
     std::vector<Index> missing;
-    for (const Index k : dropped)
-      if (!cache.unit_solves.count(k)) missing.push_back(k);
-    if (!missing.empty()) {
-      Matrix units = Matrix::Zero(base, static_cast<Index>(missing.size()));
-      for (std::size_t j = 0; j < missing.size(); ++j) units(missing[j], static_cast<Index>(j)) = 1.0;
-      cache.lu.solve_in_place(units);
-      for (std::size_t j = 0; j < missing.size(); ++j) cache.unit_solves[missing[j]] = units.col(static_cast<Index>(j));
-    }
-    Matrix W(base, d), UD(d, m);
-    for (Index j = 0; j < d; ++j) {
-      W.col(j) = cache.unit_solves.at(dropped[static_cast<std::size_t>(j)]);
-      UD.row(j) = U.row(dropped[static_cast<std::size_t>(j)]);
-    }
-    missing.clear();
-    for (Index j = 0; j < m; ++j) {
-      const auto it = cache.column_solves.find(ids[static_cast<std::size_t>(added[static_cast<std::size_t>(j)])]);
-      if (it == cache.column_solves.end() || it->second.column != U.col(j)) missing.push_back(j);
+    for (std::size_t e = 0; e < elements.size(); ++e) {
+      if (present[e]) continue;
+      fresh.push_back(e);
+      const Element& element = elements[e];
+      if (element.position >= 0) {
+        if (!cache.unit_solves.count(element.position)) missing.push_back(static_cast<Index>(e));
+        continue;
+      }
+      Vector& column = columns[e];
+      column.resize(base);
+      for (Index r = 0; r < base; ++r) column[r] = jacobian_entry(p, system, base_ids[static_cast<std::size_t>(r)], element.id);
+      const auto it = cache.column_solves.find(element.id);
+      if (it == cache.column_solves.end() || it->second.column != column) missing.push_back(static_cast<Index>(e));
     }
     if (!missing.empty()) {
-      Matrix columns(base, static_cast<Index>(missing.size()));
-      for (std::size_t j = 0; j < missing.size(); ++j) columns.col(static_cast<Index>(j)) = U.col(missing[j]);
-      cache.lu.solve_in_place(columns);
-      for (std::size_t j = 0; j < missing.size(); ++j)
-        cache.column_solves[ids[static_cast<std::size_t>(added[static_cast<std::size_t>(missing[j])])]] = {
-            U.col(missing[j]), columns.col(static_cast<Index>(j))};
+      Matrix solves = Matrix::Zero(base, static_cast<Index>(missing.size()));
+      for (std::size_t j = 0; j < missing.size(); ++j) {
+        const Element& element = elements[static_cast<std::size_t>(missing[j])];
+        if (element.position >= 0) solves(element.position, static_cast<Index>(j)) = 1.0;
+        else solves.col(static_cast<Index>(j)) = columns[static_cast<std::size_t>(missing[j])];
+      }
+      cache.lu.solve_in_place(solves);
+      for (std::size_t j = 0; j < missing.size(); ++j) {
+        const Element& element = elements[static_cast<std::size_t>(missing[j])];
+        if (element.position >= 0) cache.unit_solves[element.position] = solves.col(static_cast<Index>(j));
+        else cache.column_solves[element.id] = {columns[static_cast<std::size_t>(missing[j])], solves.col(static_cast<Index>(j))};
+      }
     }
-    Matrix Z(base, m);
-    for (Index j = 0; j < m; ++j)
-      Z.col(j) = cache.column_solves.at(ids[static_cast<std::size_t>(added[static_cast<std::size_t>(j)])]).solution;
-    if (d > 0 && m > 0) Z -= W * UD;
+    for (const std::size_t e : fresh) {
+      const Element& element = elements[e];
+      const Index k = update.elements();
+      Vector corner_row = Vector::Zero(k), corner_column = Vector::Zero(k);
+      if (element.position >= 0) {
+        update.add({element.position, {}}, cache.unit_solves.at(element.position), {element.position, {}}, corner_row,
+                   corner_column, 0.0);
+      } else {
+        // Its row at the factored system's columns (the dropped ones meet y_D = 0: any
+        // definition of theirs will do), the same for every update of these factors.
+        auto row = cache.update_rows.find(element.id);
+        if (row == cache.update_rows.end()) {
+          Vector entries(base);
+          for (Index c = 0; c < base; ++c) entries[c] = jacobian_entry(p, factored, element.id, base_ids[static_cast<std::size_t>(c)]);
+          row = cache.update_rows.emplace(element.id, std::move(entries)).first;
+        }
+        for (Index j = 0; j < k; ++j) {
+          const Element& other = order[static_cast<std::size_t>(j)];
+          if (other.position >= 0) continue;  // a dropped unknown's corner: 0
+          corner_row[j] = jacobian_entry(p, system, element.id, other.id);
+          corner_column[j] = jacobian_entry(p, system, other.id, element.id);
+        }
+        update.add({-1, std::move(columns[e])}, cache.column_solves.at(element.id).solution, {-1, row->second},
+                   corner_row, corner_column, jacobian_entry(p, system, element.id, element.id));
+      }
+      order.push_back(element);
+    }
+    cache.update_elements = std::move(order);
+    cache.update_factored = false;
+    ++cache.updated;
+  }
+  if (!cache.update_factored) {
     try {
-      cache.update = std::make_unique<operators::BorderedLU>(cache.J, cache.lu, std::move(kept), std::move(W),
-                                                             std::move(Q), std::move(R), std::move(T), std::move(Z));
+      update.factor();
     } catch (const SolverError&) {
       return false;
     }
-    order.insert(order.end(), added.begin(), added.end());
-    cache.update_order = std::move(order);
-    cache.update_free_dofs = system.free_dofs;
-    cache.update_slip_factor = system.slip_factor;
-    cache.update_normal_shift = system.normal_shift;
-    cache.update_slip_columns = system.slip_columns;
-    ++cache.updated;
+    cache.update_factored = true;
   }
-  const auto& order = cache.update_order;
-  const Index size = static_cast<Index>(order.size());
-  Vector rhs(size);
-  for (Index j = 0; j < size; ++j) rhs[j] = system.rhs[order[static_cast<std::size_t>(j)]];
-  const Vector y = cache.update->solve(rhs);
-  z.resize(size);
-  for (Index j = 0; j < size; ++j) z[order[static_cast<std::size_t>(j)]] = y[j];
-  const bool solved =
-      p.M_products ? solves([&](const Vector& v) { return apply_newton_matrix(p, system, v); }, z, system.rhs, cache.J_norm)
-                   : solves([&](const Vector& v) { return cache.update->apply(v); }, y, rhs, cache.J_norm);
-  if (!solved) cache.update.reset();
-  return solved;
+  // The system's z from the bordered solution: y at the kept unknowns, s at the new ones.
+  std::vector<Index> element_position(cache.update_elements.size(), -1);
+  for (std::size_t e = 0; e < cache.update_elements.size(); ++e)
+    if (cache.update_elements[e].position < 0)
+      element_position[e] = static_cast<Index>(
+          std::lower_bound(ids.begin(), ids.end(), cache.update_elements[e].id) - ids.begin());
+  const Index k = update.elements();
+  const auto to_bordered = [&](const Vector& v, Vector& y, Vector& s) {
+    y = Vector::Zero(base);
+    s = Vector::Zero(k);
+    for (Index b = 0; b < base; ++b)
+      if (position_of[b] >= 0) y[b] = v[position_of[b]];
+    for (Index e = 0; e < k; ++e)
+      if (element_position[e] >= 0) s[e] = v[element_position[e]];
+  };
+  const auto from_bordered = [&](const Vector& y, const Vector& s) {
+    Vector v(size);
+    for (Index b = 0; b < base; ++b)
+      if (position_of[b] >= 0) v[position_of[b]] = y[b];
+    for (Index e = 0; e < k; ++e)
+      if (element_position[e] >= 0) v[element_position[e]] = s[e];
+    return v;
+  };
+  Vector r, g, y, s;
+  to_bordered(system.rhs, r, g);
+  update.solve(r, g, y, s);
+  z = from_bordered(y, s);
+  const auto apply = [&](const Vector& v) {
+    Vector yv, sv, out_base, out_border;
+    to_bordered(v, yv, sv);
+    update.apply(yv, sv, out_base, out_border);
+    return from_bordered(out_base, out_border);
+  };
+  return p.M_products
+             ? solves([&](const Vector& v) { return apply_newton_matrix(p, system, v); }, z, system.rhs, cache.J_norm)
+             : solves(apply, z, system.rhs, cache.J_norm);
 }
 
 // Solves the Newton system into z; false when it is singular (or the solution does not
@@ -497,25 +573,31 @@ bool solve_by_update(const StepInput& in, NewtonSystem& system, NewtonSystemCach
 bool solve_newton_system(const StepInput& in, NewtonSystem& system, Vector& z) {
   NewtonSystemCache local;
   NewtonSystemCache& cache = in.newton_cache ? *in.newton_cache : local;
-  const bool same = cache.valid && cache.free_dofs == system.free_dofs &&
-                    cache.slip_factor.size() == system.slip_factor.size() && cache.slip_factor == system.slip_factor &&
-                    cache.normal_shift == system.normal_shift && cache.slip_columns == system.slip_columns;
+  const NewtonSystem& factored = cache.factored_system;
+  const bool same = cache.valid && factored.free_dofs == system.free_dofs &&
+                    factored.slip_factor.size() == system.slip_factor.size() &&
+                    factored.slip_factor == system.slip_factor && factored.normal_shift == system.normal_shift &&
+                    factored.slip_columns == system.slip_columns;
   if (same) {
     if (cache.J.rows() == 0) return true;
     ++cache.reused;
-  } else if (cache.valid && cache.J.rows() > 0 && cache.slip_factor.size() == system.slip_factor.size() &&
+  } else if (cache.valid && cache.J.rows() > 0 && factored.slip_factor.size() == system.slip_factor.size() &&
              !system.free_dofs.empty() && solve_by_update(in, system, cache, z)) {
     return true;
   } else {
     newton_matrix(in, system);
     cache.valid = false;
     cache.update.reset();
+    cache.update_elements.clear();
+    cache.update_factored = false;
     cache.unit_solves.clear();
     cache.column_solves.clear();
-    cache.free_dofs = system.free_dofs;
-    cache.slip_factor = system.slip_factor;
-    cache.normal_shift = system.normal_shift;
-    cache.slip_columns = system.slip_columns;
+    cache.update_rows.clear();
+    cache.factored_system = NewtonSystem{};
+    cache.factored_system.free_dofs = system.free_dofs;
+    cache.factored_system.slip_factor = system.slip_factor;
+    cache.factored_system.normal_shift = system.normal_shift;
+    cache.factored_system.slip_columns = system.slip_columns;
     cache.J = std::move(system.J);
     if (cache.J.rows() == 0) return cache.valid = true;
     try {

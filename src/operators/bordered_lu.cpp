@@ -1,104 +1,103 @@
 #include "bemcontact/operators/bordered_lu.hpp"
 
 #include <stdexcept>
-#include <string>
 #include <utility>
 
 namespace bemcontact::operators {
 
 namespace {
 
-std::vector<Index> not_kept(Index n, const std::vector<Index>& kept) {
-  std::vector<bool> is_kept(static_cast<std::size_t>(n), false);
-  for (const Index k : kept) is_kept[static_cast<std::size_t>(k)] = true;
-  std::vector<Index> dropped;
-  for (Index k = 0; k < n; ++k)
-    if (!is_kept[static_cast<std::size_t>(k)]) dropped.push_back(k);
-  return dropped;
+void add_to(const BorderedLU::Border& border, double scale, Vector& v) {
+  if (border.unit >= 0) v[border.unit] += scale;
+  else v += scale * border.dense;
+}
+
+// The matrix with the rows and columns of `keep` only.
+Matrix kept_block(const Matrix& m, const std::vector<bool>& keep, Index kept) {
+  Matrix out(kept, kept);
+  for (Index j = 0, jj = 0; j < m.cols(); ++j) {
+    if (!keep[static_cast<std::size_t>(j)]) continue;
+    for (Index i = 0, ii = 0; i < m.rows(); ++i)
+      if (keep[static_cast<std::size_t>(i)]) out(ii++, jj) = m(i, j);
+    ++jj;
+  }
+  return out;
 }
 
 }  // namespace
 
-BorderedLU::BorderedLU(const Matrix& base, const DenseLU& base_lu, std::vector<Index> kept, Matrix Q, Matrix R,
-                       Matrix T)
-    : base_(&base), base_lu_(&base_lu), kept_(std::move(kept)), dropped_(not_kept(base.rows(), kept_)),
-      Q_(std::move(Q)), R_(std::move(R)), T_(std::move(T)) {
-  const Index n = base.rows(), d = static_cast<Index>(dropped_.size());
-  W_ = Matrix::Zero(n, d);
-  for (Index j = 0; j < d; ++j) W_(dropped_[static_cast<std::size_t>(j)], j) = 1.0;
-  if (d > 0) base_lu.solve_in_place(W_);
-  Matrix Z = Matrix::Zero(n, Q_.cols());
-  for (std::size_t a = 0; a < kept_.size(); ++a) Z.row(kept_[a]) = Q_.row(static_cast<Index>(a));
-  if (Z.cols() > 0) base_lu.solve_in_place(Z);
-  factor_small_blocks(Z);
-}
-
-BorderedLU::BorderedLU(const Matrix& base, const DenseLU& base_lu, std::vector<Index> kept, Matrix W, Matrix Q,
-                       Matrix R, Matrix T, Matrix Z)
-    : base_(&base), base_lu_(&base_lu), kept_(std::move(kept)), dropped_(not_kept(base.rows(), kept_)),
-      W_(std::move(W)), Q_(std::move(Q)), R_(std::move(R)), T_(std::move(T)) {
-  if (W_.rows() != base.rows() || W_.cols() != static_cast<Index>(dropped_.size()) || Z.rows() != base.rows() ||
-      Z.cols() != Q_.cols())
-    throw std::logic_error("BorderedLU: solves of the wrong size");
-  factor_small_blocks(Z);
-}
-
-void BorderedLU::factor_small_blocks(const Matrix& Z) {
-  const Index d = static_cast<Index>(dropped_.size());
-  if (d > 0) {
-    Matrix WD(d, d);
-    for (Index i = 0; i < d; ++i) WD.row(i) = W_.row(dropped_[static_cast<std::size_t>(i)]);
-    dropped_lu_ = DenseLU(std::move(WD), "the dropped block of an updated Newton system");
+void BorderedLU::add(Border column, Vector solution, Border row, const Vector& corner_row,
+                     const Vector& corner_column, double corner) {
+  const Index k = elements(), n = base_size();
+  if (solution.size() != n || (column.unit < 0 && column.dense.size() != n) || (row.unit < 0 && row.dense.size() != n) ||
+      corner_row.size() != k || corner_column.size() != k)
+    throw std::logic_error("BorderedLU::add: an element of the wrong size");
+  K_.conservativeResize(k + 1, k + 1);
+  S_.conservativeResize(k + 1, k + 1);
+  for (Index j = 0; j < k; ++j) {
+    K_(k, j) = corner_row[j];
+    K_(j, k) = corner_column[j];
+    S_(k, j) = corner_row[j] - row.dot(X_[static_cast<std::size_t>(j)]);
+    S_(j, k) = corner_column[j] - H_[static_cast<std::size_t>(j)].dot(solution);
   }
-  const Index m = T_.rows();
-  if (m > 0) {
-    kept_inverse_Q_ = kept_part(Z);
-    schur_lu_ = DenseLU(Matrix(T_ - R_ * kept_inverse_Q_), "the Schur complement of an updated Newton system");
+  K_(k, k) = corner;
+  S_(k, k) = corner - row.dot(solution);
+  G_.push_back(std::move(column));
+  H_.push_back(std::move(row));
+  X_.push_back(std::move(solution));
+}
+
+void BorderedLU::keep_only(const std::vector<bool>& keep) {
+  if (static_cast<Index>(keep.size()) != elements()) throw std::logic_error("BorderedLU::keep_only: wrong size");
+  std::size_t kept = 0;
+  for (std::size_t e = 0; e < keep.size(); ++e) {
+    if (!keep[e]) continue;
+    if (kept != e) {
+      G_[kept] = std::move(G_[e]);
+      H_[kept] = std::move(H_[e]);
+      X_[kept] = std::move(X_[e]);
+    }
+    ++kept;
   }
+  if (kept == keep.size()) return;
+  K_ = kept_block(K_, keep, static_cast<Index>(kept));
+  S_ = kept_block(S_, keep, static_cast<Index>(kept));
+  G_.resize(kept);
+  H_.resize(kept);
+  X_.resize(kept);
 }
 
-Matrix BorderedLU::solve_kept(const Matrix& r) const {
-  Matrix full = Matrix::Zero(base_->rows(), r.cols());
-  for (std::size_t a = 0; a < kept_.size(); ++a) full.row(kept_[a]) = r.row(static_cast<Index>(a));
-  base_lu_->solve_in_place(full);
-  return kept_part(std::move(full));
-}
-
-Matrix BorderedLU::kept_part(Matrix full) const {
-  const Index columns = full.cols();
-  if (!dropped_.empty()) {
-    Matrix zd(static_cast<Index>(dropped_.size()), columns);
-    for (std::size_t i = 0; i < dropped_.size(); ++i) zd.row(static_cast<Index>(i)) = full.row(dropped_[i]);
-    dropped_lu_.solve_in_place(zd);
-    full -= W_ * zd;
+// S's rows equilibrated before its factorisation: a dropped unknown's row is J0^-1's scale,
+// a new unknown's J0's (DenseLU equilibrates the columns).
+void BorderedLU::factor() {
+  const Index k = elements();
+  row_scale_.resize(k);
+  for (Index e = 0; e < k; ++e) {
+    const double largest = S_.row(e).cwiseAbs().maxCoeff();
+    row_scale_[e] = largest > 0.0 ? 1.0 / largest : 1.0;
   }
-  Matrix out(static_cast<Index>(kept_.size()), columns);
-  for (std::size_t a = 0; a < kept_.size(); ++a) out.row(static_cast<Index>(a)) = full.row(kept_[a]);
-  return out;
+  S_lu_ = k > 0 ? DenseLU(row_scale_.asDiagonal() * S_, "the Schur complement of an updated Newton system") : DenseLU();
 }
 
-Vector BorderedLU::solve(const Vector& rhs) const {
-  const Index c = static_cast<Index>(kept_.size()), m = T_.rows();
-  const Vector y = solve_kept(Matrix(rhs.head(c))).col(0);
-  if (m == 0) return y;
-  Vector out(c + m);
-  out.tail(m) = schur_lu_.solve(rhs.tail(m) - R_ * y);
-  out.head(c) = y - kept_inverse_Q_ * out.tail(m);
-  return out;
-}
-
-Vector BorderedLU::apply(const Vector& z) const {
-  const Index c = static_cast<Index>(kept_.size()), m = T_.rows();
-  Vector full = Vector::Zero(base_->rows());
-  for (Index a = 0; a < c; ++a) full[kept_[static_cast<std::size_t>(a)]] = z[a];
-  const Vector product = *base_ * full;
-  Vector out(c + m);
-  for (Index a = 0; a < c; ++a) out[a] = product[kept_[static_cast<std::size_t>(a)]];
-  if (m > 0) {
-    out.head(c) += Q_ * z.tail(m);
-    out.tail(m) = R_ * z.head(c) + T_ * z.tail(m);
+void BorderedLU::solve(const Vector& r, const Vector& g, Vector& y, Vector& s) const {
+  const Index k = elements();
+  y = base_lu_->solve(r);
+  if (k == 0) {
+    s.resize(0);
+    return;
   }
-  return out;
+  Vector t(k);
+  for (Index e = 0; e < k; ++e) t[e] = g[e] - H_[static_cast<std::size_t>(e)].dot(y);
+  s = S_lu_.solve(row_scale_.cwiseProduct(t));
+  for (Index e = 0; e < k; ++e) y -= s[e] * X_[static_cast<std::size_t>(e)];
+}
+
+void BorderedLU::apply(const Vector& y, const Vector& s, Vector& out_base, Vector& out_border) const {
+  const Index k = elements();
+  out_base = *base_ * y;
+  for (Index e = 0; e < k; ++e) add_to(G_[static_cast<std::size_t>(e)], s[e], out_base);
+  out_border = K_ * s;
+  for (Index e = 0; e < k; ++e) out_border[e] += H_[static_cast<std::size_t>(e)].dot(y);
 }
 
 }  // namespace bemcontact::operators

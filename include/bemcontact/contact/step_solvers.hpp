@@ -76,27 +76,40 @@ struct NewtonSystem {
 double jacobian_entry(const CondensedProblem& p, const NewtonSystem& system, Index row, Index column);
 
 struct NewtonSystemCache {
-  std::vector<Index> free_dofs;
-  Vector slip_factor, normal_shift;
-  SlipCoupling slip_columns;
+  // The factored system's free unknowns and column definitions (slip factors, compliant
+  // shifts, non-local couplings; its J and rhs empty).
+  NewtonSystem factored_system;
   Matrix J;
   double J_norm = 0.0;  // Frobenius, for the solves' residual check
   operators::DenseLU lu;
   bool valid = false;
-  // The update of the last system solved through the factors above, and its sets.
-  std::vector<Index> update_free_dofs;
-  Vector update_slip_factor, update_normal_shift;
-  SlipCoupling update_slip_columns;
-  std::vector<Index> update_order;  // the update's unknowns (kept, then new) as positions in the system
+  // The bordered update of the factors above (operators/bordered_lu.hpp) and its elements
+  // in its order: the factored system's unknowns dropped (position in it) and the new
+  // unknowns (id, with its column's definition), kept and grown from one update to the next;
+  // update_factored while its Schur complement's factors are those of its elements.
+  struct UpdateElement {
+    Index position = -1;  // dropped: position in the factored system
+    Index id = -1;        // new: unknown id
+    double slip_factor = 0.0, normal_shift = 0.0;
+    std::vector<std::pair<Index, double>> coupling;
+    bool operator==(const UpdateElement& o) const {
+      return position == o.position && id == o.id && slip_factor == o.slip_factor && normal_shift == o.normal_shift &&
+             coupling == o.coupling;
+    }
+  };
   std::unique_ptr<operators::BorderedLU> update;
+  std::vector<UpdateElement> update_elements;
+  bool update_factored = false;
   // Solves with the factors above, kept until they are replaced (the updates of one
   // factorisation share most of them): J^-1 e_k by position k, and J^-1 u for an update's
-  // new column u (at the factored system's rows) by its unknown's id, with u.
+  // new column u (at the factored system's rows) by its unknown's id, with u; and a new
+  // unknown's row at the factored system's columns, by id.
   std::unordered_map<Index, Vector> unit_solves;
   struct ColumnSolve {
     Vector column, solution;
   };
   std::unordered_map<Index, ColumnSolve> column_solves;
+  std::unordered_map<Index, Vector> update_rows;
   long factored = 0, reused = 0, updated = 0;  // systems factored, solved with kept factors, updates built
   // The matrix-free route (no factors): the last solution per dof, GMRES's starting point,
   // and the products of M taken.
@@ -181,6 +194,7 @@ struct StepOutput {
   int threshold_iterations = 0;  // Alg V.2
   int gmres_cycles = 0;          // Alg V.1 restarts
   int krylov_iterations = 0;     // the matrix-free route: products of M (GMRES iterations and their starts)
+  double pressure_floor = 0.0;   // the step's StepInput::pressure_floor (set by the history's solve_step)
 };
 
 // Jump w = w0 + M x + b delta.

@@ -3,14 +3,16 @@
 // the factors it has, at the cost of a few solves with them instead of a new factorisation
 // (a semi-smooth Newton iteration whose active sets changed at a few pairs).
 //
-// With J0 factored and C the indices of J0 kept (in order), the new matrix is
-//   J1 = [ J0(C, C)  Q ]
-//        [ R         T ]      (the kept block first, then the new rows and columns).
-// J0(C, C) is solved as the bordered system [J0 E_D; E_D^T 0] (D the dropped indices):
-// z = J0^-1 r~ - W mu, W = J0^-1 E_D, mu = W(D, :)^-1 (J0^-1 r~)(D), r~ = r on C, 0 on D;
-// then J1 by the Schur complement of that block, S = T - R J0(C, C)^-1 Q
-// [Golub & Van Loan 2013, 3.2.11; Hager1989]. Cost: |D| + |N| solves with J0's factors
-// to set up, two per solve; both small matrices are factored densely.
+// The bordered matrix [J0 G; H^T K] with J0 factored and k border elements, element e a
+// column g_e of G, a row h_e of H^T and its entries in the corner K, is solved through the
+// Schur complement S = K - H^T X, X = J0^-1 G [Golub & Van Loan 2013, 3.2.11; Hager1989]:
+//   S s = g - H^T J0^-1 r,   y = J0^-1 r - X s.
+// A matrix J1 = J0 with the indices D dropped and new rows and columns added is the bordered
+// matrix of D's unit columns and rows (their corner 0: y_D = 0) and of the new unknowns
+// (column: its entries at J0's rows; row: its entries at J0's columns; corner: its entries
+// at the new unknowns). S is kept from one set of elements to the next: an element added
+// costs its row and column of S (O(n k)) and the caller's solve X_e = J0^-1 g_e, an element
+// removed nothing; only S's factorisation (k^3 / 3) is redone.
 #include <vector>
 
 #include "bemcontact/core/types.hpp"
@@ -20,34 +22,41 @@ namespace bemcontact::operators {
 
 class BorderedLU {
  public:
-  // `base` and its factors outlive this; `kept` are indices into base (increasing).
-  // Throws SolverError when a small matrix (W(D, :) or S) is singular: J1 is then
-  // singular, or too far from J0 for the update (the caller factors J1 itself).
-  BorderedLU(const Matrix& base, const DenseLU& base_lu, std::vector<Index> kept, Matrix Q, Matrix R, Matrix T);
-  // The same from the solves with the base factors, taken by the caller (successive updates
-  // of one factorisation share most of them): W = J0^-1 E_D (D the indices not kept,
-  // increasing) and Z = J0^-1 [Q on C; 0 on D].
-  BorderedLU(const Matrix& base, const DenseLU& base_lu, std::vector<Index> kept, Matrix W, Matrix Q, Matrix R,
-             Matrix T, Matrix Z);
+  // A border column or row: the unit vector e_unit (unit >= 0), or `dense` (J0's size).
+  struct Border {
+    Index unit = -1;
+    Vector dense;
+    double dot(const Vector& v) const { return unit >= 0 ? v[unit] : dense.dot(v); }
+  };
 
-  Index size() const { return static_cast<Index>(kept_.size()) + T_.rows(); }
-  // J1^-1 rhs and J1 z, in J1's order (kept, then new).
-  Vector solve(const Vector& rhs) const;
-  Vector apply(const Vector& z) const;
+  // `base` and its factors outlive this.
+  BorderedLU(const Matrix& base, const DenseLU& base_lu) : base_(&base), base_lu_(&base_lu) {}
+
+  Index base_size() const { return base_->rows(); }
+  Index elements() const { return static_cast<Index>(X_.size()); }
+  // Adds an element: its column, solution = J0^-1 column, its row, its corner entries
+  // against the elements present (corner_row[j] = K(new, j), corner_column[j] = K(j, new))
+  // and its own K(new, new).
+  void add(Border column, Vector solution, Border row, const Vector& corner_row, const Vector& corner_column,
+           double corner);
+  // Keeps the elements whose `keep` is true (elements() entries), in their order.
+  void keep_only(const std::vector<bool>& keep);
+  // Factors S. Throws SolverError when it is singular: the bordered matrix is then
+  // singular, or too far from J0 for the update (the caller factors it itself).
+  void factor();
+  // [y; s] solving [J0 G; H^T K] [y; s] = [r; g] (after factor()).
+  void solve(const Vector& r, const Vector& g, Vector& y, Vector& s) const;
+  // [J0 y + G s; H^T y + K s] as out_base, out_border.
+  void apply(const Vector& y, const Vector& s, Vector& out_base, Vector& out_border) const;
 
  private:
-  Matrix solve_kept(const Matrix& r) const;  // J0(C, C)^-1 r, column by column
-  Matrix kept_part(Matrix full) const;       // the same from full = J0^-1 [r on C; 0 on D]
-  void factor_small_blocks(const Matrix& Z);  // W(D, :) and S
-
   const Matrix* base_ = nullptr;
   const DenseLU* base_lu_ = nullptr;
-  std::vector<Index> kept_, dropped_;
-  Matrix W_;             // J0^-1 E_D
-  DenseLU dropped_lu_;   // of W(D, :)
-  Matrix Q_, R_, T_;
-  Matrix kept_inverse_Q_;  // J0(C, C)^-1 Q
-  DenseLU schur_lu_;       // of S
+  std::vector<Border> G_, H_;
+  std::vector<Vector> X_;  // J0^-1 g_e
+  Matrix K_, S_;
+  Vector row_scale_;  // of S, for its factorisation
+  DenseLU S_lu_;
 };
 
 }  // namespace bemcontact::operators
