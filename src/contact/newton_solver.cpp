@@ -469,11 +469,13 @@ bool solve_by_update(const StepInput& in, NewtonSystem& system, NewtonSystemCach
         if (!cache.unit_solves.count(element.position)) missing.push_back(static_cast<Index>(e));
         continue;
       }
+      // A column is its definition's (the element): one kept with the same is not formed again.
+      const auto it = cache.column_solves.find(element.id);
+      if (it != cache.column_solves.end() && it->second.element == element) continue;
       Vector& column = columns[e];
       column.resize(base);
       for (Index r = 0; r < base; ++r) column[r] = jacobian_entry(p, system, base_ids[static_cast<std::size_t>(r)], element.id);
-      const auto it = cache.column_solves.find(element.id);
-      if (it == cache.column_solves.end() || it->second.column != column) missing.push_back(static_cast<Index>(e));
+      missing.push_back(static_cast<Index>(e));
     }
     if (!missing.empty()) {
       Matrix solves = Matrix::Zero(base, static_cast<Index>(missing.size()));
@@ -486,7 +488,8 @@ bool solve_by_update(const StepInput& in, NewtonSystem& system, NewtonSystemCach
       for (std::size_t j = 0; j < missing.size(); ++j) {
         const Element& element = elements[static_cast<std::size_t>(missing[j])];
         if (element.position >= 0) cache.unit_solves[element.position] = solves.col(static_cast<Index>(j));
-        else cache.column_solves[element.id] = {columns[static_cast<std::size_t>(missing[j])], solves.col(static_cast<Index>(j))};
+        else cache.column_solves[element.id] = {element, std::move(columns[static_cast<std::size_t>(missing[j])]),
+                                                solves.col(static_cast<Index>(j))};
       }
     }
     for (const std::size_t e : fresh) {
@@ -511,7 +514,8 @@ bool solve_by_update(const StepInput& in, NewtonSystem& system, NewtonSystemCach
           corner_row[j] = jacobian_entry(p, system, element.id, other.id);
           corner_column[j] = jacobian_entry(p, system, other.id, element.id);
         }
-        update.add({-1, std::move(columns[e])}, cache.column_solves.at(element.id).solution, {-1, row->second},
+        const auto& solve = cache.column_solves.at(element.id);
+        update.add({-1, solve.column}, solve.solution, {-1, row->second},
                    corner_row, corner_column, jacobian_entry(p, system, element.id, element.id));
       }
       order.push_back(element);

@@ -102,10 +102,11 @@ struct NewtonSystemCache {
   bool update_factored = false;
   // Solves with the factors above, kept until they are replaced (the updates of one
   // factorisation share most of them): J^-1 e_k by position k, and J^-1 u for an update's
-  // new column u (at the factored system's rows) by its unknown's id, with u; and a new
-  // unknown's row at the factored system's columns, by id.
+  // new column u (at the factored system's rows) by its unknown's id, with u and the
+  // column's definition; and a new unknown's row at the factored system's columns, by id.
   std::unordered_map<Index, Vector> unit_solves;
   struct ColumnSolve {
+    UpdateElement element;
     Vector column, solution;
   };
   std::unordered_map<Index, ColumnSolve> column_solves;
